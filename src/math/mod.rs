@@ -1,1 +1,12 @@
 //! Special functions, quadrature and root finding: pure f64 code, no I/O.
+//!
+//! - [`special`]: exprel, the φ_k functions of exponential integrators and the scaled upper incomplete
+//!   gamma function e^x Γ(s, x) for every real s, which no available crate computes for s ≤ 0.
+//! - [`quad`]: adaptive Gauss–Kronrod (7, 15) quadrature that resolves narrow lobes.
+//! - [`roots`]: Brent's safeguarded bracketing root finder and a log-scale bracket expansion.
+//! - [`tolerance`]: every accuracy target of the crate's numerical tests, with its reason.
+
+pub mod quad;
+pub mod roots;
+pub mod special;
+pub mod tolerance;

@@ -94,6 +94,18 @@ impl Family {
         }
     }
 
+    /// A one-line statement of the parameter domain the family's constructor accepts (for `--help`).
+    pub fn domain(self) -> &'static str {
+        match self {
+            Family::Phong => phong::DOMAIN,
+            Family::Beckmann => beckmann::DOMAIN,
+            Family::TorranceSparrow => torrance_sparrow::DOMAIN,
+            Family::TrowbridgeReitz => trowbridge_reitz::DOMAIN,
+            Family::Abc => abc::DOMAIN,
+            Family::Sgd => sgd::DOMAIN,
+        }
+    }
+
     /// Builds a validated NDF of this family from its parameters, given in `param_names()` order.
     ///
     /// `params.len()` must equal `param_names().len()`.

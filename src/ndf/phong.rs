@@ -1,16 +1,55 @@
-//! Placeholder: to be replaced by the stable implementation.
+//! Phong NDF: D(θ) = (α_p + 2)/(2π) · cos^{α_p} θ (MATH.md "Phong", after Blinn 1977 with the projected-area
+//! normalization).
+//!
+//! - Domain: α_p ≥ 0, any finite value. α_p = 0 is the uniform distribution 1/π.
+//! - Normalization: N = 2π ∫₀^{π/2} cos^{α_p} θ sin θ cos θ dθ = 2π/(α_p + 2), so D = cos^{α_p} θ / N.
+//! - θ → 0: D → (α_p + 2)/(2π), flat to second order. θ → π/2: D → 0 like cos^{α_p} θ; at the double
+//!   nearest π/2, cos θ = 6.12e-17, not 0, so D is tiny but positive for α_p ≲ 19 and exactly 1/π for α_p = 0.
+//! - Stable form: the whole of D in log space, ln D = ln((α_p + 2)/(2π)) − (α_p/2) · log1p(tan²θ), using
+//!   ln cos θ = −½ ln(1 + tan²θ). Raising a rounded cos θ to the power α_p would multiply its rounding error
+//!   by α_p (1e-8 relative at α_p = 1e8); log1p(tan²θ) keeps full relative accuracy from θ = 0 to π/2, and the
+//!   sum of logs avoids cos^{α_p} underflowing where (α_p + 2)/(2π) · cos^{α_p} is still representable.
+//!   Every finite α_p ≥ 0 is accepted: the exponent is never NaN (α_p · 0 = 0 at θ = 0) and (α_p + 2)/(2π)
+//!   ≤ 2.9e307 is finite.
+
 use crate::domain::{DomainError, check};
-/// Placeholder.
+use std::f64::consts::PI;
+
+/// What [`Phong::new`] accepts, as shown in `--help`.
+pub const DOMAIN: &str = "alpha_p ≥ 0 (any finite value; 0 is uniform)";
+
+/// A validated Phong lobe with its log-normalization precomputed.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Phong { alpha_p: f64,  }
+pub struct Phong {
+    alpha_p: f64,
+    /// ln(1/N) = ln((α_p + 2)/(2π)).
+    ln_inv_normalization: f64,
+}
+
 impl Phong {
-    /// Placeholder.
-    pub fn new(alpha_p: f64, ) -> Result<Self, DomainError> {
-        check("alpha_p", alpha_p, |v| v > 0.0, "> 0")?;
-        Ok(Phong { alpha_p,  })
+    /// A Phong lobe with exponent `alpha_p`; rejects NaN, ±∞ and negative values.
+    pub fn new(alpha_p: f64) -> Result<Self, DomainError> {
+        check("alpha_p", alpha_p, |v| v >= 0.0, "≥ 0 and finite")?;
+        Ok(Phong {
+            alpha_p,
+            ln_inv_normalization: ((alpha_p + 2.0) / (2.0 * PI)).ln(),
+        })
     }
-    /// Placeholder.
-    pub fn eval(&self, _theta: f64) -> f64 { todo!() }
-    /// Placeholder.
-    pub fn alpha_p(&self) -> f64 { self.alpha_p }
+
+    /// D(θ) = (α_p + 2)/(2π) · cos^{α_p} θ for θ ∈ [0, π/2], normalized over projected area.
+    #[inline]
+    pub fn eval(&self, theta: f64) -> f64 {
+        let tan2_theta = theta.tan().powi(2);
+        (self.ln_inv_normalization - 0.5 * self.alpha_p * tan2_theta.ln_1p()).exp()
+    }
+
+    /// N = 2π/(α_p + 2), the projected-area integral of the unnormalized lobe cos^{α_p} θ.
+    pub fn normalization(&self) -> f64 {
+        2.0 * PI / (self.alpha_p + 2.0)
+    }
+
+    /// The cosine exponent α_p.
+    pub fn alpha_p(&self) -> f64 {
+        self.alpha_p
+    }
 }

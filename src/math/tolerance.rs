@@ -1,0 +1,30 @@
+//! The accuracy targets of ndfplot's numerical code, in one place, each with the reason for its value.
+//!
+//! The NDF and special-function tests compare against 50-digit mpmath values computed from the exact
+//! doubles of their inputs (`tests/data/reference/`, `tests/data/ndf_extreme.csv`).
+
+/// Relative error allowed for Trowbridge–Reitz values: a rational function of sin²θ and cos²θ with no
+/// exponential, so only a handful of roundings (≈ 1e-15) separate it from the exact value.
+pub const REL_TOL_TROWBRIDGE_REITZ: f64 = 1e-13;
+
+/// Relative error allowed for Phong, Beckmann, Torrance–Sparrow, ABC and SGD values: each exponentiates a
+/// computed exponent E, so its error floor is |E| · ε, and |E| reaches ~1450 where D is still a normal
+/// double (1450 · 2.2e-16 ≈ 3e-13, kept under this bound with margin).
+pub const REL_TOL_NDF: f64 = 1e-12;
+
+/// Below this magnitude reference values are compared absolutely: they sit near or below the smallest
+/// normal double (2.2e-308) where relative precision is lost to gradual underflow.
+pub const ABS_FLOOR: f64 = 1e-280;
+
+/// Allowed deviation of 2π ∫₀^{π/2} D sin θ cos θ dθ from 1: near grazing the double spacing of θ
+/// (2.2e-16) limits how finely a lobe of width w is sampled to ~2.2e-16 / w relative, ≈ 2e-12 for the
+/// narrowest grazing lobes accepted (w ≈ 1e-4); 1e-10 leaves room for the quadrature's own error.
+pub const NORMALIZATION_TOL: f64 = 1e-10;
+
+/// Relative accuracy asked of the adaptive quadrature when auditing normalization: two orders of magnitude
+/// below [`NORMALIZATION_TOL`], still well above the ~1e-15 round-off of summing positive terms.
+pub const QUAD_REL_TOL: f64 = 1e-12;
+
+/// Relative error allowed for the special functions of [`crate::math::special`] against mpmath: their
+/// series, recurrences and continued fractions each lose a few ulps, ~1e-15 in practice.
+pub const REL_TOL_SPECIAL: f64 = 1e-14;
