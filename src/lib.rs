@@ -7,3 +7,4 @@ pub mod domain;
 pub mod fresnel;
 pub mod math;
 pub mod ndf;
+pub mod output;
