@@ -1,1 +1,190 @@
-//! Fresnel reflectance: placeholder.
+//! Fresnel reflectance curves F(θ), θ the angle of incidence in [0, π/2]: validated material indices
+//! and the curve enum the rest of the crate evaluates.
+//!
+//! - `exact`: the exact complex-index Fresnel of MATH.md (the normative form).
+//! - `approx`: Schlick, Lazanyi–Schlick and the normalized Lazanyi term.
+//! - `gulbrandsen`: the (r, g) ↔ (η, κ) parameterization.
+//! - `basis`: the Belcour–Bati–Barla basis, its projection and the spectrum check.
+//!
+//! Constructors validate (CONTRACTS.md "Parameter domains"); `eval` then never fails. Physical
+//! curves (exact, Schlick, Lazanyi with `a` in range, the Lazanyi term) stay within [0, 1]; the
+//! `belcour` reconstruction and the `basis` functions are tabulated approximations that may not.
+//! Pure f64 code: no I/O.
+
+pub mod approx;
+pub mod basis;
+pub mod exact;
+pub mod gulbrandsen;
+
+pub use basis::Coefficients;
+
+use crate::domain::{DomainError, check};
+
+/// Largest accepted η and κ: |η̃|² ≤ 2e300 stays below f64::MAX ≈ 1.8e308, so η̃² and every
+/// product the exact form takes (`exact`) are finite.
+pub const INDEX_MAX: f64 = 1e150;
+
+/// Smallest accepted η: η² ≥ 1e-300 stays a normal double (≥ 2.2e-308), so η̃² never underflows to 0
+/// and the r_p denominator η̃² c + w never vanishes.
+pub const ETA_MIN: f64 = 1e-150;
+
+/// How a material's complex index is given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Ior {
+    /// η̃ = η + iκ directly.
+    EtaKappa {
+        /// Real part η ∈ [1e-150, 1e150].
+        eta: f64,
+        /// Extinction coefficient κ ∈ [0, 1e150].
+        kappa: f64,
+    },
+    /// Gulbrandsen's reflectivity r ∈ [0, 1) and edge tint g ∈ [0, 1]; with `g_remap` the tint used
+    /// is ḡ = 1 − (1 − g)³.
+    Gulbrandsen {
+        /// Reflectivity r ∈ [0, 1), the normal-incidence reflectance.
+        r: f64,
+        /// Edge tint g ∈ [0, 1].
+        g: f64,
+        /// Use the notebook's remapped tint ḡ = 1 − (1 − g)³ instead of g.
+        g_remap: bool,
+    },
+}
+
+impl Ior {
+    /// η̃ = η + iκ with η ∈ [1e-150, 1e150] ([`ETA_MIN`], [`INDEX_MAX`]) and κ ∈ [0, 1e150], both finite.
+    pub fn eta_kappa(eta: f64, kappa: f64) -> Result<Ior, DomainError> {
+        let eta = check(
+            "eta",
+            eta,
+            |v| (ETA_MIN..=INDEX_MAX).contains(&v),
+            "> 0, in [1e-150, 1e150]",
+        )?;
+        let kappa = check(
+            "kappa",
+            kappa,
+            |v| (0.0..=INDEX_MAX).contains(&v),
+            "≥ 0, in [0, 1e150]",
+        )?;
+        Ok(Ior::EtaKappa { eta, kappa })
+    }
+
+    /// Gulbrandsen's (r, g) with r ∈ [0, 1) (r = 1 is singular) and g ∈ [0, 1].
+    pub fn gulbrandsen(r: f64, g: f64, g_remap: bool) -> Result<Ior, DomainError> {
+        let r = check("r", r, |v| (0.0..1.0).contains(&v), "in [0, 1)")?;
+        let g = check("g", g, |v| (0.0..=1.0).contains(&v), "in [0, 1]")?;
+        Ok(Ior::Gulbrandsen { r, g, g_remap })
+    }
+
+    /// The complex index (η, κ); Gulbrandsen's map for (r, g) (MATH.md, κ² clamped at 0).
+    pub fn complex(&self) -> (f64, f64) {
+        match *self {
+            Ior::EtaKappa { eta, kappa } => (eta, kappa),
+            Ior::Gulbrandsen { r, g, g_remap } => {
+                let g = if g_remap {
+                    gulbrandsen::remap_edge_tint(g)
+                } else {
+                    g
+                };
+                gulbrandsen::to_eta_kappa(r, g)
+            }
+        }
+    }
+}
+
+/// Where Schlick's F₀ comes from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SchlickF0 {
+    /// F₀ given directly, in [0, 1] (validated by [`Fresnel::schlick`]).
+    F0(f64),
+    /// F₀ = F(θ = 0) of the exact Fresnel for this index, ((η − 1)² + κ²)/((η + 1)² + κ²).
+    Ior(Ior),
+}
+
+/// A Fresnel reflectance curve F(θ).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Fresnel {
+    /// The exact complex-index Fresnel (`exact::reflectance`).
+    Exact(Ior),
+    /// Schlick: F₀ + (1 − F₀)(1 − cos θ)⁵.
+    Schlick(SchlickF0),
+    /// Lazanyi–Schlick: F₀ + (1 − F₀)(1 − c)⁵ − a c (1 − c)⁶; build with [`Fresnel::lazanyi`].
+    Lazanyi {
+        /// F₀ ∈ [0, 1].
+        f0: f64,
+        /// Weight of the c (1 − c)⁶ term, within `approx::lazanyi_a_range(f0)`.
+        a: f64,
+    },
+    /// The normalized Lazanyi term c (1 − c)⁶ / ((1/7)(6/7)⁶).
+    LazanyiTerm,
+    /// The four-term Belcour–Bati–Barla reconstruction of this material, with its coefficients
+    /// (computed at construction); build with [`Fresnel::belcour`].
+    Belcour(Ior, Coefficients),
+    /// Basis function b_k, k ∈ 0..=3; build with [`Fresnel::basis`].
+    Basis(usize),
+}
+
+impl Fresnel {
+    /// Schlick with a given F₀ ∈ [0, 1].
+    pub fn schlick(f0: f64) -> Result<Fresnel, DomainError> {
+        let f0 = check("f0", f0, |v| (0.0..=1.0).contains(&v), "in [0, 1]")?;
+        Ok(Fresnel::Schlick(SchlickF0::F0(f0)))
+    }
+
+    /// Lazanyi–Schlick with F₀ ∈ [0, 1] and a ∈ [−5 (1 − F₀), a_max(F₀)] (`approx::lazanyi_a_range`):
+    /// exactly the `a` for which F stays within [0, 1] at every θ (a_max(0) = 4, a_max(1) ≈ 17.65).
+    pub fn lazanyi(f0: f64, a: f64) -> Result<Fresnel, DomainError> {
+        let f0 = check("f0", f0, |v| (0.0..=1.0).contains(&v), "in [0, 1]")?;
+        let (a_min, a_max) = approx::lazanyi_a_range(f0);
+        let expected = format!("in [{a_min:?}, {a_max:?}] for f0 = {f0:?}, so that 0 ≤ F ≤ 1");
+        let a = check("a", a, |v| (a_min..=a_max).contains(&v), &expected)?;
+        Ok(Fresnel::Lazanyi { f0, a })
+    }
+
+    /// The Belcour–Bati–Barla reconstruction of `ior`, its coefficients computed now (`basis::coeffs`;
+    /// the basis itself is computed on first use).
+    pub fn belcour(ior: Ior) -> Fresnel {
+        let (eta, kappa) = ior.complex();
+        Fresnel::Belcour(ior, basis::coeffs(eta, kappa))
+    }
+
+    /// Basis function b_k, `index` ∈ 0..=3.
+    pub fn basis(index: usize) -> Result<Fresnel, DomainError> {
+        if index <= 3 {
+            Ok(Fresnel::Basis(index))
+        } else {
+            Err(DomainError::new("index", index as f64, "0, 1, 2 or 3"))
+        }
+    }
+
+    /// F(θ) at the angle of incidence θ ∈ [0, π/2]. Tabulated curves (`belcour`, `basis`) are
+    /// interpolated linearly in cos θ between the 1000 grid nodes and reproduce a node to ~1e-14.
+    pub fn eval(&self, theta: f64) -> f64 {
+        match self {
+            Fresnel::Exact(ior) => {
+                let (eta, kappa) = ior.complex();
+                exact::reflectance(theta.cos(), eta, kappa)
+            }
+            Fresnel::Schlick(SchlickF0::F0(f0)) => approx::schlick(*f0, theta),
+            Fresnel::Schlick(SchlickF0::Ior(ior)) => {
+                let (eta, kappa) = ior.complex();
+                approx::schlick(exact::reflectance(1.0, eta, kappa), theta)
+            }
+            Fresnel::Lazanyi { f0, a } => approx::lazanyi(*f0, *a, theta),
+            Fresnel::LazanyiTerm => approx::lazanyi_term(theta),
+            Fresnel::Belcour(_, coefficients) => coefficients.interpolate(theta.cos()),
+            Fresnel::Basis(k) => basis::basis().interpolate(*k, theta.cos()),
+        }
+    }
+
+    /// The curve's canonical model name: "exact", "schlick", "lazanyi", "lazanyi_term", "belcour" or "basis".
+    pub fn name(&self) -> &'static str {
+        match self {
+            Fresnel::Exact(_) => "exact",
+            Fresnel::Schlick(_) => "schlick",
+            Fresnel::Lazanyi { .. } => "lazanyi",
+            Fresnel::LazanyiTerm => "lazanyi_term",
+            Fresnel::Belcour(..) => "belcour",
+            Fresnel::Basis(_) => "basis",
+        }
+    }
+}

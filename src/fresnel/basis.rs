@@ -1,0 +1,385 @@
+//! The Belcour–Bati–Barla four-term Fresnel basis (SIGGRAPH 2020, "Bringing an Accurate Fresnel to
+//! Real-Time Rendering: a Preintegrable Decomposition"), rebuilt exactly as MATH.md steps 1–7 and
+//! the notebook `seeds/004_a7d16ebd756ecf05.txt` do, and the projection of a material onto it.
+//!
+//! - Grid: 1000 nodes c_i = numpy `linspace(0, 1, 1000)` = i·(1/999), the last one exactly 1.
+//! - Training set: 1000 materials (η = linspace(1.1, 3, 1000) overwritten row by row: 10 Gulbrandsen
+//!   conductors with g = 1, including the r′ > 1 row at k = 10 that gives η < 0, then dielectrics
+//!   1.01 … 3); each row is the normalized curve (F − F₀)/(1 − F₀) of the exact Fresnel form.
+//! - b₀ = 1, b₁ = |v₀|/max|v₀| from the SVD of the rows; b₂ = v₀/max|v₀|, b₃ = v₁/max|v₁| from the SVD
+//!   of the rows minus b₁, each flipped so its largest-magnitude entry is +1.
+//! - Critical indices: i₁ = argmax b₂ (128) and, of argmax ±b₃, the one farther from i₁ (432).
+//! - Projection (`fresnel2coeffs`): c₀ = F(1), c₁ = 1 − c₀ (0 when c₀ = 0), (c₂, c₃) solve the 2×2
+//!   system c₂ b₂[i] + c₃ b₃[i] = F(c_i) − (c₀ + c₁ b₁[i]) at the two critical nodes.
+//! - Spectrum check (step 6): singular values of the normalized curves of 100 dielectrics
+//!   η = linspace(1.01, 3, 100).
+//!
+//! The basis and the spectrum are each computed at most once per process, on first use, by nalgebra's
+//! thin SVD (Golub–Kahan bidiagonalization and implicit QR); another SVD routine moves b₁…b₃ by
+//! ~1e-14 only (reference/README.md). Tabulated values between nodes are interpolated linearly in c
+//! (see [`Basis::interpolate`]). The reconstruction and the basis functions are approximations and
+//! basis vectors, not reflectances: they may leave [0, 1] and are never clamped.
+
+use std::sync::OnceLock;
+
+use nalgebra::DMatrix;
+
+use super::exact::{one_minus_reflectance, reflectance};
+use super::gulbrandsen;
+
+/// Number of grid nodes c_i (MATH.md step 1).
+pub const GRID_SIZE: usize = 1000;
+
+/// Number of materials in the training set (MATH.md step 2).
+const TRAINING_SIZE: usize = 1000;
+
+/// Share of the training set made of Gulbrandsen conductors (the notebook's `alpha = 0.01`).
+const CONDUCTOR_SHARE: f64 = 0.01;
+
+/// The notebook's offset keeping the conductors' reflectivity away from 0: r′ = r/(1 − δ) + δ, δ = 1e-5.
+const REFLECTIVITY_OFFSET: f64 = 1.0e-5;
+
+/// Index range of the dielectric training rows: η from 1.01 to 3.0 (the notebook's literals).
+const DIELECTRIC_ETA_MIN: f64 = 1.01;
+/// Upper end of the dielectric index range, for the training rows and the spectrum check.
+const DIELECTRIC_ETA_MAX: f64 = 3.0;
+/// First index of the `linspace(1.1, 3.0, 1000)` that the notebook starts its training set from;
+/// only row 0 keeps its value.
+const TRAINING_ETA_START: f64 = 1.1;
+
+/// Number of dielectrics in the spectrum check (MATH.md step 6).
+const SPECTRUM_SIZE: usize = 100;
+
+/// numpy's `linspace(start, stop, count)` (count ≥ 2): start + i·step with step = (stop − start)/(count − 1),
+/// the last value exactly `stop`.
+fn linspace(start: f64, stop: f64, count: usize) -> Vec<f64> {
+    let step = (stop - start) / (count - 1) as f64;
+    let mut values: Vec<f64> = (0..count - 1).map(|i| i as f64 * step + start).collect();
+    values.push(stop);
+    values
+}
+
+/// The grid c_i = numpy `linspace(0, 1, 1000)`, i.e. i·fl(1/999) with c₉₉₉ = 1 exactly.
+pub fn grid() -> Vec<f64> {
+    linspace(0.0, 1.0, GRID_SIZE)
+}
+
+/// The normalized curve (F(c_i) − F₀)/(1 − F₀) of the exact Fresnel form on the grid, F₀ = F(1),
+/// evaluated as 1 − (1 − F(c_i))/(1 − F₀) with `one_minus_reflectance`: accurate to ~1e-16 even
+/// where 1 − F₀ is tiny (the training row with 1 − F₀ = 2e-5, where the direct quotient carries
+/// ~4e-11 of rounding). Identically 0 for η̃ = 1.
+///
+/// The training rows and the spectrum curves (the notebook's left spectrum panel).
+pub fn normalized_curve(cos_theta: &[f64], eta: f64, kappa: f64) -> Vec<f64> {
+    let t0 = one_minus_reflectance(1.0, eta, kappa);
+    cos_theta
+        .iter()
+        .map(|&c| 1.0 - one_minus_reflectance(c, eta, kappa) / t0)
+        .collect()
+}
+
+/// The training materials (η, κ) of MATH.md step 2, built outside user validation (row k = 10 has
+/// η ≈ −9.99995e-6, κ ≈ 1), with the notebook's operation order.
+fn training_set() -> Vec<(f64, f64)> {
+    let mut materials = vec![(TRAINING_ETA_START, 0.0)];
+    for k in 1..TRAINING_SIZE {
+        let r = k as f64 / TRAINING_SIZE as f64;
+        materials.push(if r <= CONDUCTOR_SHARE {
+            let r = r / CONDUCTOR_SHARE / (1.0 - REFLECTIVITY_OFFSET) + REFLECTIVITY_OFFSET;
+            gulbrandsen::to_eta_kappa(r, 1.0)
+        } else {
+            let r = (r - CONDUCTOR_SHARE) / (1.0 - CONDUCTOR_SHARE);
+            (
+                DIELECTRIC_ETA_MIN + (DIELECTRIC_ETA_MAX - DIELECTRIC_ETA_MIN) * r,
+                0.0,
+            )
+        });
+    }
+    materials
+}
+
+/// Stacks the normalized curves of `materials` as rows of a matrix.
+fn curve_matrix(cos_theta: &[f64], materials: &[(f64, f64)]) -> DMatrix<f64> {
+    let rows: Vec<Vec<f64>> = materials
+        .iter()
+        .map(|&(eta, kappa)| normalized_curve(cos_theta, eta, kappa))
+        .collect();
+    DMatrix::from_fn(rows.len(), cos_theta.len(), |i, j| rows[i][j])
+}
+
+/// The first `count` right singular vectors of `matrix`, by decreasing singular value.
+fn right_singular_vectors(matrix: DMatrix<f64>, count: usize) -> Vec<Vec<f64>> {
+    let svd = matrix.svd(false, true);
+    let v_t = svd.v_t.expect("the SVD was asked for V");
+    (0..count)
+        .map(|k| v_t.row(k).iter().copied().collect())
+        .collect()
+}
+
+/// `vector / max|vector|`, then negated if its largest-magnitude entry is negative, so that entry is +1.
+fn normalize_to_positive_peak(vector: &[f64]) -> Vec<f64> {
+    let peak = vector
+        .iter()
+        .copied()
+        .fold(0.0, |m: f64, v| if v.abs() > m.abs() { v } else { m });
+    let scale = peak.abs();
+    let scaled = vector.iter().map(|v| v / scale);
+    if peak < 0.0 {
+        scaled.map(|v| -v).collect()
+    } else {
+        scaled.collect()
+    }
+}
+
+/// numpy's `argmax`: the first index of the largest value.
+fn argmax(values: impl Iterator<Item = f64>) -> usize {
+    let mut best = (0, f64::NEG_INFINITY);
+    for (i, v) in values.enumerate() {
+        if v > best.1 {
+            best = (i, v);
+        }
+    }
+    best.0
+}
+
+/// The four basis functions on the grid and the two critical indices.
+#[derive(Debug, Clone)]
+pub struct Basis {
+    cos_theta: Vec<f64>,
+    functions: [Vec<f64>; 4],
+    critical: [usize; 2],
+}
+
+static BASIS: OnceLock<Basis> = OnceLock::new();
+
+/// The basis of MATH.md steps 1–4, computed on first call (two 1000 × 1000 SVDs) and shared.
+pub fn basis() -> &'static Basis {
+    BASIS.get_or_init(Basis::compute)
+}
+
+impl Basis {
+    fn compute() -> Basis {
+        let cos_theta = grid();
+        let curves = curve_matrix(&cos_theta, &training_set());
+        let residuals = curves.clone();
+        let v = right_singular_vectors(curves, 1);
+        let b1 = normalize_to_positive_peak(&v[0].iter().map(|x| x.abs()).collect::<Vec<f64>>());
+        let residuals = DMatrix::from_fn(residuals.nrows(), residuals.ncols(), |i, j| {
+            residuals[(i, j)] - b1[j]
+        });
+        let v = right_singular_vectors(residuals, 2);
+        let b2 = normalize_to_positive_peak(&v[0]);
+        let b3 = normalize_to_positive_peak(&v[1]);
+        let i1 = argmax(b2.iter().copied());
+        let i_plus = argmax(b3.iter().copied());
+        let i_minus = argmax(b3.iter().map(|v| -v));
+        let i2 = if i_plus.abs_diff(i1) > i_minus.abs_diff(i1) {
+            i_plus
+        } else {
+            i_minus
+        };
+        Basis {
+            cos_theta,
+            functions: [vec![1.0; GRID_SIZE], b1, b2, b3],
+            critical: [i1, i2],
+        }
+    }
+
+    /// The grid nodes c_i = numpy `linspace(0, 1, 1000)`.
+    pub fn cos_theta(&self) -> &[f64] {
+        &self.cos_theta
+    }
+
+    /// Basis function b_k (k ∈ 0..=3) at the grid nodes. Panics for k > 3.
+    pub fn function(&self, k: usize) -> &[f64] {
+        &self.functions[k]
+    }
+
+    /// The critical indices [i₁, i₂] of MATH.md step 4: [128, 432].
+    pub fn critical_indices(&self) -> [usize; 2] {
+        self.critical
+    }
+
+    /// The interval [c_i, c_{i+1}] holding `cos_theta` and the weight t = (c − c_i)/(c_{i+1} − c_i).
+    ///
+    /// The weight uses the stored node values, so c = c_i gives t = 0 exactly; both differences are
+    /// exact for i ≥ 1 (Sterbenz). A cos θ that misses its node by δ (cos(arccos c_i) ≠ c_i, |δ| of a
+    /// few ulps) lands in either neighbouring interval, and the continuity of the interpolant bounds
+    /// the error by |δ| · max|b′| ≲ 4.4e-16 · 42 ≈ 2e-14 (the steepest segment is b₃ between c₀, c₁).
+    fn locate(&self, cos_theta: f64) -> (usize, f64) {
+        let last = GRID_SIZE - 1;
+        // A negative or NaN product saturates to 0 in the cast.
+        let i = ((cos_theta * last as f64).floor() as usize).min(last - 1);
+        let c = &self.cos_theta;
+        (i, (cos_theta - c[i]) / (c[i + 1] - c[i]))
+    }
+
+    /// b_k at an arbitrary c = cos θ ∈ [0, 1] by linear interpolation in c between the grid nodes:
+    /// (1 − t) b_k[i] + t b_k[i+1]. Equals the node value exactly at c = c_i. Panics for k > 3.
+    pub fn interpolate(&self, k: usize, cos_theta: f64) -> f64 {
+        let (i, t) = self.locate(cos_theta);
+        let b = &self.functions[k];
+        (1.0 - t) * b[i] + t * b[i + 1]
+    }
+}
+
+/// The four coefficients of a material in the basis: F̂ = c₀ + c₁ b₁ + c₂ b₂ + c₃ b₃.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Coefficients {
+    /// c₀ = F(θ = 0), the normal-incidence reflectance.
+    pub c0: f64,
+    /// c₁ = 1 − c₀ (0 when c₀ = 0).
+    pub c1: f64,
+    /// Weight of b₂, fitted at the critical nodes.
+    pub c2: f64,
+    /// Weight of b₃, fitted at the critical nodes.
+    pub c3: f64,
+}
+
+/// The notebook's `fresnel2coeffs` (MATH.md step 5) for the exact Fresnel of η̃ = η + iκ:
+/// c₀ = F(1), c₁ = 1 − c₀ (0 when c₀ = 0), and (c₂, c₃) from the 2×2 system at the critical nodes,
+/// solved by Cramer's rule. Computes the basis on first use.
+pub fn coeffs(eta: f64, kappa: f64) -> Coefficients {
+    let basis = basis();
+    let [b1, b2, b3] = [basis.function(1), basis.function(2), basis.function(3)];
+    let [i1, i2] = basis.critical;
+    let c0 = reflectance(1.0, eta, kappa);
+    let c1 = if c0 != 0.0 { 1.0 - c0 } else { 0.0 };
+    let df1 = reflectance(basis.cos_theta[i1], eta, kappa) - (c0 + c1 * b1[i1]);
+    let df2 = reflectance(basis.cos_theta[i2], eta, kappa) - (c0 + c1 * b1[i2]);
+    let det = b2[i1] * b3[i2] - b3[i1] * b2[i2];
+    let c2 = (df1 * b3[i2] - df2 * b3[i1]) / det;
+    let c3 = (b2[i1] * df2 - b2[i2] * df1) / det;
+    Coefficients { c0, c1, c2, c3 }
+}
+
+impl Coefficients {
+    /// The reconstruction from the tabulated values b0..b3[i] (the notebook's evaluation order).
+    fn combine(&self, b: [f64; 4]) -> f64 {
+        self.c0 * b[0] + self.c1 * b[1] + self.c2 * b[2] + self.c3 * b[3]
+    }
+
+    /// The reconstruction F̂_i = c₀ + c₁ b₁[i] + c₂ b₂[i] + c₃ b₃[i] at the 1000 grid nodes.
+    pub fn reconstruction(&self) -> Vec<f64> {
+        let f = &basis().functions;
+        (0..GRID_SIZE)
+            .map(|i| self.combine([f[0][i], f[1][i], f[2][i], f[3][i]]))
+            .collect()
+    }
+
+    /// F̂ at an arbitrary c = cos θ ∈ [0, 1], interpolated linearly in c between the grid nodes with
+    /// the weights of [`Basis::interpolate`]; equals F̂_i exactly at c = c_i.
+    pub fn interpolate(&self, cos_theta: f64) -> f64 {
+        let basis = basis();
+        let (i, t) = basis.locate(cos_theta);
+        let f = &basis.functions;
+        let node = |j: usize| self.combine([f[0][j], f[1][j], f[2][j], f[3][j]]);
+        (1.0 - t) * node(i) + t * node(i + 1)
+    }
+
+    /// `l2_grid` = ‖F − F̂‖₂ over the 1000 grid nodes, F the exact Fresnel of η̃ = η + iκ (the notebook's L2).
+    pub fn l2_grid(&self, eta: f64, kappa: f64) -> f64 {
+        let basis = basis();
+        let reconstruction = self.reconstruction();
+        let sum_sq: f64 = basis
+            .cos_theta
+            .iter()
+            .zip(&reconstruction)
+            .map(|(&c, f_hat)| (reflectance(c, eta, kappa) - f_hat).powi(2))
+            .sum();
+        sum_sq.sqrt()
+    }
+}
+
+/// The spectrum figure of MATH.md step 6.
+#[derive(Debug, Clone)]
+pub struct Spectrum {
+    /// The dielectric indices η = linspace(1.01, 3, 100), κ = 0.
+    pub etas: Vec<f64>,
+    /// Singular values s_k of their normalized curves on the grid, decreasing.
+    pub singular_values: Vec<f64>,
+    /// s_k / Σ s (normalized by the sum, not the sum of squares).
+    pub normalized: Vec<f64>,
+    /// Running sums of `normalized`: 0.91356, 0.97961, 0.99477, …
+    pub cumulative: Vec<f64>,
+}
+
+static SPECTRUM: OnceLock<Spectrum> = OnceLock::new();
+
+/// The spectrum of MATH.md step 6, computed on first call (one 100 × 1000 SVD) and shared.
+pub fn spectrum() -> &'static Spectrum {
+    SPECTRUM.get_or_init(|| {
+        let etas = linspace(DIELECTRIC_ETA_MIN, DIELECTRIC_ETA_MAX, SPECTRUM_SIZE);
+        let materials: Vec<(f64, f64)> = etas.iter().map(|&eta| (eta, 0.0)).collect();
+        let singular_values: Vec<f64> = curve_matrix(&grid(), &materials)
+            .singular_values()
+            .iter()
+            .copied()
+            .collect();
+        let total: f64 = singular_values.iter().sum();
+        let normalized: Vec<f64> = singular_values.iter().map(|s| s / total).collect();
+        let cumulative = normalized
+            .iter()
+            .scan(0.0, |sum, s| {
+                *sum += s;
+                Some(*sum)
+            })
+            .collect();
+        Spectrum {
+            etas,
+            singular_values,
+            normalized,
+            cumulative,
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn grid_matches_numpy_linspace() {
+        let c = grid();
+        assert_eq!(c.len(), GRID_SIZE);
+        assert_eq!((c[0], c[1], c[999]), (0.0, 0.001001001001001001, 1.0));
+    }
+
+    #[test]
+    fn normalized_curve_is_accurate_where_one_minus_f0_is_tiny() {
+        // The row k = 10 of the training set (1 − F₀ = 2e-5) at nodes 1, 128, 432, 900;
+        // mpmath at 50 digits from these exact doubles.
+        let (eta, kappa) = (-9.999950000513731e-6, 0.9999999999472646);
+        let c = grid();
+        let row = normalized_curve(&c, eta, kappa);
+        let expected = [
+            (1, 0.99858435703187033149),
+            (128, 0.81954328107770285278),
+            (432, 0.41773762323637172988),
+            (900, 0.017903384756318708154),
+        ];
+        for (i, value) in expected {
+            assert!(
+                (row[i] - value).abs() < 1e-15,
+                "node {i}: {} vs {value}",
+                row[i]
+            );
+        }
+    }
+
+    #[test]
+    fn training_set_keeps_the_quirky_row() {
+        let materials = training_set();
+        assert_eq!(materials[0], (1.1, 0.0));
+        let (eta, kappa) = materials[10];
+        assert!(
+            (eta + 9.99995e-6).abs() < 1e-11 && (kappa - 1.0).abs() < 1e-4,
+            "{eta} {kappa}"
+        );
+        let (eta, kappa) = materials[11];
+        assert!(
+            kappa == 0.0 && eta > DIELECTRIC_ETA_MIN && eta < 1.02,
+            "{eta} {kappa}"
+        );
+    }
+}

@@ -1,0 +1,189 @@
+//! Exact Fresnel reflectance of a smooth interface, from a medium of index 1 onto η̃ = η + iκ.
+//!
+//! Formula (MATH.md "Fresnel", the normative form): with c = cos θ and the principal complex root
+//! w = √(η̃² − 1 + c²) = √(η̃² − sin²θ) (Re w ≥ 0; w = η̃ cos θ_t),
+//! r_s = (c − w)/(c + w),   r_p = (η̃² c − w)/(η̃² c + w),   F = (|r_s|² + |r_p|²)/2.
+//!
+//! Domain: any (η, κ) for which η̃² neither overflows nor underflows (see `Ior` in `mod.rs`); the
+//! basis training set also calls it with η < 0 (MATH.md step 2), where the principal root is what
+//! makes F₀ = 0.99998. Behaviour: F(θ = 0) = ((η − 1)² + κ²)/((η + 1)² + κ²), F → 1 at θ → π/2.
+//!
+//! Stable forms and why:
+//! - Both numerators cancel near η̃ = 1. Multiplying through by the conjugate denominators, with
+//!   a = η̃² − 1 = (η̃ − 1)(η̃ + 1): r_s = −a/(c + w)², r_p = a (η̃² c² − sin²θ)/(η̃² c + w)²
+//!   (η̃² c² − sin²θ is MATH.md's c²(η̃² + 1) − 1). These are used everywhere: the denominators
+//!   never cancel (Re w ≥ 0, c ≥ 0), so they are at least as accurate as the raw ratios.
+//! - sin²θ = (1 − c)(1 + c) rather than 1 − c², and w² = η̃² − sin²θ rather than a + c², so that a
+//!   tiny η̃² is not lost against 1 (it keeps |r_p| = 1 at normal incidence for η → 0).
+//! - Only moduli are formed, each as a ratio of hypot-based norms: no complex division, and no
+//!   overflow for |η̃| up to 1e150.
+//! - η̃ = 1 exactly gives F ≡ 0 (the conjugate form is 0/0 at c = 0): a guard.
+//! - κ = 0 with η² ≤ sin²θ is total internal reflection: w is purely imaginary, r_s and r_p are
+//!   ratios of complex conjugates and F = 1 exactly: a guard.
+//! - Rounding can put F an ulp above 1 near grazing incidence; the result is clamped to ≤ 1.
+//! - 1 − F is also offered without cancellation (`one_minus_reflectance`): the basis training set
+//!   divides by 1 − F₀ = 2e-5 for one material, which would amplify the rounding of F 5e4-fold.
+
+use nalgebra::Complex;
+
+/// Exact unpolarized reflectance F(c; η, κ) of MATH.md's normative form, in [0, 1].
+///
+/// `cos_theta` = c = cos θ ∈ [0, 1] (θ the angle of incidence). `eta`, `kappa`: the complex index
+/// η̃ = η + iκ of the medium entered from index 1. Exactly 0 for η̃ = 1, exactly 1 under total
+/// internal reflection (κ = 0, η ≤ sin θ).
+pub fn reflectance(cos_theta: f64, eta: f64, kappa: f64) -> f64 {
+    match Interface::new(cos_theta, eta, kappa) {
+        Interface::Index1 => 0.0,
+        Interface::TotalInternalReflection => 1.0,
+        Interface::General {
+            c,
+            sin2_theta,
+            eta2,
+            w,
+        } => {
+            let eta_c = Complex::new(eta, kappa);
+            // a = η̃² − 1 without cancellation near η̃ = 1.
+            let abs_a = ((eta_c - 1.0) * (eta_c + 1.0)).norm();
+            let abs_s_den = (w + c).norm();
+            let r_s = abs_a / abs_s_den / abs_s_den;
+            let abs_p_den = (eta2 * c + w).norm();
+            let r_p = (abs_a / abs_p_den) * ((eta2 * (c * c) - sin2_theta).norm() / abs_p_den);
+            (0.5 * (r_s * r_s + r_p * r_p)).min(1.0)
+        }
+    }
+}
+
+/// 1 − F(c; η, κ) without cancellation, in [0, 1]: from |A + B|² − |A − B|² = 4 Re(A B̄),
+/// 1 − |r_s|² = 4c Re w / |c + w|² and 1 − |r_p|² = 4c Re(η̃² w̄) / |η̃² c + w|², so
+/// 1 − F = 2c [Re w / |c + w|² + Re(η̃² w̄) / |η̃² c + w|²].
+///
+/// Accurate to a few ulps relative where F is close to 1 (conductors, grazing incidence), where
+/// 1 − `reflectance` keeps only the absolute accuracy of F. Same domain and guards as [`reflectance`].
+pub fn one_minus_reflectance(cos_theta: f64, eta: f64, kappa: f64) -> f64 {
+    match Interface::new(cos_theta, eta, kappa) {
+        Interface::Index1 => 1.0,
+        Interface::TotalInternalReflection => 0.0,
+        Interface::General { c, eta2, w, .. } => {
+            let abs_s_den = (w + c).norm();
+            let abs_p_den = (eta2 * c + w).norm();
+            // Each factor divided by |denominator| separately: no overflow for |η̃| up to 1e150.
+            let t_s = w.re / abs_s_den / abs_s_den;
+            let t_p = ((eta2 / abs_p_den) * (w.conj() / abs_p_den)).re;
+            (2.0 * c * (t_s + t_p)).clamp(0.0, 1.0)
+        }
+    }
+}
+
+/// The cases of the interface at one angle, with the shared quantities of the general case.
+enum Interface {
+    /// η̃ = 1: no interface, F ≡ 0.
+    Index1,
+    /// κ = 0 and η² ≤ sin²θ: w is purely imaginary and F = 1 exactly.
+    TotalInternalReflection,
+    /// c = cos θ, sin²θ = (1 − c)(1 + c), η̃² and the principal root w = √(η̃² − sin²θ).
+    General {
+        c: f64,
+        sin2_theta: f64,
+        eta2: Complex<f64>,
+        w: Complex<f64>,
+    },
+}
+
+impl Interface {
+    fn new(cos_theta: f64, eta: f64, kappa: f64) -> Interface {
+        if eta == 1.0 && kappa == 0.0 {
+            return Interface::Index1;
+        }
+        let c = cos_theta;
+        let sin2_theta = (1.0 - c) * (1.0 + c);
+        let eta_c = Complex::new(eta, kappa);
+        let eta2 = eta_c * eta_c;
+        let w2 = eta2 - sin2_theta;
+        if kappa == 0.0 && w2.re <= 0.0 {
+            return Interface::TotalInternalReflection;
+        }
+        Interface::General {
+            c,
+            sin2_theta,
+            eta2,
+            w: principal_sqrt(w2),
+        }
+    }
+}
+
+/// Principal square root (Re ≥ 0, branch cut on the negative real axis, continuous from the side
+/// of the sign of the imaginary zero), by Kahan's formula: t = √((|x| + |z|)/2), then
+/// √z = t + i y/(2t) for x ≥ 0 and |y|/(2t) ± i t for x < 0. No cancellation, unlike the polar
+/// form, and accurate to a few ulps in both parts.
+fn principal_sqrt(z: Complex<f64>) -> Complex<f64> {
+    if z.re == 0.0 && z.im == 0.0 {
+        return z;
+    }
+    let t = ((z.re.abs() + z.norm()) / 2.0).sqrt();
+    if z.re >= 0.0 {
+        Complex::new(t, z.im / (2.0 * t))
+    } else {
+        Complex::new(z.im.abs() / (2.0 * t), t.copysign(z.im))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn principal_sqrt_matches_the_principal_branch() {
+        let cases = [
+            (4.0, 0.0),
+            (-4.0, 0.0),
+            (-4.0, -0.0),
+            (3.0, 4.0),
+            (-3.0, 4.0),
+            (-3.0, -4.0),
+        ];
+        for (re, im) in cases {
+            let z = Complex::new(re, im);
+            let root = principal_sqrt(z);
+            assert!(root.re >= 0.0, "{z}: {root}");
+            assert!(
+                (root * root - z).norm() <= 4.0 * f64::EPSILON * z.norm(),
+                "{z}: {root}"
+            );
+        }
+        assert_eq!(
+            principal_sqrt(Complex::new(-4.0, -0.0)),
+            Complex::new(0.0, -2.0)
+        );
+    }
+
+    #[test]
+    fn one_minus_reflectance_is_the_complement() {
+        for (eta, kappa) in [
+            (1.5, 0.0),
+            (0.29, 2.86),
+            (1.9, 6.79),
+            (0.5, 0.0),
+            (1.0, 0.0),
+            (-9.99995e-6, 1.0),
+        ] {
+            for c in [0.0, 0.1, 0.5, 0.9, 1.0] {
+                let (f, t) = (
+                    reflectance(c, eta, kappa),
+                    one_minus_reflectance(c, eta, kappa),
+                );
+                // Both are accurate to a few ulps of 1.
+                assert!(
+                    (f + t - 1.0).abs() < 8.0 * f64::EPSILON,
+                    "η̃ = {eta} + {kappa}i, c = {c}: {f} + {t}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn quirky_training_material_keeps_the_principal_branch() {
+        // MATH.md step 2: η ≈ −9.99995e-6, κ ≈ 1 gives F₀ = 0.99998 with the principal root.
+        let f0 = reflectance(1.0, -9.99995e-6, 1.0);
+        assert!((f0 - 0.99998).abs() < 1e-6, "{f0}");
+    }
+}

@@ -1,0 +1,224 @@
+//! Fresnel against the reference files of tests/data/reference (see its README.md): exact, Gulbrandsen
+//! and Schlick curves from mpmath at 50 digits, and the Belcour–Bati–Barla basis, coefficients and
+//! spectrum from numpy float64 following the notebook's procedure.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use ndfplot::fresnel::{Fresnel, Ior, SchlickF0, basis};
+
+/// Fresnel curves, relative (reference/README.md: achievable 1e-15 … 1e-13 with the stable forms).
+const CURVE_REL_TOL: f64 = 1e-13;
+/// Below this |reference| the comparison is absolute (reference/README.md).
+const ABSOLUTE_BELOW: f64 = 1e-280;
+/// b₀, b₁, c₀, c₁ and the normalized spectrum, absolute: a different SVD routine moves them by
+/// ~2e-14 (reference/README.md).
+const BELCOUR_ABS_TOL: f64 = 1e-12;
+/// b₂, b₃ and what is fitted on them (c₂, c₃, `l2`), absolute. Training row k = 10 divides by
+/// 1 − F₀ = 2e-5: numpy's direct (F − F₀)/(1 − F₀) carries ~4e-11 of rounding there (checked against
+/// mpmath), which moves its b₂ by ~3e-12 and b₃ by ~2e-11, while ndfplot evaluates that row to 1e-16
+/// (`basis::normalized_curve`). Measured: b₂ 3.3e-12, b₃ 1.7e-11, c₂/c₃ 3.2e-13, `l2` 1.1e-12.
+const TRAINING_NOISE_TOL: f64 = 5e-11;
+/// Singular values, absolute in units of s₀: values below ~1e-13 s₀ are noise (reference/README.md).
+const SINGULAR_VALUE_TOL: f64 = 1e-12;
+/// Node reproduction of the interpolated tabulated curves (CONTRACTS.md `ndfplot eval`).
+const NODE_TOL: f64 = 1e-13;
+
+fn reference(name: &str) -> Vec<csv::StringRecord> {
+    let path: PathBuf = [
+        env!("CARGO_MANIFEST_DIR"),
+        "tests",
+        "data",
+        "reference",
+        name,
+    ]
+    .iter()
+    .collect();
+    let mut reader =
+        csv::Reader::from_path(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    reader.records().map(|r| r.expect("a CSV record")).collect()
+}
+
+fn number(record: &csv::StringRecord, column: usize) -> f64 {
+    record[column]
+        .parse()
+        .unwrap_or_else(|e| panic!("{record:?}[{column}]: {e}"))
+}
+
+/// Maps a reference `curve_json` onto the Fresnel model.
+fn curve(json: &str) -> Fresnel {
+    let value: serde_json::Value = serde_json::from_str(json).expect("curve JSON");
+    let param = |key: &str| value.get(key).and_then(serde_json::Value::as_f64);
+    let ior = match (param("eta"), param("kappa"), param("r"), param("g")) {
+        (Some(eta), Some(kappa), None, None) => Ior::eta_kappa(eta, kappa),
+        (None, None, Some(r), Some(g)) => Ior::gulbrandsen(r, g, false),
+        _ => panic!("unexpected parameters in {json}"),
+    }
+    .expect("a valid index");
+    match value["fresnel"].as_str() {
+        Some("exact") => Fresnel::Exact(ior),
+        Some("schlick") => Fresnel::Schlick(SchlickF0::Ior(ior)),
+        other => panic!("unexpected model {other:?} in {json}"),
+    }
+}
+
+fn error(value: f64, reference: f64) -> f64 {
+    let abs = (value - reference).abs();
+    if reference.abs() > ABSOLUTE_BELOW {
+        abs / reference.abs()
+    } else {
+        abs
+    }
+}
+
+#[test]
+fn visible_curves_match_mpmath() {
+    let rows = reference("fresnel_visible.csv");
+    assert_eq!(rows.len(), 144);
+    let mut worst = (0.0, String::new());
+    for row in &rows {
+        let (theta, expected) = (number(row, 2), number(row, 3));
+        let value = curve(&row[1]).eval(theta);
+        let err = error(value, expected);
+        assert!(
+            err <= CURVE_REL_TOL,
+            "{}: θ = {theta}: {value} vs {expected} (error {err:e})",
+            &row[0]
+        );
+        if err >= worst.0 {
+            worst = (err, row[0].to_string());
+        }
+    }
+    println!(
+        "fresnel_visible: max relative error {:e} ({})",
+        worst.0, worst.1
+    );
+}
+
+#[test]
+fn basis_matches_numpy_at_every_node() {
+    let start = Instant::now();
+    let basis = basis::basis();
+    println!("basis (two 1000 × 1000 SVDs): {:?}", start.elapsed());
+    let rows = reference("belcour_basis.csv");
+    assert_eq!(rows.len(), basis::GRID_SIZE);
+    let mut worst = [0.0_f64; 4];
+    for (i, row) in rows.iter().enumerate() {
+        assert_eq!(number(row, 0), i as f64);
+        assert_eq!(basis.cos_theta()[i], number(row, 1), "c_{i}");
+        for (k, worst_k) in worst.iter_mut().enumerate() {
+            let err = (basis.function(k)[i] - number(row, 3 + k)).abs();
+            let tol = if k < 2 {
+                BELCOUR_ABS_TOL
+            } else {
+                TRAINING_NOISE_TOL
+            };
+            assert!(
+                err <= tol,
+                "b{k}[{i}]: {} vs {} ({err:e})",
+                basis.function(k)[i],
+                &row[3 + k]
+            );
+            *worst_k = worst_k.max(err);
+        }
+    }
+    assert_eq!(basis.critical_indices(), [128, 432]);
+    println!("belcour_basis: max abs error b0..b3 {worst:?}");
+}
+
+#[test]
+fn tabulated_curves_reproduce_their_nodes() {
+    let basis = basis::basis();
+    let gold = Fresnel::belcour(Ior::eta_kappa(0.29, 2.86).unwrap());
+    let Fresnel::Belcour(_, coefficients) = gold else {
+        unreachable!()
+    };
+    let nodes = coefficients.reconstruction();
+    let mut worst = 0.0_f64;
+    for row in reference("belcour_basis.csv") {
+        let i = number(&row, 0) as usize;
+        // The reference θ (numpy's arccos) and Rust's own acos of the node.
+        for theta in [number(&row, 2), basis.cos_theta()[i].acos()] {
+            for k in 0..4 {
+                let err = (Fresnel::basis(k).unwrap().eval(theta) - basis.function(k)[i]).abs();
+                assert!(err <= NODE_TOL, "b{k} at node {i}: {err:e}");
+                worst = worst.max(err);
+            }
+            let err = (gold.eval(theta) - nodes[i]).abs();
+            assert!(err <= NODE_TOL, "belcour(Au) at node {i}: {err:e}");
+            worst = worst.max(err);
+        }
+        // Exactly at the node in c.
+        for k in 0..4 {
+            assert_eq!(
+                basis.interpolate(k, basis.cos_theta()[i]),
+                basis.function(k)[i]
+            );
+        }
+        assert_eq!(coefficients.interpolate(basis.cos_theta()[i]), nodes[i]);
+    }
+    println!("node reproduction at θ = arccos c_i: max abs error {worst:e}");
+}
+
+#[test]
+fn coefficients_and_l2_match_numpy() {
+    let mut worst = [0.0_f64; 5];
+    for row in reference("belcour_materials.csv") {
+        let (eta, kappa) = (number(&row, 1), number(&row, 2));
+        let coefficients = basis::coeffs(eta, kappa);
+        let l2 = coefficients.l2_grid(eta, kappa);
+        let values = [
+            coefficients.c0,
+            coefficients.c1,
+            coefficients.c2,
+            coefficients.c3,
+            l2,
+        ];
+        for (j, (value, worst_j)) in values.iter().zip(worst.iter_mut()).enumerate() {
+            let err = (value - number(&row, 3 + j)).abs();
+            let tol = if j < 2 {
+                BELCOUR_ABS_TOL
+            } else {
+                TRAINING_NOISE_TOL
+            };
+            assert!(
+                err <= tol,
+                "{}: column {j}: {value} vs {} ({err:e})",
+                &row[0],
+                &row[3 + j]
+            );
+            *worst_j = worst_j.max(err);
+        }
+    }
+    println!("belcour_materials: max abs error c0, c1, c2, c3, l2 {worst:?}");
+}
+
+#[test]
+fn spectrum_matches_numpy() {
+    let start = Instant::now();
+    let spectrum = basis::spectrum();
+    println!("spectrum (one 100 × 1000 SVD): {:?}", start.elapsed());
+    let rows = reference("fresnel_spectrum.csv");
+    assert_eq!(rows.len(), spectrum.singular_values.len());
+    let s0 = spectrum.singular_values[0];
+    let mut worst = [0.0_f64; 3];
+    for (k, row) in rows.iter().enumerate() {
+        let errors = [
+            (spectrum.singular_values[k] - number(row, 1)).abs() / s0,
+            (spectrum.normalized[k] - number(row, 2)).abs(),
+            (spectrum.cumulative[k] - number(row, 3)).abs(),
+        ];
+        let tolerances = [SINGULAR_VALUE_TOL, BELCOUR_ABS_TOL, BELCOUR_ABS_TOL];
+        for (j, (err, tol)) in errors.iter().zip(tolerances).enumerate() {
+            assert!(
+                *err <= tol,
+                "spectrum row {k}, column {}: error {err:e}",
+                j + 1
+            );
+            worst[j] = worst[j].max(*err);
+        }
+    }
+    // The notebook's first figure: 99% of Σs is reached with the third singular value.
+    assert!(spectrum.cumulative[1] < 0.99 && spectrum.cumulative[2] > 0.99);
+    println!("fresnel_spectrum: max error s/s0, normalized, cumulative {worst:?}");
+}
