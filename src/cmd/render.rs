@@ -1,0 +1,221 @@
+//! `ndfplot render`: scene specs (or the built-in catalogue) to SVG, PNG and CSV files.
+//!
+//! Every spec is read and validated before anything is evaluated or written, so a bad spec
+//! writes no file at all; then the plan is evaluated in parallel and each output is written
+//! atomically.
+
+use crate::catalogue::CATALOGUE;
+use crate::error::{Error, Result};
+use crate::input::{parse_json, read_file};
+use crate::output::{csv::figure_csv, plot, write};
+use crate::plan::plan;
+use crate::problem::{Problem, Problems};
+use crate::sample::{Points, evaluate_all};
+use crate::scene::{self, Scene};
+use crate::series::{Figure, Panel, Series};
+use rayon::prelude::*;
+use std::path::{Path, PathBuf};
+
+/// An output format of `render`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Format {
+    /// Scalable vector graphics with text kept as text.
+    Svg,
+    /// Raster image with text drawn from the embedded font.
+    Png,
+    /// The sampled points, long format (CONTRACTS.md).
+    Csv,
+}
+
+impl Format {
+    /// Every format, in output order.
+    pub const ALL: [Format; 3] = [Format::Svg, Format::Png, Format::Csv];
+
+    /// File extension.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Format::Svg => "svg",
+            Format::Png => "png",
+            Format::Csv => "csv",
+        }
+    }
+
+    /// Parses a comma-separated list such as `svg,csv`.
+    pub fn parse_list(text: &str) -> Result<Vec<Format>> {
+        let mut formats = Vec::new();
+        for word in text.split(',').map(str::trim) {
+            let format = Format::ALL.into_iter().find(|f| f.extension() == word).ok_or_else(|| {
+                Error::Usage(format!("--format: unknown format (got \"{word}\", expected a comma list of svg, png, csv)"))
+            })?;
+            if !formats.contains(&format) {
+                formats.push(format);
+            }
+        }
+        formats.sort();
+        Ok(formats)
+    }
+}
+
+/// Command-line overrides of every scene's canvas.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct CanvasOverride {
+    /// Figure width in CSS pixels; the height follows proportionally unless also given.
+    pub width: Option<f64>,
+    /// Figure height in CSS pixels.
+    pub height: Option<f64>,
+    /// PNG pixels per CSS pixel.
+    pub png_scale: Option<f64>,
+    /// Base font size in CSS pixels.
+    pub font_px: Option<f64>,
+}
+
+/// What to render and where.
+#[derive(Debug, Clone)]
+pub struct RenderOptions {
+    /// Spec files or folders; empty for the built-in catalogue.
+    pub paths: Vec<PathBuf>,
+    /// Output folder.
+    pub out: PathBuf,
+    /// Formats to produce.
+    pub formats: Vec<Format>,
+    /// Canvas overrides.
+    pub canvas: CanvasOverride,
+}
+
+/// A spec's source name and text.
+type Source = (String, String);
+
+/// The spec sources named by `paths` (files, or folders whose `*.json` are taken sorted by name),
+/// or the built-in catalogue when `paths` is empty.
+pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
+    if paths.is_empty() {
+        return Ok(CATALOGUE.iter().map(|(name, text)| (format!("configs/{name}"), text.to_string())).collect());
+    }
+    let mut sources = Vec::new();
+    for path in paths {
+        if path.is_dir() {
+            let entries = std::fs::read_dir(path).map_err(|e| Error::io(path.display().to_string(), e))?;
+            let mut files: Vec<PathBuf> = entries
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "json") && p.is_file())
+                .collect();
+            files.sort();
+            for file in files {
+                let name = file.display().to_string();
+                sources.push((name.clone(), read_file(&name)?));
+            }
+        } else {
+            let name = path.display().to_string();
+            sources.push((name.clone(), read_file(&name)?));
+        }
+    }
+    Ok(sources)
+}
+
+/// Parses and validates every source; all problems of all sources are reported together, and
+/// duplicate ids across sources are problems too.
+pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Result<Vec<Scene>> {
+    let mut scenes = Vec::new();
+    let mut failures = Vec::new();
+    for (name, text) in sources {
+        let parsed = parse_json(text, name).and_then(|node| {
+            scene::parse(&node).map_err(|list| Problems { source: name.clone(), list })
+        });
+        match parsed.and_then(|s| apply_override(s, canvas, name)) {
+            Ok(scene) => {
+                if let Some(first) = scenes.iter().position(|(_, other): &(String, Scene)| other.id == scene.id) {
+                    failures.push(Problems {
+                        source: name.clone(),
+                        list: vec![Problem::new("id", format!("duplicate id (got \"{}\", already used by {})", scene.id, scenes[first].0))],
+                    });
+                } else {
+                    scenes.push((name.clone(), scene));
+                }
+            }
+            Err(problems) => failures.push(problems),
+        }
+    }
+    if failures.is_empty() { Ok(scenes.into_iter().map(|(_, s)| s).collect()) } else { Err(Error::Input(failures)) }
+}
+
+fn apply_override(mut scene: Scene, over: CanvasOverride, source: &str) -> std::result::Result<Scene, Problems> {
+    let canvas = &mut scene.canvas;
+    let (w, h) = (f64::from(canvas.width_px), f64::from(canvas.height_px));
+    let (width, height) = match (over.width, over.height) {
+        (Some(width), None) => (width, h * width / w),
+        (width, height) => (width.unwrap_or(w), height.unwrap_or(h)),
+    };
+    canvas.width_px = width.round().max(16.0) as u32;
+    canvas.height_px = height.round().max(16.0) as u32;
+    canvas.png_scale = over.png_scale.unwrap_or(canvas.png_scale);
+    canvas.font_px = over.font_px.unwrap_or(canvas.font_px);
+    scene::check_canvas(canvas)
+        .map_err(|message| Problems { source: source.to_string(), list: vec![Problem::new("", message)] })?;
+    Ok(scene)
+}
+
+/// Builds the figure of `scene` from its evaluated series (`feeds[panel][series]` → points).
+pub fn figure(scene: &Scene, feeds: &[Vec<usize>], points: &[Points]) -> Figure {
+    let panels = scene
+        .panels
+        .iter()
+        .zip(feeds)
+        .map(|(panel, feed)| Panel {
+            title: panel.title.clone(),
+            x_label: panel.x_label.clone(),
+            y_label: panel.y_label.clone(),
+            x_unit: panel.x_unit,
+            y_scale: panel.y_scale,
+            x_range: Some(panel.x_range),
+            y_range: panel.y_range,
+            legend: panel.legend,
+            series: panel
+                .curves
+                .iter()
+                .zip(feed)
+                .map(|(shown, &job)| Series {
+                    label: shown.label.clone(),
+                    curve: shown.curve.canonical_json(),
+                    style: shown.style,
+                    points: points[job].clone(),
+                })
+                .collect(),
+        })
+        .collect();
+    Figure { id: scene.id.clone(), title: scene.title.clone(), rows: scene.rows, cols: scene.cols, canvas: scene.canvas, panels }
+}
+
+/// The bytes of one output of a figure.
+pub fn encode(figure: &Figure, format: Format) -> Result<Vec<u8>> {
+    let plot_error = |e: plot::PlotError| Error::Numerics(format!("{}: drawing failed: {e}", figure.id));
+    match format {
+        Format::Svg => plot::svg(figure).map_err(plot_error),
+        Format::Png => plot::png(figure).map_err(plot_error),
+        Format::Csv => Ok(figure_csv(figure)),
+    }
+}
+
+/// Renders the scenes of `options` into its output folder; returns the files written.
+pub fn run(options: &RenderOptions) -> Result<Vec<PathBuf>> {
+    let scenes = load_scenes(&sources(&options.paths)?, options.canvas)?;
+    let plan = plan(&scenes);
+    let points = evaluate_all(&plan.jobs)?;
+    let figures: Vec<Figure> = scenes.iter().zip(&plan.feeds).map(|(s, f)| figure(s, f, &points)).collect();
+    let outputs: Vec<(String, Vec<u8>)> = figures
+        .par_iter()
+        .flat_map_iter(|fig| options.formats.iter().map(move |&format| (fig, format)))
+        .map(|(fig, format)| Ok((format!("{}.{}", fig.id, format.extension()), encode(fig, format)?)))
+        .collect::<Result<_>>()?;
+    write_outputs(&options.out, &outputs)
+}
+
+fn write_outputs(dir: &Path, outputs: &[(String, Vec<u8>)]) -> Result<Vec<PathBuf>> {
+    write::ensure_dir(dir)?;
+    let mut written = Vec::with_capacity(outputs.len());
+    for (name, bytes) in outputs {
+        write::remove_stale(dir, name)?;
+        write::write_atomic(dir, name, bytes)?;
+        written.push(dir.join(name));
+    }
+    Ok(written)
+}

@@ -1,0 +1,541 @@
+//! The curve format shared by `eval`, `compare`, `fit` and scenes: a JSON object naming a model
+//! (`"ndf": <family>` or `"fresnel": <model>`) and its parameters by the notebooks' names.
+//!
+//! This module owns the key rules (unknown, missing, duplicate and exclusive keys, with "did you
+//! mean" suggestions), the construction of validated curves, their canonical JSON and their
+//! legend labels. It does not expand sweeps: scenes resolve the keys here, expand each parameter's
+//! values themselves, then call [`Resolved::build`] per combination.
+
+use crate::domain::DomainError;
+use crate::fresnel::{Fresnel, Ior, SchlickF0};
+use crate::json::{Node, Value};
+use crate::ndf::{Family, Ndf};
+use crate::problem::{Problem, join_key, suggestion};
+
+/// A validated curve: an NDF D(θ) or a Fresnel reflectance F(θ).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Curve {
+    /// A normal distribution function.
+    Ndf(Ndf),
+    /// A Fresnel reflectance curve (θ is the angle of incidence).
+    Fresnel(Fresnel),
+}
+
+impl Curve {
+    /// The curve's value at θ ∈ [0, π/2] (radians).
+    #[inline]
+    pub fn eval(&self, theta: f64) -> f64 {
+        match self {
+            Curve::Ndf(d) => d.eval(theta),
+            Curve::Fresnel(f) => f.eval(theta),
+        }
+    }
+
+    /// The model this curve belongs to.
+    pub fn model(&self) -> Model {
+        match self {
+            Curve::Ndf(d) => Model::Ndf(d.family()),
+            Curve::Fresnel(f) => Model::Fresnel(FresnelModel::of(f)),
+        }
+    }
+
+    /// Parameters in canonical order, with their values.
+    pub fn params(&self) -> Vec<(&'static str, ParamValue)> {
+        match self {
+            Curve::Ndf(d) => {
+                let names = d.family().param_names();
+                names.iter().zip(d.params()).map(|(&n, v)| (n, ParamValue::Number(v))).collect()
+            }
+            Curve::Fresnel(f) => fresnel_params(f),
+        }
+    }
+
+    /// Canonical curve JSON (CONTRACTS.md): compact, model key first, parameters in MATH.md's
+    /// order, numbers in shortest round-trip form, aliases replaced by canonical names.
+    pub fn canonical_json(&self) -> String {
+        let model = self.model();
+        let mut out = format!("{{\"{}\":\"{}\"", model.key(), model.name());
+        for (name, value) in self.params() {
+            out.push_str(&format!(",\"{name}\":{value}"));
+        }
+        out.push('}');
+        out
+    }
+}
+
+fn ior_params(ior: &Ior) -> Vec<(&'static str, ParamValue)> {
+    match *ior {
+        Ior::EtaKappa { eta, kappa } => {
+            vec![("eta", ParamValue::Number(eta)), ("kappa", ParamValue::Number(kappa))]
+        }
+        Ior::Gulbrandsen { r, g, g_remap } => vec![
+            ("r", ParamValue::Number(r)),
+            ("g", ParamValue::Number(g)),
+            ("g_remap", ParamValue::Flag(g_remap)),
+        ],
+    }
+}
+
+fn fresnel_params(f: &Fresnel) -> Vec<(&'static str, ParamValue)> {
+    match f {
+        Fresnel::Exact(ior) => ior_params(ior),
+        Fresnel::Schlick(SchlickF0::F0(f0)) => vec![("f0", ParamValue::Number(*f0))],
+        Fresnel::Schlick(SchlickF0::Ior(ior)) => ior_params(ior),
+        Fresnel::Lazanyi { f0, a } => {
+            vec![("f0", ParamValue::Number(*f0)), ("a", ParamValue::Number(*a))]
+        }
+        Fresnel::LazanyiTerm => vec![],
+        Fresnel::Belcour(belcour) => ior_params(&belcour.ior()),
+        Fresnel::Basis(index) => vec![("index", ParamValue::Number(*index as f64))],
+    }
+}
+
+/// A parameter value: a number, or a flag such as `g_remap`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ParamValue {
+    /// A finite number.
+    Number(f64),
+    /// A boolean flag.
+    Flag(bool),
+}
+
+impl ParamValue {
+    /// The number, or 0/1 for a flag.
+    pub fn number(self) -> f64 {
+        match self {
+            ParamValue::Number(v) => v,
+            ParamValue::Flag(b) => f64::from(u8::from(b)),
+        }
+    }
+}
+
+impl std::fmt::Display for ParamValue {
+    /// Numbers in shortest round-trip form (`{:?}`), flags as `true`/`false`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ParamValue::Number(v) => write!(f, "{v:?}"),
+            ParamValue::Flag(b) => write!(f, "{b}"),
+        }
+    }
+}
+
+/// The Fresnel models of the curve format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FresnelModel {
+    /// Exact complex-IOR Fresnel.
+    Exact,
+    /// Schlick's approximation.
+    Schlick,
+    /// Lazanyi–Schlick.
+    Lazanyi,
+    /// Lazanyi's extra term c(1 − c)⁶ normalized to max 1.
+    LazanyiTerm,
+    /// The four-term Belcour–Bati–Barla reconstruction of a material.
+    Belcour,
+    /// One Belcour–Bati–Barla basis function.
+    Basis,
+}
+
+impl FresnelModel {
+    /// Every Fresnel model.
+    pub const ALL: [FresnelModel; 6] = [
+        FresnelModel::Exact,
+        FresnelModel::Schlick,
+        FresnelModel::Lazanyi,
+        FresnelModel::LazanyiTerm,
+        FresnelModel::Belcour,
+        FresnelModel::Basis,
+    ];
+
+    fn of(f: &Fresnel) -> FresnelModel {
+        match f {
+            Fresnel::Exact(_) => FresnelModel::Exact,
+            Fresnel::Schlick(_) => FresnelModel::Schlick,
+            Fresnel::Lazanyi { .. } => FresnelModel::Lazanyi,
+            Fresnel::LazanyiTerm => FresnelModel::LazanyiTerm,
+            Fresnel::Belcour(_) => FresnelModel::Belcour,
+            Fresnel::Basis(_) => FresnelModel::Basis,
+        }
+    }
+
+    /// Canonical name in curve JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            FresnelModel::Exact => "exact",
+            FresnelModel::Schlick => "schlick",
+            FresnelModel::Lazanyi => "lazanyi",
+            FresnelModel::LazanyiTerm => "lazanyi_term",
+            FresnelModel::Belcour => "belcour",
+            FresnelModel::Basis => "basis",
+        }
+    }
+}
+
+/// A curve model: an NDF family or a Fresnel model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Model {
+    /// An NDF family.
+    Ndf(Family),
+    /// A Fresnel model.
+    Fresnel(FresnelModel),
+}
+
+/// The kind of value a parameter key takes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ParamKind {
+    /// A finite number.
+    Number,
+    /// `true` or `false`.
+    Flag,
+}
+
+/// One accepted parameter key of a model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ParamSpec {
+    /// Key name.
+    pub name: &'static str,
+    /// JSON type of its value.
+    pub kind: ParamKind,
+    /// Value used when the key is absent; `None` makes the key required.
+    pub default: Option<ParamValue>,
+}
+
+const fn number(name: &'static str) -> ParamSpec {
+    ParamSpec { name, kind: ParamKind::Number, default: None }
+}
+
+const ETA_KAPPA: &[ParamSpec] = &[
+    number("eta"),
+    ParamSpec { name: "kappa", kind: ParamKind::Number, default: Some(ParamValue::Number(0.0)) },
+];
+const GULBRANDSEN: &[ParamSpec] = &[
+    number("r"),
+    number("g"),
+    ParamSpec { name: "g_remap", kind: ParamKind::Flag, default: Some(ParamValue::Flag(false)) },
+];
+const F0: &[ParamSpec] = &[number("f0")];
+
+impl Model {
+    /// The model key of the curve format: `"ndf"` or `"fresnel"`.
+    pub fn key(self) -> &'static str {
+        match self {
+            Model::Ndf(_) => "ndf",
+            Model::Fresnel(_) => "fresnel",
+        }
+    }
+
+    /// Canonical model name (`beckmann`, `exact`, …).
+    pub fn name(self) -> &'static str {
+        match self {
+            Model::Ndf(family) => family.name(),
+            Model::Fresnel(model) => model.name(),
+        }
+    }
+
+    /// The alternative parameter sets ("signatures") the model accepts; keys of different
+    /// signatures are exclusive (eta/kappa versus r/g).
+    pub fn signatures(self) -> Vec<Vec<ParamSpec>> {
+        match self {
+            Model::Ndf(family) => vec![family.param_names().iter().map(|&n| number(n)).collect()],
+            Model::Fresnel(model) => match model {
+                FresnelModel::Exact | FresnelModel::Belcour => {
+                    vec![ETA_KAPPA.to_vec(), GULBRANDSEN.to_vec()]
+                }
+                FresnelModel::Schlick => vec![F0.to_vec(), ETA_KAPPA.to_vec(), GULBRANDSEN.to_vec()],
+                FresnelModel::Lazanyi => vec![vec![number("f0"), number("a")]],
+                FresnelModel::LazanyiTerm => vec![vec![]],
+                FresnelModel::Basis => vec![vec![number("index")]],
+            },
+        }
+    }
+
+    /// Builds the validated curve from one value per key of `signatures()[signature]`.
+    pub fn build(self, signature: usize, values: &[ParamValue]) -> Result<Curve, DomainError> {
+        let n = |i: usize| values[i].number();
+        let ior = |offset: usize| match (self.signatures()[signature][offset]).name {
+            "eta" => Ior::eta_kappa(n(offset), n(offset + 1)),
+            _ => Ior::gulbrandsen(n(offset), n(offset + 1), values[offset + 2] == ParamValue::Flag(true)),
+        };
+        Ok(match self {
+            Model::Ndf(family) => {
+                let numbers: Vec<f64> = values.iter().map(|v| v.number()).collect();
+                Curve::Ndf(family.build(&numbers)?)
+            }
+            Model::Fresnel(model) => Curve::Fresnel(match model {
+                FresnelModel::Exact => Fresnel::Exact(ior(0)?),
+                FresnelModel::Schlick if signature == 0 => Fresnel::schlick(SchlickF0::F0(n(0)))?,
+                FresnelModel::Schlick => Fresnel::schlick(SchlickF0::Ior(ior(0)?))?,
+                FresnelModel::Lazanyi => Fresnel::lazanyi(n(0), n(1))?,
+                FresnelModel::LazanyiTerm => Fresnel::LazanyiTerm,
+                FresnelModel::Belcour => Fresnel::belcour(ior(0)?),
+                FresnelModel::Basis => Fresnel::basis(n(0))?,
+            }),
+        })
+    }
+
+    /// Looks a model up from its key (`ndf`/`fresnel`) and name, aliases included.
+    pub fn from_key_and_name(key: &str, name: &str) -> Option<Model> {
+        match key {
+            "ndf" => Family::from_name(name).map(Model::Ndf),
+            _ => FresnelModel::ALL.into_iter().find(|m| m.name() == name).map(Model::Fresnel),
+        }
+    }
+
+    /// Accepted names under a model key, for suggestions.
+    pub fn names(key: &str) -> Vec<&'static str> {
+        match key {
+            "ndf" => Family::NAMES.to_vec(),
+            _ => FresnelModel::ALL.iter().map(|m| m.name()).collect(),
+        }
+    }
+}
+
+/// A curve object whose keys have been checked: the model, the chosen signature and, per key of
+/// that signature, the node given for it (`None` where the default applies).
+#[derive(Debug, Clone)]
+pub struct Resolved<'a> {
+    /// The model.
+    pub model: Model,
+    /// Index into `model.signatures()`.
+    pub signature: usize,
+    /// The signature's keys.
+    pub params: Vec<ParamSpec>,
+    /// Per key, its node in the document, or `None` when absent (a default applies).
+    pub nodes: Vec<Option<&'a Node>>,
+}
+
+impl Resolved<'_> {
+    /// Builds the curve, reporting a domain error at the path of the offending key.
+    pub fn build(&self, values: &[ParamValue], path: &str) -> Result<Curve, Problem> {
+        self.model.build(self.signature, values).map_err(|e| domain_problem(&e, path))
+    }
+}
+
+/// Turns a domain error into a problem at `<path>.<param>`.
+pub fn domain_problem(error: &DomainError, path: &str) -> Problem {
+    Problem::new(
+        join_key(path, error.param),
+        format!("out of domain (got {:?}, expected {})", error.value, error.expected),
+    )
+}
+
+/// Checks the keys of the curve object `node` at JSON path `path`: exactly one model key with a
+/// known name, no duplicate keys, no unknown keys (beyond `extra_keys`, which the caller handles,
+/// such as a scene's `style`), no keys from exclusive signatures mixed, no required key missing.
+/// Every problem is reported.
+pub fn resolve<'a>(node: &'a Node, path: &str, extra_keys: &[&str]) -> Result<Resolved<'a>, Vec<Problem>> {
+    let Value::Object(members) = &node.value else {
+        let got = node.to_string();
+        return Err(vec![Problem::new(path, format!("expected a curve object (got {got})"))]);
+    };
+    let mut problems = Vec::new();
+    for (i, (key, _)) in members.iter().enumerate() {
+        if members[..i].iter().any(|(k, _)| k == key) {
+            problems.push(Problem::new(join_key(path, key), "duplicate key"));
+        }
+    }
+    let model_keys: Vec<&(String, Node)> =
+        members.iter().filter(|(k, _)| k == "ndf" || k == "fresnel").collect();
+    let model = match model_keys.as_slice() {
+        [] => {
+            problems.push(Problem::new(path, "missing key \"ndf\" or \"fresnel\" naming the curve's model"));
+            None
+        }
+        [(key, name_node)] => model_from_node(key, name_node, path, &mut problems),
+        [(first, _), (second, _), ..] if first != second => {
+            problems.push(Problem::new(path, "a curve has either \"ndf\" or \"fresnel\", not both"));
+            None
+        }
+        [(key, name_node), ..] => model_from_node(key, name_node, path, &mut problems),
+    };
+    let Some(model) = model else {
+        return Err(problems);
+    };
+    let signatures = model.signatures();
+    let given: Vec<&(String, Node)> = members
+        .iter()
+        .filter(|(k, _)| k != model.key() && !extra_keys.contains(&k.as_str()))
+        .collect();
+    let all_keys: Vec<&str> = signatures.iter().flatten().map(|p| p.name).chain(extra_keys.iter().copied()).collect();
+    for (key, node) in &given {
+        if !signatures.iter().flatten().any(|p| p.name == key) {
+            let expected = if all_keys.is_empty() { "no parameters".to_string() } else { all_keys.join(", ") };
+            problems.push(Problem::new(
+                join_key(path, key),
+                format!(
+                    "unknown key for {} \"{}\" (got {node}, expected one of: {expected}){}",
+                    model.key(),
+                    model.name(),
+                    suggestion(key, all_keys.iter().copied())
+                ),
+            ));
+        }
+    }
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+    let Some(signature) =
+        signatures.iter().position(|sig| given.iter().all(|(k, _)| sig.iter().any(|p| p.name == k)))
+    else {
+        let keys: Vec<&str> = given.iter().map(|(k, _)| k.as_str()).collect();
+        let alternatives: Vec<String> = signatures
+            .iter()
+            .map(|sig| sig.iter().map(|p| p.name).collect::<Vec<_>>().join("/"))
+            .collect();
+        return Err(vec![Problem::new(
+            path,
+            format!("keys {} cannot be combined (expected one of: {})", keys.join(", "), alternatives.join(" or ")),
+        )]);
+    };
+    let params = signatures[signature].clone();
+    let nodes: Vec<Option<&Node>> =
+        params.iter().map(|p| given.iter().find(|(k, _)| k == p.name).map(|(_, n)| n)).collect();
+    for (spec, node) in params.iter().zip(&nodes) {
+        if node.is_none() && spec.default.is_none() {
+            problems.push(Problem::new(
+                join_key(path, spec.name),
+                format!("missing parameter for {} \"{}\"", model.key(), model.name()),
+            ));
+        }
+    }
+    if problems.is_empty() { Ok(Resolved { model, signature, params, nodes }) } else { Err(problems) }
+}
+
+fn model_from_node(key: &str, node: &Node, path: &str, problems: &mut Vec<Problem>) -> Option<Model> {
+    let at = join_key(path, key);
+    let names = Model::names(key);
+    let Value::String(name) = &node.value else {
+        problems.push(Problem::new(at, format!("expected a model name (got {node}, expected one of: {})", names.join(", "))));
+        return None;
+    };
+    let model = Model::from_key_and_name(key, name);
+    if model.is_none() {
+        problems.push(Problem::new(
+            at,
+            format!(
+                "unknown {key} model (got \"{name}\", expected one of: {}){}",
+                names.join(", "),
+                suggestion(name, names.iter().copied())
+            ),
+        ));
+    }
+    model
+}
+
+/// Reads a single (non-swept) parameter value of the given kind.
+pub fn scalar(node: &Node, kind: ParamKind, path: &str) -> Result<ParamValue, Problem> {
+    match (&node.value, kind) {
+        (Value::Number(n), ParamKind::Number) => Ok(ParamValue::Number(n.value)),
+        (Value::Bool(b), ParamKind::Flag) => Ok(ParamValue::Flag(*b)),
+        (value, ParamKind::Number) => {
+            Err(Problem::new(path, format!("expected a number (got {} {node})", value.kind())))
+        }
+        (value, ParamKind::Flag) => {
+            Err(Problem::new(path, format!("expected true or false (got {} {node})", value.kind())))
+        }
+    }
+}
+
+/// Parses one plain curve object (every parameter a single value), as `eval` takes it.
+pub fn parse(node: &Node, path: &str) -> Result<Curve, Vec<Problem>> {
+    let resolved = resolve(node, path, &[])?;
+    let mut values = Vec::new();
+    let mut problems = Vec::new();
+    for (spec, node) in resolved.params.iter().zip(&resolved.nodes) {
+        match node {
+            None => values.push(spec.default.expect("resolve() reports missing required keys")),
+            Some(node) => match scalar(node, spec.kind, &join_key(path, spec.name)) {
+                Ok(value) => values.push(value),
+                Err(problem) => problems.push(problem),
+            },
+        }
+    }
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+    resolved.build(&values, path).map_err(|p| vec![p])
+}
+
+/// The legend symbol of a parameter (`alpha_b` → `α_b`, `eta` → `η`).
+pub fn symbol(param: &str) -> &str {
+    match param {
+        "alpha_p" => "α_p",
+        "alpha_b" => "α_b",
+        "alpha_ts" => "α_ts",
+        "alpha_tr" => "α_tr",
+        "alpha_abc1" | "alpha_sgd1" => "a₁",
+        "alpha_abc2" | "alpha_sgd2" => "a₂",
+        "eta" => "η",
+        "kappa" => "κ",
+        "f0" => "F₀",
+        other => other,
+    }
+}
+
+/// A number for people: at most 6 significant digits, trailing zeros dropped (`10.499999999999998` → `10.5`).
+pub fn pretty(value: f64) -> String {
+    if value == 0.0 {
+        return "0".into();
+    }
+    let magnitude = value.abs().log10().floor();
+    if !(-4.0..6.0).contains(&magnitude) {
+        let text = format!("{value:.5e}");
+        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        return format!("{mantissa}e{exponent}");
+    }
+    let decimals = (5.0 - magnitude).max(0.0) as usize;
+    let text = format!("{value:.decimals$}");
+    if text.contains('.') { text.trim_end_matches('0').trim_end_matches('.').to_string() } else { text }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::json;
+
+    fn problems(text: &str) -> Vec<Problem> {
+        parse(&json::parse(text).unwrap(), "").unwrap_err()
+    }
+
+    #[test]
+    fn key_errors_name_the_key_and_suggest() {
+        let p = problems(r#"{"ndf":"beckman","alpha_b":0.5}"#);
+        assert_eq!(p[0].at, "ndf");
+        assert!(p[0].message.contains("did you mean \"beckmann\""), "{p:?}");
+        let p = problems(r#"{"ndf":"beckmann","alpha_bb":0.5}"#);
+        assert_eq!(p[0].at, "alpha_bb");
+        assert!(p[0].message.contains("did you mean \"alpha_b\""), "{p:?}");
+        let p = problems(r#"{"ndf":"abc","alpha_abc1":1}"#);
+        assert_eq!((p[0].at.as_str(), p[0].message.contains("missing")), ("alpha_abc2", true));
+        let p = problems(r#"{"ndf":"phong","alpha_p":1,"alpha_p":2}"#);
+        assert_eq!((p[0].at.as_str(), p[0].message.as_str()), ("alpha_p", "duplicate key"));
+        let p = problems(r#"{"ndf":"phong","alpha_p":"1"}"#);
+        assert!(p[0].message.contains("expected a number"), "{p:?}");
+        let p = problems(r#"{"ndf":"phong","alpha_p":-1}"#);
+        assert_eq!(p[0].at, "alpha_p");
+        assert!(p[0].message.contains("got -1.0"), "{p:?}");
+        let p = problems(r#"{"alpha_p":1}"#);
+        assert!(p[0].message.contains("missing key \"ndf\""), "{p:?}");
+        let p = problems(r#"[1]"#);
+        assert!(p[0].message.contains("expected a curve object"), "{p:?}");
+    }
+
+    #[test]
+    fn canonical_json_uses_canonical_names_and_order() {
+        let curve = parse(&json::parse(r#"{"alpha_tr":0.5,"ndf":"ggx"}"#).unwrap(), "").unwrap();
+        assert_eq!(curve.canonical_json(), r#"{"ndf":"trowbridge_reitz","alpha_tr":0.5}"#);
+        let curve = parse(&json::parse(r#"{"ndf":"abc","alpha_abc2":2,"alpha_abc1":1e-7}"#).unwrap(), "").unwrap();
+        assert_eq!(curve.canonical_json(), r#"{"ndf":"abc","alpha_abc1":1e-7,"alpha_abc2":2.0}"#);
+    }
+
+    #[test]
+    fn pretty_numbers() {
+        assert_eq!(pretty(10.499999999999998), "10.5");
+        assert_eq!(pretty(0.2027), "0.2027");
+        assert_eq!(pretty(2048.0), "2048");
+        assert_eq!(pretty(70312.0), "70312");
+        assert_eq!(pretty(1e-7), "1e-7");
+        assert_eq!(pretty(0.0068), "0.0068");
+    }
+}

@@ -1,0 +1,63 @@
+//! Reading curve arguments: inline JSON, `@path` files and JSON Lines on standard input.
+//!
+//! Every problem of every argument is collected before failing, so one run reports them all.
+
+use crate::curve::{self, Curve};
+use crate::error::{Error, Result};
+use crate::json;
+use crate::problem::{Problem, Problems};
+
+/// Reads a text file, naming it in the error.
+pub fn read_file(path: &str) -> Result<String> {
+    std::fs::read_to_string(path).map_err(|e| Error::io(path, e))
+}
+
+/// Parses JSON text from `source` (a file name or argument name) into a node, reporting a syntax
+/// error at its `line:column`.
+pub fn parse_json(text: &str, source: &str) -> std::result::Result<json::Node, Problems> {
+    json::parse(text).map_err(|e| Problems {
+        source: source.to_string(),
+        list: vec![Problem::new(format!("{}:{}", e.line, e.col), format!("invalid JSON: {}", e.message))],
+    })
+}
+
+fn parse_curve(text: &str, source: &str) -> std::result::Result<Curve, Problems> {
+    let node = parse_json(text, source)?;
+    curve::parse(&node, "").map_err(|list| Problems { source: source.to_string(), list })
+}
+
+/// Loads the curves named by `--curve` arguments, in order: `{…}` inline JSON, `@path` a file
+/// holding one curve, `-` one curve per non-blank line of `stdin` (JSON Lines).
+/// `flag` is the argument name used in messages (`--curve`).
+pub fn load_curves(args: &[String], flag: &str, stdin: impl FnOnce() -> std::io::Result<String>) -> Result<Vec<Curve>> {
+    let mut curves = Vec::new();
+    let mut problems = Vec::new();
+    let mut stdin = Some(stdin);
+    let mut accept = |result: std::result::Result<Curve, Problems>| match result {
+        Ok(curve) => curves.push(curve),
+        Err(p) => problems.push(p),
+    };
+    for (i, arg) in args.iter().enumerate() {
+        let source = if args.len() == 1 { flag.to_string() } else { format!("{flag}[{i}]") };
+        if arg == "-" {
+            let read = stdin.take().ok_or_else(|| Error::Usage(format!("{flag} - may be given only once")))?;
+            let text = read().map_err(|e| Error::io("stdin", e))?;
+            for (line_no, line) in text.lines().enumerate() {
+                if !line.trim().is_empty() {
+                    accept(parse_curve(line, &format!("stdin:{}", line_no + 1)));
+                }
+            }
+        } else if let Some(path) = arg.strip_prefix('@') {
+            accept(parse_curve(&read_file(path)?, path));
+        } else {
+            accept(parse_curve(arg, &source));
+        }
+    }
+    if !problems.is_empty() {
+        return Err(Error::Input(problems));
+    }
+    if curves.is_empty() {
+        return Err(Error::Usage(format!("{flag}: no curve given")));
+    }
+    Ok(curves)
+}

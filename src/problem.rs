@@ -1,0 +1,124 @@
+//! Input problems with their location, collected so that every problem of a file is reported at once.
+//!
+//! Message shape (CONTRACTS.md): `error: <file or argument>: <JSON path or key>: <what> (got <value>, expected <…>)`.
+
+use std::fmt;
+
+/// One problem in one input, located by a JSON path (`panels[1].curves[0].alpha_b`) or a
+/// `line:column` for syntax errors.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Problem {
+    /// JSON path, key or `line:column`; empty when the problem concerns the whole input.
+    pub at: String,
+    /// What is wrong, including `(got …, expected …)` where that applies.
+    pub message: String,
+}
+
+impl Problem {
+    /// A problem at `at` described by `message`.
+    pub fn new(at: impl Into<String>, message: impl Into<String>) -> Problem {
+        Problem { at: at.into(), message: message.into() }
+    }
+}
+
+/// Every problem found in one input (a file, a `--curve` argument, …).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Problems {
+    /// The file path or argument name the problems belong to.
+    pub source: String,
+    /// The problems, in document order.
+    pub list: Vec<Problem>,
+}
+
+impl fmt::Display for Problems {
+    /// One `error: <source>: <at>: <message>` line per problem, without a trailing newline.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, problem) in self.list.iter().enumerate() {
+            if i > 0 {
+                writeln!(f)?;
+            }
+            write!(f, "error: {}: ", self.source)?;
+            if !problem.at.is_empty() {
+                write!(f, "{}: ", problem.at)?;
+            }
+            write!(f, "{}", problem.message)?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for Problems {}
+
+/// Joins a JSON path and an object key: `("panels[0]", "title")` → `panels[0].title`.
+pub fn join_key(path: &str, key: &str) -> String {
+    if path.is_empty() { key.to_string() } else { format!("{path}.{key}") }
+}
+
+/// Joins a JSON path and an array index: `("panels", 2)` → `panels[2]`.
+pub fn join_index(path: &str, index: usize) -> String {
+    format!("{path}[{index}]")
+}
+
+/// The candidate nearest to `word` by edit distance, if it is close enough to be a likely
+/// misspelling (distance ≤ max(1, len/3)).
+pub fn did_you_mean<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let limit = (word.chars().count() / 3).max(1);
+    candidates
+        .into_iter()
+        .map(|c| (edit_distance(word, c), c))
+        .filter(|&(d, _)| d <= limit)
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, c)| c)
+}
+
+/// Appends `; did you mean "<x>"?` when a near candidate exists.
+pub fn suggestion<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> String {
+    did_you_mean(word, candidates).map_or_else(String::new, |c| format!("; did you mean \"{c}\"?"))
+}
+
+/// Edit distance in characters counting insertions, deletions, substitutions and swaps of
+/// adjacent characters (optimal string alignment), so `stlye` is one edit from `style`.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    let mut d = vec![vec![0usize; b.len() + 1]; a.len() + 1];
+    for (i, row) in d.iter_mut().enumerate() {
+        row[0] = i;
+    }
+    for j in 0..=b.len() {
+        d[0][j] = j;
+    }
+    for i in 1..=a.len() {
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            d[i][j] = (d[i - 1][j] + 1).min(d[i][j - 1] + 1).min(d[i - 1][j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                d[i][j] = d[i][j].min(d[i - 2][j - 2] + 1);
+            }
+        }
+    }
+    d[a.len()][b.len()]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn suggests_near_names_only() {
+        let names = ["alpha_b", "alpha_p", "alpha_tr"];
+        assert_eq!(did_you_mean("alpha_bb", names), Some("alpha_b"));
+        assert_eq!(did_you_mean("alfa_tr", names), Some("alpha_tr"));
+        assert_eq!(did_you_mean("roughness", names), None);
+        assert_eq!(edit_distance("kitten", "sitting"), 3);
+        assert_eq!(did_you_mean("stlye", ["style", "label"]), Some("style"));
+    }
+
+    #[test]
+    fn formats_one_line_per_problem() {
+        let problems = Problems {
+            source: "x.json".into(),
+            list: vec![Problem::new("a.b", "bad (got 1, expected 2)"), Problem::new("", "empty")],
+        };
+        assert_eq!(problems.to_string(), "error: x.json: a.b: bad (got 1, expected 2)\nerror: x.json: empty");
+    }
+}

@@ -1,0 +1,475 @@
+//! Scenes (figure specs): the JSON format and its validation into a [`Scene`] that holds only
+//! valid curves, styles and axes. Every problem of a spec is reported with its JSON path.
+//!
+//! A scene is an `id`, a `title`, a grid of panels (a row by default, like Mathematica's
+//! `GraphicsRow`), canvas settings and, per panel, axes, a legend and curves. Curves use the
+//! curve format of `eval`; any parameter may be swept (see [`sweep`]).
+
+pub mod reader;
+pub mod sweep;
+
+use crate::curve::{self, Curve, Model, ParamValue};
+use crate::json::{Node, Value};
+use crate::ndf::Family;
+use crate::problem::{Problem, join_index, join_key, suggestion};
+use crate::series::{AngleUnit, Canvas, Dash, Rgb, Style, YScale};
+use reader::Reader;
+use std::f64::consts::FRAC_PI_2;
+use sweep::{MAX_CURVES_PER_SCENE, Sweep};
+
+/// Most samples one curve may have (CONTRACTS.md).
+pub const MAX_SAMPLES_PER_CURVE: usize = 10_000_000;
+/// Default number of uniform samples per curve over the visible θ range.
+pub const DEFAULT_SAMPLES: usize = 1000;
+/// Default panel height / width: 1/φ, Mathematica's default `AspectRatio`.
+pub const DEFAULT_ASPECT_RATIO: f64 = 0.618_033_988_749_894_9;
+/// Largest figure side in CSS pixels; beyond it rasters exhaust memory for no visible gain.
+pub const MAX_SIDE_PX: f64 = 20_000.0;
+/// Largest PNG pixel count (width × height × scale²), about a 100-megapixel image.
+pub const MAX_PNG_PIXELS: f64 = 1e8;
+
+/// Keys a scene may have.
+const SCENE_KEYS: &[&str] =
+    &["$schema", "id", "title", "layout", "aspect_ratio", "width", "height", "font_px", "png_scale", "sampling", "panels"];
+const PANEL_KEYS: &[&str] = &["title", "x", "y", "legend", "curves"];
+const X_KEYS: &[&str] = &["unit", "range", "label"];
+const Y_KEYS: &[&str] = &["scale", "range", "label"];
+/// Keys of a scene curve beyond its model parameters.
+const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "label"];
+const STYLE_WORDS: &[&str] = &["thick", "dashed", "dotted", "solid"];
+
+/// How curves are sampled over θ.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Sampling {
+    /// `n` evenly spaced θ over the panel's visible range, both ends included.
+    Uniform(usize),
+}
+
+/// One curve as a scene shows it.
+#[derive(Debug, Clone)]
+pub struct SceneCurve {
+    /// The validated curve.
+    pub curve: Curve,
+    /// Legend label.
+    pub label: String,
+    /// Line style.
+    pub style: Style,
+}
+
+/// A validated panel.
+#[derive(Debug, Clone)]
+pub struct ScenePanel {
+    /// Panel title (may be empty).
+    pub title: String,
+    /// x axis label.
+    pub x_label: String,
+    /// y axis label.
+    pub y_label: String,
+    /// θ display unit.
+    pub x_unit: AngleUnit,
+    /// y scale.
+    pub y_scale: YScale,
+    /// Visible θ range in radians, within [0, π/2].
+    pub x_range: (f64, f64),
+    /// Given y range, or automatic.
+    pub y_range: Option<(f64, f64)>,
+    /// Whether a legend is drawn.
+    pub legend: bool,
+    /// Curves in drawing order.
+    pub curves: Vec<SceneCurve>,
+}
+
+/// A validated scene.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    /// Id, matching `^[a-z0-9][a-z0-9_-]{0,63}$`; output files are `<id>.<ext>`.
+    pub id: String,
+    /// Figure title (may be empty).
+    pub title: String,
+    /// Grid rows.
+    pub rows: usize,
+    /// Grid columns.
+    pub cols: usize,
+    /// Size and typography.
+    pub canvas: Canvas,
+    /// Sampling rule.
+    pub sampling: Sampling,
+    /// Panels, row-major.
+    pub panels: Vec<ScenePanel>,
+}
+
+/// Whether `id` is a valid scene id: `^[a-z0-9][a-z0-9_-]{0,63}$` (CONTRACTS.md). Such an id
+/// cannot name a path outside the output folder, a hidden file or a device.
+pub fn valid_id(id: &str) -> bool {
+    let bytes = id.as_bytes();
+    !bytes.is_empty()
+        && bytes.len() <= 64
+        && (bytes[0].is_ascii_lowercase() || bytes[0].is_ascii_digit())
+        && bytes.iter().all(|&b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_' || b == b'-')
+}
+
+/// Validates a parsed scene document; every problem is returned with its JSON path.
+pub fn parse(node: &Node) -> Result<Scene, Vec<Problem>> {
+    let mut reader = Reader::default();
+    let scene = read_scene(&mut reader, node);
+    match scene {
+        Some(scene) if reader.problems.is_empty() => Ok(scene),
+        _ => Err(reader.problems),
+    }
+}
+
+fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
+    let object = reader.object(node, "", SCENE_KEYS)?;
+    let id = match reader.string(&object, "id") {
+        Some(id) if valid_id(&id) => Some(id),
+        Some(id) => {
+            reader.report("id", format!("invalid id (got \"{id}\", expected ^[a-z0-9][a-z0-9_-]{{0,63}}$: lower-case letters, digits, '-' and '_', no paths)"));
+            None
+        }
+        None => {
+            if object.get("id").is_none() {
+                reader.report("id", "missing scene id");
+            }
+            None
+        }
+    };
+    let title = reader.string(&object, "title").unwrap_or_default();
+    let sampling = read_sampling(reader, &object);
+    let panels = read_panels(reader, &object);
+    let (rows, cols) = read_layout(reader, &object, panels.as_ref().map_or(1, Vec::len));
+    let canvas = read_canvas(reader, &object, rows, cols, !title.is_empty());
+    Some(Scene { id: id?, title, rows, cols, canvas: canvas?, sampling: sampling?, panels: panels? })
+}
+
+fn read_sampling(reader: &mut Reader, object: &reader::Object) -> Option<Sampling> {
+    let Some(node) = object.get("sampling") else {
+        return Some(Sampling::Uniform(DEFAULT_SAMPLES));
+    };
+    let path = object.path_of("sampling");
+    let sampling = reader.object(node, &path, &["uniform"])?;
+    let expected = format!("a whole number from 2 to {MAX_SAMPLES_PER_CURVE}");
+    let ok = |v: f64| v.fract() == 0.0 && (2.0..=MAX_SAMPLES_PER_CURVE as f64).contains(&v);
+    match reader.number(&sampling, "uniform", ok, &expected) {
+        Some(n) => Some(Sampling::Uniform(n as usize)),
+        None if sampling.get("uniform").is_none() => {
+            reader.report(path, "missing \"uniform\": the number of samples per curve");
+            None
+        }
+        None => None,
+    }
+}
+
+fn read_layout(reader: &mut Reader, object: &reader::Object, panel_count: usize) -> (usize, usize) {
+    let row = (1, panel_count.max(1));
+    let Some(node) = object.get("layout") else {
+        return row;
+    };
+    let path = object.path_of("layout");
+    let Some(layout) = reader.object(node, &path, &["rows", "cols"]) else {
+        return row;
+    };
+    let whole = |v: f64| v.fract() == 0.0 && (1.0..=100.0).contains(&v);
+    let rows = reader.number(&layout, "rows", whole, "a whole number from 1 to 100").unwrap_or(1.0) as usize;
+    let cols = reader.number(&layout, "cols", whole, "a whole number from 1 to 100");
+    let cols = cols.map_or_else(|| panel_count.div_ceil(rows).max(1), |c| c as usize);
+    if rows * cols < panel_count {
+        reader.report(path, format!("a {rows} × {cols} grid has room for {} panels (got {panel_count} panels)", rows * cols));
+    }
+    (rows, cols)
+}
+
+fn read_canvas(reader: &mut Reader, object: &reader::Object, rows: usize, cols: usize, titled: bool) -> Option<Canvas> {
+    let side = |v: f64| (16.0..=MAX_SIDE_PX).contains(&v);
+    let side_text = format!("16 to {MAX_SIDE_PX}");
+    let aspect = reader.number(object, "aspect_ratio", |v| (0.05..=20.0).contains(&v), "0.05 to 20").unwrap_or(DEFAULT_ASPECT_RATIO);
+    let width = reader.number(object, "width", side, &side_text).unwrap_or(default_width(cols));
+    let title_band = if titled { 40.0 } else { 0.0 };
+    let height = reader
+        .number(object, "height", side, &side_text)
+        .unwrap_or_else(|| (rows as f64 * width / cols as f64 * aspect + title_band).round().clamp(16.0, MAX_SIDE_PX));
+    let font_px = reader.number(object, "font_px", |v| (4.0..=200.0).contains(&v), "4 to 200").unwrap_or(14.0);
+    let png_scale = reader.number(object, "png_scale", |v| (0.1..=16.0).contains(&v), "0.1 to 16").unwrap_or(2.0);
+    let canvas = Canvas { width_px: width.round() as u32, height_px: height.round() as u32, png_scale, font_px };
+    check_canvas(&canvas).map_err(|message| reader.report("png_scale", message)).ok()?;
+    Some(canvas)
+}
+
+/// Default figure width in CSS pixels: 640 for one column, 480 per column otherwise.
+pub fn default_width(cols: usize) -> f64 {
+    if cols <= 1 { 640.0 } else { 480.0 * cols as f64 }
+}
+
+/// Rejects canvases whose PNG would exceed [`MAX_PNG_PIXELS`].
+pub fn check_canvas(canvas: &Canvas) -> Result<(), String> {
+    let pixels = f64::from(canvas.width_px) * f64::from(canvas.height_px) * canvas.png_scale * canvas.png_scale;
+    if pixels > MAX_PNG_PIXELS {
+        Err(format!("the PNG would have {pixels:.0} pixels (got {}×{} px at scale {}, expected at most {MAX_PNG_PIXELS:.0} pixels)", canvas.width_px, canvas.height_px, canvas.png_scale))
+    } else {
+        Ok(())
+    }
+}
+
+fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<ScenePanel>> {
+    let Some(node) = object.get("panels") else {
+        reader.report("panels", "missing panels");
+        return None;
+    };
+    let Value::Array(items) = &node.value else {
+        reader.report("panels", format!("expected a list of panels (got {node})"));
+        return None;
+    };
+    if items.is_empty() {
+        reader.report("panels", "a scene needs at least one panel");
+        return None;
+    }
+    let mut panels = Vec::with_capacity(items.len());
+    let mut total_curves = 0;
+    for (i, item) in items.iter().enumerate() {
+        if let Some(panel) = read_panel(reader, item, &join_index("panels", i)) {
+            total_curves += panel.curves.len();
+            panels.push(panel);
+        }
+    }
+    if total_curves > MAX_CURVES_PER_SCENE {
+        reader.report("panels", format!("too many curves (got {total_curves}, expected at most {MAX_CURVES_PER_SCENE})"));
+        return None;
+    }
+    (panels.len() == items.len()).then_some(panels)
+}
+
+fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel> {
+    let panel = reader.object(node, path, PANEL_KEYS)?;
+    let title = reader.string(&panel, "title").unwrap_or_default();
+    let legend = reader.boolean(&panel, "legend").unwrap_or(true);
+    let x_path = panel.path_of("x");
+    let y_path = panel.path_of("y");
+    let x = panel.get("x").and_then(|n| reader.object(n, &x_path, X_KEYS));
+    let y = panel.get("y").and_then(|n| reader.object(n, &y_path, Y_KEYS));
+    let x_unit = match x.and_then(|x| reader.choice(&x, "unit", &["radians", "degrees"])) {
+        Some("degrees") => AngleUnit::Degrees,
+        _ => AngleUnit::Radians,
+    };
+    let (to_radians, max_x, unit_text) = match x_unit {
+        AngleUnit::Degrees => (std::f64::consts::PI / 180.0, 90.0, "degrees within [0, 90]"),
+        AngleUnit::Radians => (1.0, FRAC_PI_2, "radians within [0, π/2]"),
+    };
+    let x_range = x
+        .and_then(|x| reader.interval(&x, "range", |v| (0.0..=max_x).contains(&v), unit_text))
+        .map_or((0.0, FRAC_PI_2), |(a, b)| (a * to_radians, (b * to_radians).min(FRAC_PI_2)));
+    let y_scale = match y.and_then(|y| reader.choice(&y, "scale", &["linear", "log"])) {
+        Some("log") => YScale::Log,
+        _ => YScale::Linear,
+    };
+    let y_range = y.and_then(|y| match y_scale {
+        YScale::Log => reader.interval(&y, "range", |v| v > 0.0, "both > 0 on a log axis"),
+        YScale::Linear => reader.interval(&y, "range", f64::is_finite, "finite"),
+    });
+    let curves = read_curves(reader, &panel)?;
+    let default_x_label = match x_unit {
+        AngleUnit::Degrees => "θ (degrees)",
+        AngleUnit::Radians => "θ (radians)",
+    };
+    let default_y_label = match curves.first().map(|c| c.curve.model()) {
+        Some(Model::Fresnel(_)) => "F(θ)",
+        _ => "D(θ)",
+    };
+    Some(ScenePanel {
+        title,
+        x_label: x.and_then(|x| reader.string(&x, "label")).unwrap_or_else(|| default_x_label.into()),
+        y_label: y.and_then(|y| reader.string(&y, "label")).unwrap_or_else(|| default_y_label.into()),
+        x_unit,
+        y_scale,
+        x_range,
+        y_range,
+        legend,
+        curves,
+    })
+}
+
+fn read_curves(reader: &mut Reader, panel: &reader::Object) -> Option<Vec<SceneCurve>> {
+    let path = panel.path_of("curves");
+    let Some(node) = panel.get("curves") else {
+        reader.report(path, "missing curves");
+        return None;
+    };
+    let Value::Array(items) = &node.value else {
+        reader.report(path, format!("expected a list of curves (got {node})"));
+        return None;
+    };
+    if items.is_empty() {
+        reader.report(path, "a panel needs at least one curve");
+        return None;
+    }
+    let mut curves = Vec::new();
+    let before = reader.problems.len();
+    for (i, item) in items.iter().enumerate() {
+        read_curve_entry(reader, item, &join_index(&path, i), &mut curves);
+        if curves.len() > MAX_CURVES_PER_SCENE {
+            reader.report(path, format!("too many curves (expected at most {MAX_CURVES_PER_SCENE})"));
+            return None;
+        }
+    }
+    (reader.problems.len() == before).then_some(curves)
+}
+
+/// Expands one curve entry (possibly swept) into `out`.
+fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<SceneCurve>) {
+    let resolved = match curve::resolve(node, path, CURVE_EXTRA_KEYS) {
+        Ok(resolved) => resolved,
+        Err(problems) => {
+            reader.problems.extend(problems);
+            return;
+        }
+    };
+    let Value::Object(members) = &node.value else { return };
+    let entry = reader::Object::from_members(members, path);
+    let label_template = reader.string(&entry, "label");
+    let base_style = read_style(reader, &entry, resolved.model);
+
+    // Per parameter, its values; absent keys take their defaults.
+    let mut sweeps: Vec<(usize, Sweep)> = Vec::new();
+    for (spec, param_node) in resolved.params.iter().zip(&resolved.nodes) {
+        let sweep = match param_node {
+            None => Some(Sweep {
+                values: vec![sweep::SweepValue { value: spec.default.expect("resolve() reports missing keys"), label: String::new() }],
+                varies: false,
+            }),
+            Some(n) => sweep::expand(reader, spec.name, spec.kind, n, &join_key(path, spec.name)),
+        };
+        let Some(sweep) = sweep else { return };
+        let position = param_node.map_or(usize::MAX, |n| n.line * 1_000_000 + n.col);
+        sweeps.push((position, sweep));
+    }
+    let Some(style) = base_style else { return };
+    let count: usize = sweeps.iter().map(|(_, s)| s.values.len()).product();
+    if count > MAX_CURVES_PER_SCENE {
+        reader.report(path, format!("the sweep gives {count} curves (expected at most {MAX_CURVES_PER_SCENE})"));
+        return;
+    }
+    // Product over swept keys in document order, the last key varying fastest.
+    let mut order: Vec<usize> = (0..sweeps.len()).collect();
+    order.sort_by_key(|&i| sweeps[i].0);
+    let any_varies = sweeps.iter().any(|(_, s)| s.varies);
+    for k in 0..count {
+        let mut choice = vec![0; sweeps.len()];
+        let mut rest = k;
+        for &i in order.iter().rev() {
+            let n = sweeps[i].1.values.len();
+            choice[i] = rest % n;
+            rest /= n;
+        }
+        let values: Vec<ParamValue> = sweeps.iter().zip(&choice).map(|((_, s), &c)| s.values[c].value).collect();
+        let curve = match resolved.build(&values, path) {
+            Ok(curve) => curve,
+            Err(problem) => {
+                // One report per offending value, however many combinations it appears in.
+                if !reader.problems.contains(&problem) {
+                    reader.problems.push(problem);
+                }
+                continue;
+            }
+        };
+        let parts: Vec<&str> = order
+            .iter()
+            .filter(|&&i| !any_varies || sweeps[i].1.varies)
+            .map(|&i| sweeps[i].1.values[choice[i]].label.as_str())
+            .filter(|l| !l.is_empty())
+            .collect();
+        let auto_label = with_family_prefix(&curve, &parts.join(", "));
+        let label = match &label_template {
+            Some(template) => fill_template(template, &resolved.params, &values),
+            None => auto_label,
+        };
+        let colour = if entry.get("colour").is_none() && count > 1 { shade(style.colour, k, count) } else { style.colour };
+        out.push(SceneCurve { curve, label, style: Style { colour, ..style } });
+    }
+}
+
+/// Prefixes families whose parameters share symbols (ABC and SGD both use a₁, a₂).
+fn with_family_prefix(curve: &Curve, text: &str) -> String {
+    match curve.model() {
+        Model::Ndf(Family::Abc) => format!("ABC {text}"),
+        Model::Ndf(Family::Sgd) => format!("SGD {text}"),
+        Model::Fresnel(model) => format!("{} {text}", model.name()).trim_end().to_string(),
+        Model::Ndf(_) => text.to_string(),
+    }
+}
+
+/// Replaces `{param}` in a label template by the parameter's value (`"TS {alpha_ts}"`).
+fn fill_template(template: &str, params: &[curve::ParamSpec], values: &[ParamValue]) -> String {
+    let mut label = template.to_string();
+    for (spec, value) in params.iter().zip(values) {
+        let text = match value {
+            ParamValue::Number(v) => curve::pretty(*v),
+            ParamValue::Flag(b) => b.to_string(),
+        };
+        label = label.replace(&format!("{{{}}}", spec.name), &text);
+    }
+    label
+}
+
+/// The k-th of n shades of a colour, from darker (k = 0) to lighter, so that the curves of one
+/// sweep keep their family hue yet stay distinguishable in the legend.
+pub fn shade(base: Rgb, k: usize, n: usize) -> Rgb {
+    // t runs from −0.35 (mixed 35 % toward black) to +0.45 (45 % toward white).
+    let t = -0.35 + 0.8 * k as f64 / (n - 1).max(1) as f64;
+    let mix = |c: u8| {
+        let c = f64::from(c);
+        let v = if t < 0.0 { c * (1.0 + t) } else { c + (255.0 - c) * t };
+        v.round().clamp(0.0, 255.0) as u8
+    };
+    Rgb(mix(base.0), mix(base.1), mix(base.2))
+}
+
+fn default_colour(model: Model) -> Rgb {
+    match model {
+        Model::Ndf(family) => Rgb::from_hex(family.colour()),
+        // Solarized blue for Fresnel curves unless overridden.
+        Model::Fresnel(_) => Rgb::from_hex(0x268BD2),
+    }
+}
+
+fn read_style(reader: &mut Reader, entry: &reader::Object, model: Model) -> Option<Style> {
+    let mut style = Style { colour: default_colour(model), width: 1.0, dash: Dash::Solid };
+    let before = reader.problems.len();
+    if let Some(node) = entry.get("style") {
+        let path = entry.path_of("style");
+        let words: Vec<(&Node, String)> = match &node.value {
+            Value::String(_) => vec![(node, path.clone())],
+            Value::Array(items) => items.iter().enumerate().map(|(i, n)| (n, join_index(&path, i))).collect(),
+            _ => {
+                reader.report(&path, format!("expected a style word or a list of them (got {node}, expected any of: {})", STYLE_WORDS.join(", ")));
+                vec![]
+            }
+        };
+        for (word_node, word_path) in words {
+            match &word_node.value {
+                Value::String(word) => match word.as_str() {
+                    "thick" => style.width = 2.0,
+                    "dashed" => style.dash = Dash::Dashed,
+                    "dotted" => style.dash = Dash::Dotted,
+                    "solid" => style.dash = Dash::Solid,
+                    other => reader.report(
+                        word_path,
+                        format!("unknown style (got \"{other}\", expected any of: {}){}", STYLE_WORDS.join(", "), suggestion(other, STYLE_WORDS.iter().copied())),
+                    ),
+                },
+                _ => reader.report(word_path, format!("expected a style word (got {word_node})")),
+            }
+        }
+    }
+    if let Some(text) = reader.string(entry, "colour") {
+        match parse_hex_colour(&text) {
+            Some(colour) => style.colour = colour,
+            None => reader.report(entry.path_of("colour"), format!("invalid colour (got \"{text}\", expected #RRGGBB)")),
+        }
+    }
+    (reader.problems.len() == before).then_some(style)
+}
+
+/// Parses `#RRGGBB`.
+pub fn parse_hex_colour(text: &str) -> Option<Rgb> {
+    let hex = text.strip_prefix('#')?;
+    (hex.len() == 6 && hex.chars().all(|c| c.is_ascii_hexdigit()))
+        .then(|| Rgb::from_hex(u32::from_str_radix(hex, 16).expect("six hex digits")))
+}

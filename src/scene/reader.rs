@@ -1,0 +1,149 @@
+//! Typed access to JSON objects with every problem recorded at its JSON path.
+//!
+//! Validation code asks for fields through a [`Reader`]; a wrong type, an unknown or duplicate
+//! key becomes a [`Problem`] and the read returns `None`, so one pass reports everything.
+
+use crate::json::{Node, Value};
+use crate::problem::{Problem, join_key, suggestion};
+
+/// Collects the problems found while reading one document.
+#[derive(Debug, Default)]
+pub struct Reader {
+    /// Problems in the order found.
+    pub problems: Vec<Problem>,
+}
+
+/// An object's members, checked for unknown and duplicate keys.
+#[derive(Debug, Clone, Copy)]
+pub struct Object<'a> {
+    members: &'a [(String, Node)],
+    path: &'a str,
+}
+
+impl<'a> Object<'a> {
+    /// Wraps members that were already checked for unknown keys elsewhere.
+    pub fn from_members(members: &'a [(String, Node)], path: &'a str) -> Object<'a> {
+        Object { members, path }
+    }
+
+    /// The node under `key`, if present.
+    pub fn get(&self, key: &str) -> Option<&'a Node> {
+        self.members.iter().find(|(k, _)| k == key).map(|(_, n)| n)
+    }
+
+    /// The JSON path of `key` in this object.
+    pub fn path_of(&self, key: &str) -> String {
+        join_key(self.path, key)
+    }
+
+    /// The object's JSON path.
+    pub fn path(&self) -> &'a str {
+        self.path
+    }
+}
+
+impl Reader {
+    /// Records a problem.
+    pub fn report(&mut self, at: impl Into<String>, message: impl Into<String>) {
+        self.problems.push(Problem::new(at, message));
+    }
+
+    /// Reads `node` as an object whose keys must all be in `allowed`; unknown keys (with a
+    /// "did you mean") and duplicates are reported, the object is still returned.
+    pub fn object<'a>(&mut self, node: &'a Node, path: &'a str, allowed: &[&str]) -> Option<Object<'a>> {
+        let Value::Object(members) = &node.value else {
+            self.report(path, format!("expected an object (got {node})"));
+            return None;
+        };
+        for (i, (key, value)) in members.iter().enumerate() {
+            if members[..i].iter().any(|(k, _)| k == key) {
+                self.report(join_key(path, key), "duplicate key");
+            } else if !allowed.contains(&key.as_str()) {
+                self.report(
+                    join_key(path, key),
+                    format!(
+                        "unknown key (got {value}, expected one of: {}){}",
+                        allowed.join(", "),
+                        suggestion(key, allowed.iter().copied())
+                    ),
+                );
+            }
+        }
+        Some(Object { members, path })
+    }
+
+    /// A string field; `None` when absent or of the wrong type (reported).
+    pub fn string(&mut self, object: &Object, key: &str) -> Option<String> {
+        let node = object.get(key)?;
+        match &node.value {
+            Value::String(s) => Some(s.clone()),
+            other => {
+                self.report(object.path_of(key), format!("expected a string (got {} {node})", other.kind()));
+                None
+            }
+        }
+    }
+
+    /// A boolean field; `None` when absent or of the wrong type (reported).
+    pub fn boolean(&mut self, object: &Object, key: &str) -> Option<bool> {
+        let node = object.get(key)?;
+        match &node.value {
+            Value::Bool(b) => Some(*b),
+            other => {
+                self.report(object.path_of(key), format!("expected true or false (got {} {node})", other.kind()));
+                None
+            }
+        }
+    }
+
+    /// A number field that must satisfy `ok` (described by `expected`); `None` when absent or
+    /// invalid (reported).
+    pub fn number(&mut self, object: &Object, key: &str, ok: impl Fn(f64) -> bool, expected: &str) -> Option<f64> {
+        let node = object.get(key)?;
+        match &node.value {
+            Value::Number(n) if ok(n.value) => Some(n.value),
+            Value::Number(n) => {
+                self.report(object.path_of(key), format!("out of range (got {}, expected {expected})", n.literal));
+                None
+            }
+            other => {
+                self.report(object.path_of(key), format!("expected a number (got {} {node})", other.kind()));
+                None
+            }
+        }
+    }
+
+    /// A field holding `[low, high]` with low < high, both finite and satisfying `ok`.
+    pub fn interval(&mut self, object: &Object, key: &str, ok: impl Fn(f64) -> bool, expected: &str) -> Option<(f64, f64)> {
+        let node = object.get(key)?;
+        let at = object.path_of(key);
+        if let Value::Array(items) = &node.value {
+            if let [Node { value: Value::Number(a), .. }, Node { value: Value::Number(b), .. }] = items.as_slice() {
+                if a.value < b.value && ok(a.value) && ok(b.value) {
+                    return Some((a.value, b.value));
+                }
+                self.report(at, format!("invalid interval (got {node}, expected [low, high] with low < high, {expected})"));
+                return None;
+            }
+        }
+        self.report(at, format!("expected [low, high] (got {node})"));
+        None
+    }
+
+    /// A field holding one of `choices`; `None` when absent or invalid (reported with a suggestion).
+    pub fn choice(&mut self, object: &Object, key: &str, choices: &[&'static str]) -> Option<&'static str> {
+        let text = self.string(object, key)?;
+        let found = choices.iter().find(|&&c| c == text).copied();
+        if found.is_none() {
+            self.report(
+                object.path_of(key),
+                format!(
+                    "unknown value (got \"{text}\", expected one of: {}){}",
+                    choices.join(", "),
+                    suggestion(&text, choices.iter().copied())
+                ),
+            );
+        }
+        found
+    }
+}

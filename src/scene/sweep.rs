@@ -1,0 +1,208 @@
+//! Parameter sweeps in scene curves: a number, a list, `{"range": [a, b, s]}` (Mathematica's
+//! `Range`, exact per CONTRACTS.md) or, for Phong's exponent, `{"from_beckmann": …}` through
+//! Walter et al.'s equivalence α_p = 2/α_b² − 2.
+
+use super::reader::Reader;
+use crate::curve::{ParamKind, ParamValue, symbol};
+use crate::grid;
+use crate::json::{Node, Value};
+use crate::problem::{join_index, join_key};
+
+/// Most curves one scene may expand to (CONTRACTS.md).
+pub const MAX_CURVES_PER_SCENE: usize = 10_000;
+
+/// One value a swept parameter takes, with its legend text.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepValue {
+    /// The parameter value.
+    pub value: ParamValue,
+    /// Legend text for this value, e.g. `α_b = 0.4` or `α_p = 10.5 (α_b = 0.4)`.
+    pub label: String,
+}
+
+/// The values of one parameter of a scene curve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sweep {
+    /// Values in the order written.
+    pub values: Vec<SweepValue>,
+    /// True when written as a list, range or conversion, so its value belongs in legend labels.
+    pub varies: bool,
+}
+
+/// Expands the node of parameter `name` (of `kind`) at `path`; problems go to `reader`.
+pub fn expand(reader: &mut Reader, name: &'static str, kind: ParamKind, node: &Node, path: &str) -> Option<Sweep> {
+    let label = |v: f64| format!("{} = {}", symbol(name), crate::curve::pretty(v));
+    match (&node.value, kind) {
+        (Value::Bool(b), ParamKind::Flag) => Some(Sweep {
+            values: vec![SweepValue { value: ParamValue::Flag(*b), label: format!("{name} = {b}") }],
+            varies: false,
+        }),
+        (Value::Object(_), ParamKind::Number) if name == "alpha_p" && has_key(node, "from_beckmann") => {
+            from_beckmann(reader, node, path)
+        }
+        (_, ParamKind::Number) => {
+            let (numbers, varies) = numbers(reader, node, path)?;
+            let values = numbers.into_iter().map(|v| SweepValue { value: ParamValue::Number(v), label: label(v) }).collect();
+            Some(Sweep { values, varies })
+        }
+        (Value::Array(items), ParamKind::Flag) if !items.is_empty() => {
+            let mut values = Vec::new();
+            for (i, item) in items.iter().enumerate() {
+                match item.value {
+                    Value::Bool(b) => values.push(SweepValue { value: ParamValue::Flag(b), label: format!("{name} = {b}") }),
+                    _ => reader.report(join_index(path, i), format!("expected true or false (got {item})")),
+                }
+            }
+            (values.len() == items.len()).then_some(Sweep { values, varies: true })
+        }
+        _ => {
+            reader.report(path, format!("expected true, false or a list of them (got {node})"));
+            None
+        }
+    }
+}
+
+fn has_key(node: &Node, key: &str) -> bool {
+    matches!(&node.value, Value::Object(members) if members.iter().any(|(k, _)| k == key))
+}
+
+/// Reads a number, a non-empty list of numbers or `{"range": [a, b, s]}`; the flag says whether
+/// the value was written as a list or range.
+fn numbers(reader: &mut Reader, node: &Node, path: &str) -> Option<(Vec<f64>, bool)> {
+    match &node.value {
+        Value::Number(n) => Some((vec![n.value], false)),
+        Value::Array(items) if items.is_empty() => {
+            reader.report(path, "empty list: a sweep needs at least one value");
+            None
+        }
+        Value::Array(items) if items.len() > MAX_CURVES_PER_SCENE => {
+            reader.report(path, format!("list too long (got {} values, expected at most {MAX_CURVES_PER_SCENE})", items.len()));
+            None
+        }
+        Value::Array(items) => {
+            let mut values = Vec::with_capacity(items.len());
+            for (i, item) in items.iter().enumerate() {
+                match &item.value {
+                    Value::Number(n) => values.push(n.value),
+                    other => reader.report(join_index(path, i), format!("expected a number (got {} {item})", other.kind())),
+                }
+            }
+            (values.len() == items.len()).then_some((values, true))
+        }
+        Value::Object(_) => {
+            let object = reader.object(node, path, &["range"])?;
+            let Some(range_node) = object.get("range") else {
+                reader.report(path, format!("expected a number, a list or {{\"range\": [start, stop, step]}} (got {node})"));
+                return None;
+            };
+            range(reader, range_node, &join_key(path, "range")).map(|v| (v, true))
+        }
+        other => {
+            reader.report(path, format!("expected a number, a list or {{\"range\": [start, stop, step]}} (got {} {node})", other.kind()));
+            None
+        }
+    }
+}
+
+fn range(reader: &mut Reader, node: &Node, path: &str) -> Option<Vec<f64>> {
+    let Value::Array(items) = &node.value else {
+        reader.report(path, format!("expected [start, stop, step] (got {node})"));
+        return None;
+    };
+    let literals: Vec<_> = items
+        .iter()
+        .filter_map(|item| match &item.value {
+            Value::Number(n) => Some(n),
+            _ => None,
+        })
+        .collect();
+    let [start, stop, step] = literals[..] else {
+        reader.report(path, format!("expected [start, stop, step] of three numbers (got {node})"));
+        return None;
+    };
+    if items.len() != 3 {
+        reader.report(path, format!("expected [start, stop, step] of three numbers (got {node})"));
+        return None;
+    }
+    let decimals = start.decimals().zip(step.decimals()).map(|(a, s)| a.max(s));
+    match grid::range(start.value, stop.value, step.value, decimals, MAX_CURVES_PER_SCENE) {
+        Ok(values) => Some(values),
+        Err(error) => {
+            reader.report(path, format!("{error} (got {node})"));
+            None
+        }
+    }
+}
+
+/// α_p = 2/α_b² − 2 for α_b ∈ (0, 1] (Walter et al. 2007); beyond 1 the exponent would be negative.
+pub fn phong_from_beckmann(alpha_b: f64) -> Option<f64> {
+    (alpha_b > 0.0 && alpha_b <= 1.0).then(|| 2.0 / (alpha_b * alpha_b) - 2.0)
+}
+
+fn from_beckmann(reader: &mut Reader, node: &Node, path: &str) -> Option<Sweep> {
+    let object = reader.object(node, path, &["from_beckmann"])?;
+    let inner_path = join_key(path, "from_beckmann");
+    let (alphas, _) = numbers(reader, object.get("from_beckmann")?, &inner_path)?;
+    let mut values = Vec::with_capacity(alphas.len());
+    for alpha_b in alphas {
+        match phong_from_beckmann(alpha_b) {
+            Some(alpha_p) => values.push(SweepValue {
+                value: ParamValue::Number(alpha_p),
+                label: format!("α_p = {} (α_b = {})", crate::curve::pretty(alpha_p), crate::curve::pretty(alpha_b)),
+            }),
+            None => reader.report(
+                inner_path.clone(),
+                format!("Beckmann-to-Phong conversion needs 0 < α_b ≤ 1 (got {alpha_b:?}, α_p = 2/α_b² − 2 would be negative or infinite)"),
+            ),
+        }
+    }
+    Some(Sweep { values, varies: true })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::json;
+
+    fn run(text: &str, name: &'static str) -> (Option<Sweep>, Vec<String>) {
+        let node = json::parse(text).unwrap();
+        let mut reader = Reader::default();
+        let sweep = expand(&mut reader, name, ParamKind::Number, &node, "p");
+        (sweep, reader.problems.iter().map(|p| format!("{}: {}", p.at, p.message)).collect())
+    }
+
+    fn numbers_of(sweep: &Sweep) -> Vec<f64> {
+        sweep.values.iter().map(|v| v.value.number()).collect()
+    }
+
+    #[test]
+    fn ranges_lists_and_conversions() {
+        let (sweep, _) = run(r#"{"range": [0.4, 1.0, 0.1]}"#, "alpha_b");
+        assert_eq!(numbers_of(&sweep.unwrap()), [0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0]);
+        let (sweep, _) = run("[1, 10, 100]", "alpha_abc1");
+        let sweep = sweep.unwrap();
+        assert_eq!((numbers_of(&sweep), sweep.varies), (vec![1.0, 10.0, 100.0], true));
+        assert_eq!(sweep.values[1].label, "a₁ = 10");
+        let (sweep, _) = run(r#"{"from_beckmann": {"range": [0.2, 0.5, 0.1]}}"#, "alpha_p");
+        let sweep = sweep.unwrap();
+        assert_eq!(numbers_of(&sweep)[0], 2.0 / (0.2 * 0.2) - 2.0);
+        assert_eq!(sweep.values[2].label, "α_p = 10.5 (α_b = 0.4)");
+    }
+
+    #[test]
+    fn bad_sweeps_are_reported_at_their_path() {
+        for (text, needle) in [
+            ("[]", "empty list"),
+            (r#"{"range": [0, 1, 0]}"#, "step must not be 0"),
+            (r#"{"range": [0, 1, -0.1]}"#, "away from stop"),
+            (r#"{"range": [0, 1e9, 1e-9]}"#, "exceed the cap"),
+            (r#"{"range": [0, 1]}"#, "three numbers"),
+            (r#"{"rang": [0, 1, 0.1]}"#, "did you mean \"range\""),
+            (r#"{"from_beckmann": 1.2}"#, "0 < α_b ≤ 1"),
+            (r#"["a"]"#, "p[0]: expected a number"),
+        ] {
+            let (_, problems) = run(text, "alpha_p");
+            assert!(problems.iter().any(|p| p.contains(needle)), "{text}: {problems:?}");
+        }
+    }
+}

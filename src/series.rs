@@ -1,0 +1,122 @@
+//! The evaluated figure: the one result type between the sampler and every exporter.
+//!
+//! Exporters (SVG, PNG, CSV) turn a [`Figure`] into bytes and never decide what to compute.
+
+use std::sync::Arc;
+
+/// An sRGB colour, 8 bits per channel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Rgb(pub u8, pub u8, pub u8);
+
+impl Rgb {
+    /// Builds a colour from `0xRRGGBB`.
+    pub fn from_hex(hex: u32) -> Rgb {
+        Rgb((hex >> 16) as u8, (hex >> 8) as u8, hex as u8)
+    }
+}
+
+/// Line pattern of a series.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Dash {
+    /// Continuous line.
+    Solid,
+    /// Long dashes.
+    Dashed,
+    /// Short dots.
+    Dotted,
+}
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Style {
+    /// Line colour.
+    pub colour: Rgb,
+    /// Line width in multiples of the default width (1.0 normal, 2.0 "thick").
+    pub width: f64,
+    /// Line pattern.
+    pub dash: Dash,
+}
+
+/// Unit in which θ is shown on the x axis (data are always radians).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AngleUnit {
+    /// x axis labelled in radians.
+    Radians,
+    /// x axis labelled in degrees (x values multiplied by 180/π for display).
+    Degrees,
+}
+
+/// Scale of the y axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum YScale {
+    /// Linear y.
+    Linear,
+    /// Base-10 logarithmic y (non-positive values are not drawn).
+    Log,
+}
+
+/// One drawn series: a polyline of (θ, value) points with its style and legend label.
+#[derive(Debug, Clone)]
+pub struct Series {
+    /// Legend label, e.g. `α_b = 0.4`.
+    pub label: String,
+    /// Canonical curve JSON, used as the `curve` column of the CSV.
+    pub curve: String,
+    /// Drawing style.
+    pub style: Style,
+    /// Sampled points (θ in radians, value), θ increasing. Shared when several panels show one curve.
+    pub points: Arc<Vec<(f64, f64)>>,
+}
+
+/// One panel (sub-plot) of a figure.
+#[derive(Debug, Clone)]
+pub struct Panel {
+    /// Panel title; empty for none.
+    pub title: String,
+    /// x axis label.
+    pub x_label: String,
+    /// y axis label.
+    pub y_label: String,
+    /// Unit of the θ axis.
+    pub x_unit: AngleUnit,
+    /// Scale of the y axis.
+    pub y_scale: YScale,
+    /// Displayed x range in radians; `None` = the sampled θ range.
+    pub x_range: Option<(f64, f64)>,
+    /// Displayed y range; `None` = automatic, every point visible (PlotRange → All).
+    pub y_range: Option<(f64, f64)>,
+    /// Whether to draw a legend.
+    pub legend: bool,
+    /// Series in drawing order.
+    pub series: Vec<Series>,
+}
+
+/// Page geometry and typography of a figure.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Canvas {
+    /// Figure width in CSS pixels (SVG user units).
+    pub width_px: u32,
+    /// Figure height in CSS pixels.
+    pub height_px: u32,
+    /// PNG pixels per CSS pixel (2.0 gives a 2× raster).
+    pub png_scale: f64,
+    /// Base font size in CSS pixels (tick labels; titles are larger).
+    pub font_px: f64,
+}
+
+/// A figure ready for export: panels laid out on a `rows × cols` grid, filled row by row.
+#[derive(Debug, Clone)]
+pub struct Figure {
+    /// Scene id; output files are `<id>.<ext>`.
+    pub id: String,
+    /// Figure title drawn above the panels; empty for none.
+    pub title: String,
+    /// Grid rows.
+    pub rows: usize,
+    /// Grid columns.
+    pub cols: usize,
+    /// Size and typography.
+    pub canvas: Canvas,
+    /// Panels, row-major; `panels.len() <= rows * cols`.
+    pub panels: Vec<Panel>,
+}

@@ -1,0 +1,344 @@
+//! The real `ndfplot` binary on fixtures: happy paths, the output contracts of CONTRACTS.md, and
+//! every kind of bad input (exit 2, nothing on stdout, one line per problem on stderr).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+fn ndfplot(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ndfplot")).args(args).output().expect("the binary runs")
+}
+
+fn ndfplot_stdin(args: &[&str], stdin: &str) -> Output {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    child.stdin.take().unwrap().write_all(stdin.as_bytes()).unwrap();
+    child.wait_with_output().unwrap()
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8(output.stdout.clone()).unwrap()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8(output.stderr.clone()).unwrap()
+}
+
+/// Asserts exit 2, empty stdout, and that every stderr line is an `error:` line and one of them
+/// contains `needle`.
+fn assert_input_error(output: &Output, needle: &str) {
+    let err = stderr(output);
+    assert_eq!(output.status.code(), Some(2), "stderr: {err}");
+    assert!(output.stdout.is_empty(), "stdout: {}", stdout(output));
+    assert!(err.lines().all(|l| l.starts_with("error: ")), "stderr: {err}");
+    assert!(err.contains(needle), "expected {needle:?} in: {err}");
+}
+
+/// A fresh, empty folder under the target directory.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn files_in(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> =
+        std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn eval_prints_theta_value_csv_in_round_trip_form() {
+    let out = ndfplot(&["eval", "--curve", r#"{"ndf":"phong","alpha_p":0}"#, "--theta", "0,0.5,1.5707963267948966"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let text = stdout(&out);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "theta,value");
+    let pi_inv = std::f64::consts::FRAC_1_PI;
+    assert_eq!(lines[1..], [format!("0.0,{pi_inv:?}"), format!("0.5,{pi_inv:?}"), format!("1.5707963267948966,{pi_inv:?}")]);
+}
+
+#[test]
+fn eval_linspace_degrees_and_several_curves() {
+    let out = ndfplot(&[
+        "eval",
+        "--curve",
+        r#"{"ndf":"ggx","alpha_tr":1}"#,
+        "--curve",
+        r#"{"ndf":"beckmann","alpha_b":0.5}"#,
+        "--theta",
+        "0:90:3",
+        "--degrees",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let text = stdout(&out);
+    let mut rows = text.lines();
+    assert_eq!(
+        rows.next().unwrap(),
+        r#"theta,"{""ndf"":""trowbridge_reitz"",""alpha_tr"":1.0}","{""ndf"":""beckmann"",""alpha_b"":0.5}""#
+    );
+    let thetas: Vec<f64> = rows.map(|r| r.split(',').next().unwrap().parse().unwrap()).collect();
+    assert_eq!(thetas, [0.0, std::f64::consts::FRAC_PI_4, std::f64::consts::FRAC_PI_2]);
+}
+
+#[test]
+fn eval_reads_curves_from_a_file_and_from_json_lines_on_stdin() {
+    let dir = scratch("eval-inputs");
+    let file = dir.join("curve.json");
+    std::fs::write(&file, r#"{"ndf": "beckmann", "alpha_b": 0.5}"#).unwrap();
+    let from_file = ndfplot(&["eval", "--curve", &format!("@{}", file.display()), "--theta", "0.3"]);
+    let inline = ndfplot(&["eval", "--curve", r#"{"ndf":"beckmann","alpha_b":0.5}"#, "--theta", "0.3"]);
+    assert_eq!(stdout(&from_file), stdout(&inline));
+    let lines = "{\"ndf\":\"beckmann\",\"alpha_b\":0.5}\n\n{\"ndf\":\"phong\",\"alpha_p\":2}\n";
+    let out = ndfplot_stdin(&["eval", "--curve", "-", "--theta", "0.3"], lines);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(stdout(&out).starts_with("theta,\"{\"\"ndf\"\":\"\"beckmann\"\""), "{}", stdout(&out));
+    let bad = ndfplot_stdin(&["eval", "--curve", "-", "--theta", "0.3"], "{\"ndf\":\"phong\",\"alpha_p\":2}\n{\"ndf\":\"phon\"}\n");
+    assert_input_error(&bad, "stdin:2: ndf: unknown ndf model");
+}
+
+#[test]
+fn eval_values_match_the_library() {
+    let thetas = "0,1e-8,0.25,1.0,1.5707963267948966";
+    let out = ndfplot(&["eval", "--curve", r#"{"ndf":"abc","alpha_abc1":23.5,"alpha_abc2":1.75}"#, "--theta", thetas]);
+    let curve = ndfplot::curve::parse(
+        &ndfplot::json::parse(r#"{"ndf":"abc","alpha_abc1":23.5,"alpha_abc2":1.75}"#).unwrap(),
+        "",
+    )
+    .unwrap();
+    for line in stdout(&out).lines().skip(1) {
+        let (theta, value) = line.split_once(',').unwrap();
+        let (theta, value): (f64, f64) = (theta.parse().unwrap(), value.parse().unwrap());
+        assert_eq!(value.to_bits(), curve.eval(theta).to_bits(), "θ = {theta}");
+    }
+}
+
+#[test]
+fn eval_bad_input_exits_2_naming_the_problem() {
+    let theta = ["--theta", "0.1"];
+    let cases: &[(&[&str], &str)] = &[
+        (&["--curve", r#"{"ndf":"phong","alpha_p":1"#], "--curve: 1:27: invalid JSON"),
+        (&["--curve", r#"{"ndf":"becmann","alpha_b":1}"#], "did you mean \"beckmann\""),
+        (&["--curve", r#"{"ndf":"beckmann","alpha":1}"#], "--curve: alpha: unknown key"),
+        (&["--curve", r#"{"ndf":"beckmann","alpha_b":"x"}"#], "alpha_b: expected a number"),
+        (&["--curve", r#"{"ndf":"abc","alpha_abc1":1}"#], "alpha_abc2: missing parameter"),
+        (&["--curve", r#"{"ndf":"beckmann","alpha_b":-0.5}"#], "alpha_b: out of domain (got -0.5"),
+        (&["--curve", r#"{"ndf":"beckmann","alpha_b":0.5,"alpha_b":0.6}"#], "alpha_b: duplicate key"),
+        (&["--curve", r#"{"ndf":"phong","alpha_p":1e999}"#], "outside the range of a double"),
+        (&["--curve", "@/nonexistent/curve.json"], "/nonexistent/curve.json"),
+    ];
+    for (args, needle) in cases {
+        let mut all = vec!["eval"];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&theta);
+        assert_input_error(&ndfplot(&all), needle);
+    }
+    let curve = r#"{"ndf":"phong","alpha_p":1}"#;
+    for (list, needle) in [
+        ("abc", "not a number"),
+        ("0:1:0", "count must be from 1"),
+        ("nan", "not a finite number"),
+        ("0:1:100000000000000", "count must be from 1"),
+        ("1.6", "angle out of range"),
+        ("-0.1", "angle out of range"),
+        ("0,1:2:3", "not both"),
+    ] {
+        assert_input_error(&ndfplot(&["eval", "--curve", curve, &format!("--theta={list}")]), needle);
+    }
+}
+
+#[test]
+fn eval_reports_every_bad_curve_at_once() {
+    let out = ndfplot(&[
+        "eval",
+        "--curve",
+        r#"{"ndf":"phong","alpha_q":1}"#,
+        "--curve",
+        r#"{"ndf":"ggx","alpha_tr":0}"#,
+        "--theta",
+        "0",
+    ]);
+    assert_input_error(&out, "--curve[0]: alpha_q: unknown key");
+    assert!(stderr(&out).contains("--curve[1]: alpha_tr: out of domain"), "{}", stderr(&out));
+}
+
+#[test]
+fn eval_into_a_closed_pipe_is_not_an_error() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .args(["eval", "--curve", r#"{"ndf":"phong","alpha_p":5}"#, "--theta", "0:1.5:2000000"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(out.stderr.is_empty(), "{}", stderr(&out));
+}
+
+const SPEC: &str = r#"{
+  "id": "two-panels",
+  "title": "Test figure",
+  "panels": [
+    {"curves": [{"ndf": "beckmann", "alpha_b": {"range": [0.4, 1.0, 0.1]}}]},
+    {"x": {"unit": "degrees", "range": [0, 60]}, "y": {"scale": "log"},
+     "curves": [{"ndf": "beckmann", "alpha_b": 0.5}, {"ndf": "phong", "alpha_p": {"from_beckmann": [0.3, 0.5]}, "style": ["thick", "dashed"]}]}
+  ],
+  "sampling": {"uniform": 50}
+}"#;
+
+#[test]
+fn render_writes_svg_png_csv_and_csv_values_equal_eval() {
+    let dir = scratch("render-basic");
+    let spec = dir.join("spec.json");
+    std::fs::write(&spec, SPEC).unwrap();
+    let out_dir = dir.join("out");
+    let out = ndfplot(&["render", spec.to_str().unwrap(), "-o", out_dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(files_in(&out_dir), ["two-panels.csv", "two-panels.png", "two-panels.svg"]);
+    let csv = std::fs::read_to_string(out_dir.join("two-panels.csv")).unwrap();
+    let mut reader = csv::Reader::from_reader(csv.as_bytes());
+    assert_eq!(reader.headers().unwrap(), vec!["panel", "series", "curve", "x", "y"]);
+    let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), (7 + 3) * 50);
+    let series_of_panel_0: std::collections::BTreeSet<&str> =
+        rows.iter().filter(|r| &r[0] == "0").map(|r| r.get(1).unwrap()).collect();
+    assert_eq!(series_of_panel_0.len(), 7, "Range[0.4, 1.0, 0.1] gives 7 curves");
+    assert!(rows.iter().any(|r| &r[2] == r#"{"ndf":"beckmann","alpha_b":1.0}"#));
+    // The degree panel samples only its visible range, 0 … 60°.
+    let max_x = rows.iter().filter(|r| &r[0] == "1").map(|r| r[3].parse::<f64>().unwrap()).fold(0.0, f64::max);
+    assert_eq!(max_x, 60.0 * std::f64::consts::PI / 180.0);
+    // Every value equals `eval` for the same curve and θ.
+    for row in rows.iter().step_by(37) {
+        let eval = ndfplot(&["eval", "--curve", &row[2], "--theta", &row[3]]);
+        let value = stdout(&eval).lines().nth(1).unwrap().split(',').nth(1).unwrap().to_string();
+        assert_eq!(value, &row[4], "{row:?}");
+    }
+    let svg = std::fs::read_to_string(out_dir.join("two-panels.svg")).unwrap();
+    assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"), "not an SVG");
+    assert!(svg.contains("Test figure") && svg.contains("α_b = 0.4"), "labels missing from SVG");
+    let png = std::fs::read(out_dir.join("two-panels.png")).unwrap();
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+}
+
+#[test]
+fn render_output_is_identical_across_runs_and_thread_counts() {
+    let dir = scratch("render-determinism");
+    let spec = dir.join("spec.json");
+    std::fs::write(&spec, SPEC).unwrap();
+    let mut outputs = Vec::new();
+    for (run, threads) in [("a", "2"), ("b", "2"), ("c", "1")] {
+        let out_dir = dir.join(run);
+        let status = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+            .args(["render", spec.to_str().unwrap(), "-o", out_dir.to_str().unwrap()])
+            .env("RAYON_NUM_THREADS", threads)
+            .status()
+            .unwrap();
+        assert!(status.success());
+        let bytes: Vec<Vec<u8>> = files_in(&out_dir).iter().map(|f| std::fs::read(out_dir.join(f)).unwrap()).collect();
+        outputs.push(bytes);
+    }
+    assert_eq!(outputs[0], outputs[1]);
+    assert_eq!(outputs[0], outputs[2]);
+}
+
+#[test]
+fn render_formats_and_canvas_flags() {
+    let dir = scratch("render-formats");
+    let spec = dir.join("spec.json");
+    std::fs::write(&spec, SPEC).unwrap();
+    let out_dir = dir.join("out");
+    let out = ndfplot(&[
+        "render",
+        spec.to_str().unwrap(),
+        "-o",
+        out_dir.to_str().unwrap(),
+        "--format",
+        "png",
+        "--width",
+        "400",
+        "--height",
+        "300",
+        "--png-scale",
+        "1.5",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(files_in(&out_dir), ["two-panels.png"]);
+    let png = std::fs::read(out_dir.join("two-panels.png")).unwrap();
+    let width = u32::from_be_bytes(png[16..20].try_into().unwrap());
+    let height = u32::from_be_bytes(png[20..24].try_into().unwrap());
+    assert_eq!((width, height), (600, 450));
+    assert_input_error(&ndfplot(&["render", spec.to_str().unwrap(), "--format", "gif"]), "unknown format");
+}
+
+#[test]
+fn render_without_arguments_renders_the_catalogue_into_plots() {
+    let dir = scratch("render-catalogue");
+    let out = Command::new(env!("CARGO_BIN_EXE_ndfplot")).arg("render").current_dir(&dir).output().unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let files = files_in(&dir.join("plots"));
+    let configs = files_in(&Path::new(env!("CARGO_MANIFEST_DIR")).join("configs"));
+    for config in configs.iter().filter(|c| c.ends_with(".json")) {
+        let id = config.trim_end_matches(".json");
+        for ext in ["svg", "png", "csv"] {
+            assert!(files.contains(&format!("{id}.{ext}")), "missing {id}.{ext}");
+        }
+    }
+    assert!(!files.iter().any(|f| f.starts_with('.')), "temporaries left: {files:?}");
+}
+
+#[test]
+fn render_bad_specs_exit_2_name_file_path_and_value_and_write_nothing() {
+    let dir = scratch("render-bad");
+    let cases = [
+        ("{\n  \"id\": \"x\",\n  \"panels\": [}\n", "bad.json: 3:14: invalid JSON"),
+        (r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}],"colour":"red"}"#, "colour: unknown key"),
+        (r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":1,"stlye":"thick"}]}]}"#, "did you mean \"style\""),
+        (r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":[]}]}]}"#, "panels[0].curves[0].alpha_p: empty list"),
+        (r#"{"id":"x","panels":[{"curves":[{"ndf":"beckmann","alpha_b":{"range":[0,1,0]}}]}]}"#, "alpha_b.range: step must not be 0"),
+        (r#"{"id":"x","panels":[{"curves":[{"ndf":"beckmann","alpha_b":{"range":[1,0,0.1]}}]}]}"#, "away from stop"),
+        (r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":{"from_beckmann":1.5}}]}]}"#, "alpha_p.from_beckmann: Beckmann-to-Phong conversion needs 0 < α_b ≤ 1 (got 1.5"),
+        (r#"{"id":"../x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#, "id: invalid id (got \"../x\""),
+        (r#"{"id":"/tmp/x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#, "invalid id"),
+        (r#"{"id":"a/b","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#, "invalid id"),
+        (r#"{"id":"x","panels":[{"curves":[{"ndf":"beckmann","alpha_b":{"range":[0,1e9,1e-9]}}]}]}"#, "exceed the cap"),
+        (r#"{"id":"x","sampling":{"uniform":1e14},"panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#, "sampling.uniform: out of range"),
+        (r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}],"x":{"range":[0,2]}}]}"#, "panels[0].x.range: invalid interval"),
+        (r#"{"$schema":"s.json","id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":-1}]}]}"#, "panels[0].curves[0].alpha_p: out of domain"),
+    ];
+    for (text, needle) in cases {
+        let spec = dir.join("bad.json");
+        std::fs::write(&spec, text).unwrap();
+        let out_dir = dir.join("out");
+        let out = ndfplot(&["render", spec.to_str().unwrap(), "-o", out_dir.to_str().unwrap()]);
+        assert_input_error(&out, needle);
+        assert!(stderr(&out).contains("bad.json"), "{}", stderr(&out));
+        assert!(!out_dir.exists(), "{text}: output written");
+    }
+}
+
+#[test]
+fn render_reports_all_problems_of_all_files_and_duplicate_ids() {
+    let dir = scratch("render-many-bad");
+    std::fs::write(dir.join("a.json"), r#"{"id":"same","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#).unwrap();
+    std::fs::write(dir.join("b.json"), r#"{"id":"same","panels":[{"curves":[{"ndf":"phong","alpha_p":2}]}]}"#).unwrap();
+    std::fs::write(
+        dir.join("c.json"),
+        r#"{"id":"c","panels":[{"curves":[{"ndf":"phong","alpha_p":-1},{"ndf":"ggx","alpha_tr":"x"}]}]}"#,
+    )
+    .unwrap();
+    let out_dir = dir.join("out");
+    let out = ndfplot(&["render", dir.to_str().unwrap(), "-o", out_dir.to_str().unwrap()]);
+    assert_input_error(&out, "b.json: id: duplicate id (got \"same\"");
+    let err = stderr(&out);
+    assert!(err.contains("c.json: panels[0].curves[0].alpha_p: out of domain"), "{err}");
+    assert!(err.contains("c.json: panels[0].curves[1].alpha_tr: expected a number"), "{err}");
+    assert!(!out_dir.exists());
+}
