@@ -14,19 +14,27 @@
 //!   is the unique root of (ln h)′, found by bisection. a_max(0) = 4 (at x = 1/2) and
 //!   a_max(1) = 1/((1/7)(6/7)⁶) ≈ 17.65 (at x = 6/7).
 //!
-//! Stable forms: x = 1 − cos θ is computed as 2 sin²(θ/2), since 1 − cos θ rounds to 0 for
-//! θ < 1e-8 and loses relative accuracy for small θ; results are clamped into [0, 1] against
-//! rounding at the ends of the domain.
+//! Stable forms: for θ < π/3, x = 1 − cos θ is computed as 2 sin²(θ/2), since 1 − cos θ rounds to
+//! 0 for θ < 1e-8 and loses relative accuracy for small θ; beyond, 1 − cos θ is the more accurate
+//! form. The Lazanyi results are clamped into [0, 1] against rounding at the ends of the domain.
 
 /// Peak of the Lazanyi term c (1 − c)⁶, at c = 1/7 (where its derivative (1 − c)⁵ (1 − 7c) vanishes):
 /// (1/7)(6/7)⁶.
 pub const LAZANYI_TERM_PEAK: f64 =
     (1.0 / 7.0) * (6.0 / 7.0) * (6.0 / 7.0) * (6.0 / 7.0) * (6.0 / 7.0) * (6.0 / 7.0) * (6.0 / 7.0);
 
-/// 1 − cos θ as 2 sin²(θ/2), at most 1 (θ ∈ [0, π/2]).
+/// 1 − cos θ for θ ∈ [0, π/2], in [0, 1]: 2 sin²(θ/2) for θ < π/3, 1 − cos θ beyond.
+///
+/// 2 sin²(θ/2) is accurate to ~3 ulps everywhere; 1 − cos θ is accurate to ε c/(2(1 − c)), at most
+/// ε/2 for c ≤ 1/2 (θ ≥ π/3), and near π/2 it is the better one (it keeps the 1 − 6e-17 of
+/// θ = fl(π/2), which 2 sin²(π/4) rounds 2 ulps below 1).
 fn one_minus_cos(theta: f64) -> f64 {
-    let sin_half = (0.5 * theta).sin();
-    (2.0 * sin_half * sin_half).min(1.0)
+    if theta < std::f64::consts::FRAC_PI_3 {
+        let sin_half = (0.5 * theta).sin();
+        2.0 * sin_half * sin_half
+    } else {
+        1.0 - theta.cos()
+    }
 }
 
 /// Schlick's approximation F = F₀ + (1 − F₀)(1 − cos θ)⁵, for `f0` ∈ [0, 1] and θ ∈ [0, π/2].
