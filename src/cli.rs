@@ -79,10 +79,20 @@ fn eval_help() -> String {
         text.push_str(&format!("  ndf {:<18} {}\n", family.name(), family.domain()));
     }
     text.push_str("  (ggx is an alias of trowbridge_reitz)\n");
-    text.push_str(crate::fresnel::DOMAIN_HELP);
+    text.push_str(FRESNEL_HELP);
     text.push_str(
         "\nOutput: CSV with header theta,value (one curve) or theta,<curve JSON>... (several);\n\
          numbers in shortest round-trip form. Exit 2 on bad input, with one error line per problem.",
     );
     text
 }
+
+/// The Fresnel curve models and their parameter domains, for `eval --help`.
+const FRESNEL_HELP: &str = "\
+  fresnel exact        eta in [1e-150, 1e150], kappa in [0, 1e150] (default 0); or r in [0, 1), g in [0, 1], g_remap
+  fresnel schlick      f0 in [0, 1]; or eta/kappa; or r/g/g_remap (F0 of the exact Fresnel)
+  fresnel lazanyi      f0 in [0, 1], a such that 0 <= F <= 1 (a in [-5(1 - f0), a_max(f0)], a_max(0) = 4)
+  fresnel lazanyi_term no parameters: c(1 - c)^6 normalized to a maximum of 1
+  fresnel belcour      eta/kappa or r/g/g_remap: the four-term basis reconstruction
+  fresnel basis        index 0, 1, 2 or 3: one basis function
+";

@@ -85,7 +85,7 @@ fn fresnel_params(f: &Fresnel) -> Vec<(&'static str, ParamValue)> {
             vec![("f0", ParamValue::Number(*f0)), ("a", ParamValue::Number(*a))]
         }
         Fresnel::LazanyiTerm => vec![],
-        Fresnel::Belcour(belcour) => ior_params(&belcour.ior()),
+        Fresnel::Belcour(ior, _) => ior_params(ior),
         Fresnel::Basis(index) => vec![("index", ParamValue::Number(*index as f64))],
     }
 }
@@ -153,7 +153,7 @@ impl FresnelModel {
             Fresnel::Schlick(_) => FresnelModel::Schlick,
             Fresnel::Lazanyi { .. } => FresnelModel::Lazanyi,
             Fresnel::LazanyiTerm => FresnelModel::LazanyiTerm,
-            Fresnel::Belcour(_) => FresnelModel::Belcour,
+            Fresnel::Belcour(..) => FresnelModel::Belcour,
             Fresnel::Basis(_) => FresnelModel::Basis,
         }
     }
@@ -263,12 +263,12 @@ impl Model {
             }
             Model::Fresnel(model) => Curve::Fresnel(match model {
                 FresnelModel::Exact => Fresnel::Exact(ior(0)?),
-                FresnelModel::Schlick if signature == 0 => Fresnel::schlick(SchlickF0::F0(n(0)))?,
-                FresnelModel::Schlick => Fresnel::schlick(SchlickF0::Ior(ior(0)?))?,
+                FresnelModel::Schlick if signature == 0 => Fresnel::schlick(n(0))?,
+                FresnelModel::Schlick => Fresnel::Schlick(SchlickF0::Ior(ior(0)?)),
                 FresnelModel::Lazanyi => Fresnel::lazanyi(n(0), n(1))?,
                 FresnelModel::LazanyiTerm => Fresnel::LazanyiTerm,
                 FresnelModel::Belcour => Fresnel::belcour(ior(0)?),
-                FresnelModel::Basis => Fresnel::basis(n(0))?,
+                FresnelModel::Basis => Fresnel::basis(whole_index(n(0))?)?,
             }),
         })
     }
@@ -287,6 +287,15 @@ impl Model {
             "ndf" => Family::NAMES.to_vec(),
             _ => FresnelModel::ALL.iter().map(|m| m.name()).collect(),
         }
+    }
+}
+
+/// A basis index given as a JSON number: it must be a whole number (0, 1, 2 or 3).
+fn whole_index(value: f64) -> Result<usize, DomainError> {
+    if value.fract() == 0.0 && (0.0..=3.0).contains(&value) {
+        Ok(value as usize)
+    } else {
+        Err(DomainError::new("index", value, "0, 1, 2 or 3"))
     }
 }
 

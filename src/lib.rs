@@ -1,10 +1,25 @@
 //! ndfplot: plot and compare microfacet NDFs and Fresnel reflectance, exactly and fast.
 //!
-//! Data flows one way: curve/scene JSON → validated model → sampling plan → evaluated series → output.
-//! The maths (`ndf`, `fresnel`, `math`) is pure f64 code with no I/O.
+//! Data flows one way: curve/scene JSON → validated model (`curve`, `scene`) → sampling plan
+//! (`plan`) → evaluated series (`sample`, `series`) → output (`output`). The maths (`ndf`,
+//! `fresnel`, `math`) is pure f64 code with no I/O.
 
+pub mod catalogue;
+pub mod cli;
+pub mod cmd;
+pub mod curve;
 pub mod domain;
+pub mod error;
 pub mod fresnel;
+pub mod grid;
+pub mod input;
+pub mod json;
 pub mod math;
 pub mod ndf;
 pub mod output;
+pub mod plan;
+pub mod problem;
+pub mod sample;
+pub mod scene;
+pub mod series;
+pub mod stdout;

@@ -1,1 +1,5 @@
+//! Exporters: turn evaluated figures into bytes, and the one place that writes files.
+
+pub mod csv;
 pub mod plot;
+pub mod write;
