@@ -26,6 +26,7 @@ use nalgebra::DMatrix;
 
 use super::exact::{one_minus_reflectance, reflectance};
 use super::gulbrandsen;
+use crate::grid::linspace;
 
 /// Number of grid nodes c_i (MATH.md step 1).
 pub const GRID_SIZE: usize = 1000;
@@ -49,15 +50,6 @@ const TRAINING_ETA_START: f64 = 1.1;
 
 /// Number of dielectrics in the spectrum check (MATH.md step 6).
 const SPECTRUM_SIZE: usize = 100;
-
-/// numpy's `linspace(start, stop, count)` (count ≥ 2): start + i·step with step = (stop − start)/(count − 1),
-/// the last value exactly `stop`.
-fn linspace(start: f64, stop: f64, count: usize) -> Vec<f64> {
-    let step = (stop - start) / (count - 1) as f64;
-    let mut values: Vec<f64> = (0..count - 1).map(|i| i as f64 * step + start).collect();
-    values.push(stop);
-    values
-}
 
 /// The grid c_i = numpy `linspace(0, 1, 1000)`, i.e. i·fl(1/999) with c₉₉₉ = 1 exactly.
 pub fn grid() -> Vec<f64> {
