@@ -101,6 +101,9 @@ const MAX_DEVICE_PIXELS: u64 = 1 << 26;
 
 /// Name under which the embedded face is registered; the SVG names it first.
 const FONT_NAME: &str = "DejaVu Sans";
+/// Em of the face per plotters text size: ab_glyph scales DejaVu Sans so that ascender −
+/// descender (1901 + 483 font units) spans the size, and one em is 2048 units.
+const EM_PER_SIZE: f64 = 2048.0 / 2384.0;
 /// `font-family` written into the SVG: the embedded face, then the generic fallback.
 const SVG_FONT_FAMILY: &str = "DejaVu Sans, sans-serif";
 
@@ -186,7 +189,8 @@ fn draw_err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> P
 struct Metrics {
     /// Device pixels per CSS pixel.
     k: f64,
-    /// Base font size (tick labels) in device pixels.
+    /// plotters text size of the tick labels, in device pixels (their em is `font_px · k`);
+    /// the unit of all other text sizes and spacings.
     em: f64,
 }
 
@@ -243,10 +247,10 @@ where
     }
     let m = Metrics {
         k,
-        em: figure.canvas.font_px * k,
+        em: figure.canvas.font_px * k / EM_PER_SIZE,
     };
     root.fill(&WHITE).map_err(draw_err)?;
-    let body = titled(root, &figure.title, &m.font(FIGURE_TITLE_EM), &m)?;
+    let body = titled(root, &figure.title, FIGURE_TITLE_EM, &m)?;
     for (panel, cell) in figure.panels.iter().zip(body.split_evenly((rows, cols))) {
         draw_panel(&cell, panel, &m)?;
     }
@@ -257,7 +261,7 @@ where
 fn titled<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
-    style: &TextStyle,
+    ems: f64,
     m: &Metrics,
 ) -> Result<DrawingArea<DB, Shift>, PlotError>
 where
@@ -266,13 +270,17 @@ where
     if title.is_empty() {
         return Ok(area.clone());
     }
-    let pad = m.px(0.5) as i32;
-    let (_, text_h) = area.estimate_text_size(title, style).map_err(draw_err)?;
+    let style = m.font(ems);
+    let pad = f64::from(m.px(0.5));
+    // plotters' raster text puts the baseline size/2 below a top anchor, so ascenders rise
+    // ≈0.3 × size above it (ascent 1901/2384 of the size for DejaVu Sans): start that much lower.
+    let top = (pad + 0.3 * ems * m.em).round() as i32;
+    let (_, text_h) = area.estimate_text_size(title, &style).map_err(draw_err)?;
     let (width, _) = area.dim_in_pixel();
     let centred = style.pos(Pos::new(HPos::Center, VPos::Top));
-    area.draw_text(title, &centred, (width as i32 / 2, pad))
+    area.draw_text(title, &centred, (width as i32 / 2, top))
         .map_err(draw_err)?;
-    Ok(area.split_vertically(text_h as i32 + 2 * pad).1)
+    Ok(area.split_vertically(top + text_h as i32 + pad as i32).1)
 }
 
 /// Draws one panel (title, axes, curves, legend) into its grid cell.
@@ -284,7 +292,7 @@ fn draw_panel<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let area = titled(cell, &panel.title, &m.font(PANEL_TITLE_EM), m)?;
+    let area = titled(cell, &panel.title, PANEL_TITLE_EM, m)?;
     let tick_font = m.font(1.0);
     let label_font = m.font(AXIS_LABEL_EM);
     let tick_len = m.px(0.35);
@@ -490,34 +498,37 @@ fn legend_position(
     let bottom = (plot_h - inset - box_h).max(inset);
     let right = (plot_w - inset - box_w).max(inset);
     let columns = [right, inset, (right + inset) / 2];
-    let rows = (0..LEGEND_HEIGHTS).map(|i| inset + (bottom - inset) * i / (LEGEND_HEIGHTS - 1));
-    let hidden = |(x0, y0): (i32, i32)| {
-        let bounds = [x0, x0 + box_w, y0, y0 + box_h].map(f64::from);
-        let mut length = 0.0;
-        for piece in pieces {
-            for pair in piece.windows(2) {
-                let ((ax, ay), (bx, by)) = (pair[0], pair[1]);
-                let apart_x = ax.max(bx) < bounds[0] || ax.min(bx) > bounds[1];
-                if apart_x || ay.max(by) < bounds[2] || ay.min(by) > bounds[3] {
+    let rows: Vec<i32> = (0..LEGEND_HEIGHTS)
+        .map(|i| inset + (bottom - inset) * i / (LEGEND_HEIGHTS - 1))
+        .collect();
+    // Hidden curve length per position, row-major; rows and columns reject segments separately.
+    let mut hidden = vec![0.0; rows.len() * columns.len()];
+    for pair in pieces.iter().flat_map(|piece| piece.windows(2)) {
+        let ((ax, ay), (bx, by)) = (pair[0], pair[1]);
+        for (r, &y0) in rows.iter().enumerate() {
+            let (y_top, y_bottom) = (f64::from(y0), f64::from(y0 + box_h));
+            if ay.max(by) < y_top || ay.min(by) > y_bottom {
+                continue;
+            }
+            for (c, &x0) in columns.iter().enumerate() {
+                let (x_left, x_right) = (f64::from(x0), f64::from(x0 + box_w));
+                if ax.max(bx) < x_left || ax.min(bx) > x_right {
                     continue;
                 }
-                if let Some((a, b, _, _)) = clip(pair[0], pair[1], bounds) {
-                    length += (b.0 - a.0).hypot(b.1 - a.1);
+                let bounds = [x_left, x_right, y_top, y_bottom];
+                if let Some(Clipped { start, end, .. }) = clip(pair[0], pair[1], bounds) {
+                    hidden[r * columns.len() + c] += (end.0 - start.0).hypot(end.1 - start.1);
                 }
-            }
-        }
-        length
-    };
-    let mut best = ((right, inset), f64::INFINITY);
-    for y0 in rows {
-        for &x0 in &columns {
-            let cost = hidden((x0, y0));
-            if cost < best.1 {
-                best = ((x0, y0), cost);
             }
         }
     }
-    best.0
+    let mut best = 0;
+    for (i, &length) in hidden.iter().enumerate() {
+        if length < hidden[best] {
+            best = i;
+        }
+    }
+    (columns[best % columns.len()], rows[best / columns.len()])
 }
 
 /// Strokes the border of a rectangle. A closed path rather than an unfilled `Rectangle`,
@@ -643,21 +654,12 @@ impl Axis {
                 } else {
                     Vec::new()
                 };
-                let format = if ticks.len() >= 2 {
-                    TickFormat::Decade
-                } else {
-                    // Less than a decade shown: label plain values instead of exponents.
-                    TickFormat::Fixed {
-                        decimals: 0,
-                        suffix: "",
-                    }
-                };
                 Axis {
                     lo,
                     hi,
                     ticks,
                     minor,
-                    format,
+                    format: TickFormat::Decade,
                 }
             }
         }
@@ -793,7 +795,7 @@ fn degree_step(span: f64, max_ticks: f64) -> (f64, usize) {
     let limit = max_ticks.floor().max(2.0);
     DEGREE_STEPS
         .into_iter()
-        .filter(|&step| step * 2.0 <= span)
+        .filter(|&step| step <= span)
         .find(|&step| (span / step).floor() + 1.0 <= limit)
         .map_or_else(
             || nice_step(span, max_ticks, &NICE_MANTISSAS),
@@ -833,7 +835,12 @@ fn visible_pieces(series: &Series, panel: &Panel, x: &Axis, y: &Axis) -> Vec<Vec
             }
             (Some(a), Some(b)) => match clip(a, b, bounds) {
                 None => flush(&mut current),
-                Some((start, end, entered, left)) => {
+                Some(Clipped {
+                    start,
+                    end,
+                    entered,
+                    left,
+                }) => {
                     if entered {
                         flush(&mut current);
                     }
@@ -853,13 +860,18 @@ fn visible_pieces(series: &Series, panel: &Panel, x: &Axis, y: &Axis) -> Vec<Vec
     pieces
 }
 
-/// Liang–Barsky: the part of segment a→b inside `[x0, x1] × [y0, y1]`, and whether the
-/// segment enters the box after `a` or leaves it before `b`.
-fn clip(
-    a: (f64, f64),
-    b: (f64, f64),
-    [x0, x1, y0, y1]: [f64; 4],
-) -> Option<((f64, f64), (f64, f64), bool, bool)> {
+/// The part of a segment inside a box.
+struct Clipped {
+    start: (f64, f64),
+    end: (f64, f64),
+    /// The segment starts outside the box.
+    entered: bool,
+    /// The segment ends outside the box.
+    left: bool,
+}
+
+/// Liang–Barsky: the part of segment a→b inside `[x0, x1] × [y0, y1]`.
+fn clip(a: (f64, f64), b: (f64, f64), [x0, x1, y0, y1]: [f64; 4]) -> Option<Clipped> {
     let (dx, dy) = (b.0 - a.0, b.1 - a.1);
     let (mut t0, mut t1) = (0.0f64, 1.0f64);
     for (p, q) in [
@@ -885,21 +897,41 @@ fn clip(
         return None;
     }
     let at = |t: f64| (a.0 + t * dx, a.1 + t * dy);
-    Some((at(t0), at(t1), t0 > 0.0, t1 < 1.0))
+    Some(Clipped {
+        start: at(t0),
+        end: at(t1),
+        entered: t0 > 0.0,
+        left: t1 < 1.0,
+    })
 }
 
-/// Gives the SVG its CSS size and font family: the drawing was made at
-/// `SVG_UNITS_PER_PX` units per pixel, so the `viewBox` keeps those units.
+/// Gives the SVG its CSS size, font family and font sizes.
+///
+/// The drawing was made at `SVG_UNITS_PER_PX` units per pixel, so the `viewBox` keeps those
+/// units. plotters' SVG backend writes `font-family="<registered name>" font-size="size / 1.24"`;
+/// the family gets its generic fallback, and the size becomes the em size that the raster
+/// backend uses for the same text style, so that SVG and PNG text have the same extent.
 fn finish_svg(document: &str, canvas: &Canvas, (width, height): (u32, u32)) -> String {
+    /// plotters-svg 0.3.7 divides the style size by this to get `font-size`.
+    const PLOTTERS_SVG_DIVISOR: f64 = 1.24;
     let drawn = format!(r#"<svg width="{width}" height="{height}" "#);
     let sized = format!(
         r#"<svg width="{}" height="{}" "#,
         canvas.width_px, canvas.height_px
     );
-    document.replacen(&drawn, &sized, 1).replace(
-        &format!(r#"font-family="{FONT_NAME}""#),
-        &format!(r#"font-family="{SVG_FONT_FAMILY}""#),
-    )
+    let document = document.replacen(&drawn, &sized, 1);
+    let marker = format!(r#"font-family="{FONT_NAME}" font-size=""#);
+    let mut parts = document.split(marker.as_str());
+    let mut out = String::with_capacity(document.len() + document.len() / 16);
+    out.push_str(parts.next().unwrap_or_default());
+    for part in parts {
+        let (size, rest) = part.split_once('"').unwrap_or(("", part));
+        let em = size.parse::<f64>().unwrap_or(0.0) * PLOTTERS_SVG_DIVISOR * EM_PER_SIZE;
+        out.push_str(&format!(
+            r#"font-family="{SVG_FONT_FAMILY}" font-size="{em:.2}"{rest}"#
+        ));
+    }
+    out
 }
 
 /// Encodes packed 8-bit RGB pixels as a PNG with fixed settings: fast deflate and the Sub
@@ -917,4 +949,314 @@ fn encode_png(rgb: &[u8], width: u32, height: u32) -> Result<Vec<u8>, PlotError>
     writer.write_image_data(rgb)?;
     writer.finish()?;
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use std::f64::consts::{FRAC_PI_2, PI};
+    use std::sync::Arc;
+
+    use super::*;
+    use crate::series::Style;
+
+    const RED: u32 = 0xDB2E2E;
+    const BLUE: u32 = 0x2689D1;
+    const ORANGE: u32 = 0xFF9900;
+
+    fn series(label: &str, hex: u32, width: f64, dash: Dash, points: Vec<(f64, f64)>) -> Series {
+        Series {
+            label: label.to_owned(),
+            curve: "{}".to_owned(),
+            style: Style {
+                colour: Rgb::from_hex(hex),
+                width,
+                dash,
+            },
+            points: Arc::new(points),
+        }
+    }
+
+    fn sampled(f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
+        (0..=200)
+            .map(|i| f64::from(i) / 200.0 * FRAC_PI_2)
+            .map(|theta| (theta, f(theta)))
+            .collect()
+    }
+
+    fn beckmann(alpha_b: f64) -> Vec<(f64, f64)> {
+        sampled(|theta| {
+            let cos = theta.cos();
+            let tan2 = theta.tan().powi(2);
+            (-tan2 / (alpha_b * alpha_b)).exp() / (PI * alpha_b * alpha_b * cos.powi(4))
+        })
+    }
+
+    fn panel(x_unit: AngleUnit, y_scale: YScale, series: Vec<Series>) -> Panel {
+        Panel {
+            title: String::new(),
+            x_label: "θ".to_owned(),
+            y_label: "D(θ)".to_owned(),
+            x_unit,
+            y_scale,
+            x_range: None,
+            y_range: None,
+            legend: true,
+            series,
+        }
+    }
+
+    fn figure(panels: Vec<Panel>) -> Figure {
+        Figure {
+            id: "sample".to_owned(),
+            title: "NDF and Fresnel".to_owned(),
+            rows: 1,
+            cols: panels.len().max(1),
+            canvas: Canvas {
+                width_px: 400,
+                height_px: 250,
+                png_scale: 2.0,
+                font_px: 12.0,
+            },
+            panels,
+        }
+    }
+
+    /// A log panel in radians (a dashed series) and a linear panel in degrees (a thick one).
+    fn sample() -> Figure {
+        let mut log = panel(
+            AngleUnit::Radians,
+            YScale::Log,
+            vec![
+                series("α_b = 0.4", RED, 1.0, Dash::Dashed, beckmann(0.4)),
+                series("α_b = 0.8", BLUE, 1.0, Dash::Solid, beckmann(0.8)),
+            ],
+        );
+        log.title = "Beckmann".to_owned();
+        let schlick = |f0: f64| sampled(move |theta| f0 + (1.0 - f0) * (1.0 - theta.cos()).powi(5));
+        let mut fresnel = panel(
+            AngleUnit::Degrees,
+            YScale::Linear,
+            vec![
+                series("F₀ = 0.04", ORANGE, 2.0, Dash::Solid, schlick(0.04)),
+                series("F₀ = 0.5", RED, 1.0, Dash::Dotted, schlick(0.5)),
+            ],
+        );
+        fresnel.y_label = "F".to_owned();
+        figure(vec![log, fresnel])
+    }
+
+    fn decode(bytes: &[u8]) -> (u32, u32, Vec<u8>) {
+        let mut reader = png::Decoder::new(bytes).read_info().expect("PNG header");
+        let mut pixels = vec![0; reader.output_buffer_size()];
+        let info = reader.next_frame(&mut pixels).expect("PNG data");
+        pixels.truncate(info.buffer_size());
+        (info.width, info.height, pixels)
+    }
+
+    fn polylines_in(svg: &str, hex: u32) -> usize {
+        let stroke = format!(r##"stroke="#{hex:06X}""##);
+        svg.lines()
+            .filter(|l| l.starts_with("<polyline") && l.contains(&stroke))
+            .count()
+    }
+
+    #[test]
+    fn svg_keeps_labels_as_text_in_the_embedded_face() {
+        let svg = String::from_utf8(svg(&sample()).unwrap()).unwrap();
+        assert!(svg.starts_with(r#"<svg width="400" height="250" viewBox="0 0 1600 1000""#));
+        assert!(svg.trim_end().ends_with("</svg>"));
+        assert_eq!(svg.matches("<text").count(), svg.matches("</text>").count());
+        for label in [
+            "NDF and Fresnel",
+            "Beckmann",
+            "θ",
+            "α_b = 0.4",
+            "F₀ = 0.04",
+            "10⁰",
+            "90°",
+        ] {
+            assert!(svg.contains(&format!("\n{label}\n</text>")), "{label}");
+        }
+        let families = svg.matches("font-family=").count();
+        assert!(families > 10);
+        assert_eq!(
+            svg.matches(r#"font-family="DejaVu Sans, sans-serif""#)
+                .count(),
+            families
+        );
+    }
+
+    #[test]
+    fn svg_draws_each_series_and_its_legend_sample() {
+        let svg = String::from_utf8(svg(&sample()).unwrap()).unwrap();
+        // Solid: one polyline for the curve, one for the legend sample.
+        assert_eq!(polylines_in(&svg, BLUE), 2);
+        assert_eq!(polylines_in(&svg, ORANGE), 2);
+        // Dashed and dotted series (both red): one polyline per dash.
+        assert!(polylines_in(&svg, RED) > 20);
+        let thick = format!(r##"stroke="#{ORANGE:06X}" stroke-width="12""##);
+        assert!(svg.contains(&thick), "thick = 2 × 1.5 px × 4 units");
+    }
+
+    #[test]
+    fn png_has_the_scaled_size_and_shows_the_curves() {
+        let (width, height, pixels) = decode(&png(&sample()).unwrap());
+        assert_eq!((width, height), (800, 500));
+        let has = |[r, g, b]: [u8; 3]| pixels.chunks_exact(3).any(|p| p == [r, g, b]);
+        assert!(has([0xFF, 0x99, 0x00]) && has([0x26, 0x89, 0xD1]) && has([0xDB, 0x2E, 0x2E]));
+    }
+
+    #[test]
+    fn renders_are_byte_identical_across_runs_and_threads() {
+        let figure = sample();
+        let (svg0, png0) = (svg(&figure).unwrap(), png(&figure).unwrap());
+        std::thread::scope(|scope| {
+            let runs: Vec<_> = (0..3)
+                .map(|_| scope.spawn(|| (svg(&figure).unwrap(), png(&figure).unwrap())))
+                .collect();
+            for run in runs {
+                let (svg1, png1) = run.join().unwrap();
+                assert!(svg1 == svg0 && png1 == png0);
+            }
+        });
+    }
+
+    #[test]
+    fn degenerate_figures_render() {
+        let flat = series("1/π", BLUE, 1.0, Dash::Solid, sampled(|_| 1.0 / PI));
+        let single = series("one", RED, 1.0, Dash::Dashed, vec![(0.3, 2.0)]);
+        let zeros = series("zero", RED, 1.0, Dash::Solid, sampled(|_| 0.0));
+        let nan = series("nan", RED, 1.0, Dash::Dotted, sampled(|_| f64::NAN));
+        let empty = series("", RED, 1.0, Dash::Solid, Vec::new());
+        let mut clipped = panel(AngleUnit::Degrees, YScale::Linear, vec![flat.clone()]);
+        clipped.y_range = Some((0.5, 0.1));
+        clipped.x_range = Some((0.2, 0.2));
+        let figures = [
+            figure(vec![panel(
+                AngleUnit::Degrees,
+                YScale::Linear,
+                vec![flat.clone()],
+            )]),
+            figure(vec![panel(AngleUnit::Radians, YScale::Log, vec![flat])]),
+            figure(vec![panel(
+                AngleUnit::Radians,
+                YScale::Linear,
+                vec![single.clone()],
+            )]),
+            figure(vec![panel(AngleUnit::Degrees, YScale::Log, vec![single])]),
+            figure(vec![panel(
+                AngleUnit::Degrees,
+                YScale::Log,
+                vec![zeros.clone()],
+            )]),
+            figure(vec![panel(
+                AngleUnit::Radians,
+                YScale::Linear,
+                vec![zeros, nan],
+            )]),
+            figure(vec![panel(AngleUnit::Degrees, YScale::Log, vec![empty])]),
+            figure(vec![panel(AngleUnit::Degrees, YScale::Linear, Vec::new())]),
+            figure(vec![clipped]),
+            figure(Vec::new()),
+        ];
+        for figure in &figures {
+            svg(figure).unwrap();
+            let (width, height, _) = decode(&png(figure).unwrap());
+            assert_eq!((width, height), (800, 500));
+        }
+    }
+
+    #[test]
+    fn unusable_canvases_and_grids_are_errors() {
+        let mut figure = sample();
+        figure.canvas.png_scale = 0.0;
+        assert!(matches!(png(&figure), Err(PlotError::Canvas { .. })));
+        figure.canvas.png_scale = f64::NAN;
+        assert!(matches!(png(&figure), Err(PlotError::Canvas { .. })));
+        let mut figure = sample();
+        figure.canvas.width_px = 0;
+        assert!(matches!(svg(&figure), Err(PlotError::Canvas { .. })));
+        let mut figure = sample();
+        figure.cols = 1;
+        assert!(matches!(svg(&figure), Err(PlotError::Layout { .. })));
+    }
+
+    #[test]
+    fn degree_axes_tick_at_angles() {
+        let axis = Axis::x(&panel(AngleUnit::Degrees, YScale::Linear, vec![]), 10.0);
+        assert_eq!(axis.ticks, [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 90.0]);
+        assert_eq!(axis.label(45.0), "45°");
+        let narrow = Axis::x(&panel(AngleUnit::Degrees, YScale::Linear, vec![]), 4.0);
+        assert_eq!(narrow.ticks, [0.0, 30.0, 60.0, 90.0]);
+    }
+
+    #[test]
+    fn automatic_ranges_show_every_point() {
+        let values = |v: &[f64]| {
+            let points = v
+                .iter()
+                .enumerate()
+                .map(|(i, &y)| (i as f64 * 0.1, y))
+                .collect();
+            vec![series("s", RED, 1.0, Dash::Solid, points)]
+        };
+        let linear =
+            |v: &[f64]| Axis::y(&panel(AngleUnit::Radians, YScale::Linear, values(v)), 8.0);
+        let positive = linear(&[1.0, 3.0, 2.0]);
+        assert_eq!(positive.lo, 0.0);
+        assert!((positive.hi - 3.0 * (1.0 + AUTO_MARGIN)).abs() < 1e-12);
+        let signed = linear(&[-1.0, 1.0]);
+        assert!((signed.lo + 1.1).abs() < 1e-12 && (signed.hi - 1.1).abs() < 1e-12);
+        let flat = linear(&[1.0 / PI, 1.0 / PI]);
+        assert!(flat.lo == 0.0 && flat.hi > 1.0 / PI);
+        let zero = linear(&[0.0, 0.0]);
+        assert!(zero.lo < 0.0 && zero.hi > 0.0);
+
+        let log = Axis::y(
+            &panel(AngleUnit::Radians, YScale::Log, values(&[0.0, 2e-3, 40.0])),
+            8.0,
+        );
+        assert_eq!((log.lo, log.hi), (-3.0, 2.0));
+        assert_eq!(log.ticks, [-3.0, -2.0, -1.0, 0.0, 1.0, 2.0]);
+        assert_eq!(log.label(-3.0), "10⁻³");
+        assert_eq!(log.minor.len(), 5 * 8);
+    }
+
+    #[test]
+    fn curves_break_at_undrawable_points_and_clip_to_the_axes() {
+        let points = vec![
+            (0.0, 1.0),
+            (0.1, 2.0),
+            (0.2, 0.0),
+            (0.3, 2.0),
+            (0.4, 20.0),
+            (0.5, 2.0),
+        ];
+        let s = series("s", RED, 1.0, Dash::Solid, points);
+        let mut p = panel(AngleUnit::Radians, YScale::Log, vec![s.clone()]);
+        p.y_range = Some((0.5, 10.0));
+        let (x, y) = (Axis::x(&p, 8.0), Axis::y(&p, 8.0));
+        let pieces = visible_pieces(&s, &p, &x, &y);
+        assert_eq!(pieces.len(), 3);
+        assert_eq!(pieces[0].len(), 2);
+        let top = 1.0;
+        assert!(
+            pieces[1]
+                .last()
+                .is_some_and(|&(_, v)| (v - top).abs() < 1e-12)
+        );
+        assert!(
+            pieces[2]
+                .first()
+                .is_some_and(|&(_, v)| (v - top).abs() < 1e-12)
+        );
+    }
+
+    #[test]
+    fn the_legend_avoids_the_curves() {
+        // A curve through the top corners: the legend goes below it, on the right.
+        let top = vec![vec![(0.0, 30.0), (400.0, 30.0)]];
+        assert_eq!(legend_position((400, 300), (100, 50), 10, &top), (290, 67));
+        assert_eq!(legend_position((400, 300), (100, 50), 10, &[]), (290, 10));
+    }
 }
