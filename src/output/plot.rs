@@ -10,9 +10,8 @@
 //! then given a `viewBox` that maps it back to the canvas size, so that coordinates and line
 //! widths keep sub-pixel precision although plotters works in integer device units.
 
-use std::sync::OnceLock;
-
 use std::ops::Range;
+use std::sync::OnceLock;
 
 use plotters::coord::Shift;
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint};
@@ -120,7 +119,7 @@ const AUTO_MARGIN: f64 = 0.05;
 const AXIS_LABEL_EM: f64 = 1.1;
 const PANEL_TITLE_EM: f64 = 1.2;
 const FIGURE_TITLE_EM: f64 = 1.4;
-/// Minimum distance between tick labels, in ems (x: centre to centre; y: baseline to baseline).
+/// Minimum distance between tick labels in base text sizes (x: centre to centre; y: line to line).
 const X_TICK_SPACING_EM: f64 = 4.0;
 const Y_TICK_SPACING_EM: f64 = 3.0;
 /// Degree steps that read naturally on an angle axis, finest first.
@@ -132,6 +131,7 @@ const DECADE_MANTISSAS: [f64; 4] = [1.0, 2.0, 5.0, 10.0];
 /// At most this many decades get light lines at 2…9 × 10ᵏ.
 const MAX_MINOR_DECADES: f64 = 8.0;
 
+/// Text; frame, axes and ticks; major and minor grid lines; legend border.
 const INK: RGBColor = RGBColor(0x22, 0x22, 0x22);
 const FRAME: RGBColor = RGBColor(0x55, 0x55, 0x55);
 const GRID: RGBColor = RGBColor(0xE3, 0xE3, 0xE3);
@@ -189,23 +189,23 @@ fn draw_err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> P
 struct Metrics {
     /// Device pixels per CSS pixel.
     k: f64,
-    /// plotters text size of the tick labels, in device pixels (their em is `font_px · k`);
-    /// the unit of all other text sizes and spacings.
-    em: f64,
+    /// plotters text size of the tick labels in device pixels (their em is `font_px · k`):
+    /// the unit of all other text sizes and of the layout spacings.
+    unit: f64,
 }
 
 impl Metrics {
-    /// `ems` ems in whole device pixels.
-    fn px(&self, ems: f64) -> u32 {
-        (ems * self.em).round().max(1.0) as u32
+    /// `units` base text sizes in whole device pixels.
+    fn px(&self, units: f64) -> u32 {
+        (units * self.unit).round().max(1.0) as u32
     }
     /// A hairline (grid, frame, ticks): one CSS pixel.
     fn hairline(&self) -> u32 {
         self.k.round().max(1.0) as u32
     }
-    /// Text style at `ems` times the base size.
-    fn font(&self, ems: f64) -> TextStyle<'static> {
-        TextStyle::from((FontFamily::Name(FONT_NAME), ems * self.em).into_font()).color(&INK)
+    /// Text style at `units` times the base size.
+    fn font(&self, units: f64) -> TextStyle<'static> {
+        TextStyle::from((FontFamily::Name(FONT_NAME), units * self.unit).into_font()).color(&INK)
     }
     /// Stroke of a curve drawn `multiplier` times the default width.
     fn curve_style(&self, colour: Rgb, multiplier: f64) -> ShapeStyle {
@@ -218,6 +218,7 @@ impl Metrics {
             stroke_width: width as u32,
         }
     }
+    /// A hairline stroke in `colour`.
     fn line(&self, colour: RGBColor) -> ShapeStyle {
         ShapeStyle {
             color: colour.to_rgba(),
@@ -247,7 +248,7 @@ where
     }
     let m = Metrics {
         k,
-        em: figure.canvas.font_px * k / EM_PER_SIZE,
+        unit: figure.canvas.font_px * k / EM_PER_SIZE,
     };
     root.fill(&WHITE).map_err(draw_err)?;
     let body = titled(root, &figure.title, FIGURE_TITLE_EM, &m)?;
@@ -257,11 +258,12 @@ where
     root.present().map_err(draw_err)
 }
 
-/// Draws `title` centred at the top of `area` (if not empty) and returns the area below it.
+/// Draws `title` (`size` base text sizes) centred at the top of `area`, if not empty, and
+/// returns the area below it.
 fn titled<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
-    ems: f64,
+    size: f64,
     m: &Metrics,
 ) -> Result<DrawingArea<DB, Shift>, PlotError>
 where
@@ -270,11 +272,11 @@ where
     if title.is_empty() {
         return Ok(area.clone());
     }
-    let style = m.font(ems);
+    let style = m.font(size);
     let pad = f64::from(m.px(0.5));
     // plotters' raster text puts the baseline size/2 below a top anchor, so ascenders rise
     // ≈0.3 × size above it (ascent 1901/2384 of the size for DejaVu Sans): start that much lower.
-    let top = (pad + 0.3 * ems * m.em).round() as i32;
+    let top = (pad + 0.3 * size * m.unit).round() as i32;
     let (_, text_h) = area.estimate_text_size(title, &style).map_err(draw_err)?;
     let (width, _) = area.dim_in_pixel();
     let centred = style.pos(Pos::new(HPos::Center, VPos::Top));
@@ -309,7 +311,7 @@ where
     let plot_h = height
         .saturating_sub(margin_top + margin_side + x_area)
         .max(1);
-    let y = Axis::y(panel, f64::from(plot_h) / (Y_TICK_SPACING_EM * m.em));
+    let y = Axis::y(panel, f64::from(plot_h) / (Y_TICK_SPACING_EM * m.unit));
     let mut widest = 0;
     for &tick in &y.ticks {
         let (w, _) = area
@@ -321,7 +323,7 @@ where
     let plot_w = width
         .saturating_sub(margin_side + margin_right + y_area)
         .max(1);
-    let x = Axis::x(panel, f64::from(plot_w) / (X_TICK_SPACING_EM * m.em));
+    let x = Axis::x(panel, f64::from(plot_w) / (X_TICK_SPACING_EM * m.unit));
 
     let mut chart = ChartBuilder::on(&area)
         .margin_top(margin_top)
@@ -396,27 +398,23 @@ where
     DB::ErrorType: 'static,
 {
     let points = piece.iter().copied();
-    let width = f64::from(style.stroke_width);
-    match dash {
-        Dash::Solid => chart.draw_series(LineSeries::new(points, style)).map(drop),
-        Dash::Dashed => chart
-            .draw_series(DashedLineSeries::new(
-                points,
-                DASHED.0 * width,
-                DASHED.1 * width,
-                style,
-            ))
-            .map(drop),
-        Dash::Dotted => chart
-            .draw_series(DashedLineSeries::new(
-                points,
-                DOTTED.0 * width,
-                DOTTED.1 * width,
-                style,
-            ))
+    match dash_pattern(dash, &style) {
+        None => chart.draw_series(LineSeries::new(points, style)).map(drop),
+        Some((on, off)) => chart
+            .draw_series(DashedLineSeries::new(points, on, off, style))
             .map(drop),
     }
     .map_err(draw_err)
+}
+
+/// Dash and gap lengths in device pixels for `dash` drawn with `style`; `None` when solid.
+fn dash_pattern(dash: Dash, style: &ShapeStyle) -> Option<(f64, f64)> {
+    let width = f64::from(style.stroke_width);
+    match dash {
+        Dash::Solid => None,
+        Dash::Dashed => Some((DASHED.0 * width, DASHED.1 * width)),
+        Dash::Dotted => Some((DOTTED.0 * width, DOTTED.1 * width)),
+    }
 }
 
 /// Draws the legend inside the plot area where it hides the least of the curves.
@@ -452,31 +450,19 @@ where
     );
 
     let background = WHITE.mix(LEGEND_OPACITY).filled();
-    let corners_box = [(x0, y0), (x0 + box_w, y0 + box_h)];
-    plot.draw(&Rectangle::new(corners_box, background))
+    let bounds = [(x0, y0), (x0 + box_w, y0 + box_h)];
+    plot.draw(&Rectangle::new(bounds, background))
         .map_err(draw_err)?;
-    outline(plot, corners_box, m.line(LEGEND_BORDER))?;
+    outline(plot, bounds, m.line(LEGEND_BORDER))?;
     let label_style = font.pos(Pos::new(HPos::Left, VPos::Center));
     for (i, s) in entries.iter().enumerate() {
         let cy = y0 + (pad + row * i as u32 + row / 2) as i32;
         let sx = x0 + pad as i32;
         let style = m.curve_style(s.style.colour, s.style.width);
         let line = [(sx, cy), (sx + sample as i32, cy)];
-        let width = f64::from(style.stroke_width);
-        match s.style.dash {
-            Dash::Solid => plot.draw(&PathElement::new(line, style)),
-            Dash::Dashed => plot.draw(&DashedPathElement::new(
-                line,
-                DASHED.0 * width,
-                DASHED.1 * width,
-                style,
-            )),
-            Dash::Dotted => plot.draw(&DashedPathElement::new(
-                line,
-                DOTTED.0 * width,
-                DOTTED.1 * width,
-                style,
-            )),
+        match dash_pattern(s.style.dash, &style) {
+            None => plot.draw(&PathElement::new(line, style)),
+            Some((on, off)) => plot.draw(&DashedPathElement::new(line, on, off, style)),
         }
         .map_err(draw_err)?;
         let text_x = sx + (sample + gap) as i32;
