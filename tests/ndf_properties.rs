@@ -175,11 +175,16 @@ fn sgd_over_its_domain() {
     );
 }
 
+/// Parameter lists a constructor must accept.
+type Accepted = Vec<Vec<f64>>;
+/// Parameter lists a constructor must reject.
+type Rejected = Vec<Vec<f64>>;
+
 #[test]
 fn constructors_accept_their_bounds_and_reject_beyond() {
     let next_up = |v: f64| f64::from_bits(v.to_bits() + 1);
     let next_down = |v: f64| f64::from_bits(v.to_bits() - 1);
-    let cases: [(Family, Vec<Vec<f64>>, Vec<Vec<f64>>); 6] = [
+    let cases: [(Family, Accepted, Rejected); 6] = [
         (
             Family::Phong,
             vec![vec![0.0], vec![f64::MAX]],

@@ -58,7 +58,7 @@ fn check_file(path: &str) -> (Worst, Vec<String>) {
             (got - want).abs()
         };
         let entry = worst.entry(family.name()).or_insert((0.0, String::new()));
-        if !(err <= entry.0) {
+        if err > entry.0 || err.is_nan() {
             *entry = (err, case_id.to_owned());
         }
         if !(got.is_finite() && got >= 0.0 && err <= tol) {

@@ -12,6 +12,7 @@
 use std::fmt;
 
 /// Kronrod abscissae on [−1, 1] (non-negative half, the last is the centre), QUADPACK `qk15`.
+#[allow(clippy::excessive_precision)] // the published digits, kept verbatim for checking
 const XGK: [f64; 8] = [
     0.991_455_371_120_812_639_206_854_697_526_329,
     0.949_107_912_342_758_524_526_189_684_047_851,
@@ -24,6 +25,7 @@ const XGK: [f64; 8] = [
 ];
 
 /// Kronrod weights matching [`XGK`], QUADPACK `qk15`.
+#[allow(clippy::excessive_precision)] // the published digits, kept verbatim for checking
 const WGK: [f64; 8] = [
     0.022_935_322_010_529_224_963_732_008_058_970,
     0.063_092_092_629_978_553_290_700_663_189_204,
@@ -36,6 +38,7 @@ const WGK: [f64; 8] = [
 ];
 
 /// 7-point Gauss weights for the abscissae XGK[1], XGK[3], XGK[5], XGK[7], QUADPACK `qk15`.
+#[allow(clippy::excessive_precision)] // the published digits, kept verbatim for checking
 const WG: [f64; 4] = [
     0.129_484_966_168_869_693_270_611_432_679_082,
     0.279_705_391_489_276_667_901_467_771_423_780,

@@ -4,7 +4,7 @@
 //! - Domain: α_p ≥ 0, any finite value. α_p = 0 is the uniform distribution 1/π.
 //! - Normalization: N = 2π ∫₀^{π/2} cos^{α_p} θ sin θ cos θ dθ = 2π/(α_p + 2), so D = cos^{α_p} θ / N.
 //! - θ → 0: D → (α_p + 2)/(2π), flat to second order. θ → π/2: D → 0 like cos^{α_p} θ; at the double
-//!   nearest π/2, cos θ = 6.12e-17, not 0, so D is tiny but positive for α_p ≲ 19 and exactly 1/π for α_p = 0.
+//!   nearest π/2, cos θ = 6.12e-17, not 0, so D is tiny but positive for α_p ≲ 20 (6.12e-17^20 ≈ 5e-323) and exactly 1/π for α_p = 0.
 //! - Stable form: the whole of D in log space, ln D = ln((α_p + 2)/(2π)) − (α_p/2) · log1p(tan²θ), using
 //!   ln cos θ = −½ ln(1 + tan²θ). Raising a rounded cos θ to the power α_p would multiply its rounding error
 //!   by α_p (1e-8 relative at α_p = 1e8); log1p(tan²θ) keeps full relative accuracy from θ = 0 to π/2, and the

@@ -7,7 +7,7 @@
 //! - Normalization: N(α) = 2π ∫₀^{π/2} exp(−θ²/α²) sin θ cos θ dθ
 //!   = π α [F(α) + (√π/2) e^{−π²/(4α²)} Im w(α + iπ/(2α))], with F Dawson's integral and w the Faddeeva
 //!   function: the first term is the integral over [0, ∞), the second removes (π/2, ∞). Both terms are
-//!   positive, so the sum does not cancel; for α ≲ 0.25 the second underflows away, for α → ∞ each tends to
+//!   positive, so the sum does not cancel; for α ≲ 0.25 the second is below 1e-17 of the first, for α → ∞ each tends to
 //!   1/(2α) and N → π. Mathematica's form with e^{−α²} erfi(α) breaks down above α ≈ 26.6 (0 · ∞).
 //! - θ → 0: D → 1/N ≈ 1/(π α²) for small α. θ → π/2: D → exp(−(π/(2α))²)/N, exactly 0 for small α.
 //! - Stable form: D = exp(ln(1/N) − (θ/α)²) in one exponential, so that exp(−(θ/α)²) cannot underflow while
