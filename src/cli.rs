@@ -19,6 +19,27 @@ pub enum Command {
     Eval(EvalArgs),
     /// Render scene specs (or the built-in catalogue) to SVG, PNG and CSV.
     Render(RenderArgs),
+    /// Belcour–Bati–Barla coefficients c0..c3 and L2 error of materials; prints CSV.
+    Coeffs(CoeffsArgs),
+    /// Compare two curves of the same kind: max_abs, max_rel, l2_projected, l2_grid, peaks.
+    Compare(CompareArgs),
+    /// Fit the free parameter of an NDF family to a target curve; prints the fitted curve.
+    Fit(FitArgs),
+    /// Audit the normalization of every curve in scenes (or the built-in catalogue).
+    Check(CheckArgs),
+}
+
+/// Arguments of `ndfplot coeffs`.
+#[derive(Debug, Args)]
+#[command(after_long_help = "Output: CSV c0,c1,c2,c3,l2, one row per curve.\n\n\
+    Examples:\n  \
+    ndfplot coeffs --curve '{\"fresnel\":\"belcour\",\"eta\":0.29,\"kappa\":2.86}'\n  \
+    ndfplot coeffs --curve '{\"fresnel\":\"belcour\",\"r\":0.5,\"g\":0.2,\"g_remap\":true}'")]
+pub struct CoeffsArgs {
+    /// A material as a Fresnel curve: '{"fresnel":"belcour","eta":1.5,"kappa":0}' (or r/g, or an
+    /// "exact" curve), @FILE, or - for JSON Lines on stdin. Repeat for several rows.
+    #[arg(long, required = true, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
+    pub curve: Vec<String>,
 }
 
 /// Arguments of `ndfplot render`.
@@ -82,17 +103,92 @@ fn eval_help() -> String {
     text.push_str(FRESNEL_HELP);
     text.push_str(
         "\nOutput: CSV with header theta,value (one curve) or theta,<curve JSON>... (several);\n\
-         numbers in shortest round-trip form. Exit 2 on bad input, with one error line per problem.",
+         numbers in shortest round-trip form. Exit 2 on bad input, with one error line per problem.\n\n\
+         Examples:\n  \
+         ndfplot eval --curve '{\"ndf\":\"beckmann\",\"alpha_b\":0.5}' --theta 0:1.5707963267948966:5\n  \
+         ndfplot eval --curve '{\"ndf\":\"ggx\",\"alpha_tr\":0.2}' --curve @curve.json --theta 0,30,60,90 --degrees\n  \
+         cat curves.jsonl | ndfplot eval --curve - --theta 0:1.5707963267948966:1000 > table.csv",
     );
     text
 }
 
 /// The Fresnel curve models and their parameter domains, for `eval --help`.
-const FRESNEL_HELP: &str = "\
-  fresnel exact        eta in [1e-150, 1e150], kappa in [0, 1e150] (default 0); or r in [0, 1), g in [0, 1], g_remap
+const FRESNEL_HELP: &str = "  fresnel exact        eta in [1e-150, 1e150], kappa in [0, 1e150] (default 0); or r in [0, 1), g in [0, 1], g_remap
   fresnel schlick      f0 in [0, 1]; or eta/kappa; or r/g/g_remap (F0 of the exact Fresnel)
   fresnel lazanyi      f0 in [0, 1], a such that 0 <= F <= 1 (a in [-5(1 - f0), a_max(f0)], a_max(0) = 4)
   fresnel lazanyi_term no parameters: c(1 - c)^6 normalized to a maximum of 1
   fresnel belcour      eta/kappa or r/g/g_remap: the four-term basis reconstruction
   fresnel basis        index 0, 1, 2 or 3: one basis function
 ";
+
+/// Arguments of `ndfplot compare`.
+#[derive(Debug, Args)]
+#[command(after_long_help = "Metrics over theta in [0, pi/2] (CONTRACTS.md):\n  \
+    max_abs       max |a - b|, with the theta where it is reached\n  \
+    max_rel       max |a - b| / max(|a|, |b|) (0 where both are 0), with its theta\n  \
+    l2_projected  sqrt(2 pi integral (a - b)^2 sin cos dtheta), adaptive quadrature\n  \
+    l2_grid       Euclidean norm of a - b on theta_i = arccos(linspace(0, 1, 1000))\n  \
+    a_peak/b_peak the maxima of a and b, with their theta\n\n\
+    Exit 1 when a --max-error bound is exceeded, 2 on bad input (an NDF against a Fresnel curve).\n\n\
+    Examples:\n  \
+    ndfplot compare --a '{\"ndf\":\"trowbridge_reitz\",\"alpha_tr\":0.3}' --b '{\"ndf\":\"abc\",\"alpha_abc1\":23.5,\"alpha_abc2\":1.75}'\n  \
+    ndfplot compare --a @a.json --b @b.json --format json --max-error max_rel=1e-3 --max-error l2_projected=0.01")]
+pub struct CompareArgs {
+    /// The first curve: inline JSON, @FILE or - (one curve on stdin).
+    #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
+    pub a: String,
+    /// The second curve, of the same kind as the first.
+    #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
+    pub b: String,
+    /// Output: a readable table, or one JSON object for scripts.
+    #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = ["table", "json"])]
+    pub format: String,
+    /// Fail (exit 1) when a metric exceeds a bound, as <metric>=<number>; repeatable.
+    #[arg(long = "max-error", value_name = "METRIC=X")]
+    pub max_error: Vec<String>,
+}
+
+/// Arguments of `ndfplot fit`.
+#[derive(Debug, Args)]
+#[command(after_long_help = "Methods:\n  \
+    peak  D_fit(0) = D_target(0), the value at the normal (the notebook's manual peak matching)\n  \
+    max   max over theta of D_fit = the target's maximum (differs for lobes peaking off the normal)\n  \
+    l2    minimize l2_projected between the fit and the target\n\n\
+    stdout: the fitted curve as one line of canonical curve JSON (feed it to eval);\n\
+    stderr: residual=<x> (d0_rel | dmax_rel | l2_projected).\n\
+    Exit 2 when the family cannot reach the target within its parameter domain.\n\n\
+    Examples:\n  \
+    ndfplot fit --target '{\"ndf\":\"trowbridge_reitz\",\"alpha_tr\":0.3}' --family abc --fix alpha_abc2=1.75\n  \
+    ndfplot eval --curve \"$(ndfplot fit --target @phong.json --family torrance_sparrow --by l2)\" --theta 0:1.5707963267948966:5")]
+pub struct FitArgs {
+    /// The target NDF: inline JSON, @FILE or - (one curve on stdin).
+    #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
+    pub target: String,
+    /// The NDF family to fit (phong, beckmann, torrance_sparrow, trowbridge_reitz, abc, sgd).
+    #[arg(long, value_name = "NAME")]
+    pub family: String,
+    /// Fix a parameter of the family as key=value; all but one parameter must be fixed. Repeatable.
+    #[arg(long, value_name = "KEY=VALUE", allow_hyphen_values = true)]
+    pub fix: Vec<String>,
+    /// What to match: peak (D(0)), max (the maxima) or l2 (least l2_projected).
+    #[arg(long, value_name = "METHOD", default_value = "peak")]
+    pub by: String,
+}
+
+/// Arguments of `ndfplot check`.
+#[derive(Debug, Args)]
+#[command(after_long_help = "For every distinct NDF of the scenes: 2 pi integral D sin cos dtheta over [0, pi/2] by\n\
+    adaptive quadrature, with its error estimate and |integral - 1|; for every Fresnel curve the\n\
+    hemispherical average 2 integral_0^1 F(c) c dc (reported, not checked). Difference series are skipped.\n\
+    Exit 1 when an NDF is off by more than --tolerance.\n\n\
+    Examples:\n  \
+    ndfplot check\n  \
+    ndfplot check configs/abc-vs-tr.json my-scenes/ --tolerance 1e-12")]
+pub struct CheckArgs {
+    /// Scene spec files, or folders whose *.json are checked in name order. None: the built-in catalogue.
+    #[arg(value_name = "SPEC.json|DIR")]
+    pub paths: Vec<PathBuf>,
+    /// Largest accepted |2 pi integral D sin cos dtheta - 1|.
+    #[arg(long, value_name = "X", default_value_t = crate::cmd::check::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
+    pub tolerance: f64,
+}

@@ -1,9 +1,13 @@
 //! One module per subcommand: each turns parsed arguments into output through the library.
 
+pub mod coeffs;
 pub mod eval;
 pub mod render;
+pub mod compare;
+pub mod fit;
+pub mod check;
 
-use crate::cli::{Command, EvalArgs, RenderArgs};
+use crate::cli::{CheckArgs, CoeffsArgs, Command, CompareArgs, EvalArgs, FitArgs, RenderArgs};
 use crate::error::Result;
 use crate::{input, stdout};
 use std::io::Read;
@@ -13,6 +17,10 @@ pub fn run(command: Command) -> Result<()> {
     match command {
         Command::Eval(args) => run_eval(args),
         Command::Render(args) => run_render(args),
+        Command::Coeffs(args) => run_coeffs(args),
+        Command::Compare(args) => run_compare(args),
+        Command::Fit(args) => run_fit(args),
+        Command::Check(args) => run_check(args),
     }
 }
 
@@ -28,6 +36,11 @@ fn run_eval(args: EvalArgs) -> Result<()> {
     stdout::print(&eval::table(&curves, &thetas)?)
 }
 
+fn run_coeffs(args: CoeffsArgs) -> Result<()> {
+    let curves = input::load_curves(&args.curve, "--curve", read_stdin)?;
+    stdout::print(&coeffs::table(&curves)?)
+}
+
 fn run_render(args: RenderArgs) -> Result<()> {
     let options = render::RenderOptions {
         paths: args.paths,
@@ -41,4 +54,41 @@ fn run_render(args: RenderArgs) -> Result<()> {
         },
     };
     render::run(&options).map(|_| ())
+}
+
+/// Loads exactly one curve from a curve argument (inline JSON, @FILE or - for one line on stdin).
+fn load_one_curve(arg: &str, flag: &str) -> Result<crate::curve::Curve> {
+    let mut curves = input::load_curves(&[arg.to_string()], flag, read_stdin)?;
+    if curves.len() != 1 {
+        return Err(crate::error::Error::Usage(format!("{flag}: expected one curve (got {})", curves.len())));
+    }
+    Ok(curves.remove(0))
+}
+
+fn run_compare(args: CompareArgs) -> Result<()> {
+    let bounds: Vec<compare::Bound> = args.max_error.iter().map(|b| compare::parse_bound(b)).collect::<Result<_>>()?;
+    let a = load_one_curve(&args.a, "--a")?;
+    let b = load_one_curve(&args.b, "--b")?;
+    let metrics = compare::metrics(&a, &b)?;
+    let report = if args.format == "json" { compare::json(&a, &b, &metrics) } else { compare::table(&a, &b, &metrics) };
+    stdout::print(&report)?;
+    compare::check_bounds(&metrics, &bounds)
+}
+
+fn run_fit(args: FitArgs) -> Result<()> {
+    let family = fit::parse_family(&args.family)?;
+    let by = fit::parse_by(&args.by)?;
+    let fixed = fit::parse_fixed(&args.fix)?;
+    let target = load_one_curve(&args.target, "--target")?;
+    let fitted = fit::run(&target, family, &fixed, by)?;
+    stdout::print(&fit::stdout_line(&fitted))?;
+    eprintln!("{}", fit::residual_line(&fitted, by));
+    Ok(())
+}
+
+fn run_check(args: CheckArgs) -> Result<()> {
+    let scenes = render::load_scenes(&render::sources(&args.paths)?, render::CanvasOverride::default())?;
+    let audits = check::audit_scenes(&scenes)?;
+    stdout::print(&check::table(&audits, args.tolerance))?;
+    check::verdict(&audits, args.tolerance)
 }

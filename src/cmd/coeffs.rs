@@ -1,0 +1,33 @@
+//! `ndfplot coeffs`: the Belcour–Bati–Barla decomposition of materials, as CSV (CONTRACTS.md).
+
+use crate::curve::Curve;
+use crate::error::{Error, Result};
+use crate::fresnel::{Fresnel, Ior, basis};
+
+/// The material (complex index) behind a curve that names one: `belcour` or `exact`.
+fn material(curve: &Curve) -> Option<Ior> {
+    match curve {
+        Curve::Fresnel(Fresnel::Belcour(ior, _) | Fresnel::Exact(ior)) => Some(*ior),
+        _ => None,
+    }
+}
+
+/// CSV `c0,c1,c2,c3,l2` with one row per curve: the coefficients of the decomposition
+/// (the notebook's `fresnel2coeffs`) and the `l2_grid` error of the reconstruction against the
+/// exact Fresnel, numbers in shortest round-trip form.
+pub fn table(curves: &[Curve]) -> Result<String> {
+    let mut out = String::from("c0,c1,c2,c3,l2\n");
+    for curve in curves {
+        let ior = material(curve).ok_or_else(|| {
+            Error::Usage(format!(
+                "--curve: fresnel: coeffs needs a material (got {}, expected a \"belcour\" or \"exact\" Fresnel curve)",
+                curve.canonical_json()
+            ))
+        })?;
+        let (eta, kappa) = ior.complex();
+        let c = basis::coeffs(eta, kappa);
+        let l2 = c.l2_grid(eta, kappa);
+        out.push_str(&format!("{:?},{:?},{:?},{:?},{:?}\n", c.c0, c.c1, c.c2, c.c3, l2));
+    }
+    Ok(out)
+}
