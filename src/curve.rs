@@ -19,6 +19,15 @@ pub enum Curve {
     Ndf(Ndf),
     /// A Fresnel reflectance curve (θ is the angle of incidence).
     Fresnel(Fresnel),
+    /// A difference series of two curves of the same kind: a − b or a / b at every θ.
+    Difference {
+        /// How the two values are combined.
+        op: DiffOp,
+        /// The first operand.
+        a: Box<Curve>,
+        /// The second operand.
+        b: Box<Curve>,
+    },
 }
 
 impl Curve {
@@ -28,18 +37,22 @@ impl Curve {
         match self {
             Curve::Ndf(d) => d.eval(theta),
             Curve::Fresnel(f) => f.eval(theta),
+            Curve::Difference { op, a, b } => op.apply(a.eval(theta), b.eval(theta)),
         }
     }
 
-    /// The model this curve belongs to.
+    /// The model this curve belongs to; for a difference, the model of its first operand (both
+    /// operands share their kind, so `model().key()` is the difference's kind, `ndf` or `fresnel`).
     pub fn model(&self) -> Model {
         match self {
             Curve::Ndf(d) => Model::Ndf(d.family()),
             Curve::Fresnel(f) => Model::Fresnel(FresnelModel::of(f)),
+            Curve::Difference { a, .. } => a.model(),
         }
     }
 
-    /// Parameters in canonical order, with their values.
+    /// Parameters in canonical order, with their values; none for a difference (its operands
+    /// carry them).
     pub fn params(&self) -> Vec<(&'static str, ParamValue)> {
         match self {
             Curve::Ndf(d) => {
@@ -47,12 +60,22 @@ impl Curve {
                 names.iter().zip(d.params()).map(|(&n, v)| (n, ParamValue::Number(v))).collect()
             }
             Curve::Fresnel(f) => fresnel_params(f),
+            Curve::Difference { .. } => vec![],
         }
     }
 
     /// Canonical curve JSON (CONTRACTS.md): compact, model key first, parameters in MATH.md's
-    /// order, numbers in shortest round-trip form, aliases replaced by canonical names.
+    /// order, numbers in shortest round-trip form, aliases replaced by canonical names. A
+    /// difference is `{"difference":"minus"|"ratio","a":{…},"b":{…}}`.
     pub fn canonical_json(&self) -> String {
+        if let Curve::Difference { op, a, b } = self {
+            return format!(
+                "{{\"{DIFFERENCE_KEY}\":\"{}\",\"a\":{},\"b\":{}}}",
+                op.name(),
+                a.canonical_json(),
+                b.canonical_json()
+            );
+        }
         let model = self.model();
         let mut out = format!("{{\"{}\":\"{}\"", model.key(), model.name());
         for (name, value) in self.params() {
@@ -445,8 +468,17 @@ pub fn scalar(node: &Node, kind: ParamKind, path: &str) -> Result<ParamValue, Pr
     }
 }
 
-/// Parses one plain curve object (every parameter a single value), as `eval` takes it.
+/// Parses one plain curve object (every parameter a single value), as `eval` takes it, or a
+/// difference `{"difference": "minus"|"ratio", "a": <curve>, "b": <curve>}` of two such curves.
 pub fn parse(node: &Node, path: &str) -> Result<Curve, Vec<Problem>> {
+    if is_difference(node) {
+        let (op, a, b) = difference_parts(node, path, &[])?;
+        let (a, b) = (parse(a, &join_key(path, "a")), parse(b, &join_key(path, "b")));
+        return match (a, b) {
+            (Ok(a), Ok(b)) => difference(op, a, b, path).map_err(|p| vec![p]),
+            (a, b) => Err(a.err().into_iter().chain(b.err()).flatten().collect()),
+        };
+    }
     let resolved = resolve(node, path, &[])?;
     let mut values = Vec::new();
     let mut problems = Vec::new();
@@ -463,6 +495,129 @@ pub fn parse(node: &Node, path: &str) -> Result<Curve, Vec<Problem>> {
         return Err(problems);
     }
     resolved.build(&values, path).map_err(|p| vec![p])
+}
+
+/// The model key of a difference series in the curve format.
+pub const DIFFERENCE_KEY: &str = "difference";
+
+/// Keys of a difference object besides the caller's extra keys.
+const DIFFERENCE_KEYS: &[&str] = &[DIFFERENCE_KEY, "a", "b"];
+
+/// How a difference series combines its operands.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DiffOp {
+    /// a − b.
+    Minus,
+    /// a / b, with 0/0 = 1 (both curves vanish: they agree) and x/0 = +∞ for x ≠ 0, which every
+    /// consumer reports as an error at that θ instead of printing it.
+    Ratio,
+}
+
+impl DiffOp {
+    /// Every operation, in the order shown in messages.
+    pub const ALL: [DiffOp; 2] = [DiffOp::Minus, DiffOp::Ratio];
+
+    /// The name in curve JSON (`"difference": "minus"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            DiffOp::Minus => "minus",
+            DiffOp::Ratio => "ratio",
+        }
+    }
+
+    /// a − b, or a / b with 0/0 = 1.
+    #[inline]
+    pub fn apply(self, a: f64, b: f64) -> f64 {
+        match self {
+            DiffOp::Minus => a - b,
+            DiffOp::Ratio if a == 0.0 && b == 0.0 => 1.0,
+            DiffOp::Ratio => a / b,
+        }
+    }
+}
+
+/// Whether `node` is a difference object (has the key `"difference"`).
+pub fn is_difference(node: &Node) -> bool {
+    matches!(&node.value, Value::Object(members) if members.iter().any(|(k, _)| k == DIFFERENCE_KEY))
+}
+
+/// Checks the keys of the difference object `node` at `path` (`difference`, `a`, `b`, plus
+/// `extra_keys` that the caller handles) and reads its operation; returns it with the operand
+/// nodes. Every problem is reported.
+pub fn difference_parts<'a>(
+    node: &'a Node,
+    path: &str,
+    extra_keys: &[&str],
+) -> Result<(DiffOp, &'a Node, &'a Node), Vec<Problem>> {
+    let Value::Object(members) = &node.value else {
+        return Err(vec![Problem::new(path, format!("expected a curve object (got {node})"))]);
+    };
+    let mut problems = Vec::new();
+    let allowed: Vec<&str> = DIFFERENCE_KEYS.iter().chain(extra_keys).copied().collect();
+    for (i, (key, value)) in members.iter().enumerate() {
+        if members[..i].iter().any(|(k, _)| k == key) {
+            problems.push(Problem::new(join_key(path, key), "duplicate key"));
+        } else if !allowed.contains(&key.as_str()) {
+            problems.push(Problem::new(
+                join_key(path, key),
+                format!(
+                    "unknown key for a difference (got {value}, expected one of: {}){}",
+                    allowed.join(", "),
+                    suggestion(key, allowed.iter().copied())
+                ),
+            ));
+        }
+    }
+    let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, n)| n);
+    let names: Vec<&str> = DiffOp::ALL.iter().map(|op| op.name()).collect();
+    let op_node = get(DIFFERENCE_KEY).expect("is_difference() was checked");
+    let op = match &op_node.value {
+        Value::String(name) => {
+            let op = DiffOp::ALL.into_iter().find(|op| op.name() == name);
+            if op.is_none() {
+                problems.push(Problem::new(
+                    join_key(path, DIFFERENCE_KEY),
+                    format!(
+                        "unknown difference (got \"{name}\", expected one of: {}){}",
+                        names.join(", "),
+                        suggestion(name, names.iter().copied())
+                    ),
+                ));
+            }
+            op
+        }
+        _ => {
+            problems.push(Problem::new(
+                join_key(path, DIFFERENCE_KEY),
+                format!("expected an operation name (got {op_node}, expected one of: {})", names.join(", ")),
+            ));
+            None
+        }
+    };
+    for key in ["a", "b"] {
+        if get(key).is_none() {
+            problems.push(Problem::new(join_key(path, key), "missing operand of the difference"));
+        }
+    }
+    match (op, get("a"), get("b")) {
+        (Some(op), Some(a), Some(b)) if problems.is_empty() => Ok((op, a, b)),
+        _ => Err(problems),
+    }
+}
+
+/// The difference series `op(a, b)`; a and b must be of the same kind (two NDFs or two Fresnel
+/// curves), else the problem is reported at `path`.
+pub fn difference(op: DiffOp, a: Curve, b: Curve, path: &str) -> Result<Curve, Problem> {
+    let (kind_a, kind_b) = (a.model().key(), b.model().key());
+    if kind_a != kind_b {
+        return Err(Problem::new(
+            join_key(path, "b"),
+            format!(
+                "a difference needs two curves of the same kind (got {kind_a} against {kind_b}, expected two NDFs or two Fresnel curves)"
+            ),
+        ));
+    }
+    Ok(Curve::Difference { op, a: Box::new(a), b: Box::new(b) })
 }
 
 /// The legend symbol of a parameter (`alpha_b` → `α_b`, `eta` → `η`).

@@ -23,3 +23,5 @@ pub mod sample;
 pub mod scene;
 pub mod series;
 pub mod stdout;
+pub mod fit;
+pub mod metrics;

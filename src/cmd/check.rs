@@ -1,0 +1,195 @@
+//! `ndfplot check`: the normalization audit of every curve in scenes (or the built-in catalogue). For an
+//! NDF, 2π ∫₀^{π/2} D sin θ cos θ dθ with its error estimate, which must be 1 within `--tolerance`; for a
+//! Fresnel curve, the hemispherical average 2 ∫₀¹ F(c) c dc, reported only. Difference series are not
+//! audited (they are not distributions).
+//!
+//! Owns the audit table and the verdict (exit 1 on a failure); the integrals are
+//! [`crate::metrics::projected_integral`]'s.
+
+use crate::curve::Curve;
+use crate::error::{Error, Result};
+use crate::metrics::{Estimate, MetricError, lobe_width, maximum, projected_integral};
+use crate::scene::Scene;
+use rayon::prelude::*;
+use std::collections::HashSet;
+use std::f64::consts::PI;
+
+/// Default `--tolerance`: the NDFs are normalized analytically to ~1e-13 and the audit integrates to
+/// ~1e-12 (`QUAD_REL_TOL`), so 1e-9 flags only a real normalization error.
+pub const DEFAULT_TOLERANCE: f64 = 1e-9;
+
+/// What an audit row measures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Quantity {
+    /// 2π ∫ D sin θ cos θ dθ of an NDF; should be 1.
+    Normalization,
+    /// 2 ∫₀¹ F(c) c dc of a Fresnel curve.
+    HemisphericalAverage,
+}
+
+impl Quantity {
+    /// The name shown in the table.
+    pub fn name(self) -> &'static str {
+        match self {
+            Quantity::Normalization => "normalization",
+            Quantity::HemisphericalAverage => "hemispherical_average",
+        }
+    }
+}
+
+/// One audited curve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Audit {
+    /// The first scene that shows the curve.
+    pub scene: String,
+    /// The curve's canonical JSON.
+    pub curve: String,
+    /// What was integrated.
+    pub quantity: Quantity,
+    /// The integral and its error estimate.
+    pub integral: Estimate,
+}
+
+impl Audit {
+    /// |integral − 1| for a normalization, `None` for a Fresnel average.
+    pub fn deviation(&self) -> Option<f64> {
+        (self.quantity == Quantity::Normalization).then(|| (self.integral.value - 1.0).abs())
+    }
+}
+
+/// 2π ∫₀^{π/2} d(θ) sin θ cos θ dθ of an NDF-like function d, breakpoints at the width of its peak.
+pub fn normalization(d: impl Fn(f64) -> f64) -> std::result::Result<Estimate, MetricError> {
+    let peak = maximum(&d, lobe_width(d(0.0)))?;
+    projected_integral(d, lobe_width(peak.value), 0.0)
+}
+
+/// The audit quantity of a curve, or `None` for a difference series.
+pub fn audit(curve: &Curve) -> Option<std::result::Result<(Quantity, Estimate), MetricError>> {
+    match curve {
+        Curve::Ndf(d) => Some(normalization(|t| d.eval(t)).map(|e| (Quantity::Normalization, e))),
+        // 2 ∫₀¹ F(c) c dc = (1/π) · 2π ∫₀^{π/2} F sin θ cos θ dθ.
+        Curve::Fresnel(f) => Some(projected_integral(|t| f.eval(t), lobe_width(1.0), 0.0).map(
+            |e| {
+                (
+                    Quantity::HemisphericalAverage,
+                    Estimate {
+                        value: e.value / PI,
+                        error: e.error / PI,
+                    },
+                )
+            },
+        )),
+        Curve::Difference { .. } => None,
+    }
+}
+
+/// Audits every distinct curve of `scenes` (first appearance order), in parallel.
+pub fn audit_scenes(scenes: &[Scene]) -> Result<Vec<Audit>> {
+    let mut seen = HashSet::new();
+    let mut curves = Vec::new();
+    for scene in scenes {
+        for shown in scene.panels.iter().flat_map(|p| &p.curves) {
+            let json = shown.curve.canonical_json();
+            if seen.insert(json.clone()) {
+                curves.push((scene.id.clone(), json, &shown.curve));
+            }
+        }
+    }
+    let audits: Vec<Option<Audit>> = curves
+        .par_iter()
+        .map(|(scene, json, curve)| {
+            audit(curve)
+                .map(|result| {
+                    let (quantity, integral) =
+                        result.map_err(|e| Error::Numerics(format!("{scene}: {json}: {e}")))?;
+                    Ok(Audit {
+                        scene: scene.clone(),
+                        curve: json.clone(),
+                        quantity,
+                        integral,
+                    })
+                })
+                .transpose()
+        })
+        .collect::<Result<_>>()?;
+    Ok(audits.into_iter().flatten().collect())
+}
+
+/// The table: a header, then per curve its status (`ok`, `FAIL`, or `-` for a Fresnel average), the
+/// quantity, the integral, its error estimate, |integral − 1|, the scene and the curve.
+pub fn table(audits: &[Audit], tolerance: f64) -> String {
+    let mut out = format!(
+        "{:<7}{:<23}{:<21}{:<25}{:<25}{:<22}{}\n",
+        "status", "quantity", "integral", "error_estimate", "deviation", "scene", "curve"
+    );
+    for a in audits {
+        let status = match a.deviation() {
+            Some(d) if d > tolerance => "FAIL",
+            Some(_) => "ok",
+            None => "-",
+        };
+        let deviation = a
+            .deviation()
+            .map_or_else(|| "-".to_string(), |d| format!("{d:?}"));
+        out.push_str(&format!(
+            "{status:<7}{:<23}{:<21}{:<25}{:<25}{:<22}{}\n",
+            a.quantity.name(),
+            format!("{:?}", a.integral.value),
+            format!("{:?}", a.integral.error),
+            deviation,
+            a.scene,
+            a.curve
+        ));
+    }
+    out
+}
+
+/// `Err(CheckFailed)` (exit 1) when an NDF's normalization is off by more than `tolerance`.
+pub fn verdict(audits: &[Audit], tolerance: f64) -> Result<()> {
+    let ndfs = audits.iter().filter(|a| a.deviation().is_some()).count();
+    let failed = audits
+        .iter()
+        .filter(|a| a.deviation().is_some_and(|d| d > tolerance))
+        .count();
+    if failed == 0 {
+        Ok(())
+    } else {
+        Err(Error::CheckFailed(format!(
+            "check: {failed} of {ndfs} NDFs are off by more than --tolerance {tolerance:?} from a normalization of 1"
+        )))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ndf::Phong;
+
+    #[test]
+    fn an_unnormalized_lobe_fails_the_check_with_exit_1() {
+        let phong = Phong::new(20.0).unwrap();
+        let good = normalization(|t| phong.eval(t)).unwrap();
+        let bad = normalization(|t| 1.001 * phong.eval(t)).unwrap();
+        let row = |integral| Audit {
+            scene: "s".into(),
+            curve: "c".into(),
+            quantity: Quantity::Normalization,
+            integral,
+        };
+        let audits = [row(good), row(bad)];
+        assert!(
+            (good.value - 1.0).abs() < 1e-12 && good.error < 1e-11,
+            "{good:?}"
+        );
+        assert!((bad.value - 1.001).abs() < 1e-12, "{bad:?}");
+        let err = verdict(&audits, DEFAULT_TOLERANCE).unwrap_err();
+        assert_eq!(err.exit_code(), 1);
+        assert!(err.to_string().contains("1 of 2 NDFs"), "{err}");
+        let text = table(&audits, DEFAULT_TOLERANCE);
+        assert!(
+            text.lines().nth(1).unwrap().starts_with("ok ")
+                && text.lines().nth(2).unwrap().starts_with("FAIL"),
+            "{text}"
+        );
+    }
+}
