@@ -8,6 +8,7 @@ pub mod catalogue;
 pub mod cli;
 pub mod cmd;
 pub mod curve;
+pub mod dataset;
 pub mod domain;
 pub mod error;
 pub mod fresnel;

@@ -1,22 +1,29 @@
 //! The sampling plan: what a set of scenes actually needs evaluated.
 //!
 //! Between validated scenes and evaluation sits this one place that decides the work: each
-//! distinct (curve, θ range, sampling) is evaluated once however many panels or scenes show it,
-//! and only over the θ range a panel makes visible.
+//! distinct (curve, θ range, sampling) or dataset is evaluated once however many panels or scenes
+//! show it, curves only over the θ range their panel makes visible, and nothing that no series
+//! shows (the Fresnel basis is built only by a job that needs it).
 
 use crate::curve::Curve;
+use crate::dataset::Dataset;
 use crate::scene::{Sampling, Scene};
 use std::collections::HashMap;
 
-/// One evaluation job: a curve sampled over a θ interval.
+/// One evaluation job.
 #[derive(Debug, Clone)]
-pub struct Job {
-    /// The curve.
-    pub curve: Curve,
-    /// θ interval in radians.
-    pub theta_range: (f64, f64),
-    /// How to sample it.
-    pub sampling: Sampling,
+pub enum Job {
+    /// A curve sampled over a θ interval.
+    Curve {
+        /// The curve.
+        curve: Curve,
+        /// θ interval in radians.
+        theta_range: (f64, f64),
+        /// How to sample it.
+        sampling: Sampling,
+    },
+    /// A dataset computed once.
+    Data(Dataset),
 }
 
 /// The jobs, plus for each scene, panel and series the index of the job that feeds it.
@@ -24,14 +31,21 @@ pub struct Job {
 pub struct Plan {
     /// Distinct jobs in first-use order.
     pub jobs: Vec<Job>,
-    /// `feeds[scene][panel][series]` = index into `jobs`.
+    /// `feeds[scene][panel][series]` = index into `jobs`; a panel's series are its curves, then
+    /// its data series.
     pub feeds: Vec<Vec<Vec<usize>>>,
 }
 
 /// Plans the evaluation of `scenes`, sharing identical jobs.
 pub fn plan(scenes: &[Scene]) -> Plan {
     let mut jobs: Vec<Job> = Vec::new();
-    let mut index: HashMap<(String, u64, u64, Sampling), usize> = HashMap::new();
+    let mut index: HashMap<String, usize> = HashMap::new();
+    let mut intern = |key: String, job: &dyn Fn() -> Job| {
+        *index.entry(key).or_insert_with(|| {
+            jobs.push(job());
+            jobs.len() - 1
+        })
+    };
     let feeds = scenes
         .iter()
         .map(|scene| {
@@ -39,18 +53,20 @@ pub fn plan(scenes: &[Scene]) -> Plan {
                 .panels
                 .iter()
                 .map(|panel| {
-                    panel
-                        .curves
-                        .iter()
-                        .map(|shown| {
-                            let (a, b) = panel.x_range;
-                            let key = (shown.curve.canonical_json(), a.to_bits(), b.to_bits(), scene.sampling);
-                            *index.entry(key).or_insert_with(|| {
-                                jobs.push(Job { curve: shown.curve.clone(), theta_range: (a, b), sampling: scene.sampling });
-                                jobs.len() - 1
-                            })
+                    let (a, b) = panel.theta_range();
+                    let curves = panel.curves.iter().map(|shown| {
+                        let key = format!("{} {:?} {:?} {:?}", shown.curve.canonical_json(), a, b, scene.sampling);
+                        intern(key, &|| Job::Curve {
+                            curve: shown.curve.clone(),
+                            theta_range: (a, b),
+                            sampling: scene.sampling,
                         })
-                        .collect()
+                    });
+                    let mut feed: Vec<usize> = curves.collect();
+                    for shown in &panel.data {
+                        feed.push(intern(shown.dataset.canonical_json(), &|| Job::Data(shown.dataset.clone())));
+                    }
+                    feed
                 })
                 .collect()
         })

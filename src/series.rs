@@ -35,15 +35,50 @@ pub struct Style {
     pub width: f64,
     /// Line pattern.
     pub dash: Dash,
+    /// How points are marked.
+    pub mark: Mark,
 }
 
-/// Unit in which θ is shown on the x axis (data are always radians).
+/// What the x axis shows: θ (data always in radians) in a display unit, or a plain quantity.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum AngleUnit {
-    /// x axis labelled in radians.
+pub enum XUnit {
+    /// θ labelled in radians.
     Radians,
-    /// x axis labelled in degrees (x values multiplied by 180/π for display).
+    /// θ labelled in degrees (x values multiplied by 180/π for display).
     Degrees,
+    /// Not an angle (an index, a coefficient): x shown as is.
+    Plain,
+}
+
+/// How a series' points are marked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Mark {
+    /// A polyline through the points.
+    Line,
+    /// A small dot per point, no line (a scatter plot).
+    Points,
+    /// A polyline with a dot at each point.
+    LinePoints,
+    /// A vertical bar from 0 to each point.
+    Bars,
+}
+
+/// The kind of a panel.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PanelKind {
+    /// A 2D plot of y against x.
+    Cartesian,
+    /// A 3D plot: series carry z values; a series with a `grid` is a surface, others are 3D lines.
+    Surface {
+        /// z axis label.
+        z_label: String,
+        /// Displayed z range; `None` = automatic.
+        z_range: Option<(f64, f64)>,
+        /// Camera elevation above the x–y plane, degrees.
+        elevation_deg: f64,
+        /// Camera azimuth around the z axis, degrees.
+        azimuth_deg: f64,
+    },
 }
 
 /// Scale of the y axis.
@@ -64,8 +99,13 @@ pub struct Series {
     pub curve: String,
     /// Drawing style.
     pub style: Style,
-    /// Sampled points (θ in radians, value), θ increasing. Shared when several panels show one curve.
+    /// Points (x, y): for curves (θ in radians, value) with θ increasing. Shared when several
+    /// panels show one curve.
     pub points: Arc<Vec<(f64, f64)>>,
+    /// z per point, for series in surface panels; `None` elsewhere.
+    pub z: Option<Arc<Vec<f64>>>,
+    /// `Some((rows, cols))` when the points form a row-major grid to draw as a surface mesh.
+    pub grid: Option<(usize, usize)>,
 }
 
 /// One panel (sub-plot) of a figure.
@@ -77,11 +117,13 @@ pub struct Panel {
     pub x_label: String,
     /// y axis label.
     pub y_label: String,
-    /// Unit of the θ axis.
-    pub x_unit: AngleUnit,
+    /// What the x axis shows.
+    pub x_unit: XUnit,
+    /// 2D or 3D.
+    pub kind: PanelKind,
     /// Scale of the y axis.
     pub y_scale: YScale,
-    /// Displayed x range in radians; `None` = the sampled θ range.
+    /// Displayed x range (radians for θ axes); `None` = the range of the data.
     pub x_range: Option<(f64, f64)>,
     /// Displayed y range; `None` = automatic, every point visible (PlotRange → All).
     pub y_range: Option<(f64, f64)>,

@@ -10,9 +10,9 @@ use crate::input::{parse_json, read_file};
 use crate::output::{csv::figure_csv, plot, write};
 use crate::plan::plan;
 use crate::problem::{Problem, Problems};
-use crate::sample::{Points, evaluate_all};
+use crate::sample::{Evaluated, evaluate_all};
 use crate::scene::{self, Scene};
-use crate::series::{Figure, Panel, Series};
+use crate::series::{Figure, Panel, Series, XUnit};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -154,32 +154,43 @@ fn apply_override(mut scene: Scene, over: CanvasOverride, source: &str) -> std::
     Ok(scene)
 }
 
-/// Builds the figure of `scene` from its evaluated series (`feeds[panel][series]` → points).
-pub fn figure(scene: &Scene, feeds: &[Vec<usize>], points: &[Points]) -> Figure {
+/// Builds the figure of `scene` from its evaluated jobs (`feeds[panel][series]` → job index).
+pub fn figure(scene: &Scene, feeds: &[Vec<usize>], evaluated: &[Evaluated]) -> Figure {
     let panels = scene
         .panels
         .iter()
         .zip(feeds)
-        .map(|(panel, feed)| Panel {
-            title: panel.title.clone(),
-            x_label: panel.x_label.clone(),
-            y_label: panel.y_label.clone(),
-            x_unit: panel.x_unit,
-            y_scale: panel.y_scale,
-            x_range: Some(panel.x_range),
-            y_range: panel.y_range,
-            legend: panel.legend,
-            series: panel
+        .map(|(panel, feed)| {
+            let named = panel
                 .curves
                 .iter()
-                .zip(feed)
-                .map(|(shown, &job)| Series {
-                    label: shown.label.clone(),
-                    curve: shown.curve.canonical_json(),
-                    style: shown.style,
-                    points: points[job].clone(),
-                })
-                .collect(),
+                .map(|c| (c.label.clone(), c.curve.canonical_json(), c.style))
+                .chain(panel.data.iter().map(|d| (d.label.clone(), d.dataset.canonical_json(), d.style)));
+            Panel {
+                title: panel.title.clone(),
+                x_label: panel.x_label.clone(),
+                y_label: panel.y_label.clone(),
+                x_unit: panel.x_unit,
+                kind: panel.kind.clone(),
+                y_scale: panel.y_scale,
+                x_range: match panel.x_unit {
+                    XUnit::Plain => panel.x_range,
+                    _ => Some(panel.theta_range()),
+                },
+                y_range: panel.y_range,
+                legend: panel.legend,
+                series: named
+                    .zip(feed)
+                    .map(|((label, curve, style), &job)| Series {
+                        label,
+                        curve,
+                        style,
+                        points: evaluated[job].points.clone(),
+                        z: evaluated[job].z.clone(),
+                        grid: evaluated[job].grid,
+                    })
+                    .collect(),
+            }
         })
         .collect();
     Figure { id: scene.id.clone(), title: scene.title.clone(), rows: scene.rows, cols: scene.cols, canvas: scene.canvas, panels }
@@ -199,8 +210,8 @@ pub fn encode(figure: &Figure, format: Format) -> Result<Vec<u8>> {
 pub fn run(options: &RenderOptions) -> Result<Vec<PathBuf>> {
     let scenes = load_scenes(&sources(&options.paths)?, options.canvas)?;
     let plan = plan(&scenes);
-    let points = evaluate_all(&plan.jobs)?;
-    let figures: Vec<Figure> = scenes.iter().zip(&plan.feeds).map(|(s, f)| figure(s, f, &points)).collect();
+    let evaluated = evaluate_all(&plan.jobs)?;
+    let figures: Vec<Figure> = scenes.iter().zip(&plan.feeds).map(|(s, f)| figure(s, f, &evaluated)).collect();
     let outputs: Vec<(String, Vec<u8>)> = figures
         .par_iter()
         .flat_map_iter(|fig| options.formats.iter().map(move |&format| (fig, format)))

@@ -20,7 +20,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::{FontFamily, FontStyle, register_font};
 
-use crate::series::{AngleUnit, Canvas, Dash, Figure, Panel, Rgb, Series, YScale};
+use crate::series::{XUnit, Canvas, Dash, Figure, Panel, Rgb, Series, YScale};
 
 /// Why a figure could not be turned into bytes.
 #[derive(Debug, thiserror::Error)]
@@ -574,12 +574,12 @@ impl Axis {
         };
         let (lo, hi) = widen_if_flat(lo, hi);
         let (step, decimals) = match unit {
-            AngleUnit::Degrees => degree_step(hi - lo, max_ticks),
-            AngleUnit::Radians => nice_step(hi - lo, max_ticks, &NICE_MANTISSAS),
+            XUnit::Degrees => degree_step(hi - lo, max_ticks),
+            XUnit::Radians | XUnit::Plain => nice_step(hi - lo, max_ticks, &NICE_MANTISSAS),
         };
         let suffix = match unit {
-            AngleUnit::Degrees => "°",
-            AngleUnit::Radians => "",
+            XUnit::Degrees => "°",
+            XUnit::Radians | XUnit::Plain => "",
         };
         Axis {
             lo,
@@ -705,10 +705,10 @@ impl Ranged for Axis {
 const SUPERSCRIPT_DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
 
 /// θ (radians) in display units, if finite.
-fn x_display(theta: f64, unit: AngleUnit) -> Option<f64> {
+fn x_display(theta: f64, unit: XUnit) -> Option<f64> {
     let x = match unit {
-        AngleUnit::Degrees => theta.to_degrees(),
-        AngleUnit::Radians => theta,
+        XUnit::Degrees => theta.to_degrees(),
+        XUnit::Radians | XUnit::Plain => theta,
     };
     x.is_finite().then_some(x)
 }
@@ -722,10 +722,11 @@ fn y_display(v: f64, scale: YScale) -> Option<f64> {
 }
 
 /// The x range shown when a panel has no data: 0 to π/2.
-fn default_x(unit: AngleUnit) -> (f64, f64) {
+fn default_x(unit: XUnit) -> (f64, f64) {
     match unit {
-        AngleUnit::Degrees => (0.0, 90.0),
-        AngleUnit::Radians => (0.0, std::f64::consts::FRAC_PI_2),
+        XUnit::Degrees => (0.0, 90.0),
+        XUnit::Radians => (0.0, std::f64::consts::FRAC_PI_2),
+        XUnit::Plain => (0.0, 1.0),
     }
 }
 
@@ -977,7 +978,7 @@ mod tests {
         })
     }
 
-    fn panel(x_unit: AngleUnit, y_scale: YScale, series: Vec<Series>) -> Panel {
+    fn panel(x_unit: XUnit, y_scale: YScale, series: Vec<Series>) -> Panel {
         Panel {
             title: String::new(),
             x_label: "θ".to_owned(),
@@ -1010,7 +1011,7 @@ mod tests {
     /// A log panel in radians (a dashed series) and a linear panel in degrees (a thick one).
     fn sample() -> Figure {
         let mut log = panel(
-            AngleUnit::Radians,
+            XUnit::Radians,
             YScale::Log,
             vec![
                 series("α_b = 0.4", RED, 1.0, Dash::Dashed, beckmann(0.4)),
@@ -1020,7 +1021,7 @@ mod tests {
         log.title = "Beckmann".to_owned();
         let schlick = |f0: f64| sampled(move |theta| f0 + (1.0 - f0) * (1.0 - theta.cos()).powi(5));
         let mut fresnel = panel(
-            AngleUnit::Degrees,
+            XUnit::Degrees,
             YScale::Linear,
             vec![
                 series("F₀ = 0.04", ORANGE, 2.0, Dash::Solid, schlick(0.04)),
@@ -1114,34 +1115,34 @@ mod tests {
         let zeros = series("zero", RED, 1.0, Dash::Solid, sampled(|_| 0.0));
         let nan = series("nan", RED, 1.0, Dash::Dotted, sampled(|_| f64::NAN));
         let empty = series("", RED, 1.0, Dash::Solid, Vec::new());
-        let mut clipped = panel(AngleUnit::Degrees, YScale::Linear, vec![flat.clone()]);
+        let mut clipped = panel(XUnit::Degrees, YScale::Linear, vec![flat.clone()]);
         clipped.y_range = Some((0.5, 0.1));
         clipped.x_range = Some((0.2, 0.2));
         let figures = [
             figure(vec![panel(
-                AngleUnit::Degrees,
+                XUnit::Degrees,
                 YScale::Linear,
                 vec![flat.clone()],
             )]),
-            figure(vec![panel(AngleUnit::Radians, YScale::Log, vec![flat])]),
+            figure(vec![panel(XUnit::Radians, YScale::Log, vec![flat])]),
             figure(vec![panel(
-                AngleUnit::Radians,
+                XUnit::Radians,
                 YScale::Linear,
                 vec![single.clone()],
             )]),
-            figure(vec![panel(AngleUnit::Degrees, YScale::Log, vec![single])]),
+            figure(vec![panel(XUnit::Degrees, YScale::Log, vec![single])]),
             figure(vec![panel(
-                AngleUnit::Degrees,
+                XUnit::Degrees,
                 YScale::Log,
                 vec![zeros.clone()],
             )]),
             figure(vec![panel(
-                AngleUnit::Radians,
+                XUnit::Radians,
                 YScale::Linear,
                 vec![zeros, nan],
             )]),
-            figure(vec![panel(AngleUnit::Degrees, YScale::Log, vec![empty])]),
-            figure(vec![panel(AngleUnit::Degrees, YScale::Linear, Vec::new())]),
+            figure(vec![panel(XUnit::Degrees, YScale::Log, vec![empty])]),
+            figure(vec![panel(XUnit::Degrees, YScale::Linear, Vec::new())]),
             figure(vec![clipped]),
             figure(Vec::new()),
         ];
@@ -1169,10 +1170,10 @@ mod tests {
 
     #[test]
     fn degree_axes_tick_at_angles() {
-        let axis = Axis::x(&panel(AngleUnit::Degrees, YScale::Linear, vec![]), 10.0);
+        let axis = Axis::x(&panel(XUnit::Degrees, YScale::Linear, vec![]), 10.0);
         assert_eq!(axis.ticks, [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 90.0]);
         assert_eq!(axis.label(45.0), "45°");
-        let narrow = Axis::x(&panel(AngleUnit::Degrees, YScale::Linear, vec![]), 4.0);
+        let narrow = Axis::x(&panel(XUnit::Degrees, YScale::Linear, vec![]), 4.0);
         assert_eq!(narrow.ticks, [0.0, 30.0, 60.0, 90.0]);
     }
 
@@ -1187,7 +1188,7 @@ mod tests {
             vec![series("s", RED, 1.0, Dash::Solid, points)]
         };
         let linear =
-            |v: &[f64]| Axis::y(&panel(AngleUnit::Radians, YScale::Linear, values(v)), 8.0);
+            |v: &[f64]| Axis::y(&panel(XUnit::Radians, YScale::Linear, values(v)), 8.0);
         let positive = linear(&[1.0, 3.0, 2.0]);
         assert_eq!(positive.lo, 0.0);
         assert!((positive.hi - 3.0 * (1.0 + AUTO_MARGIN)).abs() < 1e-12);
@@ -1199,7 +1200,7 @@ mod tests {
         assert!(zero.lo < 0.0 && zero.hi > 0.0);
 
         let log = Axis::y(
-            &panel(AngleUnit::Radians, YScale::Log, values(&[0.0, 2e-3, 40.0])),
+            &panel(XUnit::Radians, YScale::Log, values(&[0.0, 2e-3, 40.0])),
             8.0,
         );
         assert_eq!((log.lo, log.hi), (-3.0, 2.0));
@@ -1219,7 +1220,7 @@ mod tests {
             (0.5, 2.0),
         ];
         let s = series("s", RED, 1.0, Dash::Solid, points);
-        let mut p = panel(AngleUnit::Radians, YScale::Log, vec![s.clone()]);
+        let mut p = panel(XUnit::Radians, YScale::Log, vec![s.clone()]);
         p.y_range = Some((0.5, 10.0));
         let (x, y) = (Axis::x(&p, 8.0), Axis::y(&p, 8.0));
         let pieces = visible_pieces(&s, &p, &x, &y);

@@ -5,6 +5,7 @@
 //! `GraphicsRow`), canvas settings and, per panel, axes, a legend and curves. Curves use the
 //! curve format of `eval`; any parameter may be swept (see [`sweep`]).
 
+pub mod data;
 pub mod reader;
 pub mod sweep;
 
@@ -12,7 +13,8 @@ use crate::curve::{self, Curve, Model, ParamValue};
 use crate::json::{Node, Value};
 use crate::ndf::Family;
 use crate::problem::{Problem, join_index, join_key, suggestion};
-use crate::series::{AngleUnit, Canvas, Dash, Rgb, Style, YScale};
+use crate::dataset::Dataset;
+use crate::series::{Canvas, Dash, Mark, PanelKind, Rgb, Style, XUnit, YScale};
 use reader::Reader;
 use std::f64::consts::FRAC_PI_2;
 use sweep::{MAX_CURVES_PER_SCENE, Sweep};
@@ -31,11 +33,13 @@ pub const MAX_PNG_PIXELS: f64 = 1e8;
 /// Keys a scene may have.
 const SCENE_KEYS: &[&str] =
     &["$schema", "id", "title", "layout", "aspect_ratio", "width", "height", "font_px", "png_scale", "sampling", "panels"];
-const PANEL_KEYS: &[&str] = &["title", "x", "y", "legend", "curves"];
+const PANEL_KEYS: &[&str] = &["title", "kind", "x", "y", "z", "view", "legend", "curves"];
 const X_KEYS: &[&str] = &["unit", "range", "label"];
+const Z_KEYS: &[&str] = &["range", "label"];
+const VIEW_KEYS: &[&str] = &["elevation", "azimuth"];
 const Y_KEYS: &[&str] = &["scale", "range", "label"];
 /// Keys of a scene curve beyond its model parameters.
-const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "label"];
+const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "label", "mark"];
 const STYLE_WORDS: &[&str] = &["thick", "dashed", "dotted", "solid"];
 
 /// How curves are sampled over θ.
@@ -56,6 +60,17 @@ pub struct SceneCurve {
     pub style: Style,
 }
 
+/// A data series (not a function of θ) as a scene shows it.
+#[derive(Debug, Clone)]
+pub struct SceneData {
+    /// The validated dataset.
+    pub dataset: Dataset,
+    /// Legend label.
+    pub label: String,
+    /// Line or mark style.
+    pub style: Style,
+}
+
 /// A validated panel.
 #[derive(Debug, Clone)]
 pub struct ScenePanel {
@@ -65,18 +80,32 @@ pub struct ScenePanel {
     pub x_label: String,
     /// y axis label.
     pub y_label: String,
-    /// θ display unit.
-    pub x_unit: AngleUnit,
+    /// What the x axis shows: θ in a display unit, or a plain quantity.
+    pub x_unit: XUnit,
+    /// 2D, or 3D with its z axis and view.
+    pub kind: PanelKind,
     /// y scale.
     pub y_scale: YScale,
-    /// Visible θ range in radians, within [0, π/2].
-    pub x_range: (f64, f64),
+    /// Given x range (radians on θ axes, within [0, π/2]); `None` = automatic.
+    pub x_range: Option<(f64, f64)>,
     /// Given y range, or automatic.
     pub y_range: Option<(f64, f64)>,
     /// Whether a legend is drawn.
     pub legend: bool,
     /// Curves in drawing order.
     pub curves: Vec<SceneCurve>,
+    /// Data series (not functions of θ), drawn after the curves.
+    pub data: Vec<SceneData>,
+}
+
+impl ScenePanel {
+    /// The θ interval the panel's curves are sampled on: the visible range, [0, π/2] by default.
+    pub fn theta_range(&self) -> (f64, f64) {
+        match self.x_unit {
+            XUnit::Plain => (0.0, FRAC_PI_2),
+            _ => self.x_range.unwrap_or((0.0, FRAC_PI_2)),
+        }
+    }
 }
 
 /// A validated scene.
@@ -226,7 +255,7 @@ fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<Scene
     let mut total_curves = 0;
     for (i, item) in items.iter().enumerate() {
         if let Some(panel) = read_panel(reader, item, &join_index("panels", i)) {
-            total_curves += panel.curves.len();
+            total_curves += panel.curves.len() + panel.data.len();
             panels.push(panel);
         }
     }
@@ -245,17 +274,25 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
     let y_path = panel.path_of("y");
     let x = panel.get("x").and_then(|n| reader.object(n, &x_path, X_KEYS));
     let y = panel.get("y").and_then(|n| reader.object(n, &y_path, Y_KEYS));
-    let x_unit = match x.and_then(|x| reader.choice(&x, "unit", &["radians", "degrees"])) {
-        Some("degrees") => AngleUnit::Degrees,
-        _ => AngleUnit::Radians,
+    let series = read_series(reader, &panel)?;
+    let only_data = series.curves.is_empty();
+    let x_unit = match x.and_then(|x| reader.choice(&x, "unit", &["radians", "degrees", "plain"])) {
+        Some("degrees") => XUnit::Degrees,
+        Some("radians") => XUnit::Radians,
+        Some(_) => XUnit::Plain,
+        None if only_data => XUnit::Plain,
+        None => XUnit::Radians,
     };
-    let (to_radians, max_x, unit_text) = match x_unit {
-        AngleUnit::Degrees => (std::f64::consts::PI / 180.0, 90.0, "degrees within [0, 90]"),
-        AngleUnit::Radians => (1.0, FRAC_PI_2, "radians within [0, π/2]"),
+    if x_unit == XUnit::Plain && !only_data {
+        reader.report(&x_path, "curves of θ need an angle axis (got unit \"plain\", expected radians or degrees)");
+    }
+    let x_range = match x_unit {
+        XUnit::Degrees => x
+            .and_then(|x| reader.interval(&x, "range", |v| (0.0..=90.0).contains(&v), "degrees within [0, 90]"))
+            .map(|(a, b)| (a.to_radians(), b.to_radians().min(FRAC_PI_2))),
+        XUnit::Radians => x.and_then(|x| reader.interval(&x, "range", |v| (0.0..=FRAC_PI_2).contains(&v), "radians within [0, π/2]")),
+        XUnit::Plain => x.and_then(|x| reader.interval(&x, "range", f64::is_finite, "finite")),
     };
-    let x_range = x
-        .and_then(|x| reader.interval(&x, "range", |v| (0.0..=max_x).contains(&v), unit_text))
-        .map_or((0.0, FRAC_PI_2), |(a, b)| (a * to_radians, (b * to_radians).min(FRAC_PI_2)));
     let y_scale = match y.and_then(|y| reader.choice(&y, "scale", &["linear", "log"])) {
         Some("log") => YScale::Log,
         _ => YScale::Linear,
@@ -264,29 +301,75 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
         YScale::Log => reader.interval(&y, "range", |v| v > 0.0, "both > 0 on a log axis"),
         YScale::Linear => reader.interval(&y, "range", f64::is_finite, "finite"),
     });
-    let curves = read_curves(reader, &panel)?;
-    let default_x_label = match x_unit {
-        AngleUnit::Degrees => "θ (degrees)",
-        AngleUnit::Radians => "θ (radians)",
-    };
-    let default_y_label = match curves.first().map(|c| c.curve.model()) {
-        Some(Model::Fresnel(_)) => "F(θ)",
-        _ => "D(θ)",
+    let kind = read_kind(reader, &panel, &series)?;
+    let (default_x_label, default_y_label) = match (series.curves.first(), series.data.first()) {
+        (Some(first), _) => {
+            let x_label = if x_unit == XUnit::Degrees { "θ (degrees)" } else { "θ (radians)" };
+            let y_label = match first.curve.model() {
+                Model::Fresnel(_) => "F(θ)",
+                _ => "D(θ)",
+            };
+            (x_label.to_string(), y_label.to_string())
+        }
+        (None, Some(first)) => data::default_labels(&first.dataset),
+        (None, None) => (String::new(), String::new()),
     };
     Some(ScenePanel {
         title,
-        x_label: x.and_then(|x| reader.string(&x, "label")).unwrap_or_else(|| default_x_label.into()),
-        y_label: y.and_then(|y| reader.string(&y, "label")).unwrap_or_else(|| default_y_label.into()),
+        x_label: x.and_then(|x| reader.string(&x, "label")).unwrap_or(default_x_label),
+        y_label: y.and_then(|y| reader.string(&y, "label")).unwrap_or(default_y_label),
         x_unit,
+        kind,
         y_scale,
         x_range,
         y_range,
         legend,
-        curves,
+        curves: series.curves,
+        data: series.data,
     })
 }
 
-fn read_curves(reader: &mut Reader, panel: &reader::Object) -> Option<Vec<SceneCurve>> {
+/// The panel kind: `"kind": "surface"` with its `z` axis and `view`, else 2D.
+fn read_kind(reader: &mut Reader, panel: &reader::Object, series: &PanelSeries) -> Option<PanelKind> {
+    let surface = reader.choice(panel, "kind", &["cartesian", "surface"]) == Some("surface");
+    for key in ["z", "view"] {
+        if !surface && panel.get(key).is_some() {
+            reader.report(panel.path_of(key), "only surface panels have this key (add \"kind\": \"surface\")");
+        }
+    }
+    if !surface {
+        if let Some(i) = series.data.iter().position(|d| d.dataset.has_z()) {
+            reader.report(panel.path_of("curves"), format!("series {i} has a z axis: it needs \"kind\": \"surface\""));
+        }
+        return Some(PanelKind::Cartesian);
+    }
+    if !series.curves.is_empty() || series.data.iter().any(|d| !d.dataset.has_z()) {
+        reader.report(panel.path_of("curves"), "a surface panel shows only data series with a z coefficient");
+        return None;
+    }
+    let z_path = panel.path_of("z");
+    let z = panel.get("z").and_then(|n| reader.object(n, &z_path, Z_KEYS));
+    let view_path = panel.path_of("view");
+    let view = panel.get("view").and_then(|n| reader.object(n, &view_path, VIEW_KEYS));
+    let angle = |reader: &mut Reader, key: &str, default: f64| {
+        view.and_then(|v| reader.number(&v, key, |a| (-360.0..=360.0).contains(&a), "degrees within [-360, 360]")).unwrap_or(default)
+    };
+    Some(PanelKind::Surface {
+        z_label: z.and_then(|z| reader.string(&z, "label")).unwrap_or_else(|| series.data.first().map(|d| data::z_label(&d.dataset)).unwrap_or_default()),
+        z_range: z.and_then(|z| reader.interval(&z, "range", f64::is_finite, "finite")),
+        // The notebook's view_init(elev=65, azim=-45).
+        elevation_deg: angle(reader, "elevation", 65.0),
+        azimuth_deg: angle(reader, "azimuth", -45.0),
+    })
+}
+
+/// The series of one panel: curves of θ, then data series.
+struct PanelSeries {
+    curves: Vec<SceneCurve>,
+    data: Vec<SceneData>,
+}
+
+fn read_series(reader: &mut Reader, panel: &reader::Object) -> Option<PanelSeries> {
     let path = panel.path_of("curves");
     let Some(node) = panel.get("curves") else {
         reader.report(path, "missing curves");
@@ -301,19 +384,28 @@ fn read_curves(reader: &mut Reader, panel: &reader::Object) -> Option<Vec<SceneC
         return None;
     }
     let mut curves = Vec::new();
+    let mut data = Vec::new();
     let before = reader.problems.len();
     for (i, item) in items.iter().enumerate() {
-        read_curve_entry(reader, item, &join_index(&path, i), &mut curves);
-        if curves.len() > MAX_CURVES_PER_SCENE {
+        let item_path = join_index(&path, i);
+        if data::is_data(item) {
+            data.extend(data::read_entry(reader, item, &item_path));
+        } else {
+            read_curve_entry(reader, item, &item_path, &mut curves);
+        }
+        if curves.len() + data.len() > MAX_CURVES_PER_SCENE {
             reader.report(path, format!("too many curves (expected at most {MAX_CURVES_PER_SCENE})"));
             return None;
         }
     }
-    (reader.problems.len() == before).then_some(curves)
+    (reader.problems.len() == before).then_some(PanelSeries { curves, data })
 }
 
 /// Expands one curve entry (possibly swept) into `out`.
 fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<SceneCurve>) {
+    if curve::is_difference(node) {
+        return sweep::difference_entry(reader, node, path, out);
+    }
     let resolved = match curve::resolve(node, path, CURVE_EXTRA_KEYS) {
         Ok(resolved) => resolved,
         Err(problems) => {
@@ -324,21 +416,33 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
     let Value::Object(members) = &node.value else { return };
     let entry = reader::Object::from_members(members, path);
     let label_template = reader.string(&entry, "label");
-    let base_style = read_style(reader, &entry, resolved.model);
+    let base_style = read_style(reader, &entry, default_colour(resolved.model));
 
     // Per parameter, its values; absent keys take their defaults.
     let mut sweeps: Vec<(usize, Sweep)> = Vec::new();
-    for (spec, param_node) in resolved.params.iter().zip(&resolved.nodes) {
+    let mut fitted = None;
+    for (i, (spec, param_node)) in resolved.params.iter().zip(&resolved.nodes).enumerate() {
         let sweep = match param_node {
             None => Some(Sweep {
                 values: vec![sweep::SweepValue { value: spec.default.expect("resolve() reports missing keys"), label: String::new() }],
                 varies: false,
             }),
+            // Fitted after the loop, once the other parameters (its fixed keys) are known.
+            Some(n) if sweep::is_fit(n) && fitted.is_none() => {
+                fitted = Some((i, *n));
+                Some(Sweep { values: vec![], varies: true })
+            }
             Some(n) => sweep::expand(reader, spec.name, spec.kind, n, &join_key(path, spec.name)),
         };
         let Some(sweep) = sweep else { return };
         let position = param_node.map_or(usize::MAX, |n| n.line * 1_000_000 + n.col);
         sweeps.push((position, sweep));
+    }
+    if let Some((i, n)) = fitted {
+        let others: Vec<&Sweep> = sweeps.iter().map(|(_, s)| s).collect();
+        let at = join_key(path, resolved.params[i].name);
+        let Some(fit) = sweep::fit(reader, resolved.model, &resolved.params, &others, i, n, &at) else { return };
+        sweeps[i].1 = fit;
     }
     let Some(style) = base_style else { return };
     let count: usize = sweeps.iter().map(|(_, s)| s.values.len()).product();
@@ -429,8 +533,9 @@ fn default_colour(model: Model) -> Rgb {
     }
 }
 
-fn read_style(reader: &mut Reader, entry: &reader::Object, model: Model) -> Option<Style> {
-    let mut style = Style { colour: default_colour(model), width: 1.0, dash: Dash::Solid };
+/// Reads `style` (words from [`STYLE_WORDS`]), `colour` (#RRGGBB) and `mark` of a series entry.
+pub(crate) fn read_style(reader: &mut Reader, entry: &reader::Object, colour: Rgb) -> Option<Style> {
+    let mut style = Style { colour, width: 1.0, dash: Dash::Solid, mark: Mark::Line };
     let before = reader.problems.len();
     if let Some(node) = entry.get("style") {
         let path = entry.path_of("style");
@@ -457,6 +562,12 @@ fn read_style(reader: &mut Reader, entry: &reader::Object, model: Model) -> Opti
                 _ => reader.report(word_path, format!("expected a style word (got {word_node})")),
             }
         }
+    }
+    match reader.choice(entry, "mark", &["line", "points", "line_points", "bars"]) {
+        Some("points") => style.mark = Mark::Points,
+        Some("line_points") => style.mark = Mark::LinePoints,
+        Some("bars") => style.mark = Mark::Bars,
+        _ => {}
     }
     if let Some(text) = reader.string(entry, "colour") {
         match parse_hex_colour(&text) {

@@ -1,9 +1,14 @@
 //! Parameter sweeps in scene curves: a number, a list, `{"range": [a, b, s]}` (Mathematica's
 //! `Range`, exact per CONTRACTS.md) or, for Phong's exponent, `{"from_beckmann": …}` through
-//! Walter et al.'s equivalence α_p = 2/α_b² − 2.
+//! Walter et al.'s equivalence α_p = 2/α_b² − 2. A parameter may also be fitted, one value per
+//! target curve (`{"fit": {"target": <curve or sweep>, "by": "peak"}}`), and a curve entry may be a
+//! difference series of two curves or matched sweeps (`{"difference": "minus", "a": …, "b": …}`).
+//! The fitting itself is [`crate::fit`]'s; this module only expands entries into values and curves.
 
-use super::reader::Reader;
-use crate::curve::{ParamKind, ParamValue, symbol};
+use super::reader::{self, Reader};
+use super::{SceneCurve, default_colour, read_curve_entry, read_style, shade};
+use crate::curve::{self, DiffOp, Model, ParamKind, ParamSpec, ParamValue, symbol};
+use crate::fit::{self, By};
 use crate::grid;
 use crate::json::{Node, Value};
 use crate::problem::{join_index, join_key};
@@ -90,9 +95,12 @@ fn numbers(reader: &mut Reader, node: &Node, path: &str) -> Option<(Vec<f64>, bo
             (values.len() == items.len()).then_some((values, true))
         }
         Value::Object(_) => {
-            let object = reader.object(node, path, &["range"])?;
+            let object = reader.object(node, path, &["range", "linspace"])?;
+            if let Some(linspace_node) = object.get("linspace") {
+                return linspace(reader, linspace_node, &join_key(path, "linspace")).map(|v| (v, true));
+            }
             let Some(range_node) = object.get("range") else {
-                reader.report(path, format!("expected a number, a list or {{\"range\": [start, stop, step]}} (got {node})"));
+                reader.report(path, format!("expected a number, a list, {{\"range\": [start, stop, step]}} or {{\"linspace\": [start, stop, count]}} (got {node})"));
                 return None;
             };
             range(reader, range_node, &join_key(path, "range")).map(|v| (v, true))
@@ -134,6 +142,29 @@ fn range(reader: &mut Reader, node: &Node, path: &str) -> Option<Vec<f64>> {
     }
 }
 
+/// numpy's `linspace(start, stop, count)`, both ends included, 1 ≤ count ≤ the scene cap.
+fn linspace(reader: &mut Reader, node: &Node, path: &str) -> Option<Vec<f64>> {
+    let numbers: Vec<f64> = match &node.value {
+        Value::Array(items) => items
+            .iter()
+            .filter_map(|item| match &item.value {
+                Value::Number(n) => Some(n.value),
+                _ => None,
+            })
+            .collect(),
+        _ => Vec::new(),
+    };
+    match numbers[..] {
+        [start, stop, count] if count.fract() == 0.0 && (1.0..=MAX_CURVES_PER_SCENE as f64).contains(&count) => {
+            Some(grid::linspace(start, stop, count as usize))
+        }
+        _ => {
+            reader.report(path, format!("expected [start, stop, count] with a whole count from 1 to {MAX_CURVES_PER_SCENE} (got {node})"));
+            None
+        }
+    }
+}
+
 /// α_p = 2/α_b² − 2 for α_b ∈ (0, 1] (Walter et al. 2007); beyond 1 the exponent would be negative.
 pub fn phong_from_beckmann(alpha_b: f64) -> Option<f64> {
     (alpha_b > 0.0 && alpha_b <= 1.0).then(|| 2.0 / (alpha_b * alpha_b) - 2.0)
@@ -157,6 +188,139 @@ fn from_beckmann(reader: &mut Reader, node: &Node, path: &str) -> Option<Sweep> 
         }
     }
     Some(Sweep { values, varies: true })
+}
+
+/// Whether a parameter node asks for a fit (`{"fit": {…}}`).
+pub fn is_fit(node: &Node) -> bool {
+    has_key(node, "fit")
+}
+
+/// Expands `{"fit": {"target": <curve or sweep>, "by": "peak"|"max"|"l2"}}` (default `peak`) for
+/// parameter `free` of a curve of `model` into one fitted value per target curve, labelled like
+/// `a₁ = 23.4442 (peak fit to α_tr = 0.3)`. The curve's other parameters, `sweeps` (the entry at
+/// `free` is ignored), are the fit's fixed keys and must each have a single value. The target is
+/// expanded like any scene curve entry.
+pub fn fit(
+    reader: &mut Reader,
+    model: Model,
+    params: &[ParamSpec],
+    sweeps: &[&Sweep],
+    free: usize,
+    node: &Node,
+    path: &str,
+) -> Option<Sweep> {
+    let Model::Ndf(family) = model else {
+        reader.report(path, format!("only NDF parameters can be fitted (got {} \"{}\", expected an ndf curve)", model.key(), model.name()));
+        return None;
+    };
+    let object = reader.object(node, path, &["fit"])?;
+    let fit_path = object.path_of("fit");
+    let spec = reader.object(object.get("fit")?, &fit_path, &["target", "by"])?;
+    let names: Vec<&'static str> = By::ALL.iter().map(|b| b.name()).collect();
+    let by = match (spec.get("by"), reader.choice(&spec, "by", &names)) {
+        (None, _) => By::Peak,
+        (Some(_), Some(name)) => By::from_name(name).expect("choice() returns one of the names"),
+        (Some(_), None) => return None,
+    };
+    let Some(target_node) = spec.get("target") else {
+        reader.report(&fit_path, "missing \"target\": the curve or sweep to fit");
+        return None;
+    };
+    let mut fixed = Vec::new();
+    for (j, (param, sweep)) in params.iter().zip(sweeps).enumerate() {
+        if j == free {
+            continue;
+        }
+        match sweep.values[..] {
+            [SweepValue { value, .. }] => fixed.push((param.name.to_string(), value.number())),
+            _ => {
+                reader.report(
+                    path,
+                    format!(
+                        "a fitted parameter needs the curve's other parameters fixed (got {} values of {}, expected one)",
+                        sweep.values.len(),
+                        param.name
+                    ),
+                );
+                return None;
+            }
+        }
+    }
+    let mut targets = Vec::new();
+    let before = reader.problems.len();
+    read_curve_entry(reader, target_node, &join_key(&fit_path, "target"), &mut targets);
+    if reader.problems.len() > before {
+        return None;
+    }
+    let name = params[free].name;
+    let mut values = Vec::with_capacity(targets.len());
+    for target in &targets {
+        match fit::fit(&target.curve, family, &fixed, by) {
+            Ok(f) => values.push(SweepValue {
+                value: ParamValue::Number(f.value),
+                label: format!("{} = {} ({} fit to {})", symbol(name), crate::curve::pretty(f.value), by.name(), target.label),
+            }),
+            Err(e) => reader.report(path, format!("fit to {}: {}: {}", target.label, e.key, e.message)),
+        }
+    }
+    (values.len() == targets.len()).then_some(Sweep { values, varies: true })
+}
+
+/// Expands a difference entry `{"difference": "minus"|"ratio", "a": …, "b": …}` at `path` into
+/// `out`: a and b are curve entries (possibly swept) of the same kind, paired element-wise (equal
+/// numbers of curves, or one curve against a sweep). Labels are `<a> − <b>` or `<a> / <b>` unless
+/// the entry's `label` template says otherwise (`{a}` and `{b}` stand for the operands' labels).
+pub fn difference_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<SceneCurve>) {
+    let (op, a_node, b_node) = match curve::difference_parts(node, path, super::CURVE_EXTRA_KEYS) {
+        Ok(parts) => parts,
+        Err(problems) => {
+            reader.problems.extend(problems);
+            return;
+        }
+    };
+    let (mut a, mut b) = (Vec::new(), Vec::new());
+    let before = reader.problems.len();
+    read_curve_entry(reader, a_node, &join_key(path, "a"), &mut a);
+    read_curve_entry(reader, b_node, &join_key(path, "b"), &mut b);
+    if reader.problems.len() > before || a.is_empty() || b.is_empty() {
+        return;
+    }
+    if a.len() != b.len() && a.len() != 1 && b.len() != 1 {
+        reader.report(
+            path,
+            format!(
+                "a and b pair element-wise (got {} and {} curves, expected equal numbers, or one curve against a sweep)",
+                a.len(),
+                b.len()
+            ),
+        );
+        return;
+    }
+    let Value::Object(members) = &node.value else { return };
+    let entry = reader::Object::from_members(members, path);
+    let template = reader.string(&entry, "label");
+    let Some(style) = read_style(reader, &entry, default_colour(a[0].curve.model())) else { return };
+    let count = a.len().max(b.len());
+    let sign = match op {
+        DiffOp::Minus => "−",
+        DiffOp::Ratio => "/",
+    };
+    for k in 0..count {
+        let (x, y) = (&a[k.min(a.len() - 1)], &b[k.min(b.len() - 1)]);
+        let curve = match curve::difference(op, x.curve.clone(), y.curve.clone(), path) {
+            Ok(curve) => curve,
+            Err(problem) => {
+                reader.problems.push(problem);
+                return;
+            }
+        };
+        let label = match &template {
+            Some(t) => t.replace("{a}", &x.label).replace("{b}", &y.label),
+            None => format!("{} {sign} {}", x.label, y.label),
+        };
+        let colour = if entry.get("colour").is_none() && count > 1 { shade(style.colour, k, count) } else { style.colour };
+        out.push(SceneCurve { curve, label, style: super::Style { colour, ..style } });
+    }
 }
 
 #[cfg(test)]

@@ -1,0 +1,177 @@
+//! Series that are not functions of θ: the Belcour–Bati–Barla singular-value spectrum,
+//! coefficient paths and manifolds over Gulbrandsen's (r, g), and literal tables.
+//!
+//! A dataset is validated data (like a curve) and evaluates to points; it never draws or writes.
+
+use crate::fresnel::{basis, gulbrandsen};
+
+/// Which number of the spectrum a spectrum series shows (MATH.md, basis step 6).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SpectrumQuantity {
+    /// The singular values s_k.
+    SingularValue,
+    /// s_k / Σ s.
+    Normalized,
+    /// Running sums of the normalized values.
+    Cumulative,
+}
+
+impl SpectrumQuantity {
+    /// Every quantity, by its JSON name.
+    pub const NAMES: [(&'static str, SpectrumQuantity); 3] = [
+        ("singular_value", SpectrumQuantity::SingularValue),
+        ("normalized", SpectrumQuantity::Normalized),
+        ("cumulative", SpectrumQuantity::Cumulative),
+    ];
+
+    fn name(self) -> &'static str {
+        Self::NAMES.iter().find(|(_, q)| *q == self).map(|(n, _)| *n).expect("every quantity is named")
+    }
+}
+
+/// A decomposition coefficient, as an axis of a Gulbrandsen dataset.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Coefficient {
+    /// c₀ = F₀.
+    C0,
+    /// c₁ = 1 − c₀.
+    C1,
+    /// c₂.
+    C2,
+    /// c₃.
+    C3,
+}
+
+impl Coefficient {
+    /// Every coefficient, by its JSON name.
+    pub const NAMES: [(&'static str, Coefficient); 4] =
+        [("c0", Coefficient::C0), ("c1", Coefficient::C1), ("c2", Coefficient::C2), ("c3", Coefficient::C3)];
+
+    fn name(self) -> &'static str {
+        Self::NAMES.iter().find(|(_, c)| *c == self).map(|(n, _)| *n).expect("every coefficient is named")
+    }
+
+    fn of(self, c: &basis::Coefficients) -> f64 {
+        match self {
+            Coefficient::C0 => c.c0,
+            Coefficient::C1 => c.c1,
+            Coefficient::C2 => c.c2,
+            Coefficient::C3 => c.c3,
+        }
+    }
+}
+
+/// A non-θ series.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Dataset {
+    /// The first `count` entries of the spectrum of 100 dielectrics, at x = 0, 1, … (the
+    /// notebook's index axis).
+    Spectrum {
+        /// Which number to show.
+        quantity: SpectrumQuantity,
+        /// How many leading entries.
+        count: usize,
+    },
+    /// Coefficients of materials given by Gulbrandsen's (r, g) over the product r × g (r outer,
+    /// g inner): points (x, y) and, with `z`, a third coordinate.
+    Gulbrandsen {
+        /// Coefficient on the x axis.
+        x: Coefficient,
+        /// Coefficient on the y axis.
+        y: Coefficient,
+        /// Coefficient on the z axis (3D panels).
+        z: Option<Coefficient>,
+        /// Reflectivities, each in [0, 1).
+        r: Vec<f64>,
+        /// Edge tints, each in [0, 1].
+        g: Vec<f64>,
+        /// Use ḡ = 1 − (1 − g)³.
+        g_remap: bool,
+    },
+    /// Literal points.
+    Table {
+        /// x values.
+        x: Vec<f64>,
+        /// y values, as many as x.
+        y: Vec<f64>,
+    },
+}
+
+/// Points of a dataset: (x, y), optional z per point, and the grid shape when the points form
+/// a row-major grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DataPoints {
+    /// (x, y) per point.
+    pub points: Vec<(f64, f64)>,
+    /// z per point, for datasets with a z axis.
+    pub z: Option<Vec<f64>>,
+    /// `Some((rows, cols))` when the points form a grid of at least 2 × 2.
+    pub grid: Option<(usize, usize)>,
+}
+
+fn json_list(values: &[f64]) -> String {
+    let items: Vec<String> = values.iter().map(|v| format!("{v:?}")).collect();
+    format!("[{}]", items.join(","))
+}
+
+impl Dataset {
+    /// A canonical one-line JSON name, used as the CSV `curve` column.
+    pub fn canonical_json(&self) -> String {
+        match self {
+            Dataset::Spectrum { quantity, count } => {
+                format!("{{\"data\":\"spectrum\",\"quantity\":\"{}\",\"count\":{count}}}", quantity.name())
+            }
+            Dataset::Gulbrandsen { x, y, z, r, g, g_remap } => {
+                let z = z.map_or(String::new(), |z| format!(",\"z\":\"{}\"", z.name()));
+                format!(
+                    "{{\"data\":\"gulbrandsen\",\"x\":\"{}\",\"y\":\"{}\"{z},\"r\":{},\"g\":{},\"g_remap\":{g_remap}}}",
+                    x.name(),
+                    y.name(),
+                    json_list(r),
+                    json_list(g)
+                )
+            }
+            Dataset::Table { x, y } => format!("{{\"data\":\"table\",\"x\":{},\"y\":{}}}", json_list(x), json_list(y)),
+        }
+    }
+
+    /// Whether the dataset has a z coordinate (for surface panels).
+    pub fn has_z(&self) -> bool {
+        matches!(self, Dataset::Gulbrandsen { z: Some(_), .. })
+    }
+
+    /// Computes the points. The spectrum and Gulbrandsen datasets build the Fresnel basis on
+    /// first use.
+    pub fn evaluate(&self) -> DataPoints {
+        match self {
+            Dataset::Spectrum { quantity, count } => {
+                let spectrum = basis::spectrum();
+                let values = match quantity {
+                    SpectrumQuantity::SingularValue => &spectrum.singular_values,
+                    SpectrumQuantity::Normalized => &spectrum.normalized,
+                    SpectrumQuantity::Cumulative => &spectrum.cumulative,
+                };
+                let points = values.iter().take(*count).enumerate().map(|(k, &v)| (k as f64, v)).collect();
+                DataPoints { points, z: None, grid: None }
+            }
+            Dataset::Gulbrandsen { x, y, z, r, g, g_remap } => {
+                let coefficients: Vec<basis::Coefficients> = r
+                    .iter()
+                    .flat_map(|&r| g.iter().map(move |&g| (r, g)))
+                    .map(|(r, g)| {
+                        let g = if *g_remap { gulbrandsen::remap_edge_tint(g) } else { g };
+                        let (eta, kappa) = gulbrandsen::to_eta_kappa(r, g);
+                        basis::coeffs(eta, kappa)
+                    })
+                    .collect();
+                let points = coefficients.iter().map(|c| (x.of(c), y.of(c))).collect();
+                let z = z.map(|z| coefficients.iter().map(|c| z.of(c)).collect());
+                let grid = (r.len() > 1 && g.len() > 1).then_some((r.len(), g.len()));
+                DataPoints { points, z, grid }
+            }
+            Dataset::Table { x, y } => {
+                DataPoints { points: x.iter().copied().zip(y.iter().copied()).collect(), z: None, grid: None }
+            }
+        }
+    }
+}

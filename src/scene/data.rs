@@ -1,0 +1,176 @@
+//! Data series entries of a panel (`{"data": …}`): validation into [`Dataset`]s.
+//!
+//! `{"data": "spectrum", "quantity": "cumulative", "count": 20}` — the singular-value spectrum;
+//! `{"data": "gulbrandsen", "x": "c0", "y": "c2", "z": "c3", "r": <sweep>, "g": <sweep>, "g_remap": false}`
+//! — decomposition coefficients over Gulbrandsen's (r, g);
+//! `{"data": "table", "x": [...], "y": [...]}` — literal points.
+//! Every entry also takes `label`, `style`, `colour` and `mark`.
+
+use super::reader::{Object, Reader};
+use super::sweep;
+use super::{SceneData, read_style};
+use crate::curve::{ParamKind, pretty};
+use crate::dataset::{Coefficient, Dataset, SpectrumQuantity};
+use crate::json::{Node, Value};
+use crate::series::Rgb;
+
+/// Most points one data series may have; a 1000 × 1000 coefficient grid is already far beyond
+/// what a figure can show.
+pub const MAX_DATA_POINTS: usize = 250_000;
+
+/// Keys every data entry accepts besides its own.
+const COMMON_KEYS: [&str; 5] = ["data", "label", "style", "colour", "mark"];
+const KINDS: &[&str] = &["spectrum", "gulbrandsen", "table"];
+
+/// Solarized blue, the default colour of data series.
+const DATA_COLOUR: u32 = 0x268BD2;
+
+/// Whether a panel entry is a data series (has a `data` key) rather than a curve.
+pub fn is_data(node: &Node) -> bool {
+    matches!(&node.value, Value::Object(members) if members.iter().any(|(k, _)| k == "data"))
+}
+
+fn keys(own: &[&'static str]) -> Vec<&'static str> {
+    COMMON_KEYS.iter().chain(own).copied().collect()
+}
+
+/// Validates a data entry at `path`; problems go to `reader`.
+pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneData> {
+    let Value::Object(members) = &node.value else { return None };
+    let probe = Object::from_members(members, path);
+    let kind = reader.choice(&probe, "data", KINDS)?;
+    let own: &[&'static str] = match kind {
+        "spectrum" => &["quantity", "count"],
+        "gulbrandsen" => &["x", "y", "z", "r", "g", "g_remap"],
+        _ => &["x", "y"],
+    };
+    let entry = reader.object(node, path, &keys(own))?;
+    let before = reader.problems.len();
+    let dataset = match kind {
+        "spectrum" => read_spectrum(reader, &entry),
+        "gulbrandsen" => read_gulbrandsen(reader, &entry),
+        _ => read_table(reader, &entry),
+    };
+    let style = read_style(reader, &entry, Rgb::from_hex(DATA_COLOUR));
+    let label = reader.string(&entry, "label");
+    if reader.problems.len() != before {
+        return None;
+    }
+    let dataset = dataset?;
+    let label = label.unwrap_or_else(|| default_label(&dataset));
+    Some(SceneData { dataset, label, style: style? })
+}
+
+fn read_spectrum(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
+    let names: Vec<&'static str> = SpectrumQuantity::NAMES.iter().map(|(n, _)| *n).collect();
+    let quantity = match entry.get("quantity") {
+        None => SpectrumQuantity::Cumulative,
+        Some(_) => {
+            let name = reader.choice(entry, "quantity", &names)?;
+            SpectrumQuantity::NAMES.iter().find(|(n, _)| *n == name).map(|(_, q)| *q)?
+        }
+    };
+    let whole = |v: f64| v.fract() == 0.0 && (1.0..=100.0).contains(&v);
+    let count = match entry.get("count") {
+        None => 20.0,
+        Some(_) => reader.number(entry, "count", whole, "a whole number from 1 to 100")?,
+    };
+    Some(Dataset::Spectrum { quantity, count: count as usize })
+}
+
+fn coefficient(reader: &mut Reader, entry: &Object, key: &str) -> Option<Coefficient> {
+    let names: Vec<&'static str> = Coefficient::NAMES.iter().map(|(n, _)| *n).collect();
+    let name = reader.choice(entry, key, &names)?;
+    Coefficient::NAMES.iter().find(|(n, _)| *n == name).map(|(_, c)| *c)
+}
+
+fn values(reader: &mut Reader, entry: &Object, key: &'static str, ok: impl Fn(f64) -> bool, expected: &str) -> Option<Vec<f64>> {
+    let Some(node) = entry.get(key) else {
+        reader.report(entry.path_of(key), "missing parameter");
+        return None;
+    };
+    let sweep = sweep::expand(reader, key, ParamKind::Number, node, &entry.path_of(key))?;
+    let values: Vec<f64> = sweep.values.iter().map(|v| v.value.number()).collect();
+    if let Some(bad) = values.iter().find(|&&v| !ok(v)) {
+        reader.report(entry.path_of(key), format!("out of domain (got {bad:?}, expected {expected})"));
+        return None;
+    }
+    Some(values)
+}
+
+fn read_gulbrandsen(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
+    let x = coefficient(reader, entry, "x");
+    let y = coefficient(reader, entry, "y");
+    let z = entry.get("z").and_then(|_| coefficient(reader, entry, "z"));
+    let r = values(reader, entry, "r", |v| (0.0..1.0).contains(&v), "in [0, 1)");
+    let g = values(reader, entry, "g", |v| (0.0..=1.0).contains(&v), "in [0, 1]");
+    let g_remap = reader.boolean(entry, "g_remap").unwrap_or(false);
+    if x.is_none() && entry.get("x").is_none() {
+        reader.report(entry.path_of("x"), "missing coefficient (expected c0, c1, c2 or c3)");
+    }
+    if y.is_none() && entry.get("y").is_none() {
+        reader.report(entry.path_of("y"), "missing coefficient (expected c0, c1, c2 or c3)");
+    }
+    let (r, g) = (r?, g?);
+    if r.len() * g.len() > MAX_DATA_POINTS {
+        reader.report(entry.path(), format!("too many points (got {} × {}, expected at most {MAX_DATA_POINTS})", r.len(), g.len()));
+        return None;
+    }
+    Some(Dataset::Gulbrandsen { x: x?, y: y?, z, r, g, g_remap })
+}
+
+fn read_table(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
+    let any = |v: f64| v.is_finite();
+    let x = values(reader, entry, "x", any, "finite");
+    let y = values(reader, entry, "y", any, "finite");
+    let (x, y) = (x?, y?);
+    if x.len() != y.len() {
+        reader.report(entry.path(), format!("x and y differ in length (got {} and {})", x.len(), y.len()));
+        return None;
+    }
+    Some(Dataset::Table { x, y })
+}
+
+fn symbol(c: Coefficient) -> &'static str {
+    match c {
+        Coefficient::C0 => "c₀",
+        Coefficient::C1 => "c₁",
+        Coefficient::C2 => "c₂",
+        Coefficient::C3 => "c₃",
+    }
+}
+
+fn default_label(dataset: &Dataset) -> String {
+    match dataset {
+        Dataset::Spectrum { quantity, .. } => match quantity {
+            SpectrumQuantity::SingularValue => "singular values".into(),
+            SpectrumQuantity::Normalized => "s_k / Σ s".into(),
+            SpectrumQuantity::Cumulative => "cumulative Σ s_k / Σ s".into(),
+        },
+        Dataset::Gulbrandsen { g, g_remap, .. } => {
+            let tint = if *g_remap { "ḡ" } else { "g" };
+            match g.as_slice() {
+                [g] => format!("{tint} = {}", pretty(*g)),
+                _ => format!("r × {tint} grid"),
+            }
+        }
+        Dataset::Table { .. } => "data".into(),
+    }
+}
+
+/// Default (x, y) axis labels of a panel whose first series is `dataset`.
+pub fn default_labels(dataset: &Dataset) -> (String, String) {
+    match dataset {
+        Dataset::Spectrum { .. } => ("index k".into(), "singular values".into()),
+        Dataset::Gulbrandsen { x, y, .. } => (symbol(*x).into(), symbol(*y).into()),
+        Dataset::Table { .. } => ("x".into(), "y".into()),
+    }
+}
+
+/// Default z axis label of a surface panel whose first series is `dataset`.
+pub fn z_label(dataset: &Dataset) -> String {
+    match dataset {
+        Dataset::Gulbrandsen { z: Some(z), .. } => symbol(*z).into(),
+        _ => "z".into(),
+    }
+}
