@@ -119,6 +119,7 @@ const FRESNEL_HELP: &str = "  fresnel exact        eta in [1e-150, 1e150], kappa
   fresnel lazanyi_term no parameters: c(1 - c)^6 normalized to a maximum of 1
   fresnel belcour      eta/kappa or r/g/g_remap: the four-term basis reconstruction
   fresnel basis        index 0, 1, 2 or 3: one basis function
+  fresnel normalized   eta/kappa or r/g/g_remap: (F - F0)/(1 - F0), the basis training curves
 ";
 
 /// Arguments of `ndfplot compare`.

@@ -110,6 +110,7 @@ fn fresnel_params(f: &Fresnel) -> Vec<(&'static str, ParamValue)> {
         Fresnel::LazanyiTerm => vec![],
         Fresnel::Belcour(ior, _) => ior_params(ior),
         Fresnel::Basis(index) => vec![("index", ParamValue::Number(*index as f64))],
+        Fresnel::Normalized(ior) => ior_params(ior),
     }
 }
 
@@ -157,17 +158,20 @@ pub enum FresnelModel {
     Belcour,
     /// One Belcour–Bati–Barla basis function.
     Basis,
+    /// The exact Fresnel normalized as the basis training curves: (F − F₀)/(1 − F₀).
+    Normalized,
 }
 
 impl FresnelModel {
     /// Every Fresnel model.
-    pub const ALL: [FresnelModel; 6] = [
+    pub const ALL: [FresnelModel; 7] = [
         FresnelModel::Exact,
         FresnelModel::Schlick,
         FresnelModel::Lazanyi,
         FresnelModel::LazanyiTerm,
         FresnelModel::Belcour,
         FresnelModel::Basis,
+        FresnelModel::Normalized,
     ];
 
     fn of(f: &Fresnel) -> FresnelModel {
@@ -178,6 +182,7 @@ impl FresnelModel {
             Fresnel::LazanyiTerm => FresnelModel::LazanyiTerm,
             Fresnel::Belcour(..) => FresnelModel::Belcour,
             Fresnel::Basis(_) => FresnelModel::Basis,
+            Fresnel::Normalized(_) => FresnelModel::Normalized,
         }
     }
 
@@ -190,6 +195,7 @@ impl FresnelModel {
             FresnelModel::LazanyiTerm => "lazanyi_term",
             FresnelModel::Belcour => "belcour",
             FresnelModel::Basis => "basis",
+            FresnelModel::Normalized => "normalized",
         }
     }
 }
@@ -261,7 +267,7 @@ impl Model {
         match self {
             Model::Ndf(family) => vec![family.param_names().iter().map(|&n| number(n)).collect()],
             Model::Fresnel(model) => match model {
-                FresnelModel::Exact | FresnelModel::Belcour => {
+                FresnelModel::Exact | FresnelModel::Belcour | FresnelModel::Normalized => {
                     vec![ETA_KAPPA.to_vec(), GULBRANDSEN.to_vec()]
                 }
                 FresnelModel::Schlick => vec![F0.to_vec(), ETA_KAPPA.to_vec(), GULBRANDSEN.to_vec()],
@@ -291,6 +297,7 @@ impl Model {
                 FresnelModel::Lazanyi => Fresnel::lazanyi(n(0), n(1))?,
                 FresnelModel::LazanyiTerm => Fresnel::LazanyiTerm,
                 FresnelModel::Belcour => Fresnel::belcour(ior(0)?),
+                FresnelModel::Normalized => Fresnel::Normalized(ior(0)?),
                 FresnelModel::Basis => Fresnel::basis(whole_index(n(0))?)?,
             }),
         })

@@ -121,6 +121,9 @@ pub enum Fresnel {
     Belcour(Ior, Coefficients),
     /// Basis function b_k, k ∈ 0..=3; build with [`Fresnel::basis`].
     Basis(usize),
+    /// The exact Fresnel normalized as the basis training curves are: (F − F₀)/(1 − F₀), computed
+    /// as 1 − (1 − F)/(1 − F₀) without cancellation; 0 where 1 − F₀ underflows to 0.
+    Normalized(Ior),
 }
 
 impl Fresnel {
@@ -173,10 +176,19 @@ impl Fresnel {
             Fresnel::LazanyiTerm => approx::lazanyi_term(theta),
             Fresnel::Belcour(_, coefficients) => coefficients.interpolate(theta.cos()),
             Fresnel::Basis(k) => basis::basis().interpolate(*k, theta.cos()),
+            Fresnel::Normalized(ior) => {
+                let (eta, kappa) = ior.complex();
+                let one_minus_f0 = exact::one_minus_reflectance(1.0, eta, kappa);
+                if one_minus_f0 == 0.0 {
+                    0.0
+                } else {
+                    1.0 - exact::one_minus_reflectance(theta.cos(), eta, kappa) / one_minus_f0
+                }
+            }
         }
     }
 
-    /// The curve's canonical model name: "exact", "schlick", "lazanyi", "lazanyi_term", "belcour" or "basis".
+    /// The curve's canonical model name: "exact", "schlick", "lazanyi", "lazanyi_term", "belcour", "basis" or "normalized".
     pub fn name(&self) -> &'static str {
         match self {
             Fresnel::Exact(_) => "exact",
@@ -185,6 +197,7 @@ impl Fresnel {
             Fresnel::LazanyiTerm => "lazanyi_term",
             Fresnel::Belcour(..) => "belcour",
             Fresnel::Basis(_) => "basis",
+            Fresnel::Normalized(_) => "normalized",
         }
     }
 }

@@ -14,6 +14,7 @@ use crate::json::{Node, Value};
 use crate::ndf::Family;
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::dataset::Dataset;
+use crate::fresnel::Fresnel;
 use crate::series::{Canvas, Dash, Mark, PanelKind, Rgb, Style, XUnit, YScale};
 use reader::Reader;
 use std::f64::consts::FRAC_PI_2;
@@ -481,7 +482,7 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
             .collect();
         let auto_label = with_family_prefix(&curve, &parts.join(", "));
         let label = match &label_template {
-            Some(template) => fill_template(template, &resolved.params, &values),
+            Some(template) => fill_template(template, &curve, &resolved.params, &values),
             None => auto_label,
         };
         let colour = if entry.get("colour").is_none() && count > 1 { shade(style.colour, k, count) } else { style.colour };
@@ -490,18 +491,38 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
 }
 
 /// Prefixes families whose parameters share symbols (ABC and SGD both use a₁, a₂).
+/// Belcour reconstructions also show their `l2_grid` error, to two decimals as the notebook
+/// prints it.
 fn with_family_prefix(curve: &Curve, text: &str) -> String {
     match curve.model() {
         Model::Ndf(Family::Abc) => format!("ABC {text}"),
         Model::Ndf(Family::Sgd) => format!("SGD {text}"),
-        Model::Fresnel(model) => format!("{} {text}", model.name()).trim_end().to_string(),
+        Model::Fresnel(model) => {
+            let l2 = belcour_l2(curve).map_or(String::new(), |l2| format!(", L2 = {l2:.2}"));
+            format!("{} {text}{l2}", model.name()).trim_end().to_string()
+        }
         Model::Ndf(_) => text.to_string(),
     }
 }
 
-/// Replaces `{param}` in a label template by the parameter's value (`"TS {alpha_ts}"`).
-fn fill_template(template: &str, params: &[curve::ParamSpec], values: &[ParamValue]) -> String {
+/// The `l2_grid` error of a Belcour reconstruction against the exact Fresnel.
+fn belcour_l2(curve: &Curve) -> Option<f64> {
+    match curve {
+        Curve::Fresnel(Fresnel::Belcour(ior, coefficients)) => {
+            let (eta, kappa) = ior.complex();
+            Some(coefficients.l2_grid(eta, kappa))
+        }
+        _ => None,
+    }
+}
+
+/// Replaces `{param}` in a label template by the parameter's value (`"TS {alpha_ts}"`), and `{l2}`
+/// by a Belcour reconstruction's error (two decimals, as the notebook prints it).
+fn fill_template(template: &str, curve: &Curve, params: &[curve::ParamSpec], values: &[ParamValue]) -> String {
     let mut label = template.to_string();
+    if let Some(l2) = belcour_l2(curve) {
+        label = label.replace("{l2}", &format!("{l2:.2}"));
+    }
     for (spec, value) in params.iter().zip(values) {
         let text = match value {
             ParamValue::Number(v) => curve::pretty(*v),
