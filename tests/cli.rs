@@ -342,3 +342,34 @@ fn render_reports_all_problems_of_all_files_and_duplicate_ids() {
     assert!(err.contains("c.json: panels[0].curves[1].alpha_tr: expected a number"), "{err}");
     assert!(!out_dir.exists());
 }
+
+#[test]
+fn eval_fresnel_curves_and_their_bad_input() {
+    let out = ndfplot(&["eval", "--curve", r#"{"fresnel":"exact","eta":1.5}"#, "--theta", "0"]);
+    assert_eq!(stdout(&out), "theta,value\n0.0,0.04\n", "{}", stderr(&out));
+    let out = ndfplot(&["eval", "--curve", r#"{"fresnel":"schlick","r":0.5,"g":0.5}"#, "--curve", r#"{"fresnel":"lazanyi_term"}"#, "--theta", "0"]);
+    assert!(stdout(&out).starts_with(r#"theta,"{""fresnel"":""schlick"",""r"":0.5,""g"":0.5,""g_remap"":false}","{""fresnel"":""lazanyi_term""}""#), "{}", stdout(&out));
+    for (curve, needle) in [
+        (r#"{"fresnel":"exact","r":1.0,"g":0.5}"#, "r: out of domain (got 1.0, expected in [0, 1))"),
+        (r#"{"fresnel":"exact","r":0.5,"g":1.5}"#, "g: out of domain (got 1.5"),
+        (r#"{"fresnel":"exact","eta":0,"kappa":0}"#, "eta: out of domain (got 0.0"),
+        (r#"{"fresnel":"exact","eta":1.5,"kappa":-1}"#, "kappa: out of domain (got -1.0"),
+        (r#"{"fresnel":"exact","eta":1.5,"r":0.5,"g":0.1}"#, "cannot be combined"),
+        (r#"{"fresnel":"basis","index":4}"#, "index: out of domain (got 4.0, expected 0, 1, 2 or 3)"),
+        (r#"{"fresnel":"basis","index":1.5}"#, "index: out of domain (got 1.5"),
+        (r#"{"fresnel":"exakt","eta":1.5}"#, "did you mean \"exact\""),
+        (r#"{"fresnel":"exact","ndf":"phong","eta":1.5}"#, "not both"),
+        (r#"{"fresnel":"lazanyi","f0":0.5,"a":100}"#, "a: out of domain (got 100.0"),
+        (r#"{"fresnel":"exact","eta":1.5,"g_remap":true}"#, "keys eta, g_remap cannot be combined"),
+        (r#"{"fresnel":"exact","r":0.5,"g":0.5,"g_remap":"yes"}"#, "g_remap: expected true or false"),
+    ] {
+        assert_input_error(&ndfplot(&["eval", "--curve", curve, "--theta", "0.5"]), needle);
+    }
+}
+
+#[test]
+fn coeffs_prints_the_decomposition_of_materials() {
+    let out = ndfplot(&["coeffs", "--curve", r#"{"fresnel":"belcour","eta":1.0,"kappa":0.0}"#]);
+    assert_eq!(stdout(&out), "c0,c1,c2,c3,l2\n0.0,0.0,0.0,0.0,0.0\n", "{}", stderr(&out));
+    assert_input_error(&ndfplot(&["coeffs", "--curve", r#"{"ndf":"phong","alpha_p":1}"#]), "coeffs needs a material");
+}

@@ -14,7 +14,7 @@ fn material(curve: &Curve) -> Option<Ior> {
 
 /// CSV `c0,c1,c2,c3,l2` with one row per curve: the coefficients of the decomposition
 /// (the notebook's `fresnel2coeffs`) and the `l2_grid` error of the reconstruction against the
-/// exact Fresnel, numbers in shortest round-trip form.
+/// exact Fresnel, numbers in shortest round-trip form (zeros unsigned).
 pub fn table(curves: &[Curve]) -> Result<String> {
     let mut out = String::from("c0,c1,c2,c3,l2\n");
     for curve in curves {
@@ -27,7 +27,9 @@ pub fn table(curves: &[Curve]) -> Result<String> {
         let (eta, kappa) = ior.complex();
         let c = basis::coeffs(eta, kappa);
         let l2 = c.l2_grid(eta, kappa);
-        out.push_str(&format!("{:?},{:?},{:?},{:?},{:?}\n", c.c0, c.c1, c.c2, c.c3, l2));
+        // `+ 0.0` turns a −0.0 from the 2×2 solve into 0.0: the coefficient is zero, not signed.
+        let [c0, c1, c2, c3] = [c.c0, c.c1, c.c2, c.c3].map(|v| v + 0.0);
+        out.push_str(&format!("{c0:?},{c1:?},{c2:?},{c3:?},{l2:?}\n"));
     }
     Ok(out)
 }
