@@ -373,3 +373,121 @@ fn coeffs_prints_the_decomposition_of_materials() {
     assert_eq!(stdout(&out), "c0,c1,c2,c3,l2\n0.0,0.0,0.0,0.0,0.0\n", "{}", stderr(&out));
     assert_input_error(&ndfplot(&["coeffs", "--curve", r#"{"ndf":"phong","alpha_p":1}"#]), "coeffs needs a material");
 }
+
+#[test]
+fn fit_prints_the_curve_for_eval_and_the_residual_on_stderr() {
+    let out = ndfplot(&["fit", "--target", r#"{"ndf":"ggx","alpha_tr":0.3}"#, "--family", "abc", "--fix", "alpha_abc2=1.75"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let line = stdout(&out);
+    assert!(line.starts_with(r#"{"ndf":"abc","alpha_abc1":23.444"#) && line.ends_with(",\"alpha_abc2\":1.75}\n"), "{line}");
+    let residual = stderr(&out);
+    assert!(residual.starts_with("residual=") && residual.trim_end().ends_with(" (d0_rel)"), "{residual}");
+    let eval = ndfplot(&["eval", "--curve", line.trim_end(), "--theta", "0"]);
+    let target = ndfplot(&["eval", "--curve", r#"{"ndf":"ggx","alpha_tr":0.3}"#, "--theta", "0"]);
+    let value = |o: &Output| stdout(o).lines().nth(1).unwrap().split(',').nth(1).unwrap().parse::<f64>().unwrap();
+    assert!((value(&eval) / value(&target) - 1.0).abs() < 1e-14);
+    let l2 = ndfplot(&["fit", "--target", r#"{"ndf":"ggx","alpha_tr":0.3}"#, "--family", "abc", "--fix", "alpha_abc2=1.75", "--by", "l2"]);
+    assert!(stderr(&l2).ends_with(" (l2_projected)\n") && stdout(&l2) != line, "{}", stderr(&l2));
+}
+
+#[test]
+fn fit_bad_input_exits_2_naming_the_problem() {
+    let tr = r#"{"ndf":"trowbridge_reitz","alpha_tr":0.3}"#;
+    for (args, needle) in [
+        (vec!["--family", "abc", "--fix", "alpha_abc3=1"], "error: --fix: alpha_abc3: not a parameter of abc (got alpha_abc3=1.0"),
+        (vec!["--family", "trowbridge_reitz", "--fix", "alpha_tr=1"], "error: --fix: alpha_tr: no free parameter left"),
+        (vec!["--family", "abc"], "abc has 2 free parameters"),
+        (vec!["--family", "abc", "--fix", "alpha_abc2=x"], "error: --fix: alpha_abc2: not a number (got \"x\""),
+        (vec!["--family", "abd", "--fix", "alpha_abc2=1"], "did you mean \"abc\""),
+        (vec!["--family", "phong", "--by", "l3"], "error: --by: l3: unknown fit method"),
+    ] {
+        let mut all = vec!["fit", "--target", tr];
+        all.extend(args);
+        assert_input_error(&ndfplot(&all), needle);
+    }
+    let uniform = ndfplot(&["fit", "--target", r#"{"ndf":"phong","alpha_p":0}"#, "--family", "torrance_sparrow"]);
+    assert_input_error(&uniform, "error: --target: alpha_ts: torrance_sparrow cannot reach the target's D(0) (got 0.3183098861837907");
+}
+
+#[test]
+fn compare_table_json_and_max_error_gate() {
+    let (a, b) = (r#"{"ndf":"ggx","alpha_tr":0.3}"#, r#"{"ndf":"abc","alpha_abc1":23.5,"alpha_abc2":1.75}"#);
+    let table = ndfplot(&["compare", "--a", a, "--b", b]);
+    assert_eq!(table.status.code(), Some(0), "{}", stderr(&table));
+    for name in ["max_abs", "max_rel", "l2_projected", "l2_grid", "a_peak", "b_peak"] {
+        assert!(stdout(&table).lines().any(|l| l.starts_with(name)), "{name}: {}", stdout(&table));
+    }
+    let json = ndfplot(&["compare", "--a", a, "--b", b, "--format", "json"]);
+    let value: serde_json::Value = serde_json::from_str(&stdout(&json)).unwrap();
+    assert_eq!(value["a"]["ndf"], "trowbridge_reitz");
+    assert_eq!(value["a_peak_theta"], 0.0);
+    let max_rel = value["max_rel"].as_f64().unwrap();
+    assert!(max_rel > 0.0 && max_rel < 1.0 && value["l2_grid"].as_f64().unwrap() > 0.0, "{value}");
+    let pass = ndfplot(&["compare", "--a", a, "--b", b, "--max-error", &format!("max_rel={}", max_rel * 1.01)]);
+    assert_eq!(pass.status.code(), Some(0), "{}", stderr(&pass));
+    let fail = ndfplot(&["compare", "--a", a, "--b", b, "--max-error", "max_rel=1e-6", "--max-error", "l2_grid=1e9"]);
+    assert_eq!(fail.status.code(), Some(1));
+    assert!(!fail.stdout.is_empty() && stderr(&fail).starts_with("compare: max_rel = "), "{}", stderr(&fail));
+    assert_eq!(stderr(&fail).lines().count(), 1);
+    assert_input_error(&ndfplot(&["compare", "--a", a, "--b", b, "--max-error", "max_rel="]), "error: --max-error: max_rel: not a number");
+    let fresnel = r#"{"fresnel":"exact","eta":1.5}"#;
+    assert_input_error(&ndfplot(&["compare", "--a", a, "--b", fresnel]), "compare needs two curves of the same kind");
+    let same = ndfplot(&["compare", "--a", fresnel, "--b", r#"{"fresnel":"schlick","eta":1.5}"#, "--format", "json"]);
+    assert_eq!(same.status.code(), Some(0), "{}", stderr(&same));
+}
+
+#[test]
+fn check_passes_on_the_catalogue_and_fails_beyond_the_tolerance() {
+    let out = ndfplot(&["check"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let text = stdout(&out);
+    assert!(text.lines().skip(1).all(|l| l.starts_with("ok ") || l.starts_with("- ")), "{text}");
+    assert!(text.contains("hemispherical_average") && text.contains("abc-vs-tr"), "{text}");
+    // No quadrature lands every integral on exactly 1.0: a zero tolerance fails (exit 1) with the table printed.
+    let strict = ndfplot(&["check", "--tolerance", "0"]);
+    assert_eq!(strict.status.code(), Some(1), "{}", stderr(&strict));
+    assert!(stdout(&strict).contains("\nFAIL ") && stderr(&strict).lines().any(|l| l.starts_with("check: ")), "{}", stderr(&strict));
+}
+
+#[test]
+fn scene_fits_and_differences_render_with_fitted_values_in_the_csv() {
+    let dir = scratch("scene_fits");
+    let spec = dir.join("fits.json");
+    std::fs::write(
+        &spec,
+        r#"{"id": "fits", "panels": [{"curves": [
+            {"ndf": "abc", "alpha_abc2": 1.75,
+             "alpha_abc1": {"fit": {"target": {"ndf": "trowbridge_reitz", "alpha_tr": [0.4, 0.6]}, "by": "peak"}}},
+            {"difference": "ratio", "a": {"ndf": "ggx", "alpha_tr": [0.4, 0.6]}, "b": {"ndf": "ggx", "alpha_tr": [0.5, 0.7]}}
+        ]}]}"#,
+    )
+    .unwrap();
+    let out = ndfplot(&["render", spec.to_str().unwrap(), "-o", dir.to_str().unwrap(), "--format", "csv,svg"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let csv = std::fs::read_to_string(dir.join("fits.csv")).unwrap();
+    assert!(csv.contains(r#""{""ndf"":""abc"",""alpha_abc1"":11.58186251432451"#), "{}", &csv[..300]);
+    assert!(csv.contains(r#""{""difference"":""ratio"",""a"":{""ndf"":""trowbridge_reitz"",""alpha_tr"":0.6}"#));
+    let svg = std::fs::read_to_string(dir.join("fits.svg")).unwrap();
+    assert!(svg.contains("a₁ = 11.5819 (peak fit to α_tr = 0.4)"), "legend");
+    std::fs::write(
+        &spec,
+        r#"{"id": "fits", "panels": [{"curves": [
+            {"ndf": "torrance_sparrow", "alpha_ts": {"fit": {"target": {"ndf": "phong", "alpha_p": [1, 0]}}}},
+            {"difference": "minus", "a": {"ndf": "ggx", "alpha_tr": [0.4, 0.6]}, "b": {"ndf": "beckmann", "alpha_b": [0.4, 0.5, 0.6]}}
+        ]}]}"#,
+    )
+    .unwrap();
+    let bad = ndfplot(&["render", spec.to_str().unwrap(), "-o", dir.to_str().unwrap()]);
+    assert_input_error(&bad, "panels[0].curves[0].alpha_ts: fit to α_p = 0: alpha_ts: torrance_sparrow cannot reach");
+    assert!(stderr(&bad).contains("panels[0].curves[1]: a and b pair element-wise (got 2 and 3 curves"), "{}", stderr(&bad));
+}
+
+#[test]
+fn eval_accepts_difference_series() {
+    let minus = r#"{"difference":"minus","a":{"ndf":"phong","alpha_p":0},"b":{"ndf":"phong","alpha_p":0}}"#;
+    let out = ndfplot(&["eval", "--curve", minus, "--theta", "0,1"]);
+    assert_eq!(stdout(&out), "theta,value\n0.0,0.0\n1.0,0.0\n", "{}", stderr(&out));
+    let ratio = r#"{"difference":"ratio","a":{"ndf":"phong","alpha_p":1},"b":{"ndf":"beckmann","alpha_b":0.01}}"#;
+    let out = ndfplot(&["eval", "--curve", ratio, "--theta", "0,1.5"]);
+    assert_eq!(out.status.code(), Some(2), "ratio over a vanishing denominator is an error: {}", stdout(&out));
+}
