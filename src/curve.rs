@@ -10,6 +10,7 @@ use crate::domain::DomainError;
 use crate::fresnel::{Fresnel, Ior, SchlickF0};
 use crate::json::{Node, Value};
 use crate::ndf::{Family, Ndf};
+use crate::transform::Transform;
 use crate::problem::{Problem, join_key, suggestion};
 
 /// A validated curve: an NDF D(θ) or a Fresnel reflectance F(θ).
@@ -28,6 +29,13 @@ pub enum Curve {
         /// The second operand.
         b: Box<Curve>,
     },
+    /// An NDF seen through a view transform (`projected`: D cos θ; `slope`: D cos⁴θ).
+    Transformed {
+        /// The transform.
+        transform: Transform,
+        /// The transformed NDF.
+        curve: Box<Curve>,
+    },
 }
 
 impl Curve {
@@ -38,6 +46,7 @@ impl Curve {
             Curve::Ndf(d) => d.eval(theta),
             Curve::Fresnel(f) => f.eval(theta),
             Curve::Difference { op, a, b } => op.apply(a.eval(theta), b.eval(theta)),
+            Curve::Transformed { transform, curve } => transform.apply(theta, curve.eval(theta)),
         }
     }
 
@@ -48,6 +57,7 @@ impl Curve {
             Curve::Ndf(d) => Model::Ndf(d.family()),
             Curve::Fresnel(f) => Model::Fresnel(FresnelModel::of(f)),
             Curve::Difference { a, .. } => a.model(),
+            Curve::Transformed { curve, .. } => curve.model(),
         }
     }
 
@@ -60,7 +70,7 @@ impl Curve {
                 names.iter().zip(d.params()).map(|(&n, v)| (n, ParamValue::Number(v))).collect()
             }
             Curve::Fresnel(f) => fresnel_params(f),
-            Curve::Difference { .. } => vec![],
+            Curve::Difference { .. } | Curve::Transformed { .. } => vec![],
         }
     }
 
@@ -75,6 +85,9 @@ impl Curve {
                 a.canonical_json(),
                 b.canonical_json()
             );
+        }
+        if let Curve::Transformed { transform, curve } = self {
+            return format!("{{\"{TRANSFORM_KEY}\":\"{}\",\"curve\":{}}}", transform.name(), curve.canonical_json());
         }
         let model = self.model();
         let mut out = format!("{{\"{}\":\"{}\"", model.key(), model.name());
@@ -461,6 +474,56 @@ fn model_from_node(key: &str, node: &Node, path: &str, problems: &mut Vec<Proble
     model
 }
 
+/// The key of a transformed curve, `{"transform": "projected" | "slope", "curve": <NDF curve>}`.
+pub const TRANSFORM_KEY: &str = "transform";
+
+fn parse_transformed(members: &[(String, Node)], path: &str) -> Result<Curve, Vec<Problem>> {
+    let mut problems = Vec::new();
+    for (key, node) in members {
+        if key != TRANSFORM_KEY && key != "curve" {
+            problems.push(Problem::new(
+                join_key(path, key),
+                format!("unknown key for a transformed curve (got {node}, expected transform, curve){}", suggestion(key, [TRANSFORM_KEY, "curve"])),
+            ));
+        }
+    }
+    let names: Vec<&str> = Transform::NAMES.iter().map(|(n, _)| *n).collect();
+    let transform = members.iter().find(|(k, _)| k == TRANSFORM_KEY).and_then(|(_, node)| match &node.value {
+        Value::String(name) => Transform::from_name(name),
+        _ => None,
+    });
+    if transform.is_none() {
+        let node = &members.iter().find(|(k, _)| k == TRANSFORM_KEY).expect("caller checked the key").1;
+        problems.push(Problem::new(
+            join_key(path, TRANSFORM_KEY),
+            format!("unknown transform (got {node}, expected one of: {})", names.join(", ")),
+        ));
+    }
+    let curve_path = join_key(path, "curve");
+    let curve = match members.iter().find(|(k, _)| k == "curve") {
+        Some((_, node)) => parse(node, &curve_path).map_err(|p| problems.extend(p)).ok(),
+        None => {
+            problems.push(Problem::new(curve_path.clone(), "missing the curve to transform"));
+            None
+        }
+    };
+    match (transform, curve) {
+        (Some(transform), Some(curve)) if problems.is_empty() => transformed(transform, curve, &curve_path).map_err(|p| vec![p]),
+        _ => Err(problems),
+    }
+}
+
+/// `curve` seen through `transform`; only NDFs have view transforms.
+pub fn transformed(transform: Transform, curve: Curve, path: &str) -> Result<Curve, Problem> {
+    if curve.model().key() != "ndf" {
+        return Err(Problem::new(
+            path,
+            format!("the {} view applies to NDF curves (got {})", transform.name(), curve.canonical_json()),
+        ));
+    }
+    Ok(Curve::Transformed { transform, curve: Box::new(curve) })
+}
+
 /// Reads a single (non-swept) parameter value of the given kind.
 pub fn scalar(node: &Node, kind: ParamKind, path: &str) -> Result<ParamValue, Problem> {
     match (&node.value, kind) {
@@ -478,6 +541,11 @@ pub fn scalar(node: &Node, kind: ParamKind, path: &str) -> Result<ParamValue, Pr
 /// Parses one plain curve object (every parameter a single value), as `eval` takes it, or a
 /// difference `{"difference": "minus"|"ratio", "a": <curve>, "b": <curve>}` of two such curves.
 pub fn parse(node: &Node, path: &str) -> Result<Curve, Vec<Problem>> {
+    if let Value::Object(members) = &node.value
+        && members.iter().any(|(k, _)| k == TRANSFORM_KEY)
+    {
+        return parse_transformed(members, path);
+    }
     if is_difference(node) {
         let (op, a, b) = difference_parts(node, path, &[])?;
         let (a, b) = (parse(a, &join_key(path, "a")), parse(b, &join_key(path, "b")));

@@ -24,5 +24,6 @@ pub mod sample;
 pub mod scene;
 pub mod series;
 pub mod stdout;
+pub mod transform;
 pub mod fit;
 pub mod metrics;

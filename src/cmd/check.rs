@@ -1,7 +1,7 @@
 //! `ndfplot check`: the normalization audit of every curve in scenes (or the built-in catalogue). For an
 //! NDF, 2π ∫₀^{π/2} D sin θ cos θ dθ with its error estimate, which must be 1 within `--tolerance`; for a
-//! Fresnel curve, the hemispherical average 2 ∫₀¹ F(c) c dc, reported only. Difference series are not
-//! audited (they are not distributions).
+//! Fresnel curve, the hemispherical average 2 ∫₀¹ F(c) c dc, reported only. Difference series and view
+//! transforms of NDFs are not audited (they are not distributions).
 //!
 //! Owns the audit table and the verdict (exit 1 on a failure); the integrals are
 //! [`crate::metrics::projected_integral`]'s.
@@ -69,7 +69,8 @@ pub fn normalization(d: impl Fn(f64) -> f64) -> std::result::Result<Estimate, Me
     projected_integral(d, lobe_width(peak.value), AUDIT_SHIFT)
 }
 
-/// The audit quantity of a curve, or `None` for a difference series.
+/// The audit quantity of a curve (for a transformed view, of the NDF behind it), or `None` for a
+/// difference series.
 pub fn audit(curve: &Curve) -> Option<std::result::Result<(Quantity, Estimate), MetricError>> {
     match curve {
         Curve::Ndf(d) => Some(normalization(|t| d.eval(t)).map(|e| (Quantity::Normalization, e))),
@@ -85,7 +86,8 @@ pub fn audit(curve: &Curve) -> Option<std::result::Result<(Quantity, Estimate), 
                 )
             }),
         ),
-        Curve::Difference { .. } => None,
+        Curve::Transformed { curve, .. } => audit(curve),
+        Curve::Difference { .. } | Curve::Transformed { .. } => None,
     }
 }
 
