@@ -1,7 +1,7 @@
 //! `ndfplot check`: the normalization audit of every curve in scenes (or the built-in catalogue). For an
 //! NDF, 2π ∫₀^{π/2} D sin θ cos θ dθ with its error estimate, which must be 1 within `--tolerance`; for a
-//! Fresnel curve, the hemispherical average 2 ∫₀¹ F(c) c dc, reported only. Difference series and view
-//! transforms of NDFs are not audited (they are not distributions).
+//! Fresnel curve, the hemispherical average 2 ∫₀¹ F(c) c dc, reported only. A view transform of an NDF
+//! is audited through its NDF; difference series are not audited (they are not distributions).
 //!
 //! Owns the audit table and the verdict (exit 1 on a failure); the integrals are
 //! [`crate::metrics::projected_integral`]'s.
@@ -87,7 +87,7 @@ pub fn audit(curve: &Curve) -> Option<std::result::Result<(Quantity, Estimate), 
             }),
         ),
         Curve::Transformed { curve, .. } => audit(curve),
-        Curve::Difference { .. } | Curve::Transformed { .. } => None,
+        Curve::Difference { .. } => None,
     }
 }
 
