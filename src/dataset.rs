@@ -88,6 +88,22 @@ pub enum Dataset {
         /// Use ḡ = 1 − (1 − g)³.
         g_remap: bool,
     },
+    /// Points read from a CSV file, x being θ (stored in radians): a renderer's or a measurement's
+    /// values to overlay on analytic curves.
+    Csv {
+        /// The file as the spec names it (relative to the spec's folder).
+        path: String,
+        /// Column holding θ.
+        x_column: String,
+        /// Column holding the values.
+        y_column: String,
+        /// Whether the file's θ are in degrees (converted to radians on reading).
+        degrees: bool,
+        /// θ in radians, in file order.
+        x: Vec<f64>,
+        /// Values, in file order.
+        y: Vec<f64>,
+    },
     /// Literal points.
     Table {
         /// x values.
@@ -132,7 +148,18 @@ impl Dataset {
                 )
             }
             Dataset::Table { x, y } => format!("{{\"data\":\"table\",\"x\":{},\"y\":{}}}", json_list(x), json_list(y)),
+            Dataset::Csv { path, x_column, y_column, degrees, .. } => format!(
+                "{{\"data\":\"csv\",\"path\":{},\"x\":{},\"y\":{},\"degrees\":{degrees}}}",
+                crate::json::quote(path),
+                crate::json::quote(x_column),
+                crate::json::quote(y_column)
+            ),
         }
+    }
+
+    /// Whether the dataset's x is θ in radians (so it shares axes with curves).
+    pub fn is_theta(&self) -> bool {
+        matches!(self, Dataset::Csv { .. })
     }
 
     /// Whether the dataset has a z coordinate (for surface panels).
@@ -169,7 +196,7 @@ impl Dataset {
                 let grid = (r.len() > 1 && g.len() > 1).then_some((r.len(), g.len()));
                 DataPoints { points, z, grid }
             }
-            Dataset::Table { x, y } => {
+            Dataset::Table { x, y } | Dataset::Csv { x, y, .. } => {
                 DataPoints { points: x.iter().copied().zip(y.iter().copied()).collect(), z: None, grid: None }
             }
         }

@@ -82,14 +82,15 @@ pub struct RenderOptions {
     pub canvas: CanvasOverride,
 }
 
-/// A spec's source name and text.
-type Source = (String, String);
+/// A spec's source name, text, and the folder its data paths resolve against (`None` for the
+/// built-in catalogue).
+type Source = (String, String, Option<PathBuf>);
 
 /// The spec sources named by `paths` (files, or folders whose `*.json` are taken sorted by name),
 /// or the built-in catalogue when `paths` is empty.
 pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
     if paths.is_empty() {
-        return Ok(CATALOGUE.iter().map(|(name, text)| (format!("configs/{name}"), text.to_string())).collect());
+        return Ok(CATALOGUE.iter().map(|(name, text)| (format!("configs/{name}"), text.to_string(), None)).collect());
     }
     let mut sources = Vec::new();
     for path in paths {
@@ -102,11 +103,12 @@ pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
             files.sort();
             for file in files {
                 let name = file.display().to_string();
-                sources.push((name.clone(), read_file(&name)?));
+                sources.push((name.clone(), read_file(&name)?, Some(path.clone())));
             }
         } else {
             let name = path.display().to_string();
-            sources.push((name.clone(), read_file(&name)?));
+            let folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
+            sources.push((name.clone(), read_file(&name)?, Some(folder)));
         }
     }
     Ok(sources)
@@ -117,9 +119,9 @@ pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
 pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Result<Vec<Scene>> {
     let mut scenes = Vec::new();
     let mut failures = Vec::new();
-    for (name, text) in sources {
+    for (name, text, base_dir) in sources {
         let parsed = parse_json(text, name).and_then(|node| {
-            scene::parse(&node).map_err(|list| Problems { source: name.clone(), list })
+            scene::parse(&node, base_dir.as_deref()).map_err(|list| Problems { source: name.clone(), list })
         });
         match parsed.and_then(|s| apply_override(s, canvas, name)) {
             Ok(scene) => {

@@ -3,7 +3,9 @@
 //! `{"data": "spectrum", "quantity": "cumulative", "count": 20}` — the singular-value spectrum;
 //! `{"data": "gulbrandsen", "x": "c0", "y": "c2", "z": "c3", "r": <sweep>, "g": <sweep>, "g_remap": false}`
 //! — decomposition coefficients over Gulbrandsen's (r, g);
-//! `{"data": "table", "x": [...], "y": [...]}` — literal points.
+//! `{"data": "table", "x": [...], "y": [...]}` — literal points;
+//! `{"data": "csv", "path": "renderer.csv", "x": "theta", "y": "value", "degrees": false}` — θ and
+//! values read from a CSV file next to the spec, to overlay on analytic curves.
 //! Every entry also takes `label`, `style`, `colour` and `mark`.
 
 use super::reader::{Object, Reader};
@@ -20,7 +22,7 @@ pub const MAX_DATA_POINTS: usize = 250_000;
 
 /// Keys every data entry accepts besides its own.
 const COMMON_KEYS: [&str; 5] = ["data", "label", "style", "colour", "mark"];
-const KINDS: &[&str] = &["spectrum", "gulbrandsen", "table"];
+const KINDS: &[&str] = &["spectrum", "gulbrandsen", "table", "csv"];
 
 /// Solarized blue, the default colour of data series.
 const DATA_COLOUR: u32 = 0x268BD2;
@@ -42,6 +44,7 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
     let own: &[&'static str] = match kind {
         "spectrum" => &["quantity", "count"],
         "gulbrandsen" => &["x", "y", "z", "r", "g", "g_remap"],
+        "csv" => &["path", "x", "y", "degrees"],
         _ => &["x", "y"],
     };
     let entry = reader.object(node, path, &keys(own))?;
@@ -49,6 +52,7 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
     let dataset = match kind {
         "spectrum" => read_spectrum(reader, &entry),
         "gulbrandsen" => read_gulbrandsen(reader, &entry),
+        "csv" => read_csv(reader, &entry),
         _ => read_table(reader, &entry),
     };
     let style = read_style(reader, &entry, Rgb::from_hex(DATA_COLOUR));
@@ -131,6 +135,74 @@ fn read_table(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
     Some(Dataset::Table { x, y })
 }
 
+/// Reads `{"data": "csv", "path": "file.csv", "x": "theta", "y": "value", "degrees": false}`:
+/// two named columns of a CSV file with a header row, θ within [0, π/2] (or [0, 90] degrees).
+fn read_csv(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
+    let path = reader.string(entry, "path");
+    let x_column = reader.string(entry, "x").unwrap_or_else(|| "theta".into());
+    let y_column = reader.string(entry, "y").unwrap_or_else(|| "value".into());
+    let degrees = reader.boolean(entry, "degrees").unwrap_or(false);
+    let at = entry.path_of("path");
+    let Some(path) = path else {
+        if entry.get("path").is_none() {
+            reader.report(at, "missing the CSV file to read");
+        }
+        return None;
+    };
+    let Some(base_dir) = reader.base_dir.clone() else {
+        reader.report(at, format!("data files need a spec read from disk (got \"{path}\" in a built-in or inline spec)"));
+        return None;
+    };
+    match read_columns(&base_dir.join(&path), &x_column, &y_column) {
+        Ok((x, y)) => {
+            let to_radians = if degrees { std::f64::consts::PI / 180.0 } else { 1.0 };
+            let x: Vec<f64> = x.into_iter().map(|v| v * to_radians).collect();
+            if let Some(bad) = x.iter().find(|&&t| !(0.0..=std::f64::consts::FRAC_PI_2).contains(&t)) {
+                let unit = if degrees { "degrees within [0, 90]" } else { "radians within [0, π/2]" };
+                reader.report(at, format!("θ out of range in \"{path}\" (got {:?}, expected {unit})", bad / to_radians));
+                return None;
+            }
+            Some(Dataset::Csv { path, x_column, y_column, degrees, x, y })
+        }
+        Err(message) => {
+            reader.report(at, format!("cannot read \"{path}\": {message}"));
+            None
+        }
+    }
+}
+
+/// The columns `x_column` and `y_column` of a CSV file with a header, as finite numbers.
+fn read_columns(file: &std::path::Path, x_column: &str, y_column: &str) -> Result<(Vec<f64>, Vec<f64>), String> {
+    let mut csv = csv::Reader::from_path(file).map_err(|e| e.to_string())?;
+    let headers = csv.headers().map_err(|e| e.to_string())?.clone();
+    let column = |name: &str| {
+        headers.iter().position(|h| h.trim() == name).ok_or_else(|| {
+            let names: Vec<&str> = headers.iter().collect();
+            format!("no column \"{name}\" (expected one of: {})", names.join(", "))
+        })
+    };
+    let (xi, yi) = (column(x_column)?, column(y_column)?);
+    let (mut x, mut y) = (Vec::new(), Vec::new());
+    for (row, record) in csv.records().enumerate() {
+        let record = record.map_err(|e| e.to_string())?;
+        let number = |i: usize| -> Result<f64, String> {
+            let text = record.get(i).unwrap_or("").trim();
+            text.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(|| {
+                format!("row {}: not a finite number (got \"{text}\")", row + 2)
+            })
+        };
+        x.push(number(xi)?);
+        y.push(number(yi)?);
+        if x.len() > MAX_DATA_POINTS {
+            return Err(format!("more than {MAX_DATA_POINTS} rows"));
+        }
+    }
+    if x.is_empty() {
+        return Err("no data rows".into());
+    }
+    Ok((x, y))
+}
+
 fn symbol(c: Coefficient) -> &'static str {
     match c {
         Coefficient::C0 => "c₀",
@@ -155,6 +227,7 @@ fn default_label(dataset: &Dataset) -> String {
             }
         }
         Dataset::Table { .. } => "data".into(),
+        Dataset::Csv { path, .. } => path.clone(),
     }
 }
 
@@ -164,6 +237,7 @@ pub fn default_labels(dataset: &Dataset) -> (String, String) {
         Dataset::Spectrum { .. } => ("index k".into(), "singular values".into()),
         Dataset::Gulbrandsen { x, y, .. } => (symbol(*x).into(), symbol(*y).into()),
         Dataset::Table { .. } => ("x".into(), "y".into()),
+        Dataset::Csv { x_column, y_column, .. } => (x_column.clone(), y_column.clone()),
     }
 }
 

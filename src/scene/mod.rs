@@ -138,9 +138,10 @@ pub fn valid_id(id: &str) -> bool {
         && bytes.iter().all(|&b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_' || b == b'-')
 }
 
-/// Validates a parsed scene document; every problem is returned with its JSON path.
-pub fn parse(node: &Node) -> Result<Scene, Vec<Problem>> {
-    let mut reader = Reader::default();
+/// Validates a parsed scene document; every problem is returned with its JSON path. Data files
+/// named by the spec resolve against `base_dir`, the spec's folder (`None`: no data files).
+pub fn parse(node: &Node, base_dir: Option<&std::path::Path>) -> Result<Scene, Vec<Problem>> {
+    let mut reader = Reader { problems: Vec::new(), base_dir: base_dir.map(std::path::Path::to_path_buf) };
     let scene = read_scene(&mut reader, node);
     match scene {
         Some(scene) if reader.problems.is_empty() => Ok(scene),
@@ -276,7 +277,7 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
     let x = panel.get("x").and_then(|n| reader.object(n, &x_path, X_KEYS));
     let y = panel.get("y").and_then(|n| reader.object(n, &y_path, Y_KEYS));
     let series = read_series(reader, &panel)?;
-    let only_data = series.curves.is_empty();
+    let only_data = series.curves.is_empty() && !series.data.iter().any(|d| d.dataset.is_theta());
     let x_unit = match x.and_then(|x| reader.choice(&x, "unit", &["radians", "degrees", "plain"])) {
         Some("degrees") => XUnit::Degrees,
         Some("radians") => XUnit::Radians,

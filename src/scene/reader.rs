@@ -11,6 +11,9 @@ use crate::problem::{Problem, join_key, suggestion};
 pub struct Reader {
     /// Problems in the order found.
     pub problems: Vec<Problem>,
+    /// Folder of the document, against which relative data paths resolve; `None` for documents
+    /// not read from disk (the built-in catalogue, arguments).
+    pub base_dir: Option<std::path::PathBuf>,
 }
 
 /// An object's members, checked for unknown and duplicate keys.
