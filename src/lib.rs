@@ -4,6 +4,7 @@
 //! (`plan`) → evaluated series (`sample`, `series`) → output (`output`). The maths (`ndf`,
 //! `fresnel`, `math`) is pure f64 code with no I/O.
 
+pub mod adaptive;
 pub mod catalogue;
 pub mod cli;
 pub mod cmd;

@@ -2,74 +2,188 @@
 //!
 //! Between validated scenes and evaluation sits this one place that decides the work: each
 //! distinct (curve, θ range, sampling) or dataset is evaluated once however many panels or scenes
-//! show it, curves only over the θ range their panel makes visible, and nothing that no series
-//! shows (the Fresnel basis is built only by a job that needs it).
+//! show it, curves only over the θ range their panel makes visible, only for the outputs
+//! requested (drawn figures, tables), and nothing that no series shows (the Fresnel basis is built
+//! only by a job that needs it). It decides, never evaluates.
 
+use crate::adaptive::Frame;
 use crate::curve::Curve;
 use crate::dataset::Dataset;
-use crate::scene::{Sampling, Scene};
+use crate::scene::{Sampling, Scene, ScenePanel};
+use crate::series::PanelKind;
 use std::collections::HashMap;
 
 /// One evaluation job.
 #[derive(Debug, Clone)]
 pub enum Job {
-    /// A curve sampled over a θ interval.
-    Curve {
+    /// A curve sampled on `samples` evenly spaced θ over an interval, ends included.
+    Uniform {
         /// The curve.
         curve: Curve,
         /// θ interval in radians.
         theta_range: (f64, f64),
-        /// How to sample it.
-        sampling: Sampling,
+        /// Number of samples.
+        samples: usize,
+    },
+    /// A curve sampled adaptively for the panel `frames[frame]` (its pixel size and y axis).
+    Adaptive {
+        /// The curve.
+        curve: Curve,
+        /// Index into [`Plan::frames`].
+        frame: usize,
     },
     /// A dataset computed once.
     Data(Dataset),
 }
 
-/// The jobs, plus for each scene, panel and series the index of the job that feeds it.
+/// `feeds[scene][panel][series]` = index into [`Plan::jobs`]; a panel's series are its curves,
+/// then its data series.
+pub type Feeds = Vec<Vec<Vec<usize>>>;
+
+/// Which kinds of output a run produces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Outputs {
+    /// Drawn figures (SVG or PNG).
+    pub drawn: bool,
+    /// Tables (CSV).
+    pub table: bool,
+}
+
+/// The jobs, plus for each requested output kind the job feeding each scene, panel and series.
 #[derive(Debug, Clone)]
 pub struct Plan {
     /// Distinct jobs in first-use order.
     pub jobs: Vec<Job>,
-    /// `feeds[scene][panel][series]` = index into `jobs`; a panel's series are its curves, then
-    /// its data series.
-    pub feeds: Vec<Vec<Vec<usize>>>,
+    /// Pixel frames of the panels that adaptive jobs are judged in.
+    pub frames: Vec<Frame>,
+    /// Feeds of the drawn figures, `None` when no figure is drawn.
+    pub drawn: Option<Feeds>,
+    /// Feeds of the tables, `None` when no table is written.
+    pub table: Option<Feeds>,
 }
 
-/// Plans the evaluation of `scenes`, sharing identical jobs.
-pub fn plan(scenes: &[Scene]) -> Plan {
-    let mut jobs: Vec<Job> = Vec::new();
-    let mut index: HashMap<String, usize> = HashMap::new();
-    let mut intern = |key: String, job: &dyn Fn() -> Job| {
-        *index.entry(key).or_insert_with(|| {
-            jobs.push(job());
-            jobs.len() - 1
-        })
+/// Plans the evaluation of `scenes` for `outputs`, sharing identical jobs. `png` is whether
+/// PNG is drawn: adaptive tolerances are then judged at the raster's pixel size.
+pub fn plan(scenes: &[Scene], outputs: Outputs, png: bool) -> Plan {
+    let mut planner = Planner {
+        jobs: Vec::new(),
+        frames: Vec::new(),
+        index: HashMap::new(),
     };
-    let feeds = scenes
-        .iter()
-        .map(|scene| {
-            scene
-                .panels
-                .iter()
-                .map(|panel| {
-                    let (a, b) = panel.theta_range();
-                    let curves = panel.curves.iter().map(|shown| {
-                        let key = format!("{} {:?} {:?} {:?}", shown.curve.canonical_json(), a, b, scene.sampling);
-                        intern(key, &|| Job::Curve {
+    let mut feeds_for = |pick: fn(Sampling) -> Sampling| -> Feeds {
+        scenes
+            .iter()
+            .map(|scene| {
+                let sampling = pick(scene.sampling);
+                (0..scene.panels.len())
+                    .map(|p| planner.panel(scene, p, sampling, png))
+                    .collect()
+            })
+            .collect()
+    };
+    let drawn = outputs.drawn.then(|| feeds_for(Sampling::for_drawing));
+    let table = outputs.table.then(|| feeds_for(Sampling::for_table));
+    Plan {
+        jobs: planner.jobs,
+        frames: planner.frames,
+        drawn,
+        table,
+    }
+}
+
+/// Interns jobs and frames by a key naming everything their result depends on.
+struct Planner {
+    jobs: Vec<Job>,
+    frames: Vec<Frame>,
+    index: HashMap<String, usize>,
+}
+
+impl Planner {
+    fn intern(&mut self, key: String, job: impl FnOnce(&mut Vec<Frame>) -> Job) -> usize {
+        if let Some(&i) = self.index.get(&key) {
+            return i;
+        }
+        let job = job(&mut self.frames);
+        self.jobs.push(job);
+        self.index.insert(key, self.jobs.len() - 1);
+        self.jobs.len() - 1
+    }
+
+    /// The jobs feeding panel `p` of `scene` under `sampling`.
+    fn panel(&mut self, scene: &Scene, p: usize, sampling: Sampling, png: bool) -> Vec<usize> {
+        let panel = &scene.panels[p];
+        let (a, b) = panel.theta_range();
+        let mut feed = Vec::with_capacity(panel.curves.len() + panel.data.len());
+        match sampling {
+            Sampling::Adaptive { tolerance_px } if panel.kind == PanelKind::Cartesian => {
+                let frame = frame(scene, panel, png, tolerance_px);
+                // An adaptive curve depends on its panel's frame and, through the automatic y range,
+                // on every other curve of the panel.
+                let neighbours: Vec<String> = panel
+                    .curves
+                    .iter()
+                    .map(|c| c.curve.canonical_json())
+                    .collect();
+                let context = format!("{frame:?} {neighbours:?}");
+                let mut frame_index = None;
+                for shown in &panel.curves {
+                    let key = format!("adaptive {} {context}", shown.curve.canonical_json());
+                    feed.push(self.intern(key, |frames| {
+                        let index = *frame_index.get_or_insert_with(|| {
+                            frames.push(frame.clone());
+                            frames.len() - 1
+                        });
+                        Job::Adaptive {
                             curve: shown.curve.clone(),
-                            theta_range: (a, b),
-                            sampling: scene.sampling,
-                        })
-                    });
-                    let mut feed: Vec<usize> = curves.collect();
-                    for shown in &panel.data {
-                        feed.push(intern(shown.dataset.canonical_json(), &|| Job::Data(shown.dataset.clone())));
-                    }
-                    feed
-                })
-                .collect()
-        })
-        .collect();
-    Plan { jobs, feeds }
+                            frame: index,
+                        }
+                    }));
+                }
+            }
+            // Surface panels draw curves as 3D lines: no 2D pixel frame, so the table's grid.
+            Sampling::Adaptive { .. } | Sampling::Default => {
+                return self.panel(
+                    scene,
+                    p,
+                    Sampling::Uniform(crate::scene::DEFAULT_SAMPLES),
+                    png,
+                );
+            }
+            Sampling::Uniform(samples) => {
+                for shown in &panel.curves {
+                    let key = format!(
+                        "uniform {} {a:?} {b:?} {samples}",
+                        shown.curve.canonical_json()
+                    );
+                    feed.push(self.intern(key, |_| Job::Uniform {
+                        curve: shown.curve.clone(),
+                        theta_range: (a, b),
+                        samples,
+                    }));
+                }
+            }
+        }
+        for shown in &panel.data {
+            feed.push(self.intern(shown.dataset.canonical_json(), |_| {
+                Job::Data(shown.dataset.clone())
+            }));
+        }
+        feed
+    }
+}
+
+/// The pixel frame of `panel` in `scene` (see [`Frame::of_cell`]).
+fn frame(scene: &Scene, panel: &ScenePanel, png: bool, tolerance_px: f64) -> Frame {
+    let canvas = &scene.canvas;
+    let scale = if png { canvas.png_scale.max(1.0) } else { 1.0 };
+    Frame::of_cell(
+        (f64::from(canvas.width_px), f64::from(canvas.height_px)),
+        (scene.rows, scene.cols),
+        canvas.font_px,
+        !scene.title.is_empty(),
+        scale,
+        panel.theta_range(),
+        (panel.y_scale, panel.y_range),
+        tolerance_px,
+    )
 }

@@ -8,7 +8,7 @@ use crate::catalogue::CATALOGUE;
 use crate::error::{Error, Result};
 use crate::input::{parse_json, read_file};
 use crate::output::{csv::figure_csv, plot, write};
-use crate::plan::plan;
+use crate::plan::{Outputs, plan};
 use crate::problem::{Problem, Problems};
 use crate::sample::{Evaluated, evaluate_all};
 use crate::scene::{self, Scene};
@@ -210,16 +210,59 @@ pub fn encode(figure: &Figure, format: Format) -> Result<Vec<u8>> {
 
 /// Renders the scenes of `options` into its output folder; returns the files written.
 pub fn run(options: &RenderOptions) -> Result<Vec<PathBuf>> {
+    run_with_stats(options).map(|(written, _)| written)
+}
+
+/// Where a render run spent its time and work.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RenderStats {
+    /// Reading, planning and evaluating (wall time).
+    pub evaluation: std::time::Duration,
+    /// Drawing SVG and PNG, rasterization and PNG compression included (wall time).
+    pub drawing: std::time::Duration,
+    /// Formatting CSV and writing every file (wall time).
+    pub encoding: std::time::Duration,
+    /// Curve evaluations over all jobs.
+    pub evaluations: usize,
+    /// Outputs produced per format, in [`Format::ALL`] order.
+    pub produced: [usize; 3],
+}
+
+/// [`run`], also returning where the time went.
+pub fn run_with_stats(options: &RenderOptions) -> Result<(Vec<PathBuf>, RenderStats)> {
+    let start = std::time::Instant::now();
     let scenes = load_scenes(&sources(&options.paths)?, options.canvas)?;
-    let plan = plan(&scenes);
-    let evaluated = evaluate_all(&plan.jobs)?;
-    let figures: Vec<Figure> = scenes.iter().zip(&plan.feeds).map(|(s, f)| figure(s, f, &evaluated)).collect();
-    let outputs: Vec<(String, Vec<u8>)> = figures
-        .par_iter()
-        .flat_map_iter(|fig| options.formats.iter().map(move |&format| (fig, format)))
-        .map(|(fig, format)| Ok((format!("{}.{}", fig.id, format.extension()), encode(fig, format)?)))
-        .collect::<Result<_>>()?;
-    write_outputs(&options.out, &outputs)
+    let has = |f: Format| options.formats.contains(&f);
+    let outputs = Outputs { drawn: has(Format::Svg) || has(Format::Png), table: has(Format::Csv) };
+    let plan = plan(&scenes, outputs, has(Format::Png));
+    let evaluated = evaluate_all(&plan)?;
+    let mut stats = RenderStats {
+        evaluation: start.elapsed(),
+        evaluations: evaluated.iter().map(|e| e.evaluations).sum(),
+        ..RenderStats::default()
+    };
+    let mut outputs: Vec<(String, Vec<u8>)> = Vec::new();
+    for (kind, feeds) in [(true, &plan.drawn), (false, &plan.table)] {
+        let Some(feeds) = feeds else { continue };
+        let stage = std::time::Instant::now();
+        let formats: Vec<Format> = options.formats.iter().copied().filter(|&f| (f != Format::Csv) == kind).collect();
+        let figures: Vec<Figure> = scenes.iter().zip(feeds).map(|(s, f)| figure(s, f, &evaluated)).collect();
+        let encoded: Vec<(String, Vec<u8>)> = figures
+            .par_iter()
+            .flat_map_iter(|fig| formats.iter().map(move |&format| (fig, format)))
+            .map(|(fig, format)| Ok((format!("{}.{}", fig.id, format.extension()), encode(fig, format)?)))
+            .collect::<Result<_>>()?;
+        for &format in &formats {
+            stats.produced[format as usize] += figures.len();
+        }
+        outputs.extend(encoded);
+        *(if kind { &mut stats.drawing } else { &mut stats.encoding }) += stage.elapsed();
+    }
+    let stage = std::time::Instant::now();
+    outputs.sort_by(|a, b| a.0.cmp(&b.0));
+    let written = write_outputs(&options.out, &outputs)?;
+    stats.encoding += stage.elapsed();
+    Ok((written, stats))
 }
 
 fn write_outputs(dir: &Path, outputs: &[(String, Vec<u8>)]) -> Result<Vec<PathBuf>> {

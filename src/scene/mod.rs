@@ -44,11 +44,43 @@ const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "label", "mark"];
 const STYLE_WORDS: &[&str] = &["thick", "dashed", "dotted", "solid"];
 
 /// How curves are sampled over θ.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Sampling {
     /// `n` evenly spaced θ over the panel's visible range, both ends included.
     Uniform(usize),
+    /// Bisection where the drawn polyline would be more than `tolerance_px` from the curve, for
+    /// figures and tables alike (see [`crate::adaptive`]).
+    Adaptive {
+        /// Largest distance, in output pixels, between the polyline and the true curve.
+        tolerance_px: f64,
+    },
+    /// No `"sampling"` key: figures adaptive at [`DEFAULT_TOLERANCE_PX`], CSV tables on a uniform
+    /// grid of [`DEFAULT_SAMPLES`] points (tables stay uniform unless the spec asks otherwise).
+    Default,
 }
+
+impl Sampling {
+    /// The sampling of drawn outputs (SVG, PNG).
+    pub fn for_drawing(self) -> Sampling {
+        match self {
+            Sampling::Default => Sampling::Adaptive { tolerance_px: DEFAULT_TOLERANCE_PX },
+            given => given,
+        }
+    }
+
+    /// The sampling of tables (CSV).
+    pub fn for_table(self) -> Sampling {
+        match self {
+            Sampling::Default => Sampling::Uniform(DEFAULT_SAMPLES),
+            given => given,
+        }
+    }
+}
+
+/// Default adaptive tolerance: a quarter pixel, below what anti-aliasing can show.
+pub const DEFAULT_TOLERANCE_PX: f64 = 0.25;
+/// Smallest accepted tolerance: finer than 1/1000 px changes no pixel and only burns the budget.
+pub const MIN_TOLERANCE_PX: f64 = 1e-3;
 
 /// One curve as a scene shows it.
 #[derive(Debug, Clone)]
@@ -174,19 +206,30 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
 
 fn read_sampling(reader: &mut Reader, object: &reader::Object) -> Option<Sampling> {
     let Some(node) = object.get("sampling") else {
-        return Some(Sampling::Uniform(DEFAULT_SAMPLES));
+        return Some(Sampling::Default);
     };
     let path = object.path_of("sampling");
-    let sampling = reader.object(node, &path, &["uniform"])?;
-    let expected = format!("a whole number from 2 to {MAX_SAMPLES_PER_CURVE}");
-    let ok = |v: f64| v.fract() == 0.0 && (2.0..=MAX_SAMPLES_PER_CURVE as f64).contains(&v);
-    match reader.number(&sampling, "uniform", ok, &expected) {
-        Some(n) => Some(Sampling::Uniform(n as usize)),
-        None if sampling.get("uniform").is_none() => {
-            reader.report(path, "missing \"uniform\": the number of samples per curve");
+    let sampling = reader.object(node, &path, &["uniform", "adaptive"])?;
+    match (sampling.get("uniform"), sampling.get("adaptive")) {
+        (Some(_), None) => {
+            let expected = format!("a whole number from 2 to {MAX_SAMPLES_PER_CURVE}");
+            let ok = |v: f64| v.fract() == 0.0 && (2.0..=MAX_SAMPLES_PER_CURVE as f64).contains(&v);
+            reader.number(&sampling, "uniform", ok, &expected).map(|n| Sampling::Uniform(n as usize))
+        }
+        (None, Some(adaptive)) => {
+            let adaptive_path = sampling.path_of("adaptive");
+            let adaptive = reader.object(adaptive, &adaptive_path, &["tolerance_px"])?;
+            if adaptive.get("tolerance_px").is_none() {
+                return Some(Sampling::Adaptive { tolerance_px: DEFAULT_TOLERANCE_PX });
+            }
+            let expected = format!("a number of pixels from {MIN_TOLERANCE_PX} to {MAX_SIDE_PX}");
+            let ok = |v: f64| (MIN_TOLERANCE_PX..=MAX_SIDE_PX).contains(&v);
+            reader.number(&adaptive, "tolerance_px", ok, &expected).map(|tolerance_px| Sampling::Adaptive { tolerance_px })
+        }
+        _ => {
+            reader.report(path, "expected exactly one of \"uniform\" (samples per curve) or \"adaptive\" ({\"tolerance_px\": t})");
             None
         }
-        None => None,
     }
 }
 
