@@ -381,21 +381,24 @@ pub fn resolve<'a>(node: &'a Node, path: &str, extra_keys: &[&str]) -> Result<Re
         return Err(vec![Problem::new(path, format!("expected a curve object (got {got})"))]);
     };
     let mut problems = Vec::new();
-    for (i, (key, _)) in members.iter().enumerate() {
+    for (i, (key, value)) in members.iter().enumerate() {
         if members[..i].iter().any(|(k, _)| k == key) {
-            problems.push(Problem::new(join_key(path, key), "duplicate key"));
+            problems.push(Problem::new(join_key(path, key), duplicate_key(value)));
         }
     }
     let model_keys: Vec<&(String, Node)> =
         members.iter().filter(|(k, _)| k == "ndf" || k == "fresnel").collect();
     let model = match model_keys.as_slice() {
         [] => {
-            problems.push(Problem::new(path, "missing key \"ndf\" or \"fresnel\" naming the curve's model"));
+            problems.push(Problem::new(
+                path,
+                format!("missing key \"ndf\" or \"fresnel\" naming the curve's model (got {node}, expected {{\"ndf\": <family>, …}} or {{\"fresnel\": <model>, …}})"),
+            ));
             None
         }
         [(key, name_node)] => model_from_node(key, name_node, path, &mut problems),
         [(first, _), (second, _), ..] if first != second => {
-            problems.push(Problem::new(path, "a curve has either \"ndf\" or \"fresnel\", not both"));
+            problems.push(Problem::new(path, format!("a curve has either \"ndf\" or \"fresnel\", not both (got {node})")));
             None
         }
         [(key, name_node), ..] => model_from_node(key, name_node, path, &mut problems),
@@ -446,7 +449,7 @@ pub fn resolve<'a>(node: &'a Node, path: &str, extra_keys: &[&str]) -> Result<Re
         if node.is_none() && spec.default.is_none() {
             problems.push(Problem::new(
                 join_key(path, spec.name),
-                format!("missing parameter for {} \"{}\"", model.key(), model.name()),
+                format!("missing parameter for {} \"{}\" (expected {})", model.key(), model.name(), kind_name(spec.kind)),
             ));
         }
     }
@@ -476,14 +479,20 @@ fn model_from_node(key: &str, node: &Node, path: &str, problems: &mut Vec<Proble
 
 /// The key of a transformed curve, `{"transform": "projected" | "slope", "curve": <NDF curve>}`.
 pub const TRANSFORM_KEY: &str = "transform";
+/// Keys of a transformed curve.
+pub const TRANSFORM_KEYS: &[&str] = &[TRANSFORM_KEY, "curve"];
 
 fn parse_transformed(members: &[(String, Node)], path: &str) -> Result<Curve, Vec<Problem>> {
     let mut problems = Vec::new();
     for (key, node) in members {
-        if key != TRANSFORM_KEY && key != "curve" {
+        if !TRANSFORM_KEYS.contains(&key.as_str()) {
             problems.push(Problem::new(
                 join_key(path, key),
-                format!("unknown key for a transformed curve (got {node}, expected transform, curve){}", suggestion(key, [TRANSFORM_KEY, "curve"])),
+                format!(
+                    "unknown key for a transformed curve (got {node}, expected one of: {}){}",
+                    TRANSFORM_KEYS.join(", "),
+                    suggestion(key, TRANSFORM_KEYS.iter().copied())
+                ),
             ));
         }
     }
@@ -503,7 +512,7 @@ fn parse_transformed(members: &[(String, Node)], path: &str) -> Result<Curve, Ve
     let curve = match members.iter().find(|(k, _)| k == "curve") {
         Some((_, node)) => parse(node, &curve_path).map_err(|p| problems.extend(p)).ok(),
         None => {
-            problems.push(Problem::new(curve_path.clone(), "missing the curve to transform"));
+            problems.push(Problem::new(curve_path.clone(), "missing the curve to transform (expected an NDF curve object)"));
             None
         }
     };
@@ -522,6 +531,19 @@ pub fn transformed(transform: Transform, curve: Curve, path: &str) -> Result<Cur
         ));
     }
     Ok(Curve::Transformed { transform, curve: Box::new(curve) })
+}
+
+/// The message for a key given twice; `value` is the repeated key's value.
+pub fn duplicate_key(value: &Node) -> String {
+    format!("duplicate key (got a second value {value}, expected each key once)")
+}
+
+/// What a value of `kind` is, for messages.
+fn kind_name(kind: ParamKind) -> &'static str {
+    match kind {
+        ParamKind::Number => "a number",
+        ParamKind::Flag => "true or false",
+    }
 }
 
 /// Reads a single (non-swept) parameter value of the given kind.
@@ -576,7 +598,7 @@ pub fn parse(node: &Node, path: &str) -> Result<Curve, Vec<Problem>> {
 pub const DIFFERENCE_KEY: &str = "difference";
 
 /// Keys of a difference object besides the caller's extra keys.
-const DIFFERENCE_KEYS: &[&str] = &[DIFFERENCE_KEY, "a", "b"];
+pub const DIFFERENCE_KEYS: &[&str] = &[DIFFERENCE_KEY, "a", "b"];
 
 /// How a difference series combines its operands.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -631,7 +653,7 @@ pub fn difference_parts<'a>(
     let allowed: Vec<&str> = DIFFERENCE_KEYS.iter().chain(extra_keys).copied().collect();
     for (i, (key, value)) in members.iter().enumerate() {
         if members[..i].iter().any(|(k, _)| k == key) {
-            problems.push(Problem::new(join_key(path, key), "duplicate key"));
+            problems.push(Problem::new(join_key(path, key), duplicate_key(value)));
         } else if !allowed.contains(&key.as_str()) {
             problems.push(Problem::new(
                 join_key(path, key),
@@ -671,7 +693,7 @@ pub fn difference_parts<'a>(
     };
     for key in ["a", "b"] {
         if get(key).is_none() {
-            problems.push(Problem::new(join_key(path, key), "missing operand of the difference"));
+            problems.push(Problem::new(join_key(path, key), "missing operand of the difference (expected a curve object)"));
         }
     }
     match (op, get("a"), get("b")) {
@@ -748,7 +770,7 @@ mod tests {
         let p = problems(r#"{"ndf":"abc","alpha_abc1":1}"#);
         assert_eq!((p[0].at.as_str(), p[0].message.contains("missing")), ("alpha_abc2", true));
         let p = problems(r#"{"ndf":"phong","alpha_p":1,"alpha_p":2}"#);
-        assert_eq!((p[0].at.as_str(), p[0].message.as_str()), ("alpha_p", "duplicate key"));
+        assert_eq!((p[0].at.as_str(), p[0].message.as_str()), ("alpha_p", "duplicate key (got a second value 2, expected each key once)"));
         let p = problems(r#"{"ndf":"phong","alpha_p":"1"}"#);
         assert!(p[0].message.contains("expected a number"), "{p:?}");
         let p = problems(r#"{"ndf":"phong","alpha_p":-1}"#);

@@ -1,6 +1,6 @@
 //! The failures a command can end with, and the exit code of each (CONTRACTS.md).
 
-use crate::problem::Problems;
+use crate::problem::{Problems, one_line};
 use std::fmt;
 
 /// Why a command did not succeed.
@@ -51,8 +51,8 @@ impl fmt::Display for Error {
                 let lines: Vec<String> = all.iter().map(ToString::to_string).collect();
                 f.write_str(&lines.join("\n"))
             }
-            Error::Usage(message) | Error::Numerics(message) => write!(f, "error: {message}"),
-            Error::Io { path, source } => write!(f, "error: {path}: {source}"),
+            Error::Usage(message) | Error::Numerics(message) => write!(f, "error: {}", one_line(message)),
+            Error::Io { path, source } => write!(f, "error: {}: {}", one_line(path), one_line(&source.to_string())),
             Error::CheckFailed(message) => write!(f, "{message}"),
         }
     }

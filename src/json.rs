@@ -177,6 +177,11 @@ impl Parser {
         SyntaxError { line: self.line, col: self.col, message: message.into() }
     }
 
+    /// The next character for messages: `'x'` or `end of input`.
+    fn found(&self) -> String {
+        self.peek().map_or_else(|| "end of input".to_string(), |c| format!("'{c}'"))
+    }
+
     fn peek(&self) -> Option<char> {
         self.chars.get(self.pos).copied()
     }
@@ -251,7 +256,7 @@ impl Parser {
         loop {
             self.skip_whitespace();
             if self.peek() != Some('"') {
-                return Err(self.error("expected a string key"));
+                return Err(self.error(format!("expected a string key, found {}", self.found())));
             }
             let key = self.string()?;
             self.skip_whitespace();
@@ -260,10 +265,11 @@ impl Parser {
             let node = self.value(depth + 1)?;
             members.push((key, node));
             self.skip_whitespace();
+            let found = self.found();
             match self.bump() {
                 Some(',') => continue,
                 Some('}') => return Ok(Value::Object(members)),
-                _ => return Err(self.error("expected ',' or '}' after an object member")),
+                _ => return Err(self.error(format!("expected ',' or '}}' after an object member, found {found}"))),
             }
         }
     }
@@ -280,10 +286,11 @@ impl Parser {
             self.skip_whitespace();
             items.push(self.value(depth + 1)?);
             self.skip_whitespace();
+            let found = self.found();
             match self.bump() {
                 Some(',') => continue,
                 Some(']') => return Ok(Value::Array(items)),
-                _ => return Err(self.error("expected ',' or ']' after an array element")),
+                _ => return Err(self.error(format!("expected ',' or ']' after an array element, found {found}"))),
             }
         }
     }

@@ -37,17 +37,36 @@ impl fmt::Display for Problems {
             if i > 0 {
                 writeln!(f)?;
             }
-            write!(f, "error: {}: ", self.source)?;
+            write!(f, "error: {}: ", one_line(&self.source))?;
             if !problem.at.is_empty() {
-                write!(f, "{}: ", problem.at)?;
+                write!(f, "{}: ", one_line(&problem.at))?;
             }
-            write!(f, "{}", problem.message)?;
+            write!(f, "{}", one_line(&problem.message))?;
         }
         Ok(())
     }
 }
 
 impl std::error::Error for Problems {}
+
+/// `text` with its control characters escaped as in JSON (`\n`, `\u0007`), so that a message
+/// quoting a key or value that holds a line break still takes exactly one line.
+pub fn one_line(text: &str) -> std::borrow::Cow<'_, str> {
+    if !text.chars().any(char::is_control) {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len() + 8);
+    for ch in text.chars() {
+        match ch {
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            '\t' => out.push_str("\\t"),
+            c if c.is_control() => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    std::borrow::Cow::Owned(out)
+}
 
 /// Joins a JSON path and an object key: `("panels[0]", "title")` → `panels[0].title`.
 pub fn join_key(path: &str, key: &str) -> String {
@@ -120,5 +139,7 @@ mod tests {
             list: vec![Problem::new("a.b", "bad (got 1, expected 2)"), Problem::new("", "empty")],
         };
         assert_eq!(problems.to_string(), "error: x.json: a.b: bad (got 1, expected 2)\nerror: x.json: empty");
+        let problems = Problems { source: "x.json".into(), list: vec![Problem::new("a\nb", "got \"c\td\u{7}\"")] };
+        assert_eq!(problems.to_string(), "error: x.json: a\\nb: got \"c\\td\\u0007\"");
     }
 }

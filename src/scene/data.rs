@@ -21,8 +21,9 @@ use crate::series::Rgb;
 pub const MAX_DATA_POINTS: usize = 250_000;
 
 /// Keys every data entry accepts besides its own.
-const COMMON_KEYS: [&str; 5] = ["data", "label", "style", "colour", "mark"];
-const KINDS: &[&str] = &["spectrum", "gulbrandsen", "table", "csv"];
+pub const COMMON_KEYS: [&str; 5] = ["data", "label", "style", "colour", "mark"];
+/// The kinds of data entry (`"data": <kind>`).
+pub const KINDS: &[&str] = &["spectrum", "gulbrandsen", "table", "csv"];
 
 /// Solarized blue, the default colour of data series.
 const DATA_COLOUR: u32 = 0x268BD2;
@@ -30,6 +31,16 @@ const DATA_COLOUR: u32 = 0x268BD2;
 /// Whether a panel entry is a data series (has a `data` key) rather than a curve.
 pub fn is_data(node: &Node) -> bool {
     matches!(&node.value, Value::Object(members) if members.iter().any(|(k, _)| k == "data"))
+}
+
+/// The keys of a data entry of `kind` (one of [`KINDS`]) besides [`COMMON_KEYS`].
+pub fn own_keys(kind: &str) -> &'static [&'static str] {
+    match kind {
+        "spectrum" => &["quantity", "count"],
+        "gulbrandsen" => &["x", "y", "z", "r", "g", "g_remap"],
+        "csv" => &["path", "x", "y", "degrees"],
+        _ => &["x", "y"],
+    }
 }
 
 fn keys(own: &[&'static str]) -> Vec<&'static str> {
@@ -41,13 +52,7 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
     let Value::Object(members) = &node.value else { return None };
     let probe = Object::from_members(members, path);
     let kind = reader.choice(&probe, "data", KINDS)?;
-    let own: &[&'static str] = match kind {
-        "spectrum" => &["quantity", "count"],
-        "gulbrandsen" => &["x", "y", "z", "r", "g", "g_remap"],
-        "csv" => &["path", "x", "y", "degrees"],
-        _ => &["x", "y"],
-    };
-    let entry = reader.object(node, path, &keys(own))?;
+    let entry = reader.object(node, path, &keys(own_keys(kind)))?;
     let before = reader.problems.len();
     let dataset = match kind {
         "spectrum" => read_spectrum(reader, &entry),
@@ -90,7 +95,7 @@ fn coefficient(reader: &mut Reader, entry: &Object, key: &str) -> Option<Coeffic
 
 fn values(reader: &mut Reader, entry: &Object, key: &'static str, ok: impl Fn(f64) -> bool, expected: &str) -> Option<Vec<f64>> {
     let Some(node) = entry.get(key) else {
-        reader.report(entry.path_of(key), "missing parameter");
+        reader.report(entry.path_of(key), "missing parameter (expected a number, a list or a sweep)");
         return None;
     };
     let sweep = sweep::expand(reader, key, ParamKind::Number, node, &entry.path_of(key))?;
@@ -129,7 +134,7 @@ fn read_table(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
     let y = values(reader, entry, "y", any, "finite");
     let (x, y) = (x?, y?);
     if x.len() != y.len() {
-        reader.report(entry.path(), format!("x and y differ in length (got {} and {})", x.len(), y.len()));
+        reader.report(entry.path(), format!("x and y differ in length (got {} and {} values, expected as many y as x)", x.len(), y.len()));
         return None;
     }
     Some(Dataset::Table { x, y })

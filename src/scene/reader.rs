@@ -60,7 +60,7 @@ impl Reader {
         };
         for (i, (key, value)) in members.iter().enumerate() {
             if members[..i].iter().any(|(k, _)| k == key) {
-                self.report(join_key(path, key), "duplicate key");
+                self.report(join_key(path, key), crate::curve::duplicate_key(value));
             } else if !allowed.contains(&key.as_str()) {
                 self.report(
                     join_key(path, key),
