@@ -1,0 +1,9 @@
+//! libFuzzer entry point: every input goes through [`harness::run`], shared with the corpus replay
+//! in `tests/robustness.rs`.
+
+#![no_main]
+
+#[path = "../harness.rs"]
+mod harness;
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| harness::run(data));

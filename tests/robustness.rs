@@ -1,0 +1,428 @@
+//! Robustness of the real binary: the malformed-spec corpus (exit 2, nothing on stdout, every line
+//! naming the file and the expected message), the fuzz corpus replayed, a render killed with
+//! SIGKILL mid-run (only complete files under real names; the next run cleans the temporaries),
+//! `render --check`, and the generated help, completions and manual page.
+
+#[path = "../fuzz/harness.rs"]
+mod harness;
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+fn ndfplot(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8(bytes.to_vec()).unwrap()
+}
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A fresh, empty folder under the target directory.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("robustness")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn files_in(dir: &Path) -> Vec<String> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut names: Vec<String> = entries
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    names.sort();
+    names
+}
+
+fn files_with_extension(dir: &Path, extension: &str) -> Vec<PathBuf> {
+    files_in(dir)
+        .into_iter()
+        .map(|f| dir.join(f))
+        .filter(|p| p.extension().is_some_and(|e| e == extension))
+        .collect()
+}
+
+#[test]
+fn every_malformed_spec_exits_2_naming_its_path_and_the_expected_message() {
+    let corpus = root().join("tests/data/malformed");
+    let out_dir = scratch("malformed-out");
+    let cases = files_with_extension(&corpus, "json");
+    assert!(cases.len() >= 50, "only {} cases", cases.len());
+    for case in cases {
+        let expected = std::fs::read_to_string(case.with_extension("expected"))
+            .unwrap_or_else(|_| panic!("{} has no .expected file", case.display()));
+        let path = case.to_str().unwrap();
+        let out = ndfplot(&["render", path, "-o", out_dir.to_str().unwrap()]);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{path}: {err}");
+        assert!(
+            out.stdout.is_empty(),
+            "{path}: stdout {}",
+            text(&out.stdout)
+        );
+        assert!(!err.contains("panicked"), "{path}: {err}");
+        let prefix = format!("error: {path}: ");
+        assert!(
+            err.lines().all(|l| l.starts_with(&prefix)),
+            "{path}: every line names the file:\n{err}"
+        );
+        for needle in expected.lines().filter(|l| !l.is_empty()) {
+            assert!(
+                err.contains(needle),
+                "{path}: expected {needle:?} in:\n{err}"
+            );
+        }
+        assert!(
+            files_in(&out_dir).is_empty(),
+            "{path}: wrote {:?}",
+            files_in(&out_dir)
+        );
+    }
+}
+
+#[test]
+fn the_fuzz_corpus_replays_without_breaking_an_invariant() {
+    let corpus = root().join("fuzz/corpus/spec");
+    // The committed seeds (what CI has); a local fuzzing run rewrites its other entries meanwhile.
+    let seeds: Vec<String> = files_in(&corpus)
+        .into_iter()
+        .filter(|f| f.starts_with("seed-"))
+        .collect();
+    assert!(seeds.len() >= 100, "seed corpus missing");
+    for name in seeds {
+        let bytes = std::fs::read(corpus.join(&name)).unwrap();
+        let outcome = std::panic::catch_unwind(|| harness::run(&bytes));
+        assert!(
+            outcome.is_ok(),
+            "fuzz/corpus/spec/{name} breaks an invariant"
+        );
+    }
+}
+
+#[test]
+fn fuzz_findings_exit_2_through_the_binary() {
+    let corpus = root().join("fuzz/corpus/spec");
+    let dir = scratch("findings");
+    for name in files_in(&corpus)
+        .into_iter()
+        .filter(|f| f.starts_with("seed-finding-"))
+    {
+        let bytes = std::fs::read(corpus.join(&name)).unwrap();
+        let spec = dir.join(format!("{name}.json"));
+        std::fs::write(&spec, &bytes[1..]).unwrap();
+        let out = ndfplot(&[
+            "render",
+            spec.to_str().unwrap(),
+            "-o",
+            dir.join("out").to_str().unwrap(),
+            "--format",
+            "csv",
+        ]);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{name}: {err}");
+        assert!(
+            out.stdout.is_empty() && !err.contains("panicked"),
+            "{name}: {err}"
+        );
+        assert!(
+            err.lines()
+                .all(|l| l.starts_with(&format!("error: {}: ", spec.display()))),
+            "{name}: {err}"
+        );
+    }
+}
+
+/// Forty small scenes, so that a run spends a while writing files one after another.
+fn write_kill_specs(dir: &Path) -> usize {
+    let specs = dir.join("specs");
+    std::fs::create_dir_all(&specs).unwrap();
+    let count = 40;
+    for i in 0..count {
+        let spec = format!(
+            r#"{{"id": "scene-{i:02}", "title": "Scene {i}", "sampling": {{"uniform": 400}}, "panels": [
+                {{"curves": [{{"ndf": "beckmann", "alpha_b": {{"range": [0.1, 0.8, 0.1]}}}}]}},
+                {{"y": {{"scale": "log"}}, "curves": [{{"ndf": "ggx", "alpha_tr": [0.05, 0.2, 0.{}]}}]}}]}}"#,
+            i + 1
+        );
+        std::fs::write(specs.join(format!("scene-{i:02}.json")), spec).unwrap();
+    }
+    count * 3
+}
+
+fn render_into(specs: &Path, out: &Path) -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_ndfplot"));
+    command.args([
+        "render",
+        specs.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--format",
+        "svg,png,csv",
+    ]);
+    command.stdout(Stdio::null()).stderr(Stdio::null());
+    command
+}
+
+/// Asserts that every non-hidden file of `dir` is complete: identical to the finished run's, and
+/// an SVG that parses, a PNG that decodes or a CSV with all its rows. Returns how many there are.
+fn assert_complete(dir: &Path, reference: &Path) -> usize {
+    let visible: Vec<String> = files_in(dir)
+        .into_iter()
+        .filter(|f| !f.starts_with('.'))
+        .collect();
+    for name in &visible {
+        let bytes = std::fs::read(dir.join(name)).unwrap();
+        let expected = std::fs::read(reference.join(name)).unwrap();
+        match name.rsplit('.').next().unwrap() {
+            "svg" => {
+                roxmltree::Document::parse(&text(&bytes)).unwrap_or_else(|e| panic!("{name}: {e}"));
+            }
+            "png" => {
+                let mut reader = png::Decoder::new(bytes.as_slice()).read_info().unwrap();
+                let mut pixels = vec![0; reader.output_buffer_size()];
+                reader
+                    .next_frame(&mut pixels)
+                    .unwrap_or_else(|e| panic!("{name}: {e}"));
+            }
+            "csv" => {
+                let rows = |b: &[u8]| {
+                    csv::Reader::from_reader(b)
+                        .records()
+                        .map(Result::unwrap)
+                        .count()
+                };
+                assert_eq!(rows(&bytes), rows(&expected), "{name}: rows");
+            }
+            other => panic!("unexpected file {name} ({other})"),
+        }
+        assert!(bytes == expected, "{name} differs from the finished run's");
+    }
+    visible.len()
+}
+
+#[test]
+fn a_render_killed_mid_run_leaves_only_complete_files_and_the_next_run_cleans_up() {
+    let dir = scratch("kill");
+    let total = write_kill_specs(&dir);
+    let specs = dir.join("specs");
+    let reference = dir.join("reference");
+    let start = Instant::now();
+    assert!(render_into(&specs, &reference).status().unwrap().success());
+    let full = start.elapsed();
+    assert_eq!(files_in(&reference).len(), total);
+
+    // Bisect the kill time between "nothing written yet" and "everything written" until a kill
+    // lands while the files are being written; every attempt checks what the kill left.
+    let (mut early, mut late) = (Duration::ZERO, full + full / 2);
+    let mut partial = None;
+    for attempt in 0..16 {
+        let out = dir.join(format!("attempt-{attempt}"));
+        let at = (early + late) / 2;
+        let mut child = render_into(&specs, &out).spawn().unwrap();
+        std::thread::sleep(at);
+        child.kill().unwrap();
+        child.wait().unwrap();
+        match assert_complete(&out, &reference) {
+            0 => early = at,
+            n if n == total => late = at,
+            _ => {
+                partial = Some(out);
+                break;
+            }
+        }
+    }
+    let out = partial.expect("no kill landed while files were being written");
+
+    // The next run replaces every file and removes stale temporaries, including one planted for a
+    // file the killed run had not reached yet.
+    std::fs::write(
+        out.join(".scene-00.csv.tmp"),
+        "panel,series,curve,x,y\n0,0,",
+    )
+    .unwrap();
+    assert!(render_into(&specs, &out).status().unwrap().success());
+    assert_eq!(
+        files_in(&out).iter().filter(|f| f.starts_with('.')).count(),
+        0,
+        "{:?}",
+        files_in(&out)
+    );
+    assert_eq!(assert_complete(&out, &reference), total);
+}
+
+const SPEC: &str = r#"{"id": "checked", "sampling": {"uniform": 50}, "panels": [
+    {"curves": [{"ndf": "beckmann", "alpha_b": [0.3, 0.6]}, {"fresnel": "schlick", "f0": 0.04}]}]}"#;
+
+/// Renders SPEC's CSV into a fresh folder; returns (spec path, output folder).
+fn rendered(name: &str) -> (PathBuf, PathBuf) {
+    let dir = scratch(name);
+    let spec = dir.join("spec.json");
+    std::fs::write(&spec, SPEC).unwrap();
+    let plots = dir.join("plots");
+    let out = ndfplot(&[
+        "render",
+        spec.to_str().unwrap(),
+        "-o",
+        plots.to_str().unwrap(),
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    (spec, plots)
+}
+
+fn check(spec: &Path, plots: &Path, extra: &[&str]) -> Output {
+    let mut args = vec![
+        "render",
+        spec.to_str().unwrap(),
+        "--check",
+        plots.to_str().unwrap(),
+    ];
+    args.extend(extra);
+    ndfplot(&args)
+}
+
+#[test]
+fn render_check_passes_an_untouched_tree_and_catches_a_relative_change_of_1e_9() {
+    let (spec, plots) = rendered("check");
+    let before = files_in(&plots);
+    let out = check(&spec, &plots, &[]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
+    assert!(
+        text(&out.stdout).contains("all 1 CSVs match"),
+        "{}",
+        text(&out.stdout)
+    );
+
+    // Change one y value by 1e-9 relative.
+    let csv_path = plots.join("checked.csv");
+    let csv = std::fs::read_to_string(&csv_path).unwrap();
+    let mut lines: Vec<String> = csv.lines().map(str::to_string).collect();
+    let fields: Vec<&str> = lines[60].rsplitn(2, ',').collect();
+    let y: f64 = fields[0].parse().unwrap();
+    lines[60] = format!("{},{:?}", fields[1], y * (1.0 + 1e-9));
+    std::fs::write(&csv_path, lines.join("\n") + "\n").unwrap();
+
+    let out = check(&spec, &plots, &[]);
+    let report = text(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{report}");
+    assert!(report.contains("checked.csv: panel 0, series 1 {\"ndf\":\"beckmann\",\"alpha_b\":0.6}: y differs by 1.000e-9 relative"), "{report}");
+    assert!(report.contains("1 of 50 rows differ"), "{report}");
+    assert!(
+        text(&out.stderr).contains("render --check"),
+        "{}",
+        text(&out.stderr)
+    );
+    // Within a looser tolerance it passes; --check never writes.
+    assert_eq!(
+        check(&spec, &plots, &["--tolerance", "1e-8"]).status.code(),
+        Some(0)
+    );
+    assert_eq!(files_in(&plots), before);
+    assert_eq!(
+        std::fs::read_to_string(&csv_path).unwrap(),
+        lines.join("\n") + "\n"
+    );
+}
+
+#[test]
+fn render_check_reports_missing_and_extra_csvs() {
+    let (spec, plots) = rendered("check-files");
+    std::fs::copy(plots.join("checked.csv"), plots.join("stale.csv")).unwrap();
+    let out = check(&spec, &plots, &[]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        text(&out.stdout).contains("stale.csv: extra in"),
+        "{}",
+        text(&out.stdout)
+    );
+    std::fs::remove_file(plots.join("stale.csv")).unwrap();
+    std::fs::remove_file(plots.join("checked.csv")).unwrap();
+    let out = check(&spec, &plots, &[]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        text(&out.stdout).contains("checked.csv: missing from"),
+        "{}",
+        text(&out.stdout)
+    );
+    assert!(
+        files_in(&plots).is_empty(),
+        "--check wrote {:?}",
+        files_in(&plots)
+    );
+}
+
+#[test]
+fn stdout_carries_results_only_and_no_bar_is_drawn_without_a_terminal() {
+    let (spec, plots) = rendered("quiet");
+    for flags in [&[][..], &["-q"][..]] {
+        let mut args = vec![
+            "render",
+            spec.to_str().unwrap(),
+            "-o",
+            plots.to_str().unwrap(),
+        ];
+        args.extend(flags);
+        let out = ndfplot(&args);
+        assert_eq!(out.status.code(), Some(0));
+        assert!(
+            out.stdout.is_empty() && out.stderr.is_empty(),
+            "{flags:?}: {}{}",
+            text(&out.stdout),
+            text(&out.stderr)
+        );
+    }
+}
+
+#[test]
+fn every_subcommand_help_has_an_example_and_completions_and_man_are_generated() {
+    use clap::CommandFactory;
+    let cli = ndfplot::cli::Cli::command();
+    let names: Vec<String> = cli
+        .get_subcommands()
+        .map(|s| s.get_name().to_string())
+        .collect();
+    assert!(names.len() >= 9, "{names:?}");
+    for name in names {
+        let out = ndfplot(&[&name, "--help"]);
+        assert_eq!(out.status.code(), Some(0), "{name}");
+        let help = text(&out.stdout);
+        let example = ["Example:\n  ndfplot ", "Examples:\n  ndfplot "]
+            .iter()
+            .any(|e| help.contains(e));
+        assert!(example, "{name} --help has no example:\n{help}");
+    }
+    for shell in ["bash", "zsh", "fish", "elvish", "powershell"] {
+        let out = ndfplot(&["completions", shell]);
+        assert_eq!(out.status.code(), Some(0), "{shell}");
+        assert!(text(&out.stdout).contains("render"), "{shell}");
+    }
+    let out = ndfplot(&["man"]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(
+        text(&out.stdout).contains(".TH ndfplot"),
+        "{}",
+        text(&out.stdout)
+    );
+    let out = ndfplot(&["completions", "tcsh"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+}

@@ -1,0 +1,290 @@
+//! The JSON Schema of `ndfplot schema` against the validator: for every key table the schema's
+//! property set equals the validator's, the committed `schema/ndfplot.schema.json` is current, every
+//! config validates against it, and misspelt keys and names fail it as they fail the validator.
+
+use ndfplot::curve::{DIFFERENCE_KEYS, TRANSFORM_KEYS};
+use ndfplot::scene::interactive::{INTERACTIVE_KEYS, PARAM_KEYS, SLIDER_KEY};
+use ndfplot::scene::sweep::{FIT_KEY, FIT_KEYS, FROM_BECKMANN_KEY, SWEEP_KEYS};
+use ndfplot::scene::{self as scene, data};
+use ndfplot::schema::{self, data_def, model_names, models, signature_def};
+use serde_json::{Value, json};
+use std::collections::BTreeSet;
+use std::path::Path;
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn def<'a>(schema: &'a Value, name: &str) -> &'a Value {
+    schema["$defs"]
+        .get(name)
+        .unwrap_or_else(|| panic!("no $defs/{name}"))
+}
+
+fn keys(object_schema: &Value) -> BTreeSet<String> {
+    object_schema["properties"]
+        .as_object()
+        .expect("an object schema")
+        .keys()
+        .cloned()
+        .collect()
+}
+
+fn set<'a>(words: impl IntoIterator<Item = &'a str>) -> BTreeSet<String> {
+    words.into_iter().map(str::to_string).collect()
+}
+
+fn enum_of(schema: &Value) -> BTreeSet<String> {
+    schema["enum"]
+        .as_array()
+        .expect("an enum")
+        .iter()
+        .map(|v| v.as_str().unwrap().to_string())
+        .collect()
+}
+
+fn validator(schema: &Value, def: Option<&str>) -> jsonschema::Validator {
+    let schema = match def {
+        Some(name) => {
+            json!({ "$schema": schema["$schema"], "$ref": format!("#/$defs/{name}"), "$defs": schema["$defs"] })
+        }
+        None => schema.clone(),
+    };
+    jsonschema::validator_for(&schema).expect("the schema compiles")
+}
+
+fn errors(validator: &jsonschema::Validator, instance: &Value) -> Vec<String> {
+    validator
+        .iter_errors(instance)
+        .map(|e| format!("{}: {e}", e.instance_path()))
+        .collect()
+}
+
+#[test]
+fn every_key_table_equals_the_schema_properties() {
+    let schema = schema::schema();
+    let tables: [(&str, &[&str]); 12] = [
+        ("scene", scene::SCENE_KEYS),
+        ("layout", scene::LAYOUT_KEYS),
+        ("sampling", scene::SAMPLING_KEYS),
+        ("panel", scene::PANEL_KEYS),
+        ("x_axis", scene::X_KEYS),
+        ("y_axis", scene::Y_KEYS),
+        ("z_axis", scene::Z_KEYS),
+        ("view", scene::VIEW_KEYS),
+        ("interactive", INTERACTIVE_KEYS),
+        ("slider", PARAM_KEYS),
+        ("slider_reference", &[SLIDER_KEY]),
+        ("curve_transformed", TRANSFORM_KEYS),
+    ];
+    for (name, table) in tables {
+        assert_eq!(
+            keys(def(&schema, name)),
+            set(table.iter().copied()),
+            "$defs/{name}"
+        );
+    }
+    let adaptive = &def(&schema, "sampling")["properties"]["adaptive"];
+    assert_eq!(keys(adaptive), set(scene::ADAPTIVE_KEYS.iter().copied()));
+    let sweep_object = &def(&schema, "sweep")["anyOf"][2];
+    assert_eq!(keys(sweep_object), set(SWEEP_KEYS.iter().copied()));
+    let fit = def(&schema, "fit");
+    assert_eq!(keys(fit), set([FIT_KEY]));
+    assert_eq!(
+        keys(&fit["properties"][FIT_KEY]),
+        set(FIT_KEYS.iter().copied())
+    );
+    assert_eq!(
+        keys(def(&schema, "curve_difference")),
+        set(DIFFERENCE_KEYS.iter().copied())
+    );
+    let scene_difference: BTreeSet<String> = set(DIFFERENCE_KEYS
+        .iter()
+        .chain(scene::CURVE_EXTRA_KEYS)
+        .copied());
+    assert_eq!(
+        keys(def(&schema, "scene_curve_difference")),
+        scene_difference
+    );
+
+    // Every model and signature, in both the plain and the scene curve format.
+    for model in models() {
+        for (i, params) in model.signatures().iter().enumerate() {
+            let params: Vec<&str> = params.iter().map(|p| p.name).collect();
+            let plain = def(&schema, &signature_def("curve", model, i));
+            assert_eq!(
+                keys(plain),
+                set([model.key()].into_iter().chain(params.iter().copied())),
+                "{model:?} {i}"
+            );
+            let in_scene = def(&schema, &signature_def("scene_curve", model, i));
+            let expected = set([model.key()]
+                .into_iter()
+                .chain(params.iter().copied())
+                .chain(scene::CURVE_EXTRA_KEYS.iter().copied()));
+            assert_eq!(keys(in_scene), expected, "{model:?} {i}");
+            assert_eq!(
+                enum_of(&plain["properties"][model.key()]),
+                set(model_names(model))
+            );
+        }
+    }
+    // Every accepted model name (aliases included) appears in some branch.
+    let mut all_names = BTreeSet::new();
+    for model in models() {
+        all_names.extend(
+            set(model_names(model))
+                .into_iter()
+                .map(|n| format!("{}:{n}", model.key())),
+        );
+    }
+    let mut accepted: BTreeSet<String> = ndfplot::ndf::Family::NAMES
+        .iter()
+        .map(|n| format!("ndf:{n}"))
+        .collect();
+    accepted.extend(
+        ndfplot::curve::FresnelModel::ALL
+            .iter()
+            .map(|m| format!("fresnel:{}", m.name())),
+    );
+    assert_eq!(all_names, accepted);
+
+    for &kind in data::KINDS {
+        let expected = set(data::COMMON_KEYS
+            .iter()
+            .chain(data::own_keys(kind))
+            .copied());
+        assert_eq!(keys(def(&schema, &data_def(kind))), expected, "data {kind}");
+    }
+
+    // Enumerated words.
+    let panel = def(&schema, "panel");
+    assert_eq!(
+        enum_of(&panel["properties"]["kind"]),
+        set(scene::PANEL_KINDS.iter().copied())
+    );
+    assert_eq!(
+        enum_of(&def(&schema, "x_axis")["properties"]["unit"]),
+        set(scene::X_UNITS.iter().copied())
+    );
+    assert_eq!(
+        enum_of(&def(&schema, "y_axis")["properties"]["scale"]),
+        set(scene::Y_SCALES.iter().copied())
+    );
+    let curve = def(&schema, &signature_def("scene_curve", models()[0], 0));
+    assert_eq!(
+        enum_of(&curve["properties"]["style"]["anyOf"][0]),
+        set(scene::STYLE_WORDS.iter().copied())
+    );
+    assert_eq!(
+        enum_of(&curve["properties"]["mark"]),
+        set(scene::MARKS.iter().copied())
+    );
+    let phong = &curve["properties"]["alpha_p"]["anyOf"];
+    assert!(
+        phong
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|o| o["properties"].get(FROM_BECKMANN_KEY).is_some())
+    );
+}
+
+#[test]
+fn the_committed_schema_is_the_generated_one() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .arg("schema")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let committed = std::fs::read_to_string(root().join(schema::COMMITTED_PATH)).unwrap();
+    assert!(
+        committed == String::from_utf8(out.stdout).unwrap(),
+        "{} is stale: regenerate it with `ndfplot schema > {}`",
+        schema::COMMITTED_PATH,
+        schema::COMMITTED_PATH
+    );
+}
+
+#[test]
+fn every_config_validates_and_references_the_schema() {
+    let schema = schema::schema();
+    let validator = validator(&schema, None);
+    let mut count = 0;
+    for entry in std::fs::read_dir(root().join("configs")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "json") {
+            continue;
+        }
+        let config: Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+        assert_eq!(
+            config["$schema"],
+            "../schema/ndfplot.schema.json",
+            "{}",
+            path.display()
+        );
+        let problems = errors(&validator, &config);
+        assert!(problems.is_empty(), "{}: {problems:#?}", path.display());
+        count += 1;
+    }
+    assert!(count >= 20, "only {count} configs");
+}
+
+#[test]
+fn curves_validate_against_the_curve_definition() {
+    let validator = validator(&schema::schema(), Some("curve"));
+    for good in [
+        json!({"ndf": "ggx", "alpha_tr": 0.5}),
+        json!({"fresnel": "exact", "r": 0.5, "g": 0.2, "g_remap": true}),
+        json!({"fresnel": "lazanyi_term"}),
+        json!({"difference": "ratio", "a": {"ndf": "phong", "alpha_p": 10}, "b": {"ndf": "beckmann", "alpha_b": 0.4}}),
+        json!({"transform": "slope", "curve": {"ndf": "beckmann", "alpha_b": 0.4}}),
+    ] {
+        assert!(
+            errors(&validator, &good).is_empty(),
+            "{good}: {:?}",
+            errors(&validator, &good)
+        );
+    }
+    for bad in [
+        json!({"ndf": "beckman", "alpha_b": 0.5}),
+        json!({"ndf": "beckmann", "alpha": 0.5}),
+        json!({"ndf": "abc", "alpha_abc1": 1}),
+        json!({"fresnel": "exact", "eta": 1.5, "r": 0.5}),
+        json!({"ndf": "beckmann", "alpha_b": [0.1, 0.2]}),
+        json!({"ndf": "beckmann", "alpha_b": 0.5, "style": "thick"}),
+    ] {
+        assert!(!validator.is_valid(&bad), "{bad} passed");
+    }
+}
+
+#[test]
+fn misspelt_keys_and_names_fail_the_schema_as_they_fail_the_validator() {
+    let validator = validator(&schema::schema(), None);
+    let dir = root().join("tests/data/malformed");
+    for case in [
+        "unknown-scene-key",
+        "style-key-misspelt",
+        "style-misspelt",
+        "misspelt-param",
+        "unknown-family",
+        "unknown-fresnel",
+        "sweep-misspelt",
+        "data-kind-misspelt",
+        "mark-bad",
+        "x-unit-misspelt",
+        "exclusive-keys",
+        "both-models",
+        "no-model",
+        "missing-id",
+        "missing-param",
+        "difference-op-misspelt",
+        "fit-by-misspelt",
+        "empty-panels",
+        "sweep-empty-list",
+    ] {
+        let text = std::fs::read_to_string(dir.join(format!("{case}.json"))).unwrap();
+        let instance: Value = serde_json::from_str(&text).unwrap();
+        assert!(!validator.is_valid(&instance), "{case} passed the schema");
+    }
+}
