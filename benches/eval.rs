@@ -1,5 +1,7 @@
 //! Evaluation throughput of each NDF family: one curve, 1000 θ evenly spaced over [0, π/2] (ends included),
-//! single-threaded. Criterion reports the time per 1000 samples and the throughput in samples per second.
+//! single-threaded, by `eval` per point (group `eval`) and by the vectorized batch path `eval_grid` (group
+//! `eval_grid`, writing into a buffer). Criterion reports the time per 1000 samples and the throughput in
+//! samples per second.
 //!
 //! Run: `cargo bench --bench eval`.
 
@@ -45,5 +47,25 @@ fn eval(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, eval);
+fn eval_grid(c: &mut Criterion) {
+    let dtheta = FRAC_PI_2 / (SAMPLES - 1) as f64;
+    let mut out = vec![0.0; SAMPLES];
+    let mut group = c.benchmark_group("eval_grid");
+    group.throughput(Throughput::Elements(SAMPLES as u64));
+    for ndf in curves() {
+        group.bench_with_input(
+            BenchmarkId::from_parameter(ndf.family().name()),
+            &ndf,
+            |b, ndf| {
+                b.iter(|| {
+                    ndf.eval_grid(0.0, black_box(dtheta), &mut out);
+                    black_box(out[SAMPLES / 2])
+                })
+            },
+        );
+    }
+    group.finish();
+}
+
+criterion_group!(benches, eval, eval_grid);
 criterion_main!(benches);

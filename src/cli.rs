@@ -27,6 +27,9 @@ pub enum Command {
     Fit(FitArgs),
     /// Audit the normalization of every curve in scenes (or the built-in catalogue).
     Check(CheckArgs),
+    /// Measure run time against error (drawing, normalization routes, throughput); writes
+    /// bench.csv and bench.svg.
+    Bench(BenchArgs),
 }
 
 /// Arguments of `ndfplot coeffs`.
@@ -192,4 +195,23 @@ pub struct CheckArgs {
     /// Largest accepted |2 pi integral D sin cos dtheta - 1|.
     #[arg(long, value_name = "X", default_value_t = crate::cmd::check::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
+}
+
+/// Arguments of `ndfplot bench`.
+#[derive(Debug, Args)]
+#[command(after_long_help = "Sections (CSV columns section,case,method,setting,samples,seconds,error):\n  \
+    drawing        uniform N = 16 ... 65536 and adaptive tolerances: the drawn polyline's largest\n                 \
+    deviation from the true curve in px, narrow and broad lobes; uniform_needed: the fewest\n                 \
+    uniform samples within 0.25 px\n  \
+    normalization  Torrance-Sparrow (Dawson/Faddeeva vs quadrature), ABC (stable vs closed form vs\n                 \
+    quadrature): relative error against MATH.md's 15-digit values\n  \
+    throughput     D values written per second on a 2^20-point grid: eval on one thread, the batch\n                 \
+    path on one thread and on all threads (error: largest relative difference from eval)\n\n\
+    Times are medians of 5 batches of at least 50 ms; machines shared with other work give noisy numbers.\n\n\
+    Example:\n  \
+    ndfplot bench -o plots/bench")]
+pub struct BenchArgs {
+    /// Output folder (created if missing) for bench.csv and bench.svg.
+    #[arg(short, long, value_name = "DIR", default_value = "plots/bench")]
+    pub out: PathBuf,
 }

@@ -5,6 +5,7 @@
 //! `fresnel`, `math`) is pure f64 code with no I/O.
 
 pub mod adaptive;
+pub mod bench;
 pub mod catalogue;
 pub mod cli;
 pub mod cmd;

@@ -325,3 +325,49 @@ fn a_run_produces_only_the_requested_formats_and_needed_jobs() {
         .is_none()
     );
 }
+
+/// Median wall time per render stage of the whole catalogue, adaptive (the default) and with every
+/// scene forced to `"sampling": {"uniform": 1000}` (the former default); prints, asserts nothing.
+/// Run: `cargo test --release --test sampling render_stage_times -- --ignored --nocapture`.
+#[test]
+#[ignore = "timing report, not a test"]
+fn render_stage_times() {
+    const RUNS: usize = 5;
+    let dir = temp_dir("stages");
+    let uniform = dir.join("uniform");
+    std::fs::create_dir_all(&uniform).unwrap();
+    for (name, text) in ndfplot::catalogue::CATALOGUE {
+        let forced = text.replacen('{', "{\"sampling\":{\"uniform\":1000},", 1);
+        std::fs::write(uniform.join(name), forced).unwrap();
+    }
+    for (label, paths) in [
+        ("uniform 1000", vec![uniform.clone()]),
+        ("default (adaptive drawing)", vec![]),
+    ] {
+        let options = RenderOptions {
+            paths,
+            out: dir.join("out"),
+            formats: vec![Format::Svg, Format::Png, Format::Csv],
+            canvas: CanvasOverride::default(),
+        };
+        let mut runs: Vec<render::RenderStats> = (0..RUNS)
+            .map(|_| render::run_with_stats(&options).unwrap().1)
+            .collect();
+        let median = |f: &dyn Fn(&render::RenderStats) -> f64,
+                      runs: &mut Vec<render::RenderStats>| {
+            runs.sort_by(|a, b| f(a).total_cmp(&f(b)));
+            f(&runs[RUNS / 2])
+        };
+        let total = median(
+            &|s| (s.evaluation + s.drawing + s.encoding).as_secs_f64(),
+            &mut runs,
+        );
+        let evaluation = median(&|s| s.evaluation.as_secs_f64(), &mut runs);
+        let drawing = median(&|s| s.drawing.as_secs_f64(), &mut runs);
+        let encoding = median(&|s| s.encoding.as_secs_f64(), &mut runs);
+        println!(
+            "{label}: total {total:.3} s, evaluation {evaluation:.3} s, drawing {drawing:.3} s, csv+writing {encoding:.3} s, {} evaluations",
+            runs[0].evaluations
+        );
+    }
+}

@@ -6,6 +6,7 @@ pub mod render;
 pub mod compare;
 pub mod fit;
 pub mod check;
+pub mod bench;
 
 use crate::cli::{CheckArgs, CoeffsArgs, Command, CompareArgs, EvalArgs, FitArgs, RenderArgs};
 use crate::error::Result;
@@ -21,6 +22,7 @@ pub fn run(command: Command) -> Result<()> {
         Command::Compare(args) => run_compare(args),
         Command::Fit(args) => run_fit(args),
         Command::Check(args) => run_check(args),
+        Command::Bench(args) => bench::run(&args.out).map(|_| ()),
     }
 }
 

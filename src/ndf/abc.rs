@@ -71,10 +71,16 @@ impl Abc {
     /// does not cancel either.
     pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
         let (ln_peak, a1, a2) = (self.ln_peak, self.alpha_abc1, self.alpha_abc2);
-        batch::fill_grid(theta0, dtheta, out, |_, sin_theta, cos_theta| {
-            let one_minus_cos_theta = sin_theta * sin_theta / (1.0 + cos_theta);
-            batch::exp(ln_peak - a2 * batch::ln_1p(a1 * one_minus_cos_theta))
-        });
+        batch::fill_grid(
+            theta0,
+            dtheta,
+            out,
+            #[inline(always)]
+            |_, sin_theta, cos_theta| {
+                let one_minus_cos_theta = sin_theta * sin_theta / (1.0 + cos_theta);
+                batch::exp(ln_peak - a2 * batch::ln_1p(a1 * one_minus_cos_theta))
+            },
+        );
     }
 
     /// N = 2π ∫₀^{π/2} (1 + a₁ (1 − cos θ))^{−a₂} sin θ cos θ dθ.

@@ -5,7 +5,7 @@
 //! It must not replace `eval`: the single-point forms stay the accurate reference, and
 //! `tests/sampling.rs` checks this path against them over every family's domain.
 //!
-//! - Angles: θ_i = θ₀ + i Δθ in blocks of [`BLOCK`] points. Each block seeds sin and cos from libm at
+//! - Angles: θ_i = θ₀ + i Δθ in blocks of ≈ √(2n) points (at most [`BLOCK`]; see [`block_len`]). Each block seeds sin and cos from libm at
 //!   its two ends and rotates by tabulated sin(kΔθ), cos(kΔθ) (libm, once per grid): sin forward from
 //!   the first point, sin(θ_s + kΔθ) = sin θ_s cos kΔθ + cos θ_s sin kΔθ, and cos backward from the last,
 //!   cos(θ_e − kΔθ) = cos θ_e cos kΔθ + sin θ_e sin kΔθ. For θ, kΔθ ∈ [0, π/2] both are sums of
@@ -20,9 +20,18 @@
 //!
 //! No FMA is used (Rust never contracts a·b + c), so every SIMD width gives the same bits.
 
-/// Points per block: two libm `sin_cos` seeds per block cost ~0.1 ns per point at this size, and the
-/// block's sin, cos and rotation tables (3 × 4 KiB) stay in L1.
+/// Most points per block: two libm `sin_cos` seeds per block cost ~0.1 ns per point at this size, and
+/// the block's sin, cos and rotation tables (4 × 4 KiB) stay in L1.
 pub const BLOCK: usize = 512;
+/// Fewest points per block (below it the seeds cost more than the points).
+const MIN_BLOCK: usize = 16;
+
+/// Points per block for a grid of `n`: a grid costs one `sin_cos` per table entry (the block length
+/// b) plus two per block (2n/b), least at b = √(2n); 45 for a 1000-point plot, [`BLOCK`] from
+/// 2¹⁷ points on.
+pub fn block_len(n: usize) -> usize {
+    ((2.0 * n as f64).sqrt() as usize).clamp(MIN_BLOCK, BLOCK)
+}
 
 /// 1.5 × 2⁵²: adding it rounds a double of magnitude < 2⁵¹ to an integer held in the low mantissa bits.
 const ROUND_SHIFTER: f64 = 6_755_399_441_055_744.0;
@@ -47,8 +56,8 @@ const EXP_TAYLOR: [f64; 12] = [
     1.0 / 479001600.0,
     1.0 / 6227020800.0,
 ];
-/// Bits of 1.0: the exponent bias in place.
-const ONE_BITS: i64 = 0x3ff0_0000_0000_0000;
+/// The mantissa field of a double.
+const MANTISSA_MASK: u64 = 0x000f_ffff_ffff_ffff;
 /// √2, the upper end of the mantissa interval of `ln_1p`.
 const SQRT_2: f64 = std::f64::consts::SQRT_2;
 /// Coefficients 2/(2n + 1) for n = 1 … 12 of ln m = 2s + Σ 2 s^{2n+1}/(2n + 1), s = f/(2 + f):
@@ -73,20 +82,35 @@ const LN_SERIES: [f64; 12] = [
 #[inline(always)]
 pub fn exp(x: f64) -> f64 {
     let x = x.clamp(-EXP_ARG_LIMIT, EXP_ARG_LIMIT);
-    let shifted = x * std::f64::consts::LOG2_E + ROUND_SHIFTER;
-    let k_float = shifted - ROUND_SHIFTER;
-    let k = shifted.to_bits() as i64 - ROUND_SHIFTER.to_bits() as i64;
-    let r = (x - k_float * LN2_HI) - k_float * LN2_LO;
+    let k = round(x * std::f64::consts::LOG2_E);
+    let r = (x - k * LN2_HI) - k * LN2_LO;
     let mut q = EXP_TAYLOR[11];
     for &c in EXP_TAYLOR[..11].iter().rev() {
         q = q * r + c;
     }
     let p = 1.0 + (r + r * r * q);
-    let k_half = k >> 1;
-    let two_k_half = f64::from_bits(((k_half << 52) + ONE_BITS) as u64);
-    let two_k_rest = f64::from_bits((((k - k_half) << 52) + ONE_BITS) as u64);
-    p * two_k_half * two_k_rest
+    let k_half = round(0.5 * k);
+    p * pow2(k_half) * pow2(k - k_half)
 }
+
+/// The integer nearest to `x` (ties to even), for |x| < 2⁵¹, by [`ROUND_SHIFTER`]: float adds only,
+/// so that it vectorizes without SSE4.1's `round`.
+#[inline(always)]
+fn round(x: f64) -> f64 {
+    (x + ROUND_SHIFTER) - ROUND_SHIFTER
+}
+
+/// 2ᵏ for an integer k ∈ [−1022, 1023] given as a double: k + 1023 lands in the low mantissa bits
+/// of k + 1023 + [`ROUND_SHIFTER`], and a shift by 52 moves those 11 bits into the exponent field.
+/// A shift of unsigned 64-bit lanes, which AVX2 has (unlike 64-bit arithmetic shifts and
+/// integer-to-double conversions).
+#[inline(always)]
+fn pow2(k: f64) -> f64 {
+    f64::from_bits((k + (EXPONENT_BIAS + ROUND_SHIFTER)).to_bits() << 52)
+}
+
+/// The exponent bias of doubles.
+const EXPONENT_BIAS: f64 = 1023.0;
 
 /// ln(1 + x) to ≤ 2 ulp for x ≥ 0 (+∞ at +∞), branch-free so that loops of it vectorize.
 #[inline(always)]
@@ -94,13 +118,14 @@ pub fn ln_1p(x: f64) -> f64 {
     let u = 1.0 + x;
     // The rounding error of 1 + x, relative to u: ln(1 + x) = ln u + ln(1 + c) ≈ ln u + c.
     let c = (x - (u - 1.0)) / u;
-    let bits = u.to_bits() as i64;
-    // Exponent k and mantissa m ∈ [1, 2); then into [√½, √2) by moving one factor 2 to k.
-    let mut k = (bits >> 52) - 1023;
-    let mut m = f64::from_bits(((bits & 0x000f_ffff_ffff_ffff) | ONE_BITS) as u64);
+    let bits = u.to_bits();
+    // Exponent field e (as a double, via the shifter: no integer-to-double conversion) and mantissa
+    // m ∈ [1, 2); then m into [√½, √2) by moving one factor 2 to the exponent.
+    let e = f64::from_bits((bits >> 52) | ROUND_SHIFTER.to_bits()) - ROUND_SHIFTER;
+    let m = f64::from_bits((bits & MANTISSA_MASK) | 1f64.to_bits());
     let high = m > SQRT_2;
-    m = if high { 0.5 * m } else { m };
-    k += i64::from(high);
+    let m = if high { 0.5 * m } else { m };
+    let k = e - EXPONENT_BIAS + if high { 1.0 } else { 0.0 };
     let f = m - 1.0;
     let s = f / (2.0 + f);
     let s2 = s * s;
@@ -109,24 +134,27 @@ pub fn ln_1p(x: f64) -> f64 {
         q = q * s2 + coefficient;
     }
     let ln_m = 2.0 * s + s * s2 * q;
-    let k = k as f64;
     let ln_u = k * LN2_HI + (k * LN2_LO + c + ln_m);
     if u.is_infinite() { u } else { ln_u }
 }
 
-/// Tabulated rotations cos(kΔθ), sin(kΔθ) for k < [`BLOCK`].
+/// Tabulated rotations cos(kΔθ), sin(kΔθ) for k below the block length.
 struct Rotations {
     cos: [f64; BLOCK],
     sin: [f64; BLOCK],
+    /// k as a double (integer-to-double conversions of 64-bit lanes need AVX-512DQ).
+    index: [f64; BLOCK],
 }
 
 impl Rotations {
-    fn new(dtheta: f64) -> Rotations {
+    fn new(dtheta: f64, len: usize) -> Rotations {
         let mut rotations = Rotations {
             cos: [0.0; BLOCK],
             sin: [0.0; BLOCK],
+            index: [0.0; BLOCK],
         };
-        for k in 0..BLOCK {
+        for k in 0..len {
+            rotations.index[k] = k as f64;
             let (s, c) = (k as f64 * dtheta).sin_cos();
             rotations.sin[k] = s;
             rotations.cos[k] = c;
@@ -139,11 +167,12 @@ impl Rotations {
 /// recurrence). `kernel` must be branch-free arithmetic for the loop to vectorize.
 #[inline(always)]
 fn fill_blocks(theta0: f64, dtheta: f64, out: &mut [f64], kernel: impl Fn(f64, f64, f64) -> f64) {
-    let rotations = Rotations::new(dtheta);
+    let len = block_len(out.len());
+    let rotations = Rotations::new(dtheta, len);
     let mut sin = [0.0; BLOCK];
     let mut cos = [0.0; BLOCK];
-    for (b, block) in out.chunks_mut(BLOCK).enumerate() {
-        let first = b * BLOCK;
+    for (b, block) in out.chunks_mut(len).enumerate() {
+        let first = b * len;
         let last = block.len() - 1;
         let (sin_s, cos_s) = (theta0 + first as f64 * dtheta).sin_cos();
         let (sin_e, cos_e) = (theta0 + (first + last) as f64 * dtheta).sin_cos();
@@ -153,20 +182,24 @@ fn fill_blocks(theta0: f64, dtheta: f64, out: &mut [f64], kernel: impl Fn(f64, f
         for k in 0..block.len() {
             cos[k] = cos_e * rotations.cos[last - k] + sin_e * rotations.sin[last - k];
         }
-        for (k, (o, (&s, &c))) in block.iter_mut().zip(sin.iter().zip(&cos)).enumerate() {
-            *o = kernel(theta0 + (first + k) as f64 * dtheta, s, c);
+        let first_float = first as f64;
+        for (o, ((&s, &c), &k)) in block
+            .iter_mut()
+            .zip(sin.iter().zip(&cos).zip(&rotations.index))
+        {
+            *o = kernel(theta0 + (first_float + k) * dtheta, s, c);
         }
     }
 }
 
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq,avx512vl")]
 fn fill_avx512(theta0: f64, dtheta: f64, out: &mut [f64], kernel: impl Fn(f64, f64, f64) -> f64) {
     fill_blocks(theta0, dtheta, out, kernel);
 }
 
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 fn fill_avx2(theta0: f64, dtheta: f64, out: &mut [f64], kernel: impl Fn(f64, f64, f64) -> f64) {
     fill_blocks(theta0, dtheta, out, kernel);
 }
@@ -177,12 +210,15 @@ fn fill_avx2(theta0: f64, dtheta: f64, out: &mut [f64], kernel: impl Fn(f64, f64
 pub fn fill_grid(theta0: f64, dtheta: f64, out: &mut [f64], kernel: impl Fn(f64, f64, f64) -> f64) {
     #[cfg(target_arch = "x86_64")]
     {
-        if std::is_x86_feature_detected!("avx512f") {
-            // SAFETY: the CPU supports AVX-512F, checked just above.
+        if std::is_x86_feature_detected!("avx512f")
+            && std::is_x86_feature_detected!("avx512dq")
+            && std::is_x86_feature_detected!("avx512vl")
+        {
+            // SAFETY: the CPU supports AVX-512F, DQ and VL, checked just above.
             return unsafe { fill_avx512(theta0, dtheta, out, kernel) };
         }
-        if std::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU supports AVX2, checked just above.
+        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+            // SAFETY: the CPU supports AVX2 and FMA, checked just above.
             return unsafe { fill_avx2(theta0, dtheta, out, kernel) };
         }
     }

@@ -62,12 +62,18 @@ impl Beckmann {
     /// tan θ > 1e7, where tan²θ/α_b² ≥ 1e6 (α_b ≤ 1e4) and D is 0 anyway.
     pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
         let (ln_peak, inv_alpha_b) = (self.ln_peak, 1.0 / self.alpha_b);
-        batch::fill_grid(theta0, dtheta, out, |_, sin_theta, cos_theta| {
-            let tan_theta = sin_theta / cos_theta;
-            let one_plus_tan2 = 1.0 + tan_theta * tan_theta;
-            let slope = tan_theta * inv_alpha_b;
-            batch::exp(ln_peak - slope * slope) * one_plus_tan2 * one_plus_tan2
-        });
+        batch::fill_grid(
+            theta0,
+            dtheta,
+            out,
+            #[inline(always)]
+            |_, sin_theta, cos_theta| {
+                let tan_theta = sin_theta / cos_theta;
+                let one_plus_tan2 = 1.0 + tan_theta * tan_theta;
+                let slope = tan_theta * inv_alpha_b;
+                batch::exp(ln_peak - slope * slope) * one_plus_tan2 * one_plus_tan2
+            },
+        );
     }
 
     /// N = π: the projected-area integral of exp(−tan²θ/α_b²)/(α_b² cos⁴θ), independent of α_b.

@@ -48,10 +48,18 @@ impl Phong {
     /// [`eval`](Self::eval) on the batch path's sin, cos, exp and log1p (see [`batch`]).
     pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
         let (ln_inv_normalization, half_alpha_p) = (self.ln_inv_normalization, 0.5 * self.alpha_p);
-        batch::fill_grid(theta0, dtheta, out, |_, sin_theta, cos_theta| {
-            let tan_theta = sin_theta / cos_theta;
-            batch::exp(ln_inv_normalization - half_alpha_p * batch::ln_1p(tan_theta * tan_theta))
-        });
+        batch::fill_grid(
+            theta0,
+            dtheta,
+            out,
+            #[inline(always)]
+            |_, sin_theta, cos_theta| {
+                let tan_theta = sin_theta / cos_theta;
+                batch::exp(
+                    ln_inv_normalization - half_alpha_p * batch::ln_1p(tan_theta * tan_theta),
+                )
+            },
+        );
     }
 
     /// N = 2π/(α_p + 2), the projected-area integral of the unnormalized lobe cos^{α_p} θ.

@@ -77,15 +77,21 @@ impl Sgd {
     /// [`eval`](Self::eval) on the batch path (see [`batch`]).
     pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
         let (ln_peak, a2, inv_a1) = (self.ln_peak, self.alpha_sgd2, 1.0 / self.alpha_sgd1);
-        batch::fill_grid(theta0, dtheta, out, |_, sin_theta, cos_theta| {
-            let tan_theta = sin_theta / cos_theta;
-            let tan2_theta = tan_theta * tan_theta;
-            let x_over_a1 = tan_theta * inv_a1;
-            batch::exp(
-                ln_peak - tan2_theta * inv_a1 - a2 * batch::ln_1p(x_over_a1 * x_over_a1)
-                    + 2.0 * batch::ln_1p(tan2_theta),
-            )
-        });
+        batch::fill_grid(
+            theta0,
+            dtheta,
+            out,
+            #[inline(always)]
+            |_, sin_theta, cos_theta| {
+                let tan_theta = sin_theta / cos_theta;
+                let tan2_theta = tan_theta * tan_theta;
+                let x_over_a1 = tan_theta * inv_a1;
+                batch::exp(
+                    ln_peak - tan2_theta * inv_a1 - a2 * batch::ln_1p(x_over_a1 * x_over_a1)
+                        + 2.0 * batch::ln_1p(tan2_theta),
+                )
+            },
+        );
     }
 
     /// N = 1: p₂₂ is a probability density in x = tan²θ, which makes D normalized as it stands.

@@ -62,10 +62,16 @@ impl TorranceSparrow {
     /// with the batch path's exp (see [`batch`]).
     pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
         let (ln_peak, inv_alpha_ts) = (self.ln_peak, 1.0 / self.alpha_ts);
-        batch::fill_grid(theta0, dtheta, out, |theta, _, _| {
-            let x = theta * inv_alpha_ts;
-            batch::exp(ln_peak - x * x)
-        });
+        batch::fill_grid(
+            theta0,
+            dtheta,
+            out,
+            #[inline(always)]
+            |theta, _, _| {
+                let x = theta * inv_alpha_ts;
+                batch::exp(ln_peak - x * x)
+            },
+        );
     }
 
     /// N(α_ts) = 2π ∫₀^{π/2} exp(−θ²/α_ts²) sin θ cos θ dθ.

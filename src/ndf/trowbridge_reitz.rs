@@ -57,10 +57,16 @@ impl TrowbridgeReitz {
     /// [`eval`](Self::eval) on the batch path's sin and cos (see [`batch`]).
     pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
         let (alpha_tr, alpha2) = (self.alpha_tr, self.alpha2);
-        batch::fill_grid(theta0, dtheta, out, |_, sin_theta, cos_theta| {
-            let q = sin_theta * sin_theta + alpha2 * cos_theta * cos_theta;
-            (alpha_tr / q).powi(2) * FRAC_1_PI
-        });
+        batch::fill_grid(
+            theta0,
+            dtheta,
+            out,
+            #[inline(always)]
+            |_, sin_theta, cos_theta| {
+                let q = sin_theta * sin_theta + alpha2 * cos_theta * cos_theta;
+                (alpha_tr / q).powi(2) * FRAC_1_PI
+            },
+        );
     }
 
     /// N = π: the projected-area integral of α²/(sin²θ + α² cos²θ)², independent of α.

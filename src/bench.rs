@@ -1,0 +1,512 @@
+//! The measurements of `ndfplot bench`: run time against error for drawing (uniform grids against
+//! adaptive sampling), for normalization routes, and evaluation throughput per family.
+//!
+//! Owns the timing loop and the measured cases. Every duration comes from a [`Clock`] it is handed,
+//! so tests pass a fake clock and get deterministic results; it writes nothing (the subcommand turns
+//! [`Row`]s into a CSV and a figure). Timings are never part of the catalogue or of `render --check`.
+
+use crate::adaptive::{self, Frame, PixelMap};
+use crate::math::quad::integrate;
+use crate::ndf::{Abc, Family, Ndf, TorranceSparrow};
+use crate::sample::eval_grid_parallel;
+use crate::series::YScale;
+use std::f64::consts::{FRAC_PI_2, PI};
+use std::time::{Duration, Instant};
+
+/// A monotonic clock: the time elapsed since some fixed origin.
+pub trait Clock {
+    /// Time since the clock's origin.
+    fn now(&self) -> Duration;
+}
+
+/// The system's monotonic clock.
+#[derive(Debug, Clone, Copy)]
+pub struct SystemClock(Instant);
+
+impl SystemClock {
+    /// A clock whose origin is now.
+    pub fn new() -> SystemClock {
+        SystemClock(Instant::now())
+    }
+}
+
+impl Default for SystemClock {
+    fn default() -> Self {
+        SystemClock::new()
+    }
+}
+
+impl Clock for SystemClock {
+    fn now(&self) -> Duration {
+        self.0.elapsed()
+    }
+}
+
+/// How long and how often each case is timed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Settings {
+    /// A timed batch repeats the case until it has run at least this long.
+    pub min_batch: Duration,
+    /// Batches per case; the median batch is reported (robust to a shared machine's noise).
+    pub batches: usize,
+    /// Points of the throughput grids.
+    pub throughput_points: usize,
+}
+
+impl Settings {
+    /// The settings of `ndfplot bench`: 50 ms batches, median of 5, grids of 2²⁰ points (8 MiB:
+    /// beyond the caches, so that the memory write is part of a sample's cost).
+    pub const DEFAULT: Settings = Settings {
+        min_batch: Duration::from_millis(50),
+        batches: 5,
+        throughput_points: 1 << 20,
+    };
+}
+
+/// One measured case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// `drawing`, `normalization` or `throughput`.
+    pub section: &'static str,
+    /// What is measured: a curve in canonical JSON, or a family name.
+    pub case: String,
+    /// The method: `uniform`, `adaptive`, `uniform_needed` (the fewest uniform samples within
+    /// [`DRAWING_TOLERANCE_PX`]), a normalization route, `eval_1_thread`, `batch_1_thread`,
+    /// `batch_all_threads`.
+    pub method: String,
+    /// The method's setting: N for uniform grids, the tolerance in px for adaptive sampling, the
+    /// quadrature tolerance, the thread count.
+    pub setting: f64,
+    /// Samples (points drawn, or D values written); 1 for a normalization.
+    pub samples: usize,
+    /// Median seconds per run of the case.
+    pub seconds: f64,
+    /// Drawing: the polyline's largest deviation from the curve in pixels. Normalization: relative
+    /// error against the reference. Throughput: largest relative difference from `eval` on the grid.
+    pub error: f64,
+}
+
+/// Median seconds per call of `f`: [`Settings::batches`] batches, each repeating `f` until
+/// [`Settings::min_batch`] has passed (the repeat count doubles from 1).
+pub fn time(clock: &dyn Clock, settings: &Settings, f: &mut dyn FnMut()) -> f64 {
+    let mut per_call: Vec<f64> = (0..settings.batches.max(1))
+        .map(|_| {
+            let mut calls = 1u64;
+            loop {
+                let start = clock.now();
+                for _ in 0..calls {
+                    f();
+                }
+                let elapsed = clock.now().saturating_sub(start);
+                if elapsed >= settings.min_batch || calls >= MAX_CALLS_PER_BATCH {
+                    return elapsed.as_secs_f64() / calls as f64;
+                }
+                calls *= 2;
+            }
+        })
+        .collect();
+    per_call.sort_by(f64::total_cmp);
+    per_call[per_call.len() / 2]
+}
+
+/// Cap on the calls of one batch, for a clock that does not advance.
+const MAX_CALLS_PER_BATCH: u64 = 1 << 20;
+
+/// The tolerance the drawing section's `uniform_needed` rows are computed for (the default).
+pub const DRAWING_TOLERANCE_PX: f64 = crate::scene::DEFAULT_TOLERANCE_PX;
+/// Plot area of the drawing section, px: a one-panel figure of 640 × 400 px less its axes.
+const DRAWING_AREA_PX: (f64, f64) = (560.0, 330.0);
+/// Uniform grid sizes 2⁴ … 2¹⁶.
+const UNIFORM_POWERS: std::ops::RangeInclusive<u32> = 4..=16;
+/// Adaptive tolerances in px, coarse to fine.
+const TOLERANCES_PX: [f64; 7] = [4.0, 2.0, 1.0, 0.5, 0.25, 0.125, 0.0625];
+/// The error of a polyline is probed at about this many θ in all (at least 8 per segment).
+const ERROR_PROBES: usize = 1 << 18;
+/// Largest uniform grid `uniform_needed` searches.
+const MAX_UNIFORM_SEARCH: usize = 1 << 22;
+
+/// The drawing cases: the narrow lobes of the catalogue's extremes and two broad ones.
+pub fn drawing_cases() -> Vec<Ndf> {
+    let build = |family: Family, alpha: f64| family.build(&[alpha]).expect("in the domain");
+    vec![
+        build(Family::Phong, 2048.0),
+        build(Family::TrowbridgeReitz, 0.01),
+        build(Family::Beckmann, 0.001),
+        build(Family::Beckmann, 0.5),
+        build(Family::TrowbridgeReitz, 0.5),
+    ]
+}
+
+fn canonical(ndf: &Ndf) -> String {
+    crate::curve::Curve::Ndf(ndf.clone()).canonical_json()
+}
+
+/// The pixel map of a one-panel figure showing `ndf` alone, with its true extent (peak included).
+fn drawing_map(ndf: &Ndf) -> (Frame, PixelMap) {
+    let frame = Frame {
+        theta_range: (0.0, FRAC_PI_2),
+        width_px: DRAWING_AREA_PX.0,
+        height_px: DRAWING_AREA_PX.1,
+        y_scale: YScale::Linear,
+        y_range: None,
+        tolerance_px: DRAWING_TOLERANCE_PX,
+    };
+    let dense = crate::grid::linspace(0.0, FRAC_PI_2, ERROR_PROBES);
+    let values: Vec<(f64, f64)> = dense.into_iter().map(|t| (t, ndf.eval(t))).collect();
+    let map = frame.map(adaptive::extent([values.as_slice()]));
+    (frame, map)
+}
+
+fn uniform_points(ndf: &Ndf, n: usize) -> Vec<(f64, f64)> {
+    crate::grid::linspace(0.0, FRAC_PI_2, n)
+        .into_iter()
+        .map(|t| (t, ndf.eval(t)))
+        .collect()
+}
+
+fn deviation(ndf: &Ndf, map: &PixelMap, points: &[(f64, f64)]) -> f64 {
+    let probes = (ERROR_PROBES / points.len().max(2)).max(8);
+    adaptive::max_deviation_px(&|t| ndf.eval(t), map, points, probes)
+}
+
+/// The fewest uniform samples whose polyline is within `tolerance_px`, by bisection on N (the error
+/// falls with N, up to the grid's phase against the lobe, so the result is within a few % of exact).
+fn uniform_needed(ndf: &Ndf, map: &PixelMap, tolerance_px: f64) -> usize {
+    let (mut lo, mut hi) = (2, MAX_UNIFORM_SEARCH);
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if deviation(ndf, map, &uniform_points(ndf, mid)) <= tolerance_px {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
+}
+
+/// Section (a): uniform N = 2⁴ … 2¹⁶ and adaptive tolerances against the drawn error in px.
+pub fn drawing(clock: &dyn Clock, settings: &Settings, cases: &[Ndf]) -> Vec<Row> {
+    let mut rows = Vec::new();
+    for ndf in cases {
+        let (frame, map) = drawing_map(ndf);
+        let case = canonical(ndf);
+        for power in UNIFORM_POWERS {
+            let n = 1usize << power;
+            let seconds = time(clock, settings, &mut || {
+                std::hint::black_box(uniform_points(ndf, n));
+            });
+            let error = deviation(ndf, &map, &uniform_points(ndf, n));
+            rows.push(Row {
+                section: "drawing",
+                case: case.clone(),
+                method: "uniform".into(),
+                setting: n as f64,
+                samples: n,
+                seconds,
+                error,
+            });
+        }
+        for tolerance_px in TOLERANCES_PX {
+            let frame = Frame {
+                tolerance_px,
+                ..frame.clone()
+            };
+            let f = |t: f64| ndf.eval(t);
+            let run = || {
+                let start = adaptive::initial(&f, frame.theta_range, &[]);
+                let extent = adaptive::extent([start.points.as_slice()]);
+                adaptive::sample(&f, &frame, start, extent)
+            };
+            let seconds = time(clock, settings, &mut || {
+                std::hint::black_box(run());
+            });
+            let refined = run();
+            let error = deviation(ndf, &map, &refined.points);
+            let samples = refined.points.len();
+            rows.push(Row {
+                section: "drawing",
+                case: case.clone(),
+                method: "adaptive".into(),
+                setting: tolerance_px,
+                samples,
+                seconds,
+                error,
+            });
+        }
+        let n = uniform_needed(ndf, &map, DRAWING_TOLERANCE_PX);
+        let seconds = time(clock, settings, &mut || {
+            std::hint::black_box(uniform_points(ndf, n));
+        });
+        let error = deviation(ndf, &map, &uniform_points(ndf, n));
+        rows.push(Row {
+            section: "drawing",
+            case,
+            method: "uniform_needed".into(),
+            setting: DRAWING_TOLERANCE_PX,
+            samples: n,
+            seconds,
+            error,
+        });
+    }
+    rows
+}
+
+/// Torrance–Sparrow check values of MATH.md (15 digits): (α_ts, N).
+const TS_REFERENCE: [(f64, f64); 4] = [
+    (0.2027, 0.125601275797826),
+    (0.552, 0.784586975070852),
+    (1.81, 2.54561914769914),
+    (100.0, 3.14136216800410),
+];
+/// ABC check values of MATH.md (15 digits): (a₁, a₂, N).
+const ABC_REFERENCE: [(f64, f64, f64); 4] = [
+    (10.0, 1.75, 0.562584587671993),
+    (23.5, 1.75, 0.282172212012306),
+    (0.0212, 1000.0, 0.282651269230233),
+    (3.0, 0.5, 2.32710566932577),
+];
+/// Relative tolerances of the quadrature route.
+const QUAD_TOLERANCES: [f64; 4] = [1e-6, 1e-9, 1e-12, 1e-14];
+/// The references carry 15 significant digits: errors below this are not resolved.
+pub const REFERENCE_RESOLUTION: f64 = 1e-15;
+
+/// N = 2π ∫₀^{π/2} u(θ) sin θ cos θ dθ by adaptive Gauss–Kronrod at `rel_tol`; NaN if it fails.
+fn quadrature(u: impl Fn(f64) -> f64, rel_tol: f64) -> f64 {
+    integrate(|t| u(t) * t.sin() * t.cos(), 0.0, FRAC_PI_2, rel_tol)
+        .map_or(f64::NAN, |v| 2.0 * PI * v)
+}
+
+/// MATH.md's closed form of the ABC normalization, as the notebook wrote it:
+/// N = 2π (U^{2−a₂} − 1 + a₁(a₂ − 2)) / (a₁² (a₂ − 2)(a₂ − 1)), U = 1 + a₁ (0/0 at a₂ = 1, 2).
+pub fn abc_closed_form(a1: f64, a2: f64) -> f64 {
+    let u = 1.0 + a1;
+    2.0 * PI * (u.powf(2.0 - a2) - 1.0 + a1 * (a2 - 2.0)) / (a1 * a1 * (a2 - 2.0) * (a2 - 1.0))
+}
+
+/// Section (b): every normalization route against MATH.md's 15-digit values.
+pub fn normalization(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
+    let mut rows = Vec::new();
+    let mut push = |case: String, method: &str, setting: f64, f: &dyn Fn() -> f64, want: f64| {
+        let seconds = time(clock, settings, &mut || {
+            std::hint::black_box(f());
+        });
+        let error = ((f() - want) / want).abs();
+        let error = if error.is_finite() { error } else { 1.0 };
+        rows.push(Row {
+            section: "normalization",
+            case,
+            method: method.into(),
+            setting,
+            samples: 1,
+            seconds,
+            error,
+        });
+    };
+    for (alpha, want) in TS_REFERENCE {
+        let case = format!("{{\"ndf\":\"torrance_sparrow\",\"alpha_ts\":{alpha:?}}}");
+        push(
+            case.clone(),
+            "dawson_faddeeva",
+            0.0,
+            &|| TorranceSparrow::new(alpha).map_or(f64::NAN, |d| d.normalization()),
+            want,
+        );
+        for tol in QUAD_TOLERANCES {
+            push(
+                case.clone(),
+                "quadrature",
+                tol,
+                &|| quadrature(|t| (-(t / alpha).powi(2)).exp(), tol),
+                want,
+            );
+        }
+    }
+    for (a1, a2, want) in ABC_REFERENCE {
+        let case = format!("{{\"ndf\":\"abc\",\"alpha_abc1\":{a1:?},\"alpha_abc2\":{a2:?}}}");
+        let stable = if a1.ln_1p() <= 1.0 {
+            "stable_series"
+        } else {
+            "stable_exprel"
+        };
+        push(
+            case.clone(),
+            stable,
+            0.0,
+            &|| Abc::new(a1, a2).map_or(f64::NAN, |d| d.normalization()),
+            want,
+        );
+        push(
+            case.clone(),
+            "closed_form",
+            0.0,
+            &|| abc_closed_form(a1, a2),
+            want,
+        );
+        for tol in QUAD_TOLERANCES {
+            push(
+                case.clone(),
+                "quadrature",
+                tol,
+                &|| {
+                    quadrature(
+                        |t| (-a2 * (a1 * 2.0 * (0.5 * t).sin().powi(2)).ln_1p()).exp(),
+                        tol,
+                    )
+                },
+                want,
+            );
+        }
+    }
+    rows
+}
+
+/// The throughput cases: one curve per family at the notebook's parameters.
+pub fn throughput_cases() -> Vec<Ndf> {
+    [
+        (Family::Phong, vec![32.0]),
+        (Family::Beckmann, vec![0.3]),
+        (Family::TorranceSparrow, vec![0.3097]),
+        (Family::TrowbridgeReitz, vec![0.3]),
+        (Family::Abc, vec![23.5, 1.75]),
+        (Family::Sgd, vec![0.5, 1.5]),
+    ]
+    .into_iter()
+    .map(|(family, params)| family.build(&params).expect("in the domain"))
+    .collect()
+}
+
+/// Section (c): D values written per second on a uniform grid over [0, π/2]: `eval` in a loop and
+/// the batch path on one thread, the batch path on all rayon threads.
+pub fn throughput(clock: &dyn Clock, settings: &Settings, cases: &[Ndf]) -> Vec<Row> {
+    let n = settings.throughput_points.max(2);
+    let dtheta = FRAC_PI_2 / (n - 1) as f64;
+    let threads = rayon::current_num_threads();
+    let mut out = vec![0.0; n];
+    let mut rows = Vec::new();
+    for ndf in cases {
+        let reference: Vec<f64> = (0..n).map(|i| ndf.eval(i as f64 * dtheta)).collect();
+        let name = ndf.family().name().to_string();
+        let mut row =
+            |method: &str, setting: usize, out: &mut Vec<f64>, run: &dyn Fn(&mut [f64])| {
+                let seconds = time(clock, settings, &mut || run(out));
+                let error = out
+                    .iter()
+                    .zip(&reference)
+                    .map(|(a, b)| relative(*a, *b))
+                    .fold(0.0, f64::max);
+                rows.push(Row {
+                    section: "throughput",
+                    case: name.clone(),
+                    method: method.into(),
+                    setting: setting as f64,
+                    samples: n,
+                    seconds,
+                    error,
+                });
+            };
+        row("eval_1_thread", 1, &mut out, &|out| {
+            for (i, o) in out.iter_mut().enumerate() {
+                *o = ndf.eval(i as f64 * dtheta);
+            }
+        });
+        row("batch_1_thread", 1, &mut out, &|out| {
+            ndf.eval_grid(0.0, dtheta, out)
+        });
+        row("batch_all_threads", threads, &mut out, &|out| {
+            eval_grid_parallel(ndf, 0.0, dtheta, out)
+        });
+    }
+    rows
+}
+
+/// |a − b| / max(|a|, |b|), absolute below 1e-280 (MATH.md's convention), 0 when both are 0.
+fn relative(a: f64, b: f64) -> f64 {
+    let scale = a.abs().max(b.abs());
+    if scale == 0.0 {
+        0.0
+    } else {
+        (a - b).abs() / scale.max(TINY)
+    }
+}
+
+/// Below this magnitude errors are absolute (MATH.md).
+const TINY: f64 = 1e-280;
+
+/// Every section in order.
+pub fn run(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
+    let mut rows = drawing(clock, settings, &drawing_cases());
+    rows.extend(normalization(clock, settings));
+    rows.extend(throughput(clock, settings, &throughput_cases()));
+    rows
+}
+
+/// The rows as CSV: `section,case,method,setting,samples,seconds,error`, numbers in shortest
+/// round-trip form (CONTRACTS.md), the case CSV-quoted.
+pub fn csv(rows: &[Row]) -> String {
+    let mut text = String::from("section,case,method,setting,samples,seconds,error\n");
+    for r in rows {
+        let case = format!("\"{}\"", r.case.replace('"', "\"\""));
+        text.push_str(&format!(
+            "{},{case},{},{:?},{},{:?},{:?}\n",
+            r.section, r.method, r.setting, r.samples, r.seconds, r.error
+        ));
+    }
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::cell::Cell;
+
+    /// A clock that advances one millisecond per call of the timed function.
+    struct CallClock<'a>(&'a Cell<u64>);
+
+    impl Clock for CallClock<'_> {
+        fn now(&self) -> Duration {
+            Duration::from_millis(self.0.get())
+        }
+    }
+
+    #[test]
+    fn time_doubles_the_calls_until_a_batch_is_long_enough() {
+        let calls = Cell::new(0);
+        let settings = Settings {
+            min_batch: Duration::from_millis(8),
+            batches: 3,
+            throughput_points: 2,
+        };
+        let seconds = time(&CallClock(&calls), &settings, &mut || {
+            calls.set(calls.get() + 1)
+        });
+        assert_eq!(seconds, 1e-3);
+        // Each batch runs 1 + 2 + 4 + 8 calls.
+        assert_eq!(calls.get(), 3 * 15);
+    }
+
+    #[test]
+    fn throughput_rows_are_deterministic_under_a_fake_clock() {
+        let ticks = Cell::new(0);
+        let clock = CallClock(&ticks);
+        let settings = Settings {
+            min_batch: Duration::ZERO,
+            batches: 1,
+            throughput_points: 1000,
+        };
+        let rows = throughput(&clock, &settings, &throughput_cases());
+        assert_eq!(rows.len(), 3 * Family::ALL.len());
+        for row in &rows {
+            assert_eq!(row.seconds, 0.0, "{row:?}");
+            // Near grazing a 1-ulp move of θ changes Phong 32 by 32 tan θ ulp(θ) ≈ 5e-12 relative.
+            assert!(row.error <= 1e-10, "{row:?}");
+        }
+        let text = csv(&rows);
+        assert!(text.starts_with("section,case,method,setting,samples,seconds,error\nthroughput,\"phong\",eval_1_thread,1.0,1000,0.0,0.0\n"), "{text}");
+    }
+
+    #[test]
+    fn closed_form_fails_where_the_stable_form_does_not() {
+        assert!(abc_closed_form(1.0, 2.0).is_nan());
+        assert!(Abc::new(1.0, 2.0).unwrap().normalization().is_finite());
+    }
+}

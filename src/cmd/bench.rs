@@ -1,0 +1,206 @@
+//! `ndfplot bench`: measures run time against error (see [`crate::bench`]) and writes
+//! `<DIR>/bench.csv` and the log–log figure `<DIR>/bench.svg`.
+//!
+//! Owns the figure of the measurements; the measuring is the library's, the writing `output::write`'s.
+//! Its outputs are timings: never part of the catalogue or of `render --check`.
+
+use crate::bench::{self, Row};
+use crate::error::{Error, Result};
+use crate::ndf::Family;
+use crate::output::{plot, write};
+use crate::series::{
+    Canvas, Dash, Figure, Mark, Panel, PanelKind, Rgb, Series, Style, XUnit, YScale,
+};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// Figure size in CSS pixels: three panels side by side.
+const CANVAS: Canvas = Canvas {
+    width_px: 1500,
+    height_px: 560,
+    png_scale: 1.0,
+    font_px: 13.0,
+};
+/// Floor of the plotted errors: exact results (error 0) would vanish from a log axis; the
+/// references resolve 1e-15 at best.
+const ERROR_FLOOR: f64 = 1e-17;
+/// Colours of the normalization routes and throughput methods (Solarized accents, as the catalogue).
+const PALETTE: [u32; 6] = [0x268BD2, 0xDC322F, 0x859900, 0xB58900, 0x6C71C4, 0x2AA198];
+
+/// Runs every measurement with the system clock and writes the CSV and the figure into `dir`.
+pub fn run(dir: &Path) -> Result<Vec<PathBuf>> {
+    let rows = bench::run(&bench::SystemClock::new(), &bench::Settings::DEFAULT);
+    write_outputs(dir, &rows)
+}
+
+/// Writes `bench.csv` and `bench.svg` of `rows` into `dir`.
+pub fn write_outputs(dir: &Path, rows: &[Row]) -> Result<Vec<PathBuf>> {
+    let svg = plot::svg(&figure(rows))
+        .map_err(|e| Error::Numerics(format!("bench: drawing failed: {e}")))?;
+    write::ensure_dir(dir)?;
+    let mut written = Vec::new();
+    for (name, bytes) in [
+        ("bench.csv", bench::csv(rows).into_bytes()),
+        ("bench.svg", svg),
+    ] {
+        write::remove_stale(dir, name)?;
+        write::write_atomic(dir, name, &bytes)?;
+        written.push(dir.join(name));
+    }
+    Ok(written)
+}
+
+fn style(colour: u32, dash: Dash, mark: Mark) -> Style {
+    Style {
+        colour: Rgb::from_hex(colour),
+        width: 1.0,
+        dash,
+        mark,
+    }
+}
+
+fn series(label: String, style: Style, points: Vec<(f64, f64)>) -> Series {
+    Series {
+        label,
+        curve: String::new(),
+        style,
+        points: Arc::new(points),
+        z: None,
+        grid: None,
+    }
+}
+
+fn panel(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Panel {
+    Panel {
+        title: title.into(),
+        x_label: x_label.into(),
+        y_label: y_label.into(),
+        x_unit: XUnit::Plain,
+        kind: PanelKind::Cartesian,
+        y_scale: YScale::Log,
+        x_range: None,
+        y_range: None,
+        legend: true,
+        series,
+    }
+}
+
+/// A short label of a case: `phong 2048`, `trowbridge_reitz 0.01`.
+fn short(case: &str) -> String {
+    let words: Vec<&str> = case
+        .split(|c: char| "{}\":,".contains(c))
+        .filter(|w| !w.is_empty())
+        .collect();
+    let family = words.get(1).copied().unwrap_or(case);
+    let values: Vec<&str> = words.iter().skip(3).step_by(2).copied().collect();
+    format!("{family} {}", values.join(" "))
+}
+
+/// The figure: (a) drawn error in px against time per curve, uniform dashed and adaptive solid;
+/// (b) relative error of each normalization route against time; (c) samples per second per family
+/// and method. Times on log₁₀ axes.
+pub fn figure(rows: &[Row]) -> Figure {
+    let log_time = |r: &Row| r.seconds.max(f64::MIN_POSITIVE).log10();
+    let mut drawing = Vec::new();
+    let mut cases: Vec<&str> = rows
+        .iter()
+        .filter(|r| r.section == "drawing")
+        .map(|r| r.case.as_str())
+        .collect();
+    cases.dedup();
+    for case in &cases {
+        let colour = Family::ALL
+            .into_iter()
+            .find(|f| case.contains(&format!("\"{}\"", f.name())))
+            .map_or(0x000000, Family::colour);
+        for (method, dash) in [("uniform", Dash::Dashed), ("adaptive", Dash::Solid)] {
+            let points: Vec<(f64, f64)> = rows
+                .iter()
+                .filter(|r| r.section == "drawing" && r.case == *case && r.method == method)
+                .map(|r| (log_time(r), r.error.max(ERROR_FLOOR)))
+                .collect();
+            drawing.push(series(
+                format!("{} {method}", short(case)),
+                style(colour, dash, Mark::LinePoints),
+                points,
+            ));
+        }
+    }
+    let mut routes: Vec<&str> = rows
+        .iter()
+        .filter(|r| r.section == "normalization")
+        .map(|r| r.method.as_str())
+        .collect();
+    routes.sort();
+    routes.dedup();
+    let normalization = routes
+        .iter()
+        .enumerate()
+        .map(|(i, route)| {
+            let points = rows
+                .iter()
+                .filter(|r| r.section == "normalization" && r.method == *route)
+                .map(|r| (log_time(r), r.error.max(ERROR_FLOOR)))
+                .collect();
+            series(
+                route.to_string(),
+                style(PALETTE[i % PALETTE.len()], Dash::Solid, Mark::Points),
+                points,
+            )
+        })
+        .collect();
+    let methods = ["eval_1_thread", "batch_1_thread", "batch_all_threads"];
+    let throughput = methods
+        .iter()
+        .enumerate()
+        .map(|(i, method)| {
+            let points = Family::ALL
+                .iter()
+                .enumerate()
+                .filter_map(|(k, family)| {
+                    let r = rows.iter().find(|r| {
+                        r.section == "throughput" && r.method == *method && r.case == family.name()
+                    })?;
+                    Some(((k + 1) as f64, r.samples as f64 / r.seconds / 1e6))
+                })
+                .collect();
+            series(
+                method.to_string(),
+                style(PALETTE[i], Dash::Solid, Mark::LinePoints),
+                points,
+            )
+        })
+        .collect();
+    let families: Vec<String> = Family::ALL
+        .iter()
+        .enumerate()
+        .map(|(k, f)| format!("{} {}", k + 1, f.name()))
+        .collect();
+    Figure {
+        id: "bench".into(),
+        title: "ndfplot bench: time against error".into(),
+        rows: 1,
+        cols: 3,
+        canvas: CANVAS,
+        panels: vec![
+            panel(
+                "(a) drawing a curve",
+                "log₁₀ time per curve (s)",
+                "max deviation (px)",
+                drawing,
+            ),
+            panel(
+                "(b) normalization routes",
+                "log₁₀ time per N (s)",
+                "relative error",
+                normalization,
+            ),
+            panel(
+                "(c) throughput, uniform grid",
+                &families.join(", "),
+                "M samples/s",
+                throughput,
+            ),
+        ],
+    }
+}
