@@ -96,6 +96,15 @@ fn short(case: &str) -> String {
     format!("{family} {}", values.join(" "))
 }
 
+/// A family's name short enough for an axis label of six.
+fn short_family(family: Family) -> &'static str {
+    match family {
+        Family::TorranceSparrow => "TS",
+        Family::TrowbridgeReitz => "TR",
+        other => other.name(),
+    }
+}
+
 /// The figure: (a) drawn error in px against time per curve, uniform dashed and adaptive solid;
 /// (b) relative error of each normalization route against time; (c) samples per second per family
 /// and method. Times on log₁₀ axes.
@@ -174,7 +183,7 @@ pub fn figure(rows: &[Row]) -> Figure {
     let families: Vec<String> = Family::ALL
         .iter()
         .enumerate()
-        .map(|(k, f)| format!("{} {}", k + 1, f.name()))
+        .map(|(k, f)| format!("{} {}", k + 1, short_family(*f)))
         .collect();
     Figure {
         id: "bench".into(),
