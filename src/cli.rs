@@ -55,8 +55,8 @@ pub struct RenderArgs {
     /// Output folder (created if missing); files are <DIR>/<id>.<ext>.
     #[arg(short, long, value_name = "DIR", default_value = "plots")]
     pub out: PathBuf,
-    /// Formats to write, comma-separated.
-    #[arg(long, value_name = "LIST", default_value = "svg,png,csv")]
+    /// Formats to write, comma-separated; html only for scenes with sliders.
+    #[arg(long, value_name = "LIST", default_value = "svg,png,csv,html")]
     pub format: String,
     /// Figure width in CSS pixels for every scene (the height follows unless --height is given).
     #[arg(long, value_name = "PX", value_parser = float_in(16.0, 20_000.0))]

@@ -1,4 +1,5 @@
-//! `ndfplot render`: scene specs (or the built-in catalogue) to SVG, PNG and CSV files.
+//! `ndfplot render`: scene specs (or the built-in catalogue) to SVG, PNG and CSV files, and an
+//! HTML page per interactive scene.
 //!
 //! Every spec is read and validated before anything is evaluated or written, so a bad spec
 //! writes no file at all; then the plan is evaluated in parallel and each output is written
@@ -7,7 +8,7 @@
 use crate::catalogue::CATALOGUE;
 use crate::error::{Error, Result};
 use crate::input::{parse_json, read_file};
-use crate::output::{csv::figure_csv, plot, write};
+use crate::output::{csv::figure_csv, html, plot, write};
 use crate::plan::{Outputs, plan};
 use crate::problem::{Problem, Problems};
 use crate::sample::{Evaluated, evaluate_all};
@@ -25,11 +26,13 @@ pub enum Format {
     Png,
     /// The sampled points, long format (CONTRACTS.md).
     Csv,
+    /// A self-contained interactive page, for scenes with sliders only.
+    Html,
 }
 
 impl Format {
     /// Every format, in output order.
-    pub const ALL: [Format; 3] = [Format::Svg, Format::Png, Format::Csv];
+    pub const ALL: [Format; 4] = [Format::Svg, Format::Png, Format::Csv, Format::Html];
 
     /// File extension.
     pub fn extension(self) -> &'static str {
@@ -37,6 +40,7 @@ impl Format {
             Format::Svg => "svg",
             Format::Png => "png",
             Format::Csv => "csv",
+            Format::Html => "html",
         }
     }
 
@@ -45,7 +49,7 @@ impl Format {
         let mut formats = Vec::new();
         for word in text.split(',').map(str::trim) {
             let format = Format::ALL.into_iter().find(|f| f.extension() == word).ok_or_else(|| {
-                Error::Usage(format!("--format: unknown format (got \"{word}\", expected a comma list of svg, png, csv)"))
+                Error::Usage(format!("--format: unknown format (got \"{word}\", expected a comma list of svg, png, csv, html)"))
             })?;
             if !formats.contains(&format) {
                 formats.push(format);
@@ -205,7 +209,17 @@ pub fn encode(figure: &Figure, format: Format) -> Result<Vec<u8>> {
         Format::Svg => plot::svg(figure).map_err(plot_error),
         Format::Png => plot::png(figure).map_err(plot_error),
         Format::Csv => Ok(figure_csv(figure)),
+        Format::Html => unreachable!("pages are built from scenes, by `pages`"),
     }
+}
+
+/// The interactive page of every scene that has sliders.
+fn pages(scenes: &[Scene]) -> Result<Vec<(String, Vec<u8>)>> {
+    scenes
+        .iter()
+        .filter_map(|s| s.interactive.as_ref().map(|i| (s, i)))
+        .map(|(scene, interactive)| Ok((format!("{}.html", scene.id), html::page(scene, interactive).map_err(Error::Numerics)?)))
+        .collect()
 }
 
 /// Renders the scenes of `options` into its output folder; returns the files written.
@@ -245,7 +259,7 @@ pub fn run_with_stats(options: &RenderOptions) -> Result<(Vec<PathBuf>, RenderSt
     for (kind, feeds) in [(true, &plan.drawn), (false, &plan.table)] {
         let Some(feeds) = feeds else { continue };
         let stage = std::time::Instant::now();
-        let formats: Vec<Format> = options.formats.iter().copied().filter(|&f| (f != Format::Csv) == kind).collect();
+        let formats: Vec<Format> = options.formats.iter().copied().filter(|&f| f != Format::Html && (f != Format::Csv) == kind).collect();
         let figures: Vec<Figure> = scenes.iter().zip(feeds).map(|(s, f)| figure(s, f, &evaluated)).collect();
         let encoded: Vec<(String, Vec<u8>)> = figures
             .par_iter()
@@ -259,6 +273,9 @@ pub fn run_with_stats(options: &RenderOptions) -> Result<(Vec<PathBuf>, RenderSt
         *(if kind { &mut stats.drawing } else { &mut stats.encoding }) += stage.elapsed();
     }
     let stage = std::time::Instant::now();
+    if has(Format::Html) {
+        outputs.extend(pages(&scenes)?);
+    }
     outputs.sort_by(|a, b| a.0.cmp(&b.0));
     let written = write_outputs(&options.out, &outputs)?;
     stats.encoding += stage.elapsed();

@@ -1,5 +1,6 @@
 //! Exporters: turn evaluated figures into bytes, and the one place that writes files.
 
 pub mod csv;
+pub mod html;
 pub mod plot;
 pub mod write;

@@ -6,6 +6,7 @@
 //! curve format of `eval`; any parameter may be swept (see [`sweep`]).
 
 pub mod data;
+pub mod interactive;
 pub mod reader;
 pub mod sweep;
 
@@ -33,7 +34,7 @@ pub const MAX_PNG_PIXELS: f64 = 1e8;
 
 /// Keys a scene may have.
 const SCENE_KEYS: &[&str] =
-    &["$schema", "id", "title", "layout", "aspect_ratio", "width", "height", "font_px", "png_scale", "sampling", "panels"];
+    &["$schema", "id", "title", "layout", "aspect_ratio", "width", "height", "font_px", "png_scale", "sampling", "panels", "interactive"];
 const PANEL_KEYS: &[&str] = &["title", "kind", "x", "y", "z", "view", "legend", "curves"];
 const X_KEYS: &[&str] = &["unit", "range", "label"];
 const Z_KEYS: &[&str] = &["range", "label"];
@@ -158,6 +159,8 @@ pub struct Scene {
     pub sampling: Sampling,
     /// Panels, row-major.
     pub panels: Vec<ScenePanel>,
+    /// Sliders and the curves at every position, for scenes with an `interactive` key.
+    pub interactive: Option<interactive::Interactive>,
 }
 
 /// Whether `id` is a valid scene id: `^[a-z0-9][a-z0-9_-]{0,63}$` (CONTRACTS.md). Such an id
@@ -182,7 +185,11 @@ pub fn parse(node: &Node, base_dir: Option<&std::path::Path>) -> Result<Scene, V
 }
 
 fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
-    let object = reader.object(node, "", SCENE_KEYS)?;
+    let sliders = reader.object(node, "", SCENE_KEYS).and_then(|object| interactive::read_sliders(reader, &object));
+    // The figure at the sliders' start positions; `interactive::read` resolves the other positions.
+    let at_start = interactive::at_start(reader, node, sliders.as_deref());
+    let Value::Object(members) = &at_start.value else { return None };
+    let object = reader::Object::from_members(members, "");
     let id = match reader.string(&object, "id") {
         Some(id) if valid_id(&id) => Some(id),
         Some(id) => {
@@ -201,7 +208,8 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
     let panels = read_panels(reader, &object);
     let (rows, cols) = read_layout(reader, &object, panels.as_ref().map_or(1, Vec::len));
     let canvas = read_canvas(reader, &object, rows, cols, !title.is_empty());
-    Some(Scene { id: id?, title, rows, cols, canvas: canvas?, sampling: sampling?, panels: panels? })
+    let interactive = interactive::read(reader, node, sliders, panels.as_deref());
+    Some(Scene { id: id?, title, rows, cols, canvas: canvas?, sampling: sampling?, panels: panels?, interactive })
 }
 
 fn read_sampling(reader: &mut Reader, object: &reader::Object) -> Option<Sampling> {

@@ -103,7 +103,7 @@ fn numbers(reader: &mut Reader, node: &Node, path: &str) -> Option<(Vec<f64>, bo
                 reader.report(path, format!("expected a number, a list, {{\"range\": [start, stop, step]}} or {{\"linspace\": [start, stop, count]}} (got {node})"));
                 return None;
             };
-            range(reader, range_node, &join_key(path, "range")).map(|v| (v, true))
+            range(reader, range_node, &join_key(path, "range"), MAX_CURVES_PER_SCENE).map(|v| (v, true))
         }
         other => {
             reader.report(path, format!("expected a number, a list or {{\"range\": [start, stop, step]}} (got {} {node})", other.kind()));
@@ -112,7 +112,9 @@ fn numbers(reader: &mut Reader, node: &Node, path: &str) -> Option<(Vec<f64>, bo
     }
 }
 
-fn range(reader: &mut Reader, node: &Node, path: &str) -> Option<Vec<f64>> {
+/// Reads `[start, stop, step]` at `path` as Mathematica's exact `Range` (CONTRACTS.md), at most
+/// `cap` values.
+pub(super) fn range(reader: &mut Reader, node: &Node, path: &str, cap: usize) -> Option<Vec<f64>> {
     let Value::Array(items) = &node.value else {
         reader.report(path, format!("expected [start, stop, step] (got {node})"));
         return None;
@@ -133,7 +135,7 @@ fn range(reader: &mut Reader, node: &Node, path: &str) -> Option<Vec<f64>> {
         return None;
     }
     let decimals = start.decimals().zip(step.decimals()).map(|(a, s)| a.max(s));
-    match grid::range(start.value, stop.value, step.value, decimals, MAX_CURVES_PER_SCENE) {
+    match grid::range(start.value, stop.value, step.value, decimals, cap) {
         Ok(values) => Some(values),
         Err(error) => {
             reader.report(path, format!("{error} (got {node})"));
