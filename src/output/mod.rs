@@ -4,3 +4,4 @@ pub mod csv;
 pub mod html;
 pub mod plot;
 pub mod write;
+pub mod plot3d;
