@@ -578,8 +578,8 @@ where
 
     // Back panes and their grid lines.
     let far = view.far_sides();
-    for axis in 0..3 {
-        let corners = plot3d::face(axis, far[axis]);
+    for (axis, &high) in far.iter().enumerate() {
+        let corners = plot3d::face(axis, high);
         area.draw(&Polygon::new(ring(&corners), PANE.filled()))
             .map_err(draw_err)?;
         for other in [(axis + 1) % 3, (axis + 2) % 3] {
