@@ -27,9 +27,35 @@ pub enum Command {
     Fit(FitArgs),
     /// Audit the normalization of every curve in scenes (or the built-in catalogue).
     Check(CheckArgs),
+    /// Print the JSON Schema of the scene spec and curve formats.
+    #[command(after_long_help = "The root validates a scene file; a curve file (eval --curve @FILE) validates against\n\
+        #/$defs/curve. The schema is generated from the validator's own key tables.\n\n\
+        Examples:\n  \
+        ndfplot schema > schema/ndfplot.schema.json\n  \
+        Reference it from a spec for editor completion: {\"$schema\": \"../schema/ndfplot.schema.json\", \"id\": …}")]
+    Schema,
+    /// Print a shell completion script.
+    Completions(CompletionsArgs),
+    /// Print the manual page (roff).
+    #[command(after_long_help = "Examples:\n  \
+        ndfplot man > ndfplot.1 && man ./ndfplot.1\n  \
+        ndfplot man | gzip > /usr/local/share/man/man1/ndfplot.1.gz")]
+    Man,
     /// Measure run time against error (drawing, normalization routes, throughput); writes
     /// bench.csv and bench.svg.
     Bench(BenchArgs),
+}
+
+/// Arguments of `ndfplot completions`.
+#[derive(Debug, Args)]
+#[command(after_long_help = "Examples:\n  \
+    ndfplot completions bash > ~/.local/share/bash-completion/completions/ndfplot\n  \
+    ndfplot completions zsh > ~/.zfunc/_ndfplot\n  \
+    ndfplot completions fish > ~/.config/fish/completions/ndfplot.fish")]
+pub struct CompletionsArgs {
+    /// The shell to complete for.
+    #[arg(value_name = "SHELL")]
+    pub shell: clap_complete::Shell,
 }
 
 /// Arguments of `ndfplot coeffs`.
@@ -47,6 +73,14 @@ pub struct CoeffsArgs {
 
 /// Arguments of `ndfplot render`.
 #[derive(Debug, Args)]
+#[command(after_long_help = "Every spec is validated before anything is evaluated or written; files are written as\n\
+    hidden temporaries and renamed into place. With --check nothing is written: the CSVs are\n\
+    re-rendered and compared with DIR's (exit 1 on any difference, a missing or an extra CSV).\n\n\
+    Examples:\n  \
+    ndfplot render\n  \
+    ndfplot render configs/abc-vs-tr.json my-scenes/ -o out --format svg,csv\n  \
+    ndfplot render --check plots\n  \
+    ndfplot render configs/ --check plots --tolerance 1e-9")]
 pub struct RenderArgs {
     /// Scene spec files, or folders whose *.json are rendered in name order. None: the built-in
     /// catalogue of notebook figures.
@@ -70,6 +104,15 @@ pub struct RenderArgs {
     /// Base font size in CSS pixels (default 14 unless the scene says otherwise).
     #[arg(long, value_name = "PX", value_parser = float_in(4.0, 200.0))]
     pub font_px: Option<f64>,
+    /// Write nothing: re-render the CSVs and compare them with those in DIR (exit 1 on a difference).
+    #[arg(long, value_name = "DIR")]
+    pub check: Option<PathBuf>,
+    /// Largest accepted relative difference of a CSV value under --check.
+    #[arg(long, value_name = "X", requires = "check", default_value_t = crate::check_outputs::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
+    pub tolerance: f64,
+    /// No progress bar on stderr.
+    #[arg(short, long)]
+    pub quiet: bool,
 }
 
 /// A clap value parser for a finite number within [low, high].

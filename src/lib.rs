@@ -29,3 +29,6 @@ pub mod stdout;
 pub mod transform;
 pub mod fit;
 pub mod metrics;
+pub mod check_outputs;
+pub mod progress;
+pub mod schema;

@@ -6,6 +6,8 @@ pub mod render;
 pub mod compare;
 pub mod fit;
 pub mod check;
+pub mod completions;
+pub mod schema;
 pub mod bench;
 
 use crate::cli::{CheckArgs, CoeffsArgs, Command, CompareArgs, EvalArgs, FitArgs, RenderArgs};
@@ -22,6 +24,9 @@ pub fn run(command: Command) -> Result<()> {
         Command::Compare(args) => run_compare(args),
         Command::Fit(args) => run_fit(args),
         Command::Check(args) => run_check(args),
+        Command::Schema => schema::run(),
+        Command::Completions(args) => completions::completions(args.shell),
+        Command::Man => completions::man(),
         Command::Bench(args) => bench::run(&args.out).map(|_| ()),
     }
 }
@@ -55,7 +60,10 @@ fn run_render(args: RenderArgs) -> Result<()> {
             font_px: args.font_px,
         },
     };
-    render::run(&options).map(|_| ())
+    match &args.check {
+        Some(dir) => render::check(&options, dir, args.tolerance, args.quiet),
+        None => render::run_with_progress(&options, args.quiet).map(|_| ()),
+    }
 }
 
 /// Loads exactly one curve from a curve argument (inline JSON, @FILE or - for one line on stdin).

@@ -6,11 +6,13 @@
 //! atomically.
 
 use crate::catalogue::CATALOGUE;
+use crate::check_outputs;
 use crate::error::{Error, Result};
 use crate::input::{parse_json, read_file};
 use crate::output::{csv::figure_csv, html, plot, write};
 use crate::plan::{Outputs, plan};
 use crate::problem::{Problem, Problems};
+use crate::progress::Progress;
 use crate::sample::{Evaluated, evaluate_all};
 use crate::scene::{self, Scene};
 use crate::series::{Figure, Panel, Series, XUnit};
@@ -244,12 +246,50 @@ pub struct RenderStats {
 
 /// [`run`], also returning where the time went.
 pub fn run_with_stats(options: &RenderOptions) -> Result<(Vec<PathBuf>, RenderStats)> {
+    run_with_progress(options, true)
+}
+
+/// [`run_with_stats`] with a progress bar on stderr unless `quiet` (see [`Progress`]).
+pub fn run_with_progress(options: &RenderOptions, quiet: bool) -> Result<(Vec<PathBuf>, RenderStats)> {
+    let (outputs, mut stats) = encode_outputs(options, false, quiet)?;
+    let stage = std::time::Instant::now();
+    let written = write_outputs(&options.out, &outputs)?;
+    stats.encoding += stage.elapsed();
+    Ok((written, stats))
+}
+
+/// `render --check DIR`: re-renders the CSVs of `options` (writing nothing) and compares them with
+/// DIR's at a relative `tolerance`; prints every difference, and fails (exit 1) on any. The tables
+/// are planned as a run with `options.formats` plans them (adaptive tables depend on whether PNG
+/// is drawn), but only CSV is encoded.
+pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -> Result<()> {
+    let mut options = options.clone();
+    if !options.formats.contains(&Format::Csv) {
+        options.formats.push(Format::Csv);
+    }
+    let (outputs, _) = encode_outputs(&options, true, quiet)?;
+    let (report, ok) = check_outputs::compare(dir, &outputs, tolerance)?;
+    crate::stdout::print(&report)?;
+    if ok { Ok(()) } else { Err(Error::CheckFailed(format!("error: render --check: the CSVs differ from {}", dir.display()))) }
+}
+
+/// Output files as (file name, bytes).
+type Files = Vec<(String, Vec<u8>)>;
+
+/// Every output of `options` as (file name, bytes), sorted by name, without writing anything; only
+/// the CSVs when `tables_only`.
+fn encode_outputs(options: &RenderOptions, tables_only: bool, quiet: bool) -> Result<(Files, RenderStats)> {
     let start = std::time::Instant::now();
     let scenes = load_scenes(&sources(&options.paths)?, options.canvas)?;
     let has = |f: Format| options.formats.contains(&f);
-    let outputs = Outputs { drawn: has(Format::Svg) || has(Format::Png), table: has(Format::Csv) };
+    let outputs = Outputs { drawn: !tables_only && (has(Format::Svg) || has(Format::Png)), table: has(Format::Csv) };
     let plan = plan(&scenes, outputs, has(Format::Png));
+    let encoded_formats = if tables_only { 1 } else { options.formats.iter().filter(|&&f| f != Format::Html).count() };
+    let progress = Progress::new((plan.jobs.len() + scenes.len() * encoded_formats) as u64, quiet);
+    progress.stage("evaluating");
     let evaluated = evaluate_all(&plan)?;
+    progress.advance(plan.jobs.len() as u64);
+    progress.stage("encoding");
     let mut stats = RenderStats {
         evaluation: start.elapsed(),
         evaluations: evaluated.iter().map(|e| e.evaluations).sum(),
@@ -264,7 +304,11 @@ pub fn run_with_stats(options: &RenderOptions) -> Result<(Vec<PathBuf>, RenderSt
         let encoded: Vec<(String, Vec<u8>)> = figures
             .par_iter()
             .flat_map_iter(|fig| formats.iter().map(move |&format| (fig, format)))
-            .map(|(fig, format)| Ok((format!("{}.{}", fig.id, format.extension()), encode(fig, format)?)))
+            .map(|(fig, format)| {
+                let encoded = (format!("{}.{}", fig.id, format.extension()), encode(fig, format)?);
+                progress.advance(1);
+                Ok(encoded)
+            })
             .collect::<Result<_>>()?;
         for &format in &formats {
             stats.produced[format as usize] += figures.len();
@@ -273,13 +317,12 @@ pub fn run_with_stats(options: &RenderOptions) -> Result<(Vec<PathBuf>, RenderSt
         *(if kind { &mut stats.drawing } else { &mut stats.encoding }) += stage.elapsed();
     }
     let stage = std::time::Instant::now();
-    if has(Format::Html) {
+    if has(Format::Html) && !tables_only {
         outputs.extend(pages(&scenes)?);
     }
     outputs.sort_by(|a, b| a.0.cmp(&b.0));
-    let written = write_outputs(&options.out, &outputs)?;
     stats.encoding += stage.elapsed();
-    Ok((written, stats))
+    Ok((outputs, stats))
 }
 
 fn write_outputs(dir: &Path, outputs: &[(String, Vec<u8>)]) -> Result<Vec<PathBuf>> {

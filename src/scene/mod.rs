@@ -23,6 +23,10 @@ use sweep::{MAX_CURVES_PER_SCENE, Sweep};
 
 /// Most samples one curve may have (CONTRACTS.md).
 pub const MAX_SAMPLES_PER_CURVE: usize = 10_000_000;
+/// Most points one scene's table may have, summed over its curves (curves × uniform samples) and
+/// data series: the default 1000 samples for the 10 000 curves of [`MAX_CURVES_PER_SCENE`], or one
+/// curve at [`MAX_SAMPLES_PER_CURVE`]; about 1 GB of CSV.
+pub const MAX_POINTS_PER_SCENE: usize = 10_000_000;
 /// Default number of uniform samples per curve over the visible θ range.
 pub const DEFAULT_SAMPLES: usize = 1000;
 /// Default panel height / width: 1/φ, Mathematica's default `AspectRatio`.
@@ -33,16 +37,36 @@ pub const MAX_SIDE_PX: f64 = 20_000.0;
 pub const MAX_PNG_PIXELS: f64 = 1e8;
 
 /// Keys a scene may have.
-const SCENE_KEYS: &[&str] =
+pub const SCENE_KEYS: &[&str] =
     &["$schema", "id", "title", "layout", "aspect_ratio", "width", "height", "font_px", "png_scale", "sampling", "panels", "interactive"];
-const PANEL_KEYS: &[&str] = &["title", "kind", "x", "y", "z", "view", "legend", "curves"];
-const X_KEYS: &[&str] = &["unit", "range", "label"];
-const Z_KEYS: &[&str] = &["range", "label"];
-const VIEW_KEYS: &[&str] = &["elevation", "azimuth"];
-const Y_KEYS: &[&str] = &["scale", "range", "label"];
+/// Keys of `layout`.
+pub const LAYOUT_KEYS: &[&str] = &["rows", "cols"];
+/// Keys of `sampling` (exactly one of them).
+pub const SAMPLING_KEYS: &[&str] = &["uniform", "adaptive"];
+/// Keys of `sampling.adaptive`.
+pub const ADAPTIVE_KEYS: &[&str] = &["tolerance_px"];
+/// Keys a panel may have.
+pub const PANEL_KEYS: &[&str] = &["title", "kind", "x", "y", "z", "view", "legend", "curves"];
+/// Panel kinds (`kind`).
+pub const PANEL_KINDS: &[&str] = &["cartesian", "surface"];
+/// Keys of a panel's `x` axis.
+pub const X_KEYS: &[&str] = &["unit", "range", "label"];
+/// Units of an `x` axis.
+pub const X_UNITS: &[&str] = &["radians", "degrees", "plain"];
+/// Keys of a surface panel's `z` axis.
+pub const Z_KEYS: &[&str] = &["range", "label"];
+/// Keys of a surface panel's `view`.
+pub const VIEW_KEYS: &[&str] = &["elevation", "azimuth"];
+/// Keys of a panel's `y` axis.
+pub const Y_KEYS: &[&str] = &["scale", "range", "label"];
+/// Scales of a `y` axis.
+pub const Y_SCALES: &[&str] = &["linear", "log"];
 /// Keys of a scene curve beyond its model parameters.
-const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "label", "mark"];
-const STYLE_WORDS: &[&str] = &["thick", "dashed", "dotted", "solid"];
+pub const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "label", "mark"];
+/// Words of a series' `style`.
+pub const STYLE_WORDS: &[&str] = &["thick", "dashed", "dotted", "solid"];
+/// Values of a series' `mark`.
+pub const MARKS: &[&str] = &["line", "points", "line_points", "bars"];
 
 /// How curves are sampled over θ.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -198,7 +222,7 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
         }
         None => {
             if object.get("id").is_none() {
-                reader.report("id", "missing scene id");
+                reader.report("id", "missing scene id (expected a string matching ^[a-z0-9][a-z0-9_-]{0,63}$)");
             }
             None
         }
@@ -208,8 +232,37 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
     let panels = read_panels(reader, &object);
     let (rows, cols) = read_layout(reader, &object, panels.as_ref().map_or(1, Vec::len));
     let canvas = read_canvas(reader, &object, rows, cols, !title.is_empty());
+    check_points(reader, sampling, panels.as_deref());
     let interactive = interactive::read(reader, node, sliders, panels.as_deref());
     Some(Scene { id: id?, title, rows, cols, canvas: canvas?, sampling: sampling?, panels: panels?, interactive })
+}
+
+/// Reports a scene whose table would exceed [`MAX_POINTS_PER_SCENE`]: curves × uniform samples
+/// plus the points of its data series.
+fn check_points(reader: &mut Reader, sampling: Option<Sampling>, panels: Option<&[ScenePanel]>) {
+    let (Some(sampling), Some(panels)) = (sampling, panels) else { return };
+    let per_curve = match sampling.for_table() {
+        Sampling::Uniform(n) => n,
+        _ => 0,
+    };
+    let curves: usize = panels.iter().map(|p| p.curves.len()).sum();
+    let data: usize = panels.iter().flat_map(|p| &p.data).map(|d| data_points(&d.dataset)).sum();
+    let total = curves.saturating_mul(per_curve).saturating_add(data);
+    if total > MAX_POINTS_PER_SCENE {
+        reader.report(
+            "sampling",
+            format!("too many points in one scene (got {curves} curves × {per_curve} samples + {data} data points = {total}, expected at most {MAX_POINTS_PER_SCENE})"),
+        );
+    }
+}
+
+/// How many points a dataset has.
+fn data_points(dataset: &Dataset) -> usize {
+    match dataset {
+        Dataset::Spectrum { count, .. } => *count,
+        Dataset::Gulbrandsen { r, g, .. } => r.len() * g.len(),
+        Dataset::Table { x, .. } | Dataset::Csv { x, .. } => x.len(),
+    }
 }
 
 fn read_sampling(reader: &mut Reader, object: &reader::Object) -> Option<Sampling> {
@@ -217,7 +270,7 @@ fn read_sampling(reader: &mut Reader, object: &reader::Object) -> Option<Samplin
         return Some(Sampling::Default);
     };
     let path = object.path_of("sampling");
-    let sampling = reader.object(node, &path, &["uniform", "adaptive"])?;
+    let sampling = reader.object(node, &path, SAMPLING_KEYS)?;
     match (sampling.get("uniform"), sampling.get("adaptive")) {
         (Some(_), None) => {
             let expected = format!("a whole number from 2 to {MAX_SAMPLES_PER_CURVE}");
@@ -226,7 +279,7 @@ fn read_sampling(reader: &mut Reader, object: &reader::Object) -> Option<Samplin
         }
         (None, Some(adaptive)) => {
             let adaptive_path = sampling.path_of("adaptive");
-            let adaptive = reader.object(adaptive, &adaptive_path, &["tolerance_px"])?;
+            let adaptive = reader.object(adaptive, &adaptive_path, ADAPTIVE_KEYS)?;
             if adaptive.get("tolerance_px").is_none() {
                 return Some(Sampling::Adaptive { tolerance_px: DEFAULT_TOLERANCE_PX });
             }
@@ -247,7 +300,7 @@ fn read_layout(reader: &mut Reader, object: &reader::Object, panel_count: usize)
         return row;
     };
     let path = object.path_of("layout");
-    let Some(layout) = reader.object(node, &path, &["rows", "cols"]) else {
+    let Some(layout) = reader.object(node, &path, LAYOUT_KEYS) else {
         return row;
     };
     let whole = |v: f64| v.fract() == 0.0 && (1.0..=100.0).contains(&v);
@@ -293,7 +346,7 @@ pub fn check_canvas(canvas: &Canvas) -> Result<(), String> {
 
 fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<ScenePanel>> {
     let Some(node) = object.get("panels") else {
-        reader.report("panels", "missing panels");
+        reader.report("panels", "missing panels (expected a list of panel objects)");
         return None;
     };
     let Value::Array(items) = &node.value else {
@@ -301,7 +354,7 @@ fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<Scene
         return None;
     };
     if items.is_empty() {
-        reader.report("panels", "a scene needs at least one panel");
+        reader.report("panels", "a scene needs at least one panel (got [], expected a list of panel objects)");
         return None;
     }
     let mut panels = Vec::with_capacity(items.len());
@@ -329,7 +382,7 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
     let y = panel.get("y").and_then(|n| reader.object(n, &y_path, Y_KEYS));
     let series = read_series(reader, &panel)?;
     let only_data = series.curves.is_empty() && !series.data.iter().any(|d| d.dataset.is_theta());
-    let x_unit = match x.and_then(|x| reader.choice(&x, "unit", &["radians", "degrees", "plain"])) {
+    let x_unit = match x.and_then(|x| reader.choice(&x, "unit", X_UNITS)) {
         Some("degrees") => XUnit::Degrees,
         Some("radians") => XUnit::Radians,
         Some(_) => XUnit::Plain,
@@ -346,7 +399,7 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
         XUnit::Radians => x.and_then(|x| reader.interval(&x, "range", |v| (0.0..=FRAC_PI_2).contains(&v), "radians within [0, π/2]")),
         XUnit::Plain => x.and_then(|x| reader.interval(&x, "range", f64::is_finite, "finite")),
     };
-    let y_scale = match y.and_then(|y| reader.choice(&y, "scale", &["linear", "log"])) {
+    let y_scale = match y.and_then(|y| reader.choice(&y, "scale", Y_SCALES)) {
         Some("log") => YScale::Log,
         _ => YScale::Linear,
     };
@@ -384,10 +437,10 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
 
 /// The panel kind: `"kind": "surface"` with its `z` axis and `view`, else 2D.
 fn read_kind(reader: &mut Reader, panel: &reader::Object, series: &PanelSeries) -> Option<PanelKind> {
-    let surface = reader.choice(panel, "kind", &["cartesian", "surface"]) == Some("surface");
+    let surface = reader.choice(panel, "kind", PANEL_KINDS) == Some("surface");
     for key in ["z", "view"] {
         if !surface && panel.get(key).is_some() {
-            reader.report(panel.path_of(key), "only surface panels have this key (add \"kind\": \"surface\")");
+            reader.report(panel.path_of(key), "only surface panels have this key (got it on a cartesian panel, expected \"kind\": \"surface\" with it)");
         }
     }
     if !surface {
@@ -425,7 +478,7 @@ struct PanelSeries {
 fn read_series(reader: &mut Reader, panel: &reader::Object) -> Option<PanelSeries> {
     let path = panel.path_of("curves");
     let Some(node) = panel.get("curves") else {
-        reader.report(path, "missing curves");
+        reader.report(path, "missing curves (expected a list of curve or data objects)");
         return None;
     };
     let Value::Array(items) = &node.value else {
@@ -433,7 +486,7 @@ fn read_series(reader: &mut Reader, panel: &reader::Object) -> Option<PanelSerie
         return None;
     };
     if items.is_empty() {
-        reader.report(path, "a panel needs at least one curve");
+        reader.report(path, "a panel needs at least one curve (got [], expected a list of curve or data objects)");
         return None;
     }
     let mut curves = Vec::new();
@@ -636,7 +689,7 @@ pub(crate) fn read_style(reader: &mut Reader, entry: &reader::Object, colour: Rg
             }
         }
     }
-    match reader.choice(entry, "mark", &["line", "points", "line_points", "bars"]) {
+    match reader.choice(entry, "mark", MARKS) {
         Some("points") => style.mark = Mark::Points,
         Some("line_points") => style.mark = Mark::LinePoints,
         Some("bars") => style.mark = Mark::Bars,

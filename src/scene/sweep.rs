@@ -16,6 +16,17 @@ use crate::problem::{join_index, join_key};
 /// Most curves one scene may expand to (CONTRACTS.md).
 pub const MAX_CURVES_PER_SCENE: usize = 10_000;
 
+/// Keys of a sweep object: `{"range": [start, stop, step]}` or `{"linspace": [start, stop, count]}`.
+pub const SWEEP_KEYS: &[&str] = &["range", "linspace"];
+/// The key of a Beckmann-to-Phong conversion (`"alpha_p": {"from_beckmann": …}`).
+pub const FROM_BECKMANN_KEY: &str = "from_beckmann";
+/// The one parameter that takes a Beckmann-to-Phong conversion: Phong's exponent.
+pub const FROM_BECKMANN_PARAM: &str = "alpha_p";
+/// The key of a fitted parameter (`{"fit": {…}}`).
+pub const FIT_KEY: &str = "fit";
+/// Keys of a fit object.
+pub const FIT_KEYS: &[&str] = &["target", "by"];
+
 /// One value a swept parameter takes, with its legend text.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepValue {
@@ -42,7 +53,7 @@ pub fn expand(reader: &mut Reader, name: &'static str, kind: ParamKind, node: &N
             values: vec![SweepValue { value: ParamValue::Flag(*b), label: format!("{name} = {b}") }],
             varies: false,
         }),
-        (Value::Object(_), ParamKind::Number) if name == "alpha_p" && has_key(node, "from_beckmann") => {
+        (Value::Object(_), ParamKind::Number) if name == FROM_BECKMANN_PARAM && has_key(node, FROM_BECKMANN_KEY) => {
             from_beckmann(reader, node, path)
         }
         (_, ParamKind::Number) => {
@@ -77,7 +88,7 @@ fn numbers(reader: &mut Reader, node: &Node, path: &str) -> Option<(Vec<f64>, bo
     match &node.value {
         Value::Number(n) => Some((vec![n.value], false)),
         Value::Array(items) if items.is_empty() => {
-            reader.report(path, "empty list: a sweep needs at least one value");
+            reader.report(path, "empty list: a sweep needs at least one value (got [], expected a number or a non-empty list)");
             None
         }
         Value::Array(items) if items.len() > MAX_CURVES_PER_SCENE => {
@@ -95,7 +106,7 @@ fn numbers(reader: &mut Reader, node: &Node, path: &str) -> Option<(Vec<f64>, bo
             (values.len() == items.len()).then_some((values, true))
         }
         Value::Object(_) => {
-            let object = reader.object(node, path, &["range", "linspace"])?;
+            let object = reader.object(node, path, SWEEP_KEYS)?;
             if let Some(linspace_node) = object.get("linspace") {
                 return linspace(reader, linspace_node, &join_key(path, "linspace")).map(|v| (v, true));
             }
@@ -173,9 +184,9 @@ pub fn phong_from_beckmann(alpha_b: f64) -> Option<f64> {
 }
 
 fn from_beckmann(reader: &mut Reader, node: &Node, path: &str) -> Option<Sweep> {
-    let object = reader.object(node, path, &["from_beckmann"])?;
-    let inner_path = join_key(path, "from_beckmann");
-    let (alphas, _) = numbers(reader, object.get("from_beckmann")?, &inner_path)?;
+    let object = reader.object(node, path, &[FROM_BECKMANN_KEY])?;
+    let inner_path = join_key(path, FROM_BECKMANN_KEY);
+    let (alphas, _) = numbers(reader, object.get(FROM_BECKMANN_KEY)?, &inner_path)?;
     let mut values = Vec::with_capacity(alphas.len());
     for alpha_b in alphas {
         match phong_from_beckmann(alpha_b) {
@@ -194,7 +205,7 @@ fn from_beckmann(reader: &mut Reader, node: &Node, path: &str) -> Option<Sweep> 
 
 /// Whether a parameter node asks for a fit (`{"fit": {…}}`).
 pub fn is_fit(node: &Node) -> bool {
-    has_key(node, "fit")
+    has_key(node, FIT_KEY)
 }
 
 /// Expands `{"fit": {"target": <curve or sweep>, "by": "peak"|"max"|"l2"}}` (default `peak`) for
@@ -215,9 +226,9 @@ pub fn fit(
         reader.report(path, format!("only NDF parameters can be fitted (got {} \"{}\", expected an ndf curve)", model.key(), model.name()));
         return None;
     };
-    let object = reader.object(node, path, &["fit"])?;
-    let fit_path = object.path_of("fit");
-    let spec = reader.object(object.get("fit")?, &fit_path, &["target", "by"])?;
+    let object = reader.object(node, path, &[FIT_KEY])?;
+    let fit_path = object.path_of(FIT_KEY);
+    let spec = reader.object(object.get(FIT_KEY)?, &fit_path, FIT_KEYS)?;
     let names: Vec<&'static str> = By::ALL.iter().map(|b| b.name()).collect();
     let by = match (spec.get("by"), reader.choice(&spec, "by", &names)) {
         (None, _) => By::Peak,
