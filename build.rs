@@ -16,12 +16,17 @@ fn main() {
         })
         .unwrap_or_default();
     names.sort();
-    let mut code = String::from("/// The built-in catalogue: (file name, spec text) per `configs/*.json`, sorted by name.\n");
+    let mut code = String::from(
+        "/// The built-in catalogue: (file name, spec text) per `configs/*.json`, sorted by name.\n",
+    );
     code.push_str("pub const CATALOGUE: &[(&str, &str)] = &[\n");
     for name in &names {
         let path = dir.join(name);
         println!("cargo:rerun-if-changed={}", path.display());
-        code.push_str(&format!("    ({name:?}, include_str!({:?})),\n", path.display().to_string()));
+        code.push_str(&format!(
+            "    ({name:?}, include_str!({:?})),\n",
+            path.display().to_string()
+        ));
     }
     code.push_str("];\n");
     let out = Path::new(&env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("catalogue.rs");

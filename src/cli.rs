@@ -28,11 +28,13 @@ pub enum Command {
     /// Audit the normalization of every curve in scenes (or the built-in catalogue).
     Check(CheckArgs),
     /// Print the JSON Schema of the scene spec and curve formats.
-    #[command(after_long_help = "The root validates a scene file; a curve file (eval --curve @FILE) validates against\n\
+    #[command(
+        after_long_help = "The root validates a scene file; a curve file (eval --curve @FILE) validates against\n\
         #/$defs/curve. The schema is generated from the validator's own key tables.\n\n\
         Examples:\n  \
         ndfplot schema > schema/ndfplot.schema.json\n  \
-        Reference it from a spec for editor completion: {\"$schema\": \"../schema/ndfplot.schema.json\", \"id\": …}")]
+        Reference it from a spec for editor completion: {\"$schema\": \"../schema/ndfplot.schema.json\", \"id\": …}"
+    )]
     Schema,
     /// Print a shell completion script.
     Completions(CompletionsArgs),
@@ -67,20 +69,27 @@ pub struct CompletionsArgs {
 pub struct CoeffsArgs {
     /// A material as a Fresnel curve: '{"fresnel":"belcour","eta":1.5,"kappa":0}' (or r/g, or an
     /// "exact" curve), @FILE, or - for JSON Lines on stdin. Repeat for several rows.
-    #[arg(long, required = true, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        required = true,
+        value_name = "JSON|@FILE|-",
+        allow_hyphen_values = true
+    )]
     pub curve: Vec<String>,
 }
 
 /// Arguments of `ndfplot render`.
 #[derive(Debug, Args)]
-#[command(after_long_help = "Every spec is validated before anything is evaluated or written; files are written as\n\
+#[command(
+    after_long_help = "Every spec is validated before anything is evaluated or written; files are written as\n\
     hidden temporaries and renamed into place. With --check nothing is written: the CSVs are\n\
     re-rendered and compared with DIR's (exit 1 on any difference, a missing or an extra CSV).\n\n\
     Examples:\n  \
     ndfplot render\n  \
     ndfplot render configs/abc-vs-tr.json my-scenes/ -o out --format svg,csv\n  \
     ndfplot render --check plots\n  \
-    ndfplot render configs/ --check plots --tolerance 1e-9")]
+    ndfplot render configs/ --check plots --tolerance 1e-9"
+)]
 pub struct RenderArgs {
     /// Scene spec files, or folders whose *.json are rendered in name order. None: the built-in
     /// catalogue of notebook figures.
@@ -119,7 +128,9 @@ pub struct RenderArgs {
 fn float_in(low: f64, high: f64) -> impl Fn(&str) -> Result<f64, String> + Clone {
     move |text: &str| match text.parse::<f64>() {
         Ok(v) if (low..=high).contains(&v) => Ok(v),
-        _ => Err(format!("expected a number from {low} to {high} (got \"{text}\")")),
+        _ => Err(format!(
+            "expected a number from {low} to {high} (got \"{text}\")"
+        )),
     }
 }
 
@@ -129,7 +140,12 @@ fn float_in(low: f64, high: f64) -> impl Fn(&str) -> Result<f64, String> + Clone
 pub struct EvalArgs {
     /// A curve: inline JSON such as '{"ndf":"beckmann","alpha_b":0.5}', @FILE holding one curve, or
     /// - for one curve per line on stdin (JSON Lines). Repeat for several columns.
-    #[arg(long, required = true, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        required = true,
+        value_name = "JSON|@FILE|-",
+        allow_hyphen_values = true
+    )]
     pub curve: Vec<String>,
     /// Angles: comma-separated (0,0.1,1.5707963267948966) or start:stop:count (numpy linspace,
     /// both ends included). Radians in [0, π/2] unless --degrees. Use --theta=-1 for negatives.
@@ -143,7 +159,11 @@ pub struct EvalArgs {
 fn eval_help() -> String {
     let mut text = String::from("Curve models and parameter domains:\n");
     for family in crate::ndf::Family::ALL {
-        text.push_str(&format!("  ndf {:<18} {}\n", family.name(), family.domain()));
+        text.push_str(&format!(
+            "  ndf {:<18} {}\n",
+            family.name(),
+            family.domain()
+        ));
     }
     text.push_str("  (ggx is an alias of trowbridge_reitz)\n");
     text.push_str(FRESNEL_HELP);
@@ -170,7 +190,8 @@ const FRESNEL_HELP: &str = "  fresnel exact        eta in [1e-150, 1e150], kappa
 
 /// Arguments of `ndfplot compare`.
 #[derive(Debug, Args)]
-#[command(after_long_help = "Metrics over theta in [0, pi/2] (CONTRACTS.md):\n  \
+#[command(
+    after_long_help = "Metrics over theta in [0, pi/2] (CONTRACTS.md):\n  \
     max_abs       max |a - b|, with the theta where it is reached\n  \
     max_rel       max |a - b| / max(|a|, |b|) (0 where both are 0), with its theta\n  \
     l2_projected  sqrt(2 pi integral (a - b)^2 sin cos dtheta), adaptive quadrature\n  \
@@ -179,7 +200,8 @@ const FRESNEL_HELP: &str = "  fresnel exact        eta in [1e-150, 1e150], kappa
     Exit 1 when a --max-error bound is exceeded, 2 on bad input (an NDF against a Fresnel curve).\n\n\
     Examples:\n  \
     ndfplot compare --a '{\"ndf\":\"trowbridge_reitz\",\"alpha_tr\":0.3}' --b '{\"ndf\":\"abc\",\"alpha_abc1\":23.5,\"alpha_abc2\":1.75}'\n  \
-    ndfplot compare --a @a.json --b @b.json --format json --max-error max_rel=1e-3 --max-error l2_projected=0.01")]
+    ndfplot compare --a @a.json --b @b.json --format json --max-error max_rel=1e-3 --max-error l2_projected=0.01"
+)]
 pub struct CompareArgs {
     /// The first curve: inline JSON, @FILE or - (one curve on stdin).
     #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
@@ -224,13 +246,15 @@ pub struct FitArgs {
 
 /// Arguments of `ndfplot check`.
 #[derive(Debug, Args)]
-#[command(after_long_help = "For every distinct NDF of the scenes: 2 pi integral D sin cos dtheta over [0, pi/2] by\n\
+#[command(
+    after_long_help = "For every distinct NDF of the scenes: 2 pi integral D sin cos dtheta over [0, pi/2] by\n\
     adaptive quadrature, with its error estimate and |integral - 1|; for every Fresnel curve the\n\
     hemispherical average 2 integral_0^1 F(c) c dc (reported, not checked). Difference series are skipped.\n\
     Exit 1 when an NDF is off by more than --tolerance.\n\n\
     Examples:\n  \
     ndfplot check\n  \
-    ndfplot check configs/abc-vs-tr.json my-scenes/ --tolerance 1e-12")]
+    ndfplot check configs/abc-vs-tr.json my-scenes/ --tolerance 1e-12"
+)]
 pub struct CheckArgs {
     /// Scene spec files, or folders whose *.json are checked in name order. None: the built-in catalogue.
     #[arg(value_name = "SPEC.json|DIR")]
@@ -242,7 +266,8 @@ pub struct CheckArgs {
 
 /// Arguments of `ndfplot bench`.
 #[derive(Debug, Args)]
-#[command(after_long_help = "Sections (CSV columns section,case,method,setting,samples,seconds,error):\n  \
+#[command(
+    after_long_help = "Sections (CSV columns section,case,method,setting,samples,seconds,error):\n  \
     drawing        uniform N = 16 ... 65536 and adaptive tolerances: the drawn polyline's largest\n                 \
     deviation from the true curve in px, narrow and broad lobes; uniform_needed: the fewest\n                 \
     uniform samples within 0.25 px\n  \
@@ -252,7 +277,8 @@ pub struct CheckArgs {
     path on one thread and on all threads (error: largest relative difference from eval)\n\n\
     Times are medians of 5 batches of at least 50 ms; machines shared with other work give noisy numbers.\n\n\
     Example:\n  \
-    ndfplot bench -o plots/bench")]
+    ndfplot bench -o plots/bench"
+)]
 pub struct BenchArgs {
     /// Output folder (created if missing) for bench.csv and bench.svg.
     #[arg(short, long, value_name = "DIR", default_value = "plots/bench")]

@@ -10,8 +10,8 @@ use crate::domain::DomainError;
 use crate::fresnel::{Fresnel, Ior, SchlickF0};
 use crate::json::{Node, Value};
 use crate::ndf::{Family, Ndf};
-use crate::transform::Transform;
 use crate::problem::{Problem, join_key, suggestion};
+use crate::transform::Transform;
 
 /// A validated curve: an NDF D(θ) or a Fresnel reflectance F(θ).
 #[derive(Debug, Clone, PartialEq)]
@@ -67,7 +67,11 @@ impl Curve {
         match self {
             Curve::Ndf(d) => {
                 let names = d.family().param_names();
-                names.iter().zip(d.params()).map(|(&n, v)| (n, ParamValue::Number(v))).collect()
+                names
+                    .iter()
+                    .zip(d.params())
+                    .map(|(&n, v)| (n, ParamValue::Number(v)))
+                    .collect()
             }
             Curve::Fresnel(f) => fresnel_params(f),
             Curve::Difference { .. } | Curve::Transformed { .. } => vec![],
@@ -87,7 +91,11 @@ impl Curve {
             );
         }
         if let Curve::Transformed { transform, curve } = self {
-            return format!("{{\"{TRANSFORM_KEY}\":\"{}\",\"curve\":{}}}", transform.name(), curve.canonical_json());
+            return format!(
+                "{{\"{TRANSFORM_KEY}\":\"{}\",\"curve\":{}}}",
+                transform.name(),
+                curve.canonical_json()
+            );
         }
         let model = self.model();
         let mut out = format!("{{\"{}\":\"{}\"", model.key(), model.name());
@@ -102,7 +110,10 @@ impl Curve {
 fn ior_params(ior: &Ior) -> Vec<(&'static str, ParamValue)> {
     match *ior {
         Ior::EtaKappa { eta, kappa } => {
-            vec![("eta", ParamValue::Number(eta)), ("kappa", ParamValue::Number(kappa))]
+            vec![
+                ("eta", ParamValue::Number(eta)),
+                ("kappa", ParamValue::Number(kappa)),
+            ]
         }
         Ior::Gulbrandsen { r, g, g_remap } => vec![
             ("r", ParamValue::Number(r)),
@@ -118,7 +129,10 @@ fn fresnel_params(f: &Fresnel) -> Vec<(&'static str, ParamValue)> {
         Fresnel::Schlick(SchlickF0::F0(f0)) => vec![("f0", ParamValue::Number(*f0))],
         Fresnel::Schlick(SchlickF0::Ior(ior)) => ior_params(ior),
         Fresnel::Lazanyi { f0, a } => {
-            vec![("f0", ParamValue::Number(*f0)), ("a", ParamValue::Number(*a))]
+            vec![
+                ("f0", ParamValue::Number(*f0)),
+                ("a", ParamValue::Number(*a)),
+            ]
         }
         Fresnel::LazanyiTerm => vec![],
         Fresnel::Belcour(ior, _) => ior_params(ior),
@@ -243,17 +257,29 @@ pub struct ParamSpec {
 }
 
 const fn number(name: &'static str) -> ParamSpec {
-    ParamSpec { name, kind: ParamKind::Number, default: None }
+    ParamSpec {
+        name,
+        kind: ParamKind::Number,
+        default: None,
+    }
 }
 
 const ETA_KAPPA: &[ParamSpec] = &[
     number("eta"),
-    ParamSpec { name: "kappa", kind: ParamKind::Number, default: Some(ParamValue::Number(0.0)) },
+    ParamSpec {
+        name: "kappa",
+        kind: ParamKind::Number,
+        default: Some(ParamValue::Number(0.0)),
+    },
 ];
 const GULBRANDSEN: &[ParamSpec] = &[
     number("r"),
     number("g"),
-    ParamSpec { name: "g_remap", kind: ParamKind::Flag, default: Some(ParamValue::Flag(false)) },
+    ParamSpec {
+        name: "g_remap",
+        kind: ParamKind::Flag,
+        default: Some(ParamValue::Flag(false)),
+    },
 ];
 const F0: &[ParamSpec] = &[number("f0")];
 
@@ -283,7 +309,9 @@ impl Model {
                 FresnelModel::Exact | FresnelModel::Belcour | FresnelModel::Normalized => {
                     vec![ETA_KAPPA.to_vec(), GULBRANDSEN.to_vec()]
                 }
-                FresnelModel::Schlick => vec![F0.to_vec(), ETA_KAPPA.to_vec(), GULBRANDSEN.to_vec()],
+                FresnelModel::Schlick => {
+                    vec![F0.to_vec(), ETA_KAPPA.to_vec(), GULBRANDSEN.to_vec()]
+                }
                 FresnelModel::Lazanyi => vec![vec![number("f0"), number("a")]],
                 FresnelModel::LazanyiTerm => vec![vec![]],
                 FresnelModel::Basis => vec![vec![number("index")]],
@@ -296,7 +324,11 @@ impl Model {
         let n = |i: usize| values[i].number();
         let ior = |offset: usize| match (self.signatures()[signature][offset]).name {
             "eta" => Ior::eta_kappa(n(offset), n(offset + 1)),
-            _ => Ior::gulbrandsen(n(offset), n(offset + 1), values[offset + 2] == ParamValue::Flag(true)),
+            _ => Ior::gulbrandsen(
+                n(offset),
+                n(offset + 1),
+                values[offset + 2] == ParamValue::Flag(true),
+            ),
         };
         Ok(match self {
             Model::Ndf(family) => {
@@ -320,7 +352,10 @@ impl Model {
     pub fn from_key_and_name(key: &str, name: &str) -> Option<Model> {
         match key {
             "ndf" => Family::from_name(name).map(Model::Ndf),
-            _ => FresnelModel::ALL.into_iter().find(|m| m.name() == name).map(Model::Fresnel),
+            _ => FresnelModel::ALL
+                .into_iter()
+                .find(|m| m.name() == name)
+                .map(Model::Fresnel),
         }
     }
 
@@ -359,7 +394,9 @@ pub struct Resolved<'a> {
 impl Resolved<'_> {
     /// Builds the curve, reporting a domain error at the path of the offending key.
     pub fn build(&self, values: &[ParamValue], path: &str) -> Result<Curve, Problem> {
-        self.model.build(self.signature, values).map_err(|e| domain_problem(&e, path))
+        self.model
+            .build(self.signature, values)
+            .map_err(|e| domain_problem(&e, path))
     }
 }
 
@@ -367,7 +404,10 @@ impl Resolved<'_> {
 pub fn domain_problem(error: &DomainError, path: &str) -> Problem {
     Problem::new(
         join_key(path, error.param),
-        format!("out of domain (got {:?}, expected {})", error.value, error.expected),
+        format!(
+            "out of domain (got {:?}, expected {})",
+            error.value, error.expected
+        ),
     )
 }
 
@@ -375,10 +415,17 @@ pub fn domain_problem(error: &DomainError, path: &str) -> Problem {
 /// known name, no duplicate keys, no unknown keys (beyond `extra_keys`, which the caller handles,
 /// such as a scene's `style`), no keys from exclusive signatures mixed, no required key missing.
 /// Every problem is reported.
-pub fn resolve<'a>(node: &'a Node, path: &str, extra_keys: &[&str]) -> Result<Resolved<'a>, Vec<Problem>> {
+pub fn resolve<'a>(
+    node: &'a Node,
+    path: &str,
+    extra_keys: &[&str],
+) -> Result<Resolved<'a>, Vec<Problem>> {
     let Value::Object(members) = &node.value else {
         let got = node.to_string();
-        return Err(vec![Problem::new(path, format!("expected a curve object (got {got})"))]);
+        return Err(vec![Problem::new(
+            path,
+            format!("expected a curve object (got {got})"),
+        )]);
     };
     let mut problems = Vec::new();
     for (i, (key, value)) in members.iter().enumerate() {
@@ -386,8 +433,10 @@ pub fn resolve<'a>(node: &'a Node, path: &str, extra_keys: &[&str]) -> Result<Re
             problems.push(Problem::new(join_key(path, key), duplicate_key(value)));
         }
     }
-    let model_keys: Vec<&(String, Node)> =
-        members.iter().filter(|(k, _)| k == "ndf" || k == "fresnel").collect();
+    let model_keys: Vec<&(String, Node)> = members
+        .iter()
+        .filter(|(k, _)| k == "ndf" || k == "fresnel")
+        .collect();
     let model = match model_keys.as_slice() {
         [] => {
             problems.push(Problem::new(
@@ -398,7 +447,10 @@ pub fn resolve<'a>(node: &'a Node, path: &str, extra_keys: &[&str]) -> Result<Re
         }
         [(key, name_node)] => model_from_node(key, name_node, path, &mut problems),
         [(first, _), (second, _), ..] if first != second => {
-            problems.push(Problem::new(path, format!("a curve has either \"ndf\" or \"fresnel\", not both (got {node})")));
+            problems.push(Problem::new(
+                path,
+                format!("a curve has either \"ndf\" or \"fresnel\", not both (got {node})"),
+            ));
             None
         }
         [(key, name_node), ..] => model_from_node(key, name_node, path, &mut problems),
@@ -411,10 +463,19 @@ pub fn resolve<'a>(node: &'a Node, path: &str, extra_keys: &[&str]) -> Result<Re
         .iter()
         .filter(|(k, _)| k != model.key() && !extra_keys.contains(&k.as_str()))
         .collect();
-    let all_keys: Vec<&str> = signatures.iter().flatten().map(|p| p.name).chain(extra_keys.iter().copied()).collect();
+    let all_keys: Vec<&str> = signatures
+        .iter()
+        .flatten()
+        .map(|p| p.name)
+        .chain(extra_keys.iter().copied())
+        .collect();
     for (key, node) in &given {
         if !signatures.iter().flatten().any(|p| p.name == key) {
-            let expected = if all_keys.is_empty() { "no parameters".to_string() } else { all_keys.join(", ") };
+            let expected = if all_keys.is_empty() {
+                "no parameters".to_string()
+            } else {
+                all_keys.join(", ")
+            };
             problems.push(Problem::new(
                 join_key(path, key),
                 format!(
@@ -429,8 +490,9 @@ pub fn resolve<'a>(node: &'a Node, path: &str, extra_keys: &[&str]) -> Result<Re
     if !problems.is_empty() {
         return Err(problems);
     }
-    let Some(signature) =
-        signatures.iter().position(|sig| given.iter().all(|(k, _)| sig.iter().any(|p| p.name == k)))
+    let Some(signature) = signatures
+        .iter()
+        .position(|sig| given.iter().all(|(k, _)| sig.iter().any(|p| p.name == k)))
     else {
         let keys: Vec<&str> = given.iter().map(|(k, _)| k.as_str()).collect();
         let alternatives: Vec<String> = signatures
@@ -439,28 +501,59 @@ pub fn resolve<'a>(node: &'a Node, path: &str, extra_keys: &[&str]) -> Result<Re
             .collect();
         return Err(vec![Problem::new(
             path,
-            format!("keys {} cannot be combined (expected one of: {})", keys.join(", "), alternatives.join(" or ")),
+            format!(
+                "keys {} cannot be combined (expected one of: {})",
+                keys.join(", "),
+                alternatives.join(" or ")
+            ),
         )]);
     };
     let params = signatures[signature].clone();
-    let nodes: Vec<Option<&Node>> =
-        params.iter().map(|p| given.iter().find(|(k, _)| k == p.name).map(|(_, n)| n)).collect();
+    let nodes: Vec<Option<&Node>> = params
+        .iter()
+        .map(|p| given.iter().find(|(k, _)| k == p.name).map(|(_, n)| n))
+        .collect();
     for (spec, node) in params.iter().zip(&nodes) {
         if node.is_none() && spec.default.is_none() {
             problems.push(Problem::new(
                 join_key(path, spec.name),
-                format!("missing parameter for {} \"{}\" (expected {})", model.key(), model.name(), kind_name(spec.kind)),
+                format!(
+                    "missing parameter for {} \"{}\" (expected {})",
+                    model.key(),
+                    model.name(),
+                    kind_name(spec.kind)
+                ),
             ));
         }
     }
-    if problems.is_empty() { Ok(Resolved { model, signature, params, nodes }) } else { Err(problems) }
+    if problems.is_empty() {
+        Ok(Resolved {
+            model,
+            signature,
+            params,
+            nodes,
+        })
+    } else {
+        Err(problems)
+    }
 }
 
-fn model_from_node(key: &str, node: &Node, path: &str, problems: &mut Vec<Problem>) -> Option<Model> {
+fn model_from_node(
+    key: &str,
+    node: &Node,
+    path: &str,
+    problems: &mut Vec<Problem>,
+) -> Option<Model> {
     let at = join_key(path, key);
     let names = Model::names(key);
     let Value::String(name) = &node.value else {
-        problems.push(Problem::new(at, format!("expected a model name (got {node}, expected one of: {})", names.join(", "))));
+        problems.push(Problem::new(
+            at,
+            format!(
+                "expected a model name (got {node}, expected one of: {})",
+                names.join(", ")
+            ),
+        ));
         return None;
     };
     let model = Model::from_key_and_name(key, name);
@@ -497,27 +590,44 @@ fn parse_transformed(members: &[(String, Node)], path: &str) -> Result<Curve, Ve
         }
     }
     let names: Vec<&str> = Transform::NAMES.iter().map(|(n, _)| *n).collect();
-    let transform = members.iter().find(|(k, _)| k == TRANSFORM_KEY).and_then(|(_, node)| match &node.value {
-        Value::String(name) => Transform::from_name(name),
-        _ => None,
-    });
+    let transform = members
+        .iter()
+        .find(|(k, _)| k == TRANSFORM_KEY)
+        .and_then(|(_, node)| match &node.value {
+            Value::String(name) => Transform::from_name(name),
+            _ => None,
+        });
     if transform.is_none() {
-        let node = &members.iter().find(|(k, _)| k == TRANSFORM_KEY).expect("caller checked the key").1;
+        let node = &members
+            .iter()
+            .find(|(k, _)| k == TRANSFORM_KEY)
+            .expect("caller checked the key")
+            .1;
         problems.push(Problem::new(
             join_key(path, TRANSFORM_KEY),
-            format!("unknown transform (got {node}, expected one of: {})", names.join(", ")),
+            format!(
+                "unknown transform (got {node}, expected one of: {})",
+                names.join(", ")
+            ),
         ));
     }
     let curve_path = join_key(path, "curve");
     let curve = match members.iter().find(|(k, _)| k == "curve") {
-        Some((_, node)) => parse(node, &curve_path).map_err(|p| problems.extend(p)).ok(),
+        Some((_, node)) => parse(node, &curve_path)
+            .map_err(|p| problems.extend(p))
+            .ok(),
         None => {
-            problems.push(Problem::new(curve_path.clone(), "missing the curve to transform (expected an NDF curve object)"));
+            problems.push(Problem::new(
+                curve_path.clone(),
+                "missing the curve to transform (expected an NDF curve object)",
+            ));
             None
         }
     };
     match (transform, curve) {
-        (Some(transform), Some(curve)) if problems.is_empty() => transformed(transform, curve, &curve_path).map_err(|p| vec![p]),
+        (Some(transform), Some(curve)) if problems.is_empty() => {
+            transformed(transform, curve, &curve_path).map_err(|p| vec![p])
+        }
         _ => Err(problems),
     }
 }
@@ -527,10 +637,17 @@ pub fn transformed(transform: Transform, curve: Curve, path: &str) -> Result<Cur
     if curve.model().key() != "ndf" {
         return Err(Problem::new(
             path,
-            format!("the {} view applies to NDF curves (got {})", transform.name(), curve.canonical_json()),
+            format!(
+                "the {} view applies to NDF curves (got {})",
+                transform.name(),
+                curve.canonical_json()
+            ),
         ));
     }
-    Ok(Curve::Transformed { transform, curve: Box::new(curve) })
+    Ok(Curve::Transformed {
+        transform,
+        curve: Box::new(curve),
+    })
 }
 
 /// The message for a key given twice; `value` is the repeated key's value.
@@ -551,12 +668,14 @@ pub fn scalar(node: &Node, kind: ParamKind, path: &str) -> Result<ParamValue, Pr
     match (&node.value, kind) {
         (Value::Number(n), ParamKind::Number) => Ok(ParamValue::Number(n.value)),
         (Value::Bool(b), ParamKind::Flag) => Ok(ParamValue::Flag(*b)),
-        (value, ParamKind::Number) => {
-            Err(Problem::new(path, format!("expected a number (got {} {node})", value.kind())))
-        }
-        (value, ParamKind::Flag) => {
-            Err(Problem::new(path, format!("expected true or false (got {} {node})", value.kind())))
-        }
+        (value, ParamKind::Number) => Err(Problem::new(
+            path,
+            format!("expected a number (got {} {node})", value.kind()),
+        )),
+        (value, ParamKind::Flag) => Err(Problem::new(
+            path,
+            format!("expected true or false (got {} {node})", value.kind()),
+        )),
     }
 }
 
@@ -570,7 +689,10 @@ pub fn parse(node: &Node, path: &str) -> Result<Curve, Vec<Problem>> {
     }
     if is_difference(node) {
         let (op, a, b) = difference_parts(node, path, &[])?;
-        let (a, b) = (parse(a, &join_key(path, "a")), parse(b, &join_key(path, "b")));
+        let (a, b) = (
+            parse(a, &join_key(path, "a")),
+            parse(b, &join_key(path, "b")),
+        );
         return match (a, b) {
             (Ok(a), Ok(b)) => difference(op, a, b, path).map_err(|p| vec![p]),
             (a, b) => Err(a.err().into_iter().chain(b.err()).flatten().collect()),
@@ -581,7 +703,10 @@ pub fn parse(node: &Node, path: &str) -> Result<Curve, Vec<Problem>> {
     let mut problems = Vec::new();
     for (spec, node) in resolved.params.iter().zip(&resolved.nodes) {
         match node {
-            None => values.push(spec.default.expect("resolve() reports missing required keys")),
+            None => values.push(
+                spec.default
+                    .expect("resolve() reports missing required keys"),
+            ),
             Some(node) => match scalar(node, spec.kind, &join_key(path, spec.name)) {
                 Ok(value) => values.push(value),
                 Err(problem) => problems.push(problem),
@@ -647,7 +772,10 @@ pub fn difference_parts<'a>(
     extra_keys: &[&str],
 ) -> Result<(DiffOp, &'a Node, &'a Node), Vec<Problem>> {
     let Value::Object(members) = &node.value else {
-        return Err(vec![Problem::new(path, format!("expected a curve object (got {node})"))]);
+        return Err(vec![Problem::new(
+            path,
+            format!("expected a curve object (got {node})"),
+        )]);
     };
     let mut problems = Vec::new();
     let allowed: Vec<&str> = DIFFERENCE_KEYS.iter().chain(extra_keys).copied().collect();
@@ -686,14 +814,20 @@ pub fn difference_parts<'a>(
         _ => {
             problems.push(Problem::new(
                 join_key(path, DIFFERENCE_KEY),
-                format!("expected an operation name (got {op_node}, expected one of: {})", names.join(", ")),
+                format!(
+                    "expected an operation name (got {op_node}, expected one of: {})",
+                    names.join(", ")
+                ),
             ));
             None
         }
     };
     for key in ["a", "b"] {
         if get(key).is_none() {
-            problems.push(Problem::new(join_key(path, key), "missing operand of the difference (expected a curve object)"));
+            problems.push(Problem::new(
+                join_key(path, key),
+                "missing operand of the difference (expected a curve object)",
+            ));
         }
     }
     match (op, get("a"), get("b")) {
@@ -714,7 +848,11 @@ pub fn difference(op: DiffOp, a: Curve, b: Curve, path: &str) -> Result<Curve, P
             ),
         ));
     }
-    Ok(Curve::Difference { op, a: Box::new(a), b: Box::new(b) })
+    Ok(Curve::Difference {
+        op,
+        a: Box::new(a),
+        b: Box::new(b),
+    })
 }
 
 /// The legend symbol of a parameter (`alpha_b` → `α_b`, `eta` → `η`).
@@ -747,7 +885,11 @@ pub fn pretty(value: f64) -> String {
     }
     let decimals = (5.0 - magnitude).max(0.0) as usize;
     let text = format!("{value:.decimals$}");
-    if text.contains('.') { text.trim_end_matches('0').trim_end_matches('.').to_string() } else { text }
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
 }
 
 #[cfg(test)]
@@ -768,9 +910,18 @@ mod tests {
         assert_eq!(p[0].at, "alpha_bb");
         assert!(p[0].message.contains("did you mean \"alpha_b\""), "{p:?}");
         let p = problems(r#"{"ndf":"abc","alpha_abc1":1}"#);
-        assert_eq!((p[0].at.as_str(), p[0].message.contains("missing")), ("alpha_abc2", true));
+        assert_eq!(
+            (p[0].at.as_str(), p[0].message.contains("missing")),
+            ("alpha_abc2", true)
+        );
         let p = problems(r#"{"ndf":"phong","alpha_p":1,"alpha_p":2}"#);
-        assert_eq!((p[0].at.as_str(), p[0].message.as_str()), ("alpha_p", "duplicate key (got a second value 2, expected each key once)"));
+        assert_eq!(
+            (p[0].at.as_str(), p[0].message.as_str()),
+            (
+                "alpha_p",
+                "duplicate key (got a second value 2, expected each key once)"
+            )
+        );
         let p = problems(r#"{"ndf":"phong","alpha_p":"1"}"#);
         assert!(p[0].message.contains("expected a number"), "{p:?}");
         let p = problems(r#"{"ndf":"phong","alpha_p":-1}"#);
@@ -785,9 +936,19 @@ mod tests {
     #[test]
     fn canonical_json_uses_canonical_names_and_order() {
         let curve = parse(&json::parse(r#"{"alpha_tr":0.5,"ndf":"ggx"}"#).unwrap(), "").unwrap();
-        assert_eq!(curve.canonical_json(), r#"{"ndf":"trowbridge_reitz","alpha_tr":0.5}"#);
-        let curve = parse(&json::parse(r#"{"ndf":"abc","alpha_abc2":2,"alpha_abc1":1e-7}"#).unwrap(), "").unwrap();
-        assert_eq!(curve.canonical_json(), r#"{"ndf":"abc","alpha_abc1":1e-7,"alpha_abc2":2.0}"#);
+        assert_eq!(
+            curve.canonical_json(),
+            r#"{"ndf":"trowbridge_reitz","alpha_tr":0.5}"#
+        );
+        let curve = parse(
+            &json::parse(r#"{"ndf":"abc","alpha_abc2":2,"alpha_abc1":1e-7}"#).unwrap(),
+            "",
+        )
+        .unwrap();
+        assert_eq!(
+            curve.canonical_json(),
+            r#"{"ndf":"abc","alpha_abc1":1e-7,"alpha_abc2":2.0}"#
+        );
     }
 
     #[test]

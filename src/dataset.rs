@@ -25,7 +25,11 @@ impl SpectrumQuantity {
     ];
 
     fn name(self) -> &'static str {
-        Self::NAMES.iter().find(|(_, q)| *q == self).map(|(n, _)| *n).expect("every quantity is named")
+        Self::NAMES
+            .iter()
+            .find(|(_, q)| *q == self)
+            .map(|(n, _)| *n)
+            .expect("every quantity is named")
     }
 }
 
@@ -44,11 +48,19 @@ pub enum Coefficient {
 
 impl Coefficient {
     /// Every coefficient, by its JSON name.
-    pub const NAMES: [(&'static str, Coefficient); 4] =
-        [("c0", Coefficient::C0), ("c1", Coefficient::C1), ("c2", Coefficient::C2), ("c3", Coefficient::C3)];
+    pub const NAMES: [(&'static str, Coefficient); 4] = [
+        ("c0", Coefficient::C0),
+        ("c1", Coefficient::C1),
+        ("c2", Coefficient::C2),
+        ("c3", Coefficient::C3),
+    ];
 
     fn name(self) -> &'static str {
-        Self::NAMES.iter().find(|(_, c)| *c == self).map(|(n, _)| *n).expect("every coefficient is named")
+        Self::NAMES
+            .iter()
+            .find(|(_, c)| *c == self)
+            .map(|(n, _)| *n)
+            .expect("every coefficient is named")
     }
 
     fn of(self, c: &basis::Coefficients) -> f64 {
@@ -135,9 +147,19 @@ impl Dataset {
     pub fn canonical_json(&self) -> String {
         match self {
             Dataset::Spectrum { quantity, count } => {
-                format!("{{\"data\":\"spectrum\",\"quantity\":\"{}\",\"count\":{count}}}", quantity.name())
+                format!(
+                    "{{\"data\":\"spectrum\",\"quantity\":\"{}\",\"count\":{count}}}",
+                    quantity.name()
+                )
             }
-            Dataset::Gulbrandsen { x, y, z, r, g, g_remap } => {
+            Dataset::Gulbrandsen {
+                x,
+                y,
+                z,
+                r,
+                g,
+                g_remap,
+            } => {
                 let z = z.map_or(String::new(), |z| format!(",\"z\":\"{}\"", z.name()));
                 format!(
                     "{{\"data\":\"gulbrandsen\",\"x\":\"{}\",\"y\":\"{}\"{z},\"r\":{},\"g\":{},\"g_remap\":{g_remap}}}",
@@ -147,8 +169,18 @@ impl Dataset {
                     json_list(g)
                 )
             }
-            Dataset::Table { x, y } => format!("{{\"data\":\"table\",\"x\":{},\"y\":{}}}", json_list(x), json_list(y)),
-            Dataset::Csv { path, x_column, y_column, degrees, .. } => format!(
+            Dataset::Table { x, y } => format!(
+                "{{\"data\":\"table\",\"x\":{},\"y\":{}}}",
+                json_list(x),
+                json_list(y)
+            ),
+            Dataset::Csv {
+                path,
+                x_column,
+                y_column,
+                degrees,
+                ..
+            } => format!(
                 "{{\"data\":\"csv\",\"path\":{},\"x\":{},\"y\":{},\"degrees\":{degrees}}}",
                 crate::json::quote(path),
                 crate::json::quote(x_column),
@@ -178,15 +210,35 @@ impl Dataset {
                     SpectrumQuantity::Normalized => &spectrum.normalized,
                     SpectrumQuantity::Cumulative => &spectrum.cumulative,
                 };
-                let points = values.iter().take(*count).enumerate().map(|(k, &v)| (k as f64, v)).collect();
-                DataPoints { points, z: None, grid: None }
+                let points = values
+                    .iter()
+                    .take(*count)
+                    .enumerate()
+                    .map(|(k, &v)| (k as f64, v))
+                    .collect();
+                DataPoints {
+                    points,
+                    z: None,
+                    grid: None,
+                }
             }
-            Dataset::Gulbrandsen { x, y, z, r, g, g_remap } => {
+            Dataset::Gulbrandsen {
+                x,
+                y,
+                z,
+                r,
+                g,
+                g_remap,
+            } => {
                 let coefficients: Vec<basis::Coefficients> = r
                     .iter()
                     .flat_map(|&r| g.iter().map(move |&g| (r, g)))
                     .map(|(r, g)| {
-                        let g = if *g_remap { gulbrandsen::remap_edge_tint(g) } else { g };
+                        let g = if *g_remap {
+                            gulbrandsen::remap_edge_tint(g)
+                        } else {
+                            g
+                        };
                         let (eta, kappa) = gulbrandsen::to_eta_kappa(r, g);
                         basis::coeffs(eta, kappa)
                     })
@@ -196,9 +248,11 @@ impl Dataset {
                 let grid = (r.len() > 1 && g.len() > 1).then_some((r.len(), g.len()));
                 DataPoints { points, z, grid }
             }
-            Dataset::Table { x, y } | Dataset::Csv { x, y, .. } => {
-                DataPoints { points: x.iter().copied().zip(y.iter().copied()).collect(), z: None, grid: None }
-            }
+            Dataset::Table { x, y } | Dataset::Csv { x, y, .. } => DataPoints {
+                points: x.iter().copied().zip(y.iter().copied()).collect(),
+                z: None,
+                grid: None,
+            },
         }
     }
 }

@@ -21,13 +21,21 @@ pub struct DomainError {
 impl DomainError {
     /// Builds the error for `param = value`, which should have satisfied `expected`.
     pub fn new(param: &'static str, value: f64, expected: impl Into<String>) -> Self {
-        DomainError { param, value, expected: expected.into() }
+        DomainError {
+            param,
+            value,
+            expected: expected.into(),
+        }
     }
 }
 
 impl fmt::Display for DomainError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: out of domain (got {:?}, expected {})", self.param, self.value, self.expected)
+        write!(
+            f,
+            "{}: out of domain (got {:?}, expected {})",
+            self.param, self.value, self.expected
+        )
     }
 }
 

@@ -39,7 +39,10 @@ impl Error {
 
     /// An I/O error on `path`.
     pub fn io(path: impl Into<String>, source: std::io::Error) -> Error {
-        Error::Io { path: path.into(), source }
+        Error::Io {
+            path: path.into(),
+            source,
+        }
     }
 }
 
@@ -51,8 +54,15 @@ impl fmt::Display for Error {
                 let lines: Vec<String> = all.iter().map(ToString::to_string).collect();
                 f.write_str(&lines.join("\n"))
             }
-            Error::Usage(message) | Error::Numerics(message) => write!(f, "error: {}", one_line(message)),
-            Error::Io { path, source } => write!(f, "error: {}: {}", one_line(path), one_line(&source.to_string())),
+            Error::Usage(message) | Error::Numerics(message) => {
+                write!(f, "error: {}", one_line(message))
+            }
+            Error::Io { path, source } => write!(
+                f,
+                "error: {}: {}",
+                one_line(path),
+                one_line(&source.to_string())
+            ),
             Error::CheckFailed(message) => write!(f, "{message}"),
         }
     }

@@ -35,7 +35,9 @@ impl fmt::Display for GridError {
             GridError::NotFinite => write!(f, "start, stop and step must be finite numbers"),
             GridError::ZeroStep => write!(f, "step must not be 0"),
             GridError::WrongSign => write!(f, "step points away from stop, which gives no values"),
-            GridError::TooMany { count, cap } => write!(f, "{count:.0} values exceed the cap of {cap}"),
+            GridError::TooMany { count, cap } => {
+                write!(f, "{count:.0} values exceed the cap of {cap}")
+            }
         }
     }
 }
@@ -59,7 +61,13 @@ pub fn linspace(start: f64, stop: f64, count: usize) -> Vec<f64> {
 /// n = floor((stop − start)/step + 1e-9) + 1 values v_k = start + k·step, each rounded to
 /// `decimals` places when given (≤ 15), and the last value exactly `stop` when (stop − start)/step
 /// is within 1e-9 of an integer. At most `cap` values.
-pub fn range(start: f64, stop: f64, step: f64, decimals: Option<usize>, cap: usize) -> Result<Vec<f64>, GridError> {
+pub fn range(
+    start: f64,
+    stop: f64,
+    step: f64,
+    decimals: Option<usize>,
+    cap: usize,
+) -> Result<Vec<f64>, GridError> {
     if !(start.is_finite() && stop.is_finite() && step.is_finite()) {
         return Err(GridError::NotFinite);
     }
@@ -103,11 +111,26 @@ mod tests {
 
     #[test]
     fn range_keeps_end_value_and_rounds_to_literal_decimals() {
-        assert_eq!(range(0.4, 1.0, 0.1, Some(1), 100).unwrap(), [0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0]);
-        assert_eq!(range(0.0, 1.0, 0.3, Some(1), 100).unwrap(), [0.0, 0.3, 0.6, 0.9]);
-        assert_eq!(range(1.0, 7.0, 1.0, Some(0), 100).unwrap(), [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);
-        assert_eq!(range(0.2, 0.5, 0.1, Some(1), 100).unwrap(), [0.2, 0.3, 0.4, 0.5]);
-        assert_eq!(range(1.0, 0.0, -0.25, Some(2), 100).unwrap(), [1.0, 0.75, 0.5, 0.25, 0.0]);
+        assert_eq!(
+            range(0.4, 1.0, 0.1, Some(1), 100).unwrap(),
+            [0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0]
+        );
+        assert_eq!(
+            range(0.0, 1.0, 0.3, Some(1), 100).unwrap(),
+            [0.0, 0.3, 0.6, 0.9]
+        );
+        assert_eq!(
+            range(1.0, 7.0, 1.0, Some(0), 100).unwrap(),
+            [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]
+        );
+        assert_eq!(
+            range(0.2, 0.5, 0.1, Some(1), 100).unwrap(),
+            [0.2, 0.3, 0.4, 0.5]
+        );
+        assert_eq!(
+            range(1.0, 0.0, -0.25, Some(2), 100).unwrap(),
+            [1.0, 0.75, 0.5, 0.25, 0.0]
+        );
         // Without rounding (exponent literals) the drift stays, but the end value is exact.
         let raw = range(0.4, 1.0, 1e-1, None, 100).unwrap();
         assert_eq!((raw.len(), raw[2], raw[6]), (7, 0.6000000000000001, 1.0));
@@ -118,7 +141,13 @@ mod tests {
     fn range_rejects_bad_steps_and_huge_counts() {
         assert_eq!(range(0.0, 1.0, 0.0, None, 10), Err(GridError::ZeroStep));
         assert_eq!(range(0.0, 1.0, -0.1, None, 10), Err(GridError::WrongSign));
-        assert!(matches!(range(0.0, 1e9, 1e-9, None, 10_000), Err(GridError::TooMany { .. })));
-        assert_eq!(range(0.0, f64::NAN, 1.0, None, 10), Err(GridError::NotFinite));
+        assert!(matches!(
+            range(0.0, 1e9, 1e-9, None, 10_000),
+            Err(GridError::TooMany { .. })
+        ));
+        assert_eq!(
+            range(0.0, f64::NAN, 1.0, None, 10),
+            Err(GridError::NotFinite)
+        );
     }
 }

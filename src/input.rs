@@ -17,19 +17,29 @@ pub fn read_file(path: &str) -> Result<String> {
 pub fn parse_json(text: &str, source: &str) -> std::result::Result<json::Node, Problems> {
     json::parse(text).map_err(|e| Problems {
         source: source.to_string(),
-        list: vec![Problem::new(format!("{}:{}", e.line, e.col), format!("invalid JSON: {}", e.message))],
+        list: vec![Problem::new(
+            format!("{}:{}", e.line, e.col),
+            format!("invalid JSON: {}", e.message),
+        )],
     })
 }
 
 fn parse_curve(text: &str, source: &str) -> std::result::Result<Curve, Problems> {
     let node = parse_json(text, source)?;
-    curve::parse(&node, "").map_err(|list| Problems { source: source.to_string(), list })
+    curve::parse(&node, "").map_err(|list| Problems {
+        source: source.to_string(),
+        list,
+    })
 }
 
 /// Loads the curves named by `--curve` arguments, in order: `{…}` inline JSON, `@path` a file
 /// holding one curve, `-` one curve per non-blank line of `stdin` (JSON Lines).
 /// `flag` is the argument name used in messages (`--curve`).
-pub fn load_curves(args: &[String], flag: &str, stdin: impl FnOnce() -> std::io::Result<String>) -> Result<Vec<Curve>> {
+pub fn load_curves(
+    args: &[String],
+    flag: &str,
+    stdin: impl FnOnce() -> std::io::Result<String>,
+) -> Result<Vec<Curve>> {
     let mut curves = Vec::new();
     let mut problems = Vec::new();
     let mut stdin = Some(stdin);
@@ -38,9 +48,15 @@ pub fn load_curves(args: &[String], flag: &str, stdin: impl FnOnce() -> std::io:
         Err(p) => problems.push(p),
     };
     for (i, arg) in args.iter().enumerate() {
-        let source = if args.len() == 1 { flag.to_string() } else { format!("{flag}[{i}]") };
+        let source = if args.len() == 1 {
+            flag.to_string()
+        } else {
+            format!("{flag}[{i}]")
+        };
         if arg == "-" {
-            let read = stdin.take().ok_or_else(|| Error::Usage(format!("{flag} - may be given only once")))?;
+            let read = stdin
+                .take()
+                .ok_or_else(|| Error::Usage(format!("{flag} - may be given only once")))?;
             let text = read().map_err(|e| Error::io("stdin", e))?;
             for (line_no, line) in text.lines().enumerate() {
                 if !line.trim().is_empty() {

@@ -54,7 +54,11 @@ impl Number {
         if self.literal.contains(['e', 'E']) {
             return None;
         }
-        Some(self.literal.split_once('.').map_or(0, |(_, frac)| frac.len()))
+        Some(
+            self.literal
+                .split_once('.')
+                .map_or(0, |(_, frac)| frac.len()),
+        )
     }
 }
 
@@ -149,13 +153,22 @@ pub struct SyntaxError {
 
 impl fmt::Display for SyntaxError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}: invalid JSON: {}", self.line, self.col, self.message)
+        write!(
+            f,
+            "{}:{}: invalid JSON: {}",
+            self.line, self.col, self.message
+        )
     }
 }
 
 /// Parses one JSON document (surrounding whitespace allowed, nothing else after it).
 pub fn parse(text: &str) -> Result<Node, SyntaxError> {
-    let mut parser = Parser { chars: text.chars().collect(), pos: 0, line: 1, col: 1 };
+    let mut parser = Parser {
+        chars: text.chars().collect(),
+        pos: 0,
+        line: 1,
+        col: 1,
+    };
     parser.skip_whitespace();
     let node = parser.value(0)?;
     parser.skip_whitespace();
@@ -174,12 +187,17 @@ struct Parser {
 
 impl Parser {
     fn error(&self, message: impl Into<String>) -> SyntaxError {
-        SyntaxError { line: self.line, col: self.col, message: message.into() }
+        SyntaxError {
+            line: self.line,
+            col: self.col,
+            message: message.into(),
+        }
     }
 
     /// The next character for messages: `'x'` or `end of input`.
     fn found(&self) -> String {
-        self.peek().map_or_else(|| "end of input".to_string(), |c| format!("'{c}'"))
+        self.peek()
+            .map_or_else(|| "end of input".to_string(), |c| format!("'{c}'"))
     }
 
     fn peek(&self) -> Option<char> {
@@ -238,7 +256,11 @@ impl Parser {
         let (line, col) = (self.line, self.col);
         for wanted in word.chars() {
             if self.peek() != Some(wanted) {
-                return Err(SyntaxError { line, col, message: format!("invalid literal, expected '{word}'") });
+                return Err(SyntaxError {
+                    line,
+                    col,
+                    message: format!("invalid literal, expected '{word}'"),
+                });
             }
             self.bump();
         }
@@ -269,7 +291,11 @@ impl Parser {
             match self.bump() {
                 Some(',') => continue,
                 Some('}') => return Ok(Value::Object(members)),
-                _ => return Err(self.error(format!("expected ',' or '}}' after an object member, found {found}"))),
+                _ => {
+                    return Err(self.error(format!(
+                        "expected ',' or '}}' after an object member, found {found}"
+                    )));
+                }
             }
         }
     }
@@ -290,7 +316,11 @@ impl Parser {
             match self.bump() {
                 Some(',') => continue,
                 Some(']') => return Ok(Value::Array(items)),
-                _ => return Err(self.error(format!("expected ',' or ']' after an array element, found {found}"))),
+                _ => {
+                    return Err(self.error(format!(
+                        "expected ',' or ']' after an array element, found {found}"
+                    )));
+                }
             }
         }
     }
@@ -334,7 +364,8 @@ impl Parser {
                     let code = 0x10000 + ((high - 0xD800) << 10) + (low - 0xDC00);
                     char::from_u32(code).ok_or_else(|| self.error("invalid \\u escape"))?
                 } else {
-                    char::from_u32(high).ok_or_else(|| self.error("unpaired surrogate in \\u escape"))?
+                    char::from_u32(high)
+                        .ok_or_else(|| self.error("unpaired surrogate in \\u escape"))?
                 }
             }
             _ => return Err(self.error("invalid escape sequence")),
@@ -345,7 +376,8 @@ impl Parser {
         let mut code = 0;
         for _ in 0..4 {
             let digit = self.bump().and_then(|c| c.to_digit(16));
-            code = code * 16 + digit.ok_or_else(|| self.error("expected 4 hex digits after \\u"))?;
+            code =
+                code * 16 + digit.ok_or_else(|| self.error("expected 4 hex digits after \\u"))?;
         }
         Ok(code)
     }
@@ -415,9 +447,16 @@ mod tests {
         let members = object(r#"{"b": 0.40, "a": 1e-3, "b": -2}"#);
         let keys: Vec<_> = members.iter().map(|(k, _)| k.as_str()).collect();
         assert_eq!(keys, ["b", "a", "b"]);
-        let Value::Number(n) = &members[0].1.value else { panic!() };
-        assert_eq!((n.value, n.literal.as_str(), n.decimals()), (0.4, "0.40", Some(2)));
-        let Value::Number(n) = &members[1].1.value else { panic!() };
+        let Value::Number(n) = &members[0].1.value else {
+            panic!()
+        };
+        assert_eq!(
+            (n.value, n.literal.as_str(), n.decimals()),
+            (0.4, "0.40", Some(2))
+        );
+        let Value::Number(n) = &members[1].1.value else {
+            panic!()
+        };
         assert_eq!((n.value, n.decimals()), (0.001, None));
     }
 
@@ -425,7 +464,9 @@ mod tests {
     fn positions_are_one_based_lines_and_columns() {
         let members = object("{\n  \"x\": [1,\n    true]\n}");
         assert_eq!((members[0].1.line, members[0].1.col), (2, 8));
-        let Value::Array(items) = &members[0].1.value else { panic!() };
+        let Value::Array(items) = &members[0].1.value else {
+            panic!()
+        };
         assert_eq!((items[1].line, items[1].col), (3, 5));
     }
 

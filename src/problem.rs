@@ -17,7 +17,10 @@ pub struct Problem {
 impl Problem {
     /// A problem at `at` described by `message`.
     pub fn new(at: impl Into<String>, message: impl Into<String>) -> Problem {
-        Problem { at: at.into(), message: message.into() }
+        Problem {
+            at: at.into(),
+            message: message.into(),
+        }
     }
 }
 
@@ -70,7 +73,11 @@ pub fn one_line(text: &str) -> std::borrow::Cow<'_, str> {
 
 /// Joins a JSON path and an object key: `("panels[0]", "title")` → `panels[0].title`.
 pub fn join_key(path: &str, key: &str) -> String {
-    if path.is_empty() { key.to_string() } else { format!("{path}.{key}") }
+    if path.is_empty() {
+        key.to_string()
+    } else {
+        format!("{path}.{key}")
+    }
 }
 
 /// Joins a JSON path and an array index: `("panels", 2)` → `panels[2]`.
@@ -80,7 +87,10 @@ pub fn join_index(path: &str, index: usize) -> String {
 
 /// The candidate nearest to `word` by edit distance, if it is close enough to be a likely
 /// misspelling (distance ≤ max(1, len/3)).
-pub fn did_you_mean<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+pub fn did_you_mean<'a>(
+    word: &str,
+    candidates: impl IntoIterator<Item = &'a str>,
+) -> Option<&'a str> {
     let limit = (word.chars().count() / 3).max(1);
     candidates
         .into_iter()
@@ -109,7 +119,9 @@ fn edit_distance(a: &str, b: &str) -> usize {
     for i in 1..=a.len() {
         for j in 1..=b.len() {
             let cost = usize::from(a[i - 1] != b[j - 1]);
-            d[i][j] = (d[i - 1][j] + 1).min(d[i][j - 1] + 1).min(d[i - 1][j - 1] + cost);
+            d[i][j] = (d[i - 1][j] + 1)
+                .min(d[i][j - 1] + 1)
+                .min(d[i - 1][j - 1] + cost);
             if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
                 d[i][j] = d[i][j].min(d[i - 2][j - 2] + 1);
             }
@@ -136,10 +148,22 @@ mod tests {
     fn formats_one_line_per_problem() {
         let problems = Problems {
             source: "x.json".into(),
-            list: vec![Problem::new("a.b", "bad (got 1, expected 2)"), Problem::new("", "empty")],
+            list: vec![
+                Problem::new("a.b", "bad (got 1, expected 2)"),
+                Problem::new("", "empty"),
+            ],
         };
-        assert_eq!(problems.to_string(), "error: x.json: a.b: bad (got 1, expected 2)\nerror: x.json: empty");
-        let problems = Problems { source: "x.json".into(), list: vec![Problem::new("a\nb", "got \"c\td\u{7}\"")] };
-        assert_eq!(problems.to_string(), "error: x.json: a\\nb: got \"c\\td\\u0007\"");
+        assert_eq!(
+            problems.to_string(),
+            "error: x.json: a.b: bad (got 1, expected 2)\nerror: x.json: empty"
+        );
+        let problems = Problems {
+            source: "x.json".into(),
+            list: vec![Problem::new("a\nb", "got \"c\td\u{7}\"")],
+        };
+        assert_eq!(
+            problems.to_string(),
+            "error: x.json: a\\nb: got \"c\\td\\u0007\""
+        );
     }
 }

@@ -18,16 +18,26 @@ pub enum Transform {
 
 impl Transform {
     /// Every transform with its JSON name.
-    pub const NAMES: [(&'static str, Transform); 2] = [("projected", Transform::Projected), ("slope", Transform::Slope)];
+    pub const NAMES: [(&'static str, Transform); 2] = [
+        ("projected", Transform::Projected),
+        ("slope", Transform::Slope),
+    ];
 
     /// The JSON name.
     pub fn name(self) -> &'static str {
-        Self::NAMES.iter().find(|(_, t)| *t == self).map(|(n, _)| *n).expect("every transform is named")
+        Self::NAMES
+            .iter()
+            .find(|(_, t)| *t == self)
+            .map(|(n, _)| *n)
+            .expect("every transform is named")
     }
 
     /// Looks a transform up by JSON name.
     pub fn from_name(name: &str) -> Option<Transform> {
-        Self::NAMES.iter().find(|(n, _)| *n == name).map(|(_, t)| *t)
+        Self::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, t)| *t)
     }
 
     /// The transformed value at θ of an NDF whose value there is `d`. At θ = π/2 (the double

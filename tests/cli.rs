@@ -5,7 +5,10 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
 fn ndfplot(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ndfplot")).args(args).output().expect("the binary runs")
+    Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
 }
 
 fn ndfplot_stdin(args: &[&str], stdin: &str) -> Output {
@@ -17,7 +20,12 @@ fn ndfplot_stdin(args: &[&str], stdin: &str) -> Output {
         .stderr(Stdio::piped())
         .spawn()
         .expect("the binary runs");
-    child.stdin.take().unwrap().write_all(stdin.as_bytes()).unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(stdin.as_bytes())
+        .unwrap();
     child.wait_with_output().unwrap()
 }
 
@@ -35,7 +43,10 @@ fn assert_input_error(output: &Output, needle: &str) {
     let err = stderr(output);
     assert_eq!(output.status.code(), Some(2), "stderr: {err}");
     assert!(output.stdout.is_empty(), "stdout: {}", stdout(output));
-    assert!(err.lines().all(|l| l.starts_with("error: ")), "stderr: {err}");
+    assert!(
+        err.lines().all(|l| l.starts_with("error: ")),
+        "stderr: {err}"
+    );
     assert!(err.contains(needle), "expected {needle:?} in: {err}");
 }
 
@@ -48,21 +59,36 @@ fn scratch(name: &str) -> PathBuf {
 }
 
 fn files_in(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> =
-        std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
     names.sort();
     names
 }
 
 #[test]
 fn eval_prints_theta_value_csv_in_round_trip_form() {
-    let out = ndfplot(&["eval", "--curve", r#"{"ndf":"phong","alpha_p":0}"#, "--theta", "0,0.5,1.5707963267948966"]);
+    let out = ndfplot(&[
+        "eval",
+        "--curve",
+        r#"{"ndf":"phong","alpha_p":0}"#,
+        "--theta",
+        "0,0.5,1.5707963267948966",
+    ]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let text = stdout(&out);
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines[0], "theta,value");
     let pi_inv = std::f64::consts::FRAC_1_PI;
-    assert_eq!(lines[1..], [format!("0.0,{pi_inv:?}"), format!("0.5,{pi_inv:?}"), format!("1.5707963267948966,{pi_inv:?}")]);
+    assert_eq!(
+        lines[1..],
+        [
+            format!("0.0,{pi_inv:?}"),
+            format!("0.5,{pi_inv:?}"),
+            format!("1.5707963267948966,{pi_inv:?}")
+        ]
+    );
 }
 
 #[test]
@@ -84,8 +110,17 @@ fn eval_linspace_degrees_and_several_curves() {
         rows.next().unwrap(),
         r#"theta,"{""ndf"":""trowbridge_reitz"",""alpha_tr"":1.0}","{""ndf"":""beckmann"",""alpha_b"":0.5}""#
     );
-    let thetas: Vec<f64> = rows.map(|r| r.split(',').next().unwrap().parse().unwrap()).collect();
-    assert_eq!(thetas, [0.0, std::f64::consts::FRAC_PI_4, std::f64::consts::FRAC_PI_2]);
+    let thetas: Vec<f64> = rows
+        .map(|r| r.split(',').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(
+        thetas,
+        [
+            0.0,
+            std::f64::consts::FRAC_PI_4,
+            std::f64::consts::FRAC_PI_2
+        ]
+    );
 }
 
 #[test]
@@ -93,21 +128,46 @@ fn eval_reads_curves_from_a_file_and_from_json_lines_on_stdin() {
     let dir = scratch("eval-inputs");
     let file = dir.join("curve.json");
     std::fs::write(&file, r#"{"ndf": "beckmann", "alpha_b": 0.5}"#).unwrap();
-    let from_file = ndfplot(&["eval", "--curve", &format!("@{}", file.display()), "--theta", "0.3"]);
-    let inline = ndfplot(&["eval", "--curve", r#"{"ndf":"beckmann","alpha_b":0.5}"#, "--theta", "0.3"]);
+    let from_file = ndfplot(&[
+        "eval",
+        "--curve",
+        &format!("@{}", file.display()),
+        "--theta",
+        "0.3",
+    ]);
+    let inline = ndfplot(&[
+        "eval",
+        "--curve",
+        r#"{"ndf":"beckmann","alpha_b":0.5}"#,
+        "--theta",
+        "0.3",
+    ]);
     assert_eq!(stdout(&from_file), stdout(&inline));
     let lines = "{\"ndf\":\"beckmann\",\"alpha_b\":0.5}\n\n{\"ndf\":\"phong\",\"alpha_p\":2}\n";
     let out = ndfplot_stdin(&["eval", "--curve", "-", "--theta", "0.3"], lines);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    assert!(stdout(&out).starts_with("theta,\"{\"\"ndf\"\":\"\"beckmann\"\""), "{}", stdout(&out));
-    let bad = ndfplot_stdin(&["eval", "--curve", "-", "--theta", "0.3"], "{\"ndf\":\"phong\",\"alpha_p\":2}\n{\"ndf\":\"phon\"}\n");
+    assert!(
+        stdout(&out).starts_with("theta,\"{\"\"ndf\"\":\"\"beckmann\"\""),
+        "{}",
+        stdout(&out)
+    );
+    let bad = ndfplot_stdin(
+        &["eval", "--curve", "-", "--theta", "0.3"],
+        "{\"ndf\":\"phong\",\"alpha_p\":2}\n{\"ndf\":\"phon\"}\n",
+    );
     assert_input_error(&bad, "stdin:2: ndf: unknown ndf model");
 }
 
 #[test]
 fn eval_values_match_the_library() {
     let thetas = "0,1e-8,0.25,1.0,1.5707963267948966";
-    let out = ndfplot(&["eval", "--curve", r#"{"ndf":"abc","alpha_abc1":23.5,"alpha_abc2":1.75}"#, "--theta", thetas]);
+    let out = ndfplot(&[
+        "eval",
+        "--curve",
+        r#"{"ndf":"abc","alpha_abc1":23.5,"alpha_abc2":1.75}"#,
+        "--theta",
+        thetas,
+    ]);
     let curve = ndfplot::curve::parse(
         &ndfplot::json::parse(r#"{"ndf":"abc","alpha_abc1":23.5,"alpha_abc2":1.75}"#).unwrap(),
         "",
@@ -124,15 +184,45 @@ fn eval_values_match_the_library() {
 fn eval_bad_input_exits_2_naming_the_problem() {
     let theta = ["--theta", "0.1"];
     let cases: &[(&[&str], &str)] = &[
-        (&["--curve", r#"{"ndf":"phong","alpha_p":1"#], "--curve: 1:27: invalid JSON"),
-        (&["--curve", r#"{"ndf":"becmann","alpha_b":1}"#], "did you mean \"beckmann\""),
-        (&["--curve", r#"{"ndf":"beckmann","alpha":1}"#], "--curve: alpha: unknown key"),
-        (&["--curve", r#"{"ndf":"beckmann","alpha_b":"x"}"#], "alpha_b: expected a number"),
-        (&["--curve", r#"{"ndf":"abc","alpha_abc1":1}"#], "alpha_abc2: missing parameter"),
-        (&["--curve", r#"{"ndf":"beckmann","alpha_b":-0.5}"#], "alpha_b: out of domain (got -0.5"),
-        (&["--curve", r#"{"ndf":"beckmann","alpha_b":0.5,"alpha_b":0.6}"#], "alpha_b: duplicate key"),
-        (&["--curve", r#"{"ndf":"phong","alpha_p":1e999}"#], "outside the range of a double"),
-        (&["--curve", "@/nonexistent/curve.json"], "/nonexistent/curve.json"),
+        (
+            &["--curve", r#"{"ndf":"phong","alpha_p":1"#],
+            "--curve: 1:27: invalid JSON",
+        ),
+        (
+            &["--curve", r#"{"ndf":"becmann","alpha_b":1}"#],
+            "did you mean \"beckmann\"",
+        ),
+        (
+            &["--curve", r#"{"ndf":"beckmann","alpha":1}"#],
+            "--curve: alpha: unknown key",
+        ),
+        (
+            &["--curve", r#"{"ndf":"beckmann","alpha_b":"x"}"#],
+            "alpha_b: expected a number",
+        ),
+        (
+            &["--curve", r#"{"ndf":"abc","alpha_abc1":1}"#],
+            "alpha_abc2: missing parameter",
+        ),
+        (
+            &["--curve", r#"{"ndf":"beckmann","alpha_b":-0.5}"#],
+            "alpha_b: out of domain (got -0.5",
+        ),
+        (
+            &[
+                "--curve",
+                r#"{"ndf":"beckmann","alpha_b":0.5,"alpha_b":0.6}"#,
+            ],
+            "alpha_b: duplicate key",
+        ),
+        (
+            &["--curve", r#"{"ndf":"phong","alpha_p":1e999}"#],
+            "outside the range of a double",
+        ),
+        (
+            &["--curve", "@/nonexistent/curve.json"],
+            "/nonexistent/curve.json",
+        ),
     ];
     for (args, needle) in cases {
         let mut all = vec!["eval"];
@@ -150,7 +240,10 @@ fn eval_bad_input_exits_2_naming_the_problem() {
         ("-0.1", "angle out of range"),
         ("0,1:2:3", "not both"),
     ] {
-        assert_input_error(&ndfplot(&["eval", "--curve", curve, &format!("--theta={list}")]), needle);
+        assert_input_error(
+            &ndfplot(&["eval", "--curve", curve, &format!("--theta={list}")]),
+            needle,
+        );
     }
 }
 
@@ -166,13 +259,23 @@ fn eval_reports_every_bad_curve_at_once() {
         "0",
     ]);
     assert_input_error(&out, "--curve[0]: alpha_q: unknown key");
-    assert!(stderr(&out).contains("--curve[1]: alpha_tr: out of domain"), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("--curve[1]: alpha_tr: out of domain"),
+        "{}",
+        stderr(&out)
+    );
 }
 
 #[test]
 fn eval_into_a_closed_pipe_is_not_an_error() {
     let mut child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
-        .args(["eval", "--curve", r#"{"ndf":"phong","alpha_p":5}"#, "--theta", "0:1.5:2000000"])
+        .args([
+            "eval",
+            "--curve",
+            r#"{"ndf":"phong","alpha_p":5}"#,
+            "--theta",
+            "0:1.5:2000000",
+        ])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -200,30 +303,68 @@ fn render_writes_svg_png_csv_and_csv_values_equal_eval() {
     let spec = dir.join("spec.json");
     std::fs::write(&spec, SPEC).unwrap();
     let out_dir = dir.join("out");
-    let out = ndfplot(&["render", spec.to_str().unwrap(), "-o", out_dir.to_str().unwrap()]);
+    let out = ndfplot(&[
+        "render",
+        spec.to_str().unwrap(),
+        "-o",
+        out_dir.to_str().unwrap(),
+    ]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    assert_eq!(files_in(&out_dir), ["two-panels.csv", "two-panels.png", "two-panels.svg"]);
+    assert_eq!(
+        files_in(&out_dir),
+        ["two-panels.csv", "two-panels.png", "two-panels.svg"]
+    );
     let csv = std::fs::read_to_string(out_dir.join("two-panels.csv")).unwrap();
     let mut reader = csv::Reader::from_reader(csv.as_bytes());
-    assert_eq!(reader.headers().unwrap(), vec!["panel", "series", "curve", "x", "y"]);
+    assert_eq!(
+        reader.headers().unwrap(),
+        vec!["panel", "series", "curve", "x", "y"]
+    );
     let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
     assert_eq!(rows.len(), (7 + 3) * 50);
-    let series_of_panel_0: std::collections::BTreeSet<&str> =
-        rows.iter().filter(|r| &r[0] == "0").map(|r| r.get(1).unwrap()).collect();
-    assert_eq!(series_of_panel_0.len(), 7, "Range[0.4, 1.0, 0.1] gives 7 curves");
-    assert!(rows.iter().any(|r| &r[2] == r#"{"ndf":"beckmann","alpha_b":1.0}"#));
+    let series_of_panel_0: std::collections::BTreeSet<&str> = rows
+        .iter()
+        .filter(|r| &r[0] == "0")
+        .map(|r| r.get(1).unwrap())
+        .collect();
+    assert_eq!(
+        series_of_panel_0.len(),
+        7,
+        "Range[0.4, 1.0, 0.1] gives 7 curves"
+    );
+    assert!(
+        rows.iter()
+            .any(|r| &r[2] == r#"{"ndf":"beckmann","alpha_b":1.0}"#)
+    );
     // The degree panel samples only its visible range, 0 … 60°.
-    let max_x = rows.iter().filter(|r| &r[0] == "1").map(|r| r[3].parse::<f64>().unwrap()).fold(0.0, f64::max);
+    let max_x = rows
+        .iter()
+        .filter(|r| &r[0] == "1")
+        .map(|r| r[3].parse::<f64>().unwrap())
+        .fold(0.0, f64::max);
     assert_eq!(max_x, 60.0 * std::f64::consts::PI / 180.0);
     // Every value equals `eval` for the same curve and θ.
     for row in rows.iter().step_by(37) {
         let eval = ndfplot(&["eval", "--curve", &row[2], "--theta", &row[3]]);
-        let value = stdout(&eval).lines().nth(1).unwrap().split(',').nth(1).unwrap().to_string();
+        let value = stdout(&eval)
+            .lines()
+            .nth(1)
+            .unwrap()
+            .split(',')
+            .nth(1)
+            .unwrap()
+            .to_string();
         assert_eq!(value, &row[4], "{row:?}");
     }
     let svg = std::fs::read_to_string(out_dir.join("two-panels.svg")).unwrap();
-    assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"), "not an SVG");
-    assert!(svg.contains("Test figure") && svg.contains("α_b = 0.4"), "labels missing from SVG");
+    assert!(
+        svg.starts_with("<svg") || svg.starts_with("<?xml"),
+        "not an SVG"
+    );
+    assert!(
+        svg.contains("Test figure") && svg.contains("α_b = 0.4"),
+        "labels missing from SVG"
+    );
     let png = std::fs::read(out_dir.join("two-panels.png")).unwrap();
     assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
 }
@@ -237,12 +378,20 @@ fn render_output_is_identical_across_runs_and_thread_counts() {
     for (run, threads) in [("a", "2"), ("b", "2"), ("c", "1")] {
         let out_dir = dir.join(run);
         let status = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
-            .args(["render", spec.to_str().unwrap(), "-o", out_dir.to_str().unwrap()])
+            .args([
+                "render",
+                spec.to_str().unwrap(),
+                "-o",
+                out_dir.to_str().unwrap(),
+            ])
             .env("RAYON_NUM_THREADS", threads)
             .status()
             .unwrap();
         assert!(status.success());
-        let bytes: Vec<Vec<u8>> = files_in(&out_dir).iter().map(|f| std::fs::read(out_dir.join(f)).unwrap()).collect();
+        let bytes: Vec<Vec<u8>> = files_in(&out_dir)
+            .iter()
+            .map(|f| std::fs::read(out_dir.join(f)).unwrap())
+            .collect();
         outputs.push(bytes);
     }
     assert_eq!(outputs[0], outputs[1]);
@@ -275,13 +424,20 @@ fn render_formats_and_canvas_flags() {
     let width = u32::from_be_bytes(png[16..20].try_into().unwrap());
     let height = u32::from_be_bytes(png[20..24].try_into().unwrap());
     assert_eq!((width, height), (600, 450));
-    assert_input_error(&ndfplot(&["render", spec.to_str().unwrap(), "--format", "gif"]), "unknown format");
+    assert_input_error(
+        &ndfplot(&["render", spec.to_str().unwrap(), "--format", "gif"]),
+        "unknown format",
+    );
 }
 
 #[test]
 fn render_without_arguments_renders_the_catalogue_into_plots() {
     let dir = scratch("render-catalogue");
-    let out = Command::new(env!("CARGO_BIN_EXE_ndfplot")).arg("render").current_dir(&dir).output().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .arg("render")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let files = files_in(&dir.join("plots"));
     let configs = files_in(&Path::new(env!("CARGO_MANIFEST_DIR")).join("configs"));
@@ -291,33 +447,83 @@ fn render_without_arguments_renders_the_catalogue_into_plots() {
             assert!(files.contains(&format!("{id}.{ext}")), "missing {id}.{ext}");
         }
     }
-    assert!(!files.iter().any(|f| f.starts_with('.')), "temporaries left: {files:?}");
+    assert!(
+        !files.iter().any(|f| f.starts_with('.')),
+        "temporaries left: {files:?}"
+    );
 }
 
 #[test]
 fn render_bad_specs_exit_2_name_file_path_and_value_and_write_nothing() {
     let dir = scratch("render-bad");
     let cases = [
-        ("{\n  \"id\": \"x\",\n  \"panels\": [}\n", "bad.json: 3:14: invalid JSON"),
-        (r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}],"colour":"red"}"#, "colour: unknown key"),
-        (r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":1,"stlye":"thick"}]}]}"#, "did you mean \"style\""),
-        (r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":[]}]}]}"#, "panels[0].curves[0].alpha_p: empty list"),
-        (r#"{"id":"x","panels":[{"curves":[{"ndf":"beckmann","alpha_b":{"range":[0,1,0]}}]}]}"#, "alpha_b.range: step must not be 0"),
-        (r#"{"id":"x","panels":[{"curves":[{"ndf":"beckmann","alpha_b":{"range":[1,0,0.1]}}]}]}"#, "away from stop"),
-        (r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":{"from_beckmann":1.5}}]}]}"#, "alpha_p.from_beckmann: Beckmann-to-Phong conversion needs 0 < α_b ≤ 1 (got 1.5"),
-        (r#"{"id":"../x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#, "id: invalid id (got \"../x\""),
-        (r#"{"id":"/tmp/x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#, "invalid id"),
-        (r#"{"id":"a/b","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#, "invalid id"),
-        (r#"{"id":"x","panels":[{"curves":[{"ndf":"beckmann","alpha_b":{"range":[0,1e9,1e-9]}}]}]}"#, "exceed the cap"),
-        (r#"{"id":"x","sampling":{"uniform":1e14},"panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#, "sampling.uniform: out of range"),
-        (r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}],"x":{"range":[0,2]}}]}"#, "panels[0].x.range: invalid interval"),
-        (r#"{"$schema":"s.json","id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":-1}]}]}"#, "panels[0].curves[0].alpha_p: out of domain"),
+        (
+            "{\n  \"id\": \"x\",\n  \"panels\": [}\n",
+            "bad.json: 3:14: invalid JSON",
+        ),
+        (
+            r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}],"colour":"red"}"#,
+            "colour: unknown key",
+        ),
+        (
+            r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":1,"stlye":"thick"}]}]}"#,
+            "did you mean \"style\"",
+        ),
+        (
+            r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":[]}]}]}"#,
+            "panels[0].curves[0].alpha_p: empty list",
+        ),
+        (
+            r#"{"id":"x","panels":[{"curves":[{"ndf":"beckmann","alpha_b":{"range":[0,1,0]}}]}]}"#,
+            "alpha_b.range: step must not be 0",
+        ),
+        (
+            r#"{"id":"x","panels":[{"curves":[{"ndf":"beckmann","alpha_b":{"range":[1,0,0.1]}}]}]}"#,
+            "away from stop",
+        ),
+        (
+            r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":{"from_beckmann":1.5}}]}]}"#,
+            "alpha_p.from_beckmann: Beckmann-to-Phong conversion needs 0 < α_b ≤ 1 (got 1.5",
+        ),
+        (
+            r#"{"id":"../x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#,
+            "id: invalid id (got \"../x\"",
+        ),
+        (
+            r#"{"id":"/tmp/x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#,
+            "invalid id",
+        ),
+        (
+            r#"{"id":"a/b","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#,
+            "invalid id",
+        ),
+        (
+            r#"{"id":"x","panels":[{"curves":[{"ndf":"beckmann","alpha_b":{"range":[0,1e9,1e-9]}}]}]}"#,
+            "exceed the cap",
+        ),
+        (
+            r#"{"id":"x","sampling":{"uniform":1e14},"panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#,
+            "sampling.uniform: out of range",
+        ),
+        (
+            r#"{"id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":1}],"x":{"range":[0,2]}}]}"#,
+            "panels[0].x.range: invalid interval",
+        ),
+        (
+            r#"{"$schema":"s.json","id":"x","panels":[{"curves":[{"ndf":"phong","alpha_p":-1}]}]}"#,
+            "panels[0].curves[0].alpha_p: out of domain",
+        ),
     ];
     for (text, needle) in cases {
         let spec = dir.join("bad.json");
         std::fs::write(&spec, text).unwrap();
         let out_dir = dir.join("out");
-        let out = ndfplot(&["render", spec.to_str().unwrap(), "-o", out_dir.to_str().unwrap()]);
+        let out = ndfplot(&[
+            "render",
+            spec.to_str().unwrap(),
+            "-o",
+            out_dir.to_str().unwrap(),
+        ]);
         assert_input_error(&out, needle);
         assert!(stderr(&out).contains("bad.json"), "{}", stderr(&out));
         assert!(!out_dir.exists(), "{text}: output written");
@@ -327,112 +533,312 @@ fn render_bad_specs_exit_2_name_file_path_and_value_and_write_nothing() {
 #[test]
 fn render_reports_all_problems_of_all_files_and_duplicate_ids() {
     let dir = scratch("render-many-bad");
-    std::fs::write(dir.join("a.json"), r#"{"id":"same","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#).unwrap();
-    std::fs::write(dir.join("b.json"), r#"{"id":"same","panels":[{"curves":[{"ndf":"phong","alpha_p":2}]}]}"#).unwrap();
+    std::fs::write(
+        dir.join("a.json"),
+        r#"{"id":"same","panels":[{"curves":[{"ndf":"phong","alpha_p":1}]}]}"#,
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("b.json"),
+        r#"{"id":"same","panels":[{"curves":[{"ndf":"phong","alpha_p":2}]}]}"#,
+    )
+    .unwrap();
     std::fs::write(
         dir.join("c.json"),
         r#"{"id":"c","panels":[{"curves":[{"ndf":"phong","alpha_p":-1},{"ndf":"ggx","alpha_tr":"x"}]}]}"#,
     )
     .unwrap();
     let out_dir = dir.join("out");
-    let out = ndfplot(&["render", dir.to_str().unwrap(), "-o", out_dir.to_str().unwrap()]);
+    let out = ndfplot(&[
+        "render",
+        dir.to_str().unwrap(),
+        "-o",
+        out_dir.to_str().unwrap(),
+    ]);
     assert_input_error(&out, "b.json: id: duplicate id (got \"same\"");
     let err = stderr(&out);
-    assert!(err.contains("c.json: panels[0].curves[0].alpha_p: out of domain"), "{err}");
-    assert!(err.contains("c.json: panels[0].curves[1].alpha_tr: expected a number"), "{err}");
+    assert!(
+        err.contains("c.json: panels[0].curves[0].alpha_p: out of domain"),
+        "{err}"
+    );
+    assert!(
+        err.contains("c.json: panels[0].curves[1].alpha_tr: expected a number"),
+        "{err}"
+    );
     assert!(!out_dir.exists());
 }
 
 #[test]
 fn eval_fresnel_curves_and_their_bad_input() {
-    let out = ndfplot(&["eval", "--curve", r#"{"fresnel":"exact","eta":1.5}"#, "--theta", "0"]);
+    let out = ndfplot(&[
+        "eval",
+        "--curve",
+        r#"{"fresnel":"exact","eta":1.5}"#,
+        "--theta",
+        "0",
+    ]);
     assert_eq!(stdout(&out), "theta,value\n0.0,0.04\n", "{}", stderr(&out));
-    let out = ndfplot(&["eval", "--curve", r#"{"fresnel":"schlick","r":0.5,"g":0.5}"#, "--curve", r#"{"fresnel":"lazanyi_term"}"#, "--theta", "0"]);
+    let out = ndfplot(&[
+        "eval",
+        "--curve",
+        r#"{"fresnel":"schlick","r":0.5,"g":0.5}"#,
+        "--curve",
+        r#"{"fresnel":"lazanyi_term"}"#,
+        "--theta",
+        "0",
+    ]);
     assert!(stdout(&out).starts_with(r#"theta,"{""fresnel"":""schlick"",""r"":0.5,""g"":0.5,""g_remap"":false}","{""fresnel"":""lazanyi_term""}""#), "{}", stdout(&out));
     for (curve, needle) in [
-        (r#"{"fresnel":"exact","r":1.0,"g":0.5}"#, "r: out of domain (got 1.0, expected in [0, 1))"),
-        (r#"{"fresnel":"exact","r":0.5,"g":1.5}"#, "g: out of domain (got 1.5"),
-        (r#"{"fresnel":"exact","eta":0,"kappa":0}"#, "eta: out of domain (got 0.0"),
-        (r#"{"fresnel":"exact","eta":1.5,"kappa":-1}"#, "kappa: out of domain (got -1.0"),
-        (r#"{"fresnel":"exact","eta":1.5,"r":0.5,"g":0.1}"#, "cannot be combined"),
-        (r#"{"fresnel":"basis","index":4}"#, "index: out of domain (got 4.0, expected 0, 1, 2 or 3)"),
-        (r#"{"fresnel":"basis","index":1.5}"#, "index: out of domain (got 1.5"),
+        (
+            r#"{"fresnel":"exact","r":1.0,"g":0.5}"#,
+            "r: out of domain (got 1.0, expected in [0, 1))",
+        ),
+        (
+            r#"{"fresnel":"exact","r":0.5,"g":1.5}"#,
+            "g: out of domain (got 1.5",
+        ),
+        (
+            r#"{"fresnel":"exact","eta":0,"kappa":0}"#,
+            "eta: out of domain (got 0.0",
+        ),
+        (
+            r#"{"fresnel":"exact","eta":1.5,"kappa":-1}"#,
+            "kappa: out of domain (got -1.0",
+        ),
+        (
+            r#"{"fresnel":"exact","eta":1.5,"r":0.5,"g":0.1}"#,
+            "cannot be combined",
+        ),
+        (
+            r#"{"fresnel":"basis","index":4}"#,
+            "index: out of domain (got 4.0, expected 0, 1, 2 or 3)",
+        ),
+        (
+            r#"{"fresnel":"basis","index":1.5}"#,
+            "index: out of domain (got 1.5",
+        ),
         (r#"{"fresnel":"exakt","eta":1.5}"#, "did you mean \"exact\""),
         (r#"{"fresnel":"exact","ndf":"phong","eta":1.5}"#, "not both"),
-        (r#"{"fresnel":"lazanyi","f0":0.5,"a":100}"#, "a: out of domain (got 100.0"),
-        (r#"{"fresnel":"exact","eta":1.5,"g_remap":true}"#, "keys eta, g_remap cannot be combined"),
-        (r#"{"fresnel":"exact","r":0.5,"g":0.5,"g_remap":"yes"}"#, "g_remap: expected true or false"),
+        (
+            r#"{"fresnel":"lazanyi","f0":0.5,"a":100}"#,
+            "a: out of domain (got 100.0",
+        ),
+        (
+            r#"{"fresnel":"exact","eta":1.5,"g_remap":true}"#,
+            "keys eta, g_remap cannot be combined",
+        ),
+        (
+            r#"{"fresnel":"exact","r":0.5,"g":0.5,"g_remap":"yes"}"#,
+            "g_remap: expected true or false",
+        ),
     ] {
-        assert_input_error(&ndfplot(&["eval", "--curve", curve, "--theta", "0.5"]), needle);
+        assert_input_error(
+            &ndfplot(&["eval", "--curve", curve, "--theta", "0.5"]),
+            needle,
+        );
     }
 }
 
 #[test]
 fn coeffs_prints_the_decomposition_of_materials() {
-    let out = ndfplot(&["coeffs", "--curve", r#"{"fresnel":"belcour","eta":1.0,"kappa":0.0}"#]);
-    assert_eq!(stdout(&out), "c0,c1,c2,c3,l2\n0.0,0.0,0.0,0.0,0.0\n", "{}", stderr(&out));
-    assert_input_error(&ndfplot(&["coeffs", "--curve", r#"{"ndf":"phong","alpha_p":1}"#]), "coeffs needs a material");
+    let out = ndfplot(&[
+        "coeffs",
+        "--curve",
+        r#"{"fresnel":"belcour","eta":1.0,"kappa":0.0}"#,
+    ]);
+    assert_eq!(
+        stdout(&out),
+        "c0,c1,c2,c3,l2\n0.0,0.0,0.0,0.0,0.0\n",
+        "{}",
+        stderr(&out)
+    );
+    assert_input_error(
+        &ndfplot(&["coeffs", "--curve", r#"{"ndf":"phong","alpha_p":1}"#]),
+        "coeffs needs a material",
+    );
 }
 
 #[test]
 fn fit_prints_the_curve_for_eval_and_the_residual_on_stderr() {
-    let out = ndfplot(&["fit", "--target", r#"{"ndf":"ggx","alpha_tr":0.3}"#, "--family", "abc", "--fix", "alpha_abc2=1.75"]);
+    let out = ndfplot(&[
+        "fit",
+        "--target",
+        r#"{"ndf":"ggx","alpha_tr":0.3}"#,
+        "--family",
+        "abc",
+        "--fix",
+        "alpha_abc2=1.75",
+    ]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let line = stdout(&out);
-    assert!(line.starts_with(r#"{"ndf":"abc","alpha_abc1":23.444"#) && line.ends_with(",\"alpha_abc2\":1.75}\n"), "{line}");
+    assert!(
+        line.starts_with(r#"{"ndf":"abc","alpha_abc1":23.444"#)
+            && line.ends_with(",\"alpha_abc2\":1.75}\n"),
+        "{line}"
+    );
     let residual = stderr(&out);
-    assert!(residual.starts_with("residual=") && residual.trim_end().ends_with(" (d0_rel)"), "{residual}");
+    assert!(
+        residual.starts_with("residual=") && residual.trim_end().ends_with(" (d0_rel)"),
+        "{residual}"
+    );
     let eval = ndfplot(&["eval", "--curve", line.trim_end(), "--theta", "0"]);
-    let target = ndfplot(&["eval", "--curve", r#"{"ndf":"ggx","alpha_tr":0.3}"#, "--theta", "0"]);
-    let value = |o: &Output| stdout(o).lines().nth(1).unwrap().split(',').nth(1).unwrap().parse::<f64>().unwrap();
+    let target = ndfplot(&[
+        "eval",
+        "--curve",
+        r#"{"ndf":"ggx","alpha_tr":0.3}"#,
+        "--theta",
+        "0",
+    ]);
+    let value = |o: &Output| {
+        stdout(o)
+            .lines()
+            .nth(1)
+            .unwrap()
+            .split(',')
+            .nth(1)
+            .unwrap()
+            .parse::<f64>()
+            .unwrap()
+    };
     assert!((value(&eval) / value(&target) - 1.0).abs() < 1e-14);
-    let l2 = ndfplot(&["fit", "--target", r#"{"ndf":"ggx","alpha_tr":0.3}"#, "--family", "abc", "--fix", "alpha_abc2=1.75", "--by", "l2"]);
-    assert!(stderr(&l2).ends_with(" (l2_projected)\n") && stdout(&l2) != line, "{}", stderr(&l2));
+    let l2 = ndfplot(&[
+        "fit",
+        "--target",
+        r#"{"ndf":"ggx","alpha_tr":0.3}"#,
+        "--family",
+        "abc",
+        "--fix",
+        "alpha_abc2=1.75",
+        "--by",
+        "l2",
+    ]);
+    assert!(
+        stderr(&l2).ends_with(" (l2_projected)\n") && stdout(&l2) != line,
+        "{}",
+        stderr(&l2)
+    );
 }
 
 #[test]
 fn fit_bad_input_exits_2_naming_the_problem() {
     let tr = r#"{"ndf":"trowbridge_reitz","alpha_tr":0.3}"#;
     for (args, needle) in [
-        (vec!["--family", "abc", "--fix", "alpha_abc3=1"], "error: --fix: alpha_abc3: not a parameter of abc (got alpha_abc3=1.0"),
-        (vec!["--family", "trowbridge_reitz", "--fix", "alpha_tr=1"], "error: --fix: alpha_tr: no free parameter left"),
+        (
+            vec!["--family", "abc", "--fix", "alpha_abc3=1"],
+            "error: --fix: alpha_abc3: not a parameter of abc (got alpha_abc3=1.0",
+        ),
+        (
+            vec!["--family", "trowbridge_reitz", "--fix", "alpha_tr=1"],
+            "error: --fix: alpha_tr: no free parameter left",
+        ),
         (vec!["--family", "abc"], "abc has 2 free parameters"),
-        (vec!["--family", "abc", "--fix", "alpha_abc2=x"], "error: --fix: alpha_abc2: not a number (got \"x\""),
-        (vec!["--family", "abd", "--fix", "alpha_abc2=1"], "did you mean \"abc\""),
-        (vec!["--family", "phong", "--by", "l3"], "error: --by: l3: unknown fit method"),
+        (
+            vec!["--family", "abc", "--fix", "alpha_abc2=x"],
+            "error: --fix: alpha_abc2: not a number (got \"x\"",
+        ),
+        (
+            vec!["--family", "abd", "--fix", "alpha_abc2=1"],
+            "did you mean \"abc\"",
+        ),
+        (
+            vec!["--family", "phong", "--by", "l3"],
+            "error: --by: l3: unknown fit method",
+        ),
     ] {
         let mut all = vec!["fit", "--target", tr];
         all.extend(args);
         assert_input_error(&ndfplot(&all), needle);
     }
-    let uniform = ndfplot(&["fit", "--target", r#"{"ndf":"phong","alpha_p":0}"#, "--family", "torrance_sparrow"]);
-    assert_input_error(&uniform, "error: --target: alpha_ts: torrance_sparrow cannot reach the target's D(0) (got 0.3183098861837907");
+    let uniform = ndfplot(&[
+        "fit",
+        "--target",
+        r#"{"ndf":"phong","alpha_p":0}"#,
+        "--family",
+        "torrance_sparrow",
+    ]);
+    assert_input_error(
+        &uniform,
+        "error: --target: alpha_ts: torrance_sparrow cannot reach the target's D(0) (got 0.3183098861837907",
+    );
 }
 
 #[test]
 fn compare_table_json_and_max_error_gate() {
-    let (a, b) = (r#"{"ndf":"ggx","alpha_tr":0.3}"#, r#"{"ndf":"abc","alpha_abc1":23.5,"alpha_abc2":1.75}"#);
+    let (a, b) = (
+        r#"{"ndf":"ggx","alpha_tr":0.3}"#,
+        r#"{"ndf":"abc","alpha_abc1":23.5,"alpha_abc2":1.75}"#,
+    );
     let table = ndfplot(&["compare", "--a", a, "--b", b]);
     assert_eq!(table.status.code(), Some(0), "{}", stderr(&table));
-    for name in ["max_abs", "max_rel", "l2_projected", "l2_grid", "a_peak", "b_peak"] {
-        assert!(stdout(&table).lines().any(|l| l.starts_with(name)), "{name}: {}", stdout(&table));
+    for name in [
+        "max_abs",
+        "max_rel",
+        "l2_projected",
+        "l2_grid",
+        "a_peak",
+        "b_peak",
+    ] {
+        assert!(
+            stdout(&table).lines().any(|l| l.starts_with(name)),
+            "{name}: {}",
+            stdout(&table)
+        );
     }
     let json = ndfplot(&["compare", "--a", a, "--b", b, "--format", "json"]);
     let value: serde_json::Value = serde_json::from_str(&stdout(&json)).unwrap();
     assert_eq!(value["a"]["ndf"], "trowbridge_reitz");
     assert_eq!(value["a_peak_theta"], 0.0);
     let max_rel = value["max_rel"].as_f64().unwrap();
-    assert!(max_rel > 0.0 && max_rel < 1.0 && value["l2_grid"].as_f64().unwrap() > 0.0, "{value}");
-    let pass = ndfplot(&["compare", "--a", a, "--b", b, "--max-error", &format!("max_rel={}", max_rel * 1.01)]);
+    assert!(
+        max_rel > 0.0 && max_rel < 1.0 && value["l2_grid"].as_f64().unwrap() > 0.0,
+        "{value}"
+    );
+    let pass = ndfplot(&[
+        "compare",
+        "--a",
+        a,
+        "--b",
+        b,
+        "--max-error",
+        &format!("max_rel={}", max_rel * 1.01),
+    ]);
     assert_eq!(pass.status.code(), Some(0), "{}", stderr(&pass));
-    let fail = ndfplot(&["compare", "--a", a, "--b", b, "--max-error", "max_rel=1e-6", "--max-error", "l2_grid=1e9"]);
+    let fail = ndfplot(&[
+        "compare",
+        "--a",
+        a,
+        "--b",
+        b,
+        "--max-error",
+        "max_rel=1e-6",
+        "--max-error",
+        "l2_grid=1e9",
+    ]);
     assert_eq!(fail.status.code(), Some(1));
-    assert!(!fail.stdout.is_empty() && stderr(&fail).starts_with("compare: max_rel = "), "{}", stderr(&fail));
+    assert!(
+        !fail.stdout.is_empty() && stderr(&fail).starts_with("compare: max_rel = "),
+        "{}",
+        stderr(&fail)
+    );
     assert_eq!(stderr(&fail).lines().count(), 1);
-    assert_input_error(&ndfplot(&["compare", "--a", a, "--b", b, "--max-error", "max_rel="]), "error: --max-error: max_rel: not a number");
+    assert_input_error(
+        &ndfplot(&["compare", "--a", a, "--b", b, "--max-error", "max_rel="]),
+        "error: --max-error: max_rel: not a number",
+    );
     let fresnel = r#"{"fresnel":"exact","eta":1.5}"#;
-    assert_input_error(&ndfplot(&["compare", "--a", a, "--b", fresnel]), "compare needs two curves of the same kind");
-    let same = ndfplot(&["compare", "--a", fresnel, "--b", r#"{"fresnel":"schlick","eta":1.5}"#, "--format", "json"]);
+    assert_input_error(
+        &ndfplot(&["compare", "--a", a, "--b", fresnel]),
+        "compare needs two curves of the same kind",
+    );
+    let same = ndfplot(&[
+        "compare",
+        "--a",
+        fresnel,
+        "--b",
+        r#"{"fresnel":"schlick","eta":1.5}"#,
+        "--format",
+        "json",
+    ]);
     assert_eq!(same.status.code(), Some(0), "{}", stderr(&same));
 }
 
@@ -441,12 +847,25 @@ fn check_passes_on_the_catalogue_and_fails_beyond_the_tolerance() {
     let out = ndfplot(&["check"]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let text = stdout(&out);
-    assert!(text.lines().skip(1).all(|l| l.starts_with("ok ") || l.starts_with("- ")), "{text}");
-    assert!(text.contains("hemispherical_average") && text.contains("abc-vs-tr"), "{text}");
+    assert!(
+        text.lines()
+            .skip(1)
+            .all(|l| l.starts_with("ok ") || l.starts_with("- ")),
+        "{text}"
+    );
+    assert!(
+        text.contains("hemispherical_average") && text.contains("abc-vs-tr"),
+        "{text}"
+    );
     // No quadrature lands every integral on exactly 1.0: a zero tolerance fails (exit 1) with the table printed.
     let strict = ndfplot(&["check", "--tolerance", "0"]);
     assert_eq!(strict.status.code(), Some(1), "{}", stderr(&strict));
-    assert!(stdout(&strict).contains("\nFAIL ") && stderr(&strict).lines().any(|l| l.starts_with("check: ")), "{}", stderr(&strict));
+    assert!(
+        stdout(&strict).contains("\nFAIL ")
+            && stderr(&strict).lines().any(|l| l.starts_with("check: ")),
+        "{}",
+        stderr(&strict)
+    );
 }
 
 #[test]
@@ -462,13 +881,29 @@ fn scene_fits_and_differences_render_with_fitted_values_in_the_csv() {
         ]}]}"#,
     )
     .unwrap();
-    let out = ndfplot(&["render", spec.to_str().unwrap(), "-o", dir.to_str().unwrap(), "--format", "csv,svg"]);
+    let out = ndfplot(&[
+        "render",
+        spec.to_str().unwrap(),
+        "-o",
+        dir.to_str().unwrap(),
+        "--format",
+        "csv,svg",
+    ]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let csv = std::fs::read_to_string(dir.join("fits.csv")).unwrap();
-    assert!(csv.contains(r#""{""ndf"":""abc"",""alpha_abc1"":11.58186251432451"#), "{}", &csv[..300]);
-    assert!(csv.contains(r#""{""difference"":""ratio"",""a"":{""ndf"":""trowbridge_reitz"",""alpha_tr"":0.6}"#));
+    assert!(
+        csv.contains(r#""{""ndf"":""abc"",""alpha_abc1"":11.58186251432451"#),
+        "{}",
+        &csv[..300]
+    );
+    assert!(csv.contains(
+        r#""{""difference"":""ratio"",""a"":{""ndf"":""trowbridge_reitz"",""alpha_tr"":0.6}"#
+    ));
     let svg = std::fs::read_to_string(dir.join("fits.svg")).unwrap();
-    assert!(svg.contains("a₁ = 11.5819 (peak fit to α_tr = 0.4)"), "legend");
+    assert!(
+        svg.contains("a₁ = 11.5819 (peak fit to α_tr = 0.4)"),
+        "legend"
+    );
     std::fs::write(
         &spec,
         r#"{"id": "fits", "panels": [{"curves": [
@@ -477,17 +912,40 @@ fn scene_fits_and_differences_render_with_fitted_values_in_the_csv() {
         ]}]}"#,
     )
     .unwrap();
-    let bad = ndfplot(&["render", spec.to_str().unwrap(), "-o", dir.to_str().unwrap()]);
-    assert_input_error(&bad, "panels[0].curves[0].alpha_ts: fit to α_p = 0: alpha_ts: torrance_sparrow cannot reach");
-    assert!(stderr(&bad).contains("panels[0].curves[1]: a and b pair element-wise (got 2 and 3 curves"), "{}", stderr(&bad));
+    let bad = ndfplot(&[
+        "render",
+        spec.to_str().unwrap(),
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    assert_input_error(
+        &bad,
+        "panels[0].curves[0].alpha_ts: fit to α_p = 0: alpha_ts: torrance_sparrow cannot reach",
+    );
+    assert!(
+        stderr(&bad).contains("panels[0].curves[1]: a and b pair element-wise (got 2 and 3 curves"),
+        "{}",
+        stderr(&bad)
+    );
 }
 
 #[test]
 fn eval_accepts_difference_series() {
-    let minus = r#"{"difference":"minus","a":{"ndf":"phong","alpha_p":0},"b":{"ndf":"phong","alpha_p":0}}"#;
+    let minus =
+        r#"{"difference":"minus","a":{"ndf":"phong","alpha_p":0},"b":{"ndf":"phong","alpha_p":0}}"#;
     let out = ndfplot(&["eval", "--curve", minus, "--theta", "0,1"]);
-    assert_eq!(stdout(&out), "theta,value\n0.0,0.0\n1.0,0.0\n", "{}", stderr(&out));
+    assert_eq!(
+        stdout(&out),
+        "theta,value\n0.0,0.0\n1.0,0.0\n",
+        "{}",
+        stderr(&out)
+    );
     let ratio = r#"{"difference":"ratio","a":{"ndf":"phong","alpha_p":1},"b":{"ndf":"beckmann","alpha_b":0.01}}"#;
     let out = ndfplot(&["eval", "--curve", ratio, "--theta", "0,1.5"]);
-    assert_eq!(out.status.code(), Some(2), "ratio over a vanishing denominator is an error: {}", stdout(&out));
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "ratio over a vanishing denominator is an error: {}",
+        stdout(&out)
+    );
 }

@@ -247,7 +247,9 @@ fn a_render_killed_mid_run_leaves_only_complete_files_and_the_next_run_cleans_up
     // phase depends on the machine's load; when no attempt did, the clean-up check below still
     // runs on the last attempt's folder.
     let out = partial.unwrap_or_else(|| {
-        eprintln!("note: no kill landed while files were being written; checked 16 kills at other moments");
+        eprintln!(
+            "note: no kill landed while files were being written; checked 16 kills at other moments"
+        );
         dir.join("attempt-15")
     });
 

@@ -13,22 +13,36 @@ pub const MAX_THETA_COUNT: u64 = 10_000_000;
 pub fn parse_theta_list(text: &str, degrees: bool) -> Result<Vec<f64>> {
     let bad = |what: String| Error::Usage(format!("--theta: {what}"));
     let number = |s: &str| -> Result<f64> {
-        let v: f64 = s.trim().parse().map_err(|_| bad(format!("not a number (got \"{}\")", s.trim())))?;
-        if v.is_finite() { Ok(v) } else { Err(bad(format!("not a finite number (got \"{}\")", s.trim()))) }
+        let v: f64 = s
+            .trim()
+            .parse()
+            .map_err(|_| bad(format!("not a number (got \"{}\")", s.trim())))?;
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(bad(format!("not a finite number (got \"{}\")", s.trim())))
+        }
     };
     let raw: Vec<f64> = if text.contains(':') {
         if text.contains(',') {
-            return Err(bad(format!("use either a comma list or start:stop:count, not both (got \"{text}\")")));
+            return Err(bad(format!(
+                "use either a comma list or start:stop:count, not both (got \"{text}\")"
+            )));
         }
         let parts: Vec<&str> = text.split(':').collect();
         let [start, stop, count] = parts[..] else {
             return Err(bad(format!("expected start:stop:count (got \"{text}\")")));
         };
         let count: u64 = count.trim().parse().map_err(|_| {
-            bad(format!("count must be a whole number from 1 to {MAX_THETA_COUNT} (got \"{}\")", count.trim()))
+            bad(format!(
+                "count must be a whole number from 1 to {MAX_THETA_COUNT} (got \"{}\")",
+                count.trim()
+            ))
         })?;
         if !(1..=MAX_THETA_COUNT).contains(&count) {
-            return Err(bad(format!("count must be from 1 to {MAX_THETA_COUNT} (got {count})")));
+            return Err(bad(format!(
+                "count must be from 1 to {MAX_THETA_COUNT} (got {count})"
+            )));
         }
         linspace(number(start)?, number(stop)?, count as usize)
     } else {
@@ -40,11 +54,19 @@ pub fn parse_theta_list(text: &str, degrees: bool) -> Result<Vec<f64>> {
     };
     raw.into_iter()
         .map(|v| {
-            let theta = if degrees { v * std::f64::consts::PI / 180.0 } else { v };
+            let theta = if degrees {
+                v * std::f64::consts::PI / 180.0
+            } else {
+                v
+            };
             if (0.0..=FRAC_PI_2).contains(&theta) {
                 Ok(theta)
             } else {
-                let unit = if degrees { "degrees, expected 0 to 90" } else { "radians, expected 0 to 1.5707963267948966" };
+                let unit = if degrees {
+                    "degrees, expected 0 to 90"
+                } else {
+                    "radians, expected 0 to 1.5707963267948966"
+                };
                 Err(bad(format!("angle out of range (got {v:?} {unit})")))
             }
         })
@@ -53,7 +75,11 @@ pub fn parse_theta_list(text: &str, degrees: bool) -> Result<Vec<f64>> {
 
 /// Quotes a CSV field when it holds a comma, quote or line break (RFC 4180).
 pub fn csv_field(text: &str) -> String {
-    if text.contains([',', '"', '\n', '\r']) { format!("\"{}\"", text.replace('"', "\"\"")) } else { text.to_string() }
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
 }
 
 /// The CSV table: `theta,value` for one curve, else `theta,<canonical curve JSON>…`; one row per θ
@@ -93,17 +119,37 @@ mod tests {
 
     #[test]
     fn theta_lists() {
-        assert_eq!(parse_theta_list("0,0.1, 1.5707963267948966", false).unwrap(), [0.0, 0.1, FRAC_PI_2]);
-        assert_eq!(parse_theta_list("0:90:3", true).unwrap(), [0.0, std::f64::consts::FRAC_PI_4, FRAC_PI_2]);
+        assert_eq!(
+            parse_theta_list("0,0.1, 1.5707963267948966", false).unwrap(),
+            [0.0, 0.1, FRAC_PI_2]
+        );
+        assert_eq!(
+            parse_theta_list("0:90:3", true).unwrap(),
+            [0.0, std::f64::consts::FRAC_PI_4, FRAC_PI_2]
+        );
         assert_eq!(parse_theta_list("90", true).unwrap(), [FRAC_PI_2]);
-        for bad in ["abc", "0:1:0", "nan", "0:1:100000000000000", "0:1", "0,1:2:3", "-0.1", "1.6", "", "inf"] {
+        for bad in [
+            "abc",
+            "0:1:0",
+            "nan",
+            "0:1:100000000000000",
+            "0:1",
+            "0,1:2:3",
+            "-0.1",
+            "1.6",
+            "",
+            "inf",
+        ] {
             assert!(parse_theta_list(bad, false).is_err(), "{bad}");
         }
     }
 
     #[test]
     fn csv_quoting() {
-        assert_eq!(csv_field(r#"{"ndf":"phong","alpha_p":1.0}"#), r#""{""ndf"":""phong"",""alpha_p"":1.0}""#);
+        assert_eq!(
+            csv_field(r#"{"ndf":"phong","alpha_p":1.0}"#),
+            r#""{""ndf"":""phong"",""alpha_p"":1.0}""#
+        );
         assert_eq!(csv_field("value"), "value");
     }
 }

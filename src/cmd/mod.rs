@@ -1,14 +1,14 @@
 //! One module per subcommand: each turns parsed arguments into output through the library.
 
-pub mod coeffs;
-pub mod eval;
-pub mod render;
-pub mod compare;
-pub mod fit;
-pub mod check;
-pub mod completions;
-pub mod schema;
 pub mod bench;
+pub mod check;
+pub mod coeffs;
+pub mod compare;
+pub mod completions;
+pub mod eval;
+pub mod fit;
+pub mod render;
+pub mod schema;
 
 use crate::cli::{CheckArgs, CoeffsArgs, Command, CompareArgs, EvalArgs, FitArgs, RenderArgs};
 use crate::error::Result;
@@ -70,17 +70,28 @@ fn run_render(args: RenderArgs) -> Result<()> {
 fn load_one_curve(arg: &str, flag: &str) -> Result<crate::curve::Curve> {
     let mut curves = input::load_curves(&[arg.to_string()], flag, read_stdin)?;
     if curves.len() != 1 {
-        return Err(crate::error::Error::Usage(format!("{flag}: expected one curve (got {})", curves.len())));
+        return Err(crate::error::Error::Usage(format!(
+            "{flag}: expected one curve (got {})",
+            curves.len()
+        )));
     }
     Ok(curves.remove(0))
 }
 
 fn run_compare(args: CompareArgs) -> Result<()> {
-    let bounds: Vec<compare::Bound> = args.max_error.iter().map(|b| compare::parse_bound(b)).collect::<Result<_>>()?;
+    let bounds: Vec<compare::Bound> = args
+        .max_error
+        .iter()
+        .map(|b| compare::parse_bound(b))
+        .collect::<Result<_>>()?;
     let a = load_one_curve(&args.a, "--a")?;
     let b = load_one_curve(&args.b, "--b")?;
     let metrics = compare::metrics(&a, &b)?;
-    let report = if args.format == "json" { compare::json(&a, &b, &metrics) } else { compare::table(&a, &b, &metrics) };
+    let report = if args.format == "json" {
+        compare::json(&a, &b, &metrics)
+    } else {
+        compare::table(&a, &b, &metrics)
+    };
     stdout::print(&report)?;
     compare::check_bounds(&metrics, &bounds)
 }
@@ -97,7 +108,10 @@ fn run_fit(args: FitArgs) -> Result<()> {
 }
 
 fn run_check(args: CheckArgs) -> Result<()> {
-    let scenes = render::load_scenes(&render::sources(&args.paths)?, render::CanvasOverride::default())?;
+    let scenes = render::load_scenes(
+        &render::sources(&args.paths)?,
+        render::CanvasOverride::default(),
+    )?;
     let audits = check::audit_scenes(&scenes)?;
     stdout::print(&check::table(&audits, args.tolerance))?;
     check::verdict(&audits, args.tolerance)

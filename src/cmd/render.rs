@@ -96,12 +96,16 @@ type Source = (String, String, Option<PathBuf>);
 /// or the built-in catalogue when `paths` is empty.
 pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
     if paths.is_empty() {
-        return Ok(CATALOGUE.iter().map(|(name, text)| (format!("configs/{name}"), text.to_string(), None)).collect());
+        return Ok(CATALOGUE
+            .iter()
+            .map(|(name, text)| (format!("configs/{name}"), text.to_string(), None))
+            .collect());
     }
     let mut sources = Vec::new();
     for path in paths {
         if path.is_dir() {
-            let entries = std::fs::read_dir(path).map_err(|e| Error::io(path.display().to_string(), e))?;
+            let entries =
+                std::fs::read_dir(path).map_err(|e| Error::io(path.display().to_string(), e))?;
             let mut files: Vec<PathBuf> = entries
                 .filter_map(|e| e.ok().map(|e| e.path()))
                 .filter(|p| p.extension().is_some_and(|x| x == "json") && p.is_file())
@@ -127,14 +131,26 @@ pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Result<Vec<Sce
     let mut failures = Vec::new();
     for (name, text, base_dir) in sources {
         let parsed = parse_json(text, name).and_then(|node| {
-            scene::parse(&node, base_dir.as_deref()).map_err(|list| Problems { source: name.clone(), list })
+            scene::parse(&node, base_dir.as_deref()).map_err(|list| Problems {
+                source: name.clone(),
+                list,
+            })
         });
         match parsed.and_then(|s| apply_override(s, canvas, name)) {
             Ok(scene) => {
-                if let Some(first) = scenes.iter().position(|(_, other): &(String, Scene)| other.id == scene.id) {
+                if let Some(first) = scenes
+                    .iter()
+                    .position(|(_, other): &(String, Scene)| other.id == scene.id)
+                {
                     failures.push(Problems {
                         source: name.clone(),
-                        list: vec![Problem::new("id", format!("duplicate id (got \"{}\", already used by {})", scene.id, scenes[first].0))],
+                        list: vec![Problem::new(
+                            "id",
+                            format!(
+                                "duplicate id (got \"{}\", already used by {})",
+                                scene.id, scenes[first].0
+                            ),
+                        )],
                     });
                 } else {
                     scenes.push((name.clone(), scene));
@@ -143,10 +159,18 @@ pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Result<Vec<Sce
             Err(problems) => failures.push(problems),
         }
     }
-    if failures.is_empty() { Ok(scenes.into_iter().map(|(_, s)| s).collect()) } else { Err(Error::Input(failures)) }
+    if failures.is_empty() {
+        Ok(scenes.into_iter().map(|(_, s)| s).collect())
+    } else {
+        Err(Error::Input(failures))
+    }
 }
 
-fn apply_override(mut scene: Scene, over: CanvasOverride, source: &str) -> std::result::Result<Scene, Problems> {
+fn apply_override(
+    mut scene: Scene,
+    over: CanvasOverride,
+    source: &str,
+) -> std::result::Result<Scene, Problems> {
     let canvas = &mut scene.canvas;
     let (w, h) = (f64::from(canvas.width_px), f64::from(canvas.height_px));
     let (width, height) = match (over.width, over.height) {
@@ -157,8 +181,10 @@ fn apply_override(mut scene: Scene, over: CanvasOverride, source: &str) -> std::
     canvas.height_px = height.round().max(16.0) as u32;
     canvas.png_scale = over.png_scale.unwrap_or(canvas.png_scale);
     canvas.font_px = over.font_px.unwrap_or(canvas.font_px);
-    scene::check_canvas(canvas)
-        .map_err(|message| Problems { source: source.to_string(), list: vec![Problem::new("", message)] })?;
+    scene::check_canvas(canvas).map_err(|message| Problems {
+        source: source.to_string(),
+        list: vec![Problem::new("", message)],
+    })?;
     Ok(scene)
 }
 
@@ -173,7 +199,12 @@ pub fn figure(scene: &Scene, feeds: &[Vec<usize>], evaluated: &[Evaluated]) -> F
                 .curves
                 .iter()
                 .map(|c| (c.label.clone(), c.curve.canonical_json(), c.style))
-                .chain(panel.data.iter().map(|d| (d.label.clone(), d.dataset.canonical_json(), d.style)));
+                .chain(
+                    panel
+                        .data
+                        .iter()
+                        .map(|d| (d.label.clone(), d.dataset.canonical_json(), d.style)),
+                );
             Panel {
                 title: panel.title.clone(),
                 x_label: panel.x_label.clone(),
@@ -201,12 +232,20 @@ pub fn figure(scene: &Scene, feeds: &[Vec<usize>], evaluated: &[Evaluated]) -> F
             }
         })
         .collect();
-    Figure { id: scene.id.clone(), title: scene.title.clone(), rows: scene.rows, cols: scene.cols, canvas: scene.canvas, panels }
+    Figure {
+        id: scene.id.clone(),
+        title: scene.title.clone(),
+        rows: scene.rows,
+        cols: scene.cols,
+        canvas: scene.canvas,
+        panels,
+    }
 }
 
 /// The bytes of one output of a figure.
 pub fn encode(figure: &Figure, format: Format) -> Result<Vec<u8>> {
-    let plot_error = |e: plot::PlotError| Error::Numerics(format!("{}: drawing failed: {e}", figure.id));
+    let plot_error =
+        |e: plot::PlotError| Error::Numerics(format!("{}: drawing failed: {e}", figure.id));
     match format {
         Format::Svg => plot::svg(figure).map_err(plot_error),
         Format::Png => plot::png(figure).map_err(plot_error),
@@ -220,7 +259,12 @@ fn pages(scenes: &[Scene]) -> Result<Vec<(String, Vec<u8>)>> {
     scenes
         .iter()
         .filter_map(|s| s.interactive.as_ref().map(|i| (s, i)))
-        .map(|(scene, interactive)| Ok((format!("{}.html", scene.id), html::page(scene, interactive).map_err(Error::Numerics)?)))
+        .map(|(scene, interactive)| {
+            Ok((
+                format!("{}.html", scene.id),
+                html::page(scene, interactive).map_err(Error::Numerics)?,
+            ))
+        })
         .collect()
 }
 
@@ -250,7 +294,10 @@ pub fn run_with_stats(options: &RenderOptions) -> Result<(Vec<PathBuf>, RenderSt
 }
 
 /// [`run_with_stats`] with a progress bar on stderr unless `quiet` (see [`Progress`]).
-pub fn run_with_progress(options: &RenderOptions, quiet: bool) -> Result<(Vec<PathBuf>, RenderStats)> {
+pub fn run_with_progress(
+    options: &RenderOptions,
+    quiet: bool,
+) -> Result<(Vec<PathBuf>, RenderStats)> {
     let (outputs, mut stats) = encode_outputs(options, false, quiet)?;
     let stage = std::time::Instant::now();
     let written = write_outputs(&options.out, &outputs)?;
@@ -270,7 +317,14 @@ pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -
     let (outputs, _) = encode_outputs(&options, true, quiet)?;
     let (report, ok) = check_outputs::compare(dir, &outputs, tolerance)?;
     crate::stdout::print(&report)?;
-    if ok { Ok(()) } else { Err(Error::CheckFailed(format!("error: render --check: the CSVs differ from {}", dir.display()))) }
+    if ok {
+        Ok(())
+    } else {
+        Err(Error::CheckFailed(format!(
+            "error: render --check: the CSVs differ from {}",
+            dir.display()
+        )))
+    }
 }
 
 /// Output files as (file name, bytes).
@@ -278,14 +332,32 @@ type Files = Vec<(String, Vec<u8>)>;
 
 /// Every output of `options` as (file name, bytes), sorted by name, without writing anything; only
 /// the CSVs when `tables_only`.
-fn encode_outputs(options: &RenderOptions, tables_only: bool, quiet: bool) -> Result<(Files, RenderStats)> {
+fn encode_outputs(
+    options: &RenderOptions,
+    tables_only: bool,
+    quiet: bool,
+) -> Result<(Files, RenderStats)> {
     let start = std::time::Instant::now();
     let scenes = load_scenes(&sources(&options.paths)?, options.canvas)?;
     let has = |f: Format| options.formats.contains(&f);
-    let outputs = Outputs { drawn: !tables_only && (has(Format::Svg) || has(Format::Png)), table: has(Format::Csv) };
+    let outputs = Outputs {
+        drawn: !tables_only && (has(Format::Svg) || has(Format::Png)),
+        table: has(Format::Csv),
+    };
     let plan = plan(&scenes, outputs, has(Format::Png));
-    let encoded_formats = if tables_only { 1 } else { options.formats.iter().filter(|&&f| f != Format::Html).count() };
-    let progress = Progress::new((plan.jobs.len() + scenes.len() * encoded_formats) as u64, quiet);
+    let encoded_formats = if tables_only {
+        1
+    } else {
+        options
+            .formats
+            .iter()
+            .filter(|&&f| f != Format::Html)
+            .count()
+    };
+    let progress = Progress::new(
+        (plan.jobs.len() + scenes.len() * encoded_formats) as u64,
+        quiet,
+    );
     progress.stage("evaluating");
     let evaluated = evaluate_all(&plan)?;
     progress.advance(plan.jobs.len() as u64);
@@ -299,13 +371,25 @@ fn encode_outputs(options: &RenderOptions, tables_only: bool, quiet: bool) -> Re
     for (kind, feeds) in [(true, &plan.drawn), (false, &plan.table)] {
         let Some(feeds) = feeds else { continue };
         let stage = std::time::Instant::now();
-        let formats: Vec<Format> = options.formats.iter().copied().filter(|&f| f != Format::Html && (f != Format::Csv) == kind).collect();
-        let figures: Vec<Figure> = scenes.iter().zip(feeds).map(|(s, f)| figure(s, f, &evaluated)).collect();
+        let formats: Vec<Format> = options
+            .formats
+            .iter()
+            .copied()
+            .filter(|&f| f != Format::Html && (f != Format::Csv) == kind)
+            .collect();
+        let figures: Vec<Figure> = scenes
+            .iter()
+            .zip(feeds)
+            .map(|(s, f)| figure(s, f, &evaluated))
+            .collect();
         let encoded: Vec<(String, Vec<u8>)> = figures
             .par_iter()
             .flat_map_iter(|fig| formats.iter().map(move |&format| (fig, format)))
             .map(|(fig, format)| {
-                let encoded = (format!("{}.{}", fig.id, format.extension()), encode(fig, format)?);
+                let encoded = (
+                    format!("{}.{}", fig.id, format.extension()),
+                    encode(fig, format)?,
+                );
                 progress.advance(1);
                 Ok(encoded)
             })
@@ -314,7 +398,11 @@ fn encode_outputs(options: &RenderOptions, tables_only: bool, quiet: bool) -> Re
             stats.produced[format as usize] += figures.len();
         }
         outputs.extend(encoded);
-        *(if kind { &mut stats.drawing } else { &mut stats.encoding }) += stage.elapsed();
+        *(if kind {
+            &mut stats.drawing
+        } else {
+            &mut stats.encoding
+        }) += stage.elapsed();
     }
     let stage = std::time::Instant::now();
     if has(Format::Html) && !tables_only {

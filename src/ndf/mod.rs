@@ -69,8 +69,15 @@ impl Family {
     }
 
     /// Accepted names, canonical names first then aliases (for "did you mean" suggestions).
-    pub const NAMES: [&'static str; 7] =
-        ["phong", "beckmann", "torrance_sparrow", "trowbridge_reitz", "abc", "sgd", "ggx"];
+    pub const NAMES: [&'static str; 7] = [
+        "phong",
+        "beckmann",
+        "torrance_sparrow",
+        "trowbridge_reitz",
+        "abc",
+        "sgd",
+        "ggx",
+    ];
 
     /// Parameter names in MATH.md's order.
     pub fn param_names(self) -> &'static [&'static str] {

@@ -3,5 +3,5 @@
 pub mod csv;
 pub mod html;
 pub mod plot;
-pub mod write;
 pub mod plot3d;
+pub mod write;

@@ -36,7 +36,9 @@ pub fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<()> {
 pub fn remove_stale(dir: &Path, name: &str) -> Result<()> {
     let tmp = temporary(dir, name);
     match fs::remove_file(&tmp) {
-        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(Error::io(tmp.display().to_string(), e)),
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+            Err(Error::io(tmp.display().to_string(), e))
+        }
         _ => Ok(()),
     }
 }

@@ -49,7 +49,9 @@ fn keys(own: &[&'static str]) -> Vec<&'static str> {
 
 /// Validates a data entry at `path`; problems go to `reader`.
 pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneData> {
-    let Value::Object(members) = &node.value else { return None };
+    let Value::Object(members) = &node.value else {
+        return None;
+    };
     let probe = Object::from_members(members, path);
     let kind = reader.choice(&probe, "data", KINDS)?;
     let entry = reader.object(node, path, &keys(own_keys(kind)))?;
@@ -67,7 +69,11 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
     }
     let dataset = dataset?;
     let label = label.unwrap_or_else(|| default_label(&dataset));
-    Some(SceneData { dataset, label, style: style? })
+    Some(SceneData {
+        dataset,
+        label,
+        style: style?,
+    })
 }
 
 fn read_spectrum(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
@@ -76,7 +82,10 @@ fn read_spectrum(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
         None => SpectrumQuantity::Cumulative,
         Some(_) => {
             let name = reader.choice(entry, "quantity", &names)?;
-            SpectrumQuantity::NAMES.iter().find(|(n, _)| *n == name).map(|(_, q)| *q)?
+            SpectrumQuantity::NAMES
+                .iter()
+                .find(|(n, _)| *n == name)
+                .map(|(_, q)| *q)?
         }
     };
     let whole = |v: f64| v.fract() == 0.0 && (1.0..=100.0).contains(&v);
@@ -84,24 +93,42 @@ fn read_spectrum(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
         None => 20.0,
         Some(_) => reader.number(entry, "count", whole, "a whole number from 1 to 100")?,
     };
-    Some(Dataset::Spectrum { quantity, count: count as usize })
+    Some(Dataset::Spectrum {
+        quantity,
+        count: count as usize,
+    })
 }
 
 fn coefficient(reader: &mut Reader, entry: &Object, key: &str) -> Option<Coefficient> {
     let names: Vec<&'static str> = Coefficient::NAMES.iter().map(|(n, _)| *n).collect();
     let name = reader.choice(entry, key, &names)?;
-    Coefficient::NAMES.iter().find(|(n, _)| *n == name).map(|(_, c)| *c)
+    Coefficient::NAMES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, c)| *c)
 }
 
-fn values(reader: &mut Reader, entry: &Object, key: &'static str, ok: impl Fn(f64) -> bool, expected: &str) -> Option<Vec<f64>> {
+fn values(
+    reader: &mut Reader,
+    entry: &Object,
+    key: &'static str,
+    ok: impl Fn(f64) -> bool,
+    expected: &str,
+) -> Option<Vec<f64>> {
     let Some(node) = entry.get(key) else {
-        reader.report(entry.path_of(key), "missing parameter (expected a number, a list or a sweep)");
+        reader.report(
+            entry.path_of(key),
+            "missing parameter (expected a number, a list or a sweep)",
+        );
         return None;
     };
     let sweep = sweep::expand(reader, key, ParamKind::Number, node, &entry.path_of(key))?;
     let values: Vec<f64> = sweep.values.iter().map(|v| v.value.number()).collect();
     if let Some(bad) = values.iter().find(|&&v| !ok(v)) {
-        reader.report(entry.path_of(key), format!("out of domain (got {bad:?}, expected {expected})"));
+        reader.report(
+            entry.path_of(key),
+            format!("out of domain (got {bad:?}, expected {expected})"),
+        );
         return None;
     }
     Some(values)
@@ -112,20 +139,46 @@ fn read_gulbrandsen(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
     let y = coefficient(reader, entry, "y");
     let z = entry.get("z").and_then(|_| coefficient(reader, entry, "z"));
     let r = values(reader, entry, "r", |v| (0.0..1.0).contains(&v), "in [0, 1)");
-    let g = values(reader, entry, "g", |v| (0.0..=1.0).contains(&v), "in [0, 1]");
+    let g = values(
+        reader,
+        entry,
+        "g",
+        |v| (0.0..=1.0).contains(&v),
+        "in [0, 1]",
+    );
     let g_remap = reader.boolean(entry, "g_remap").unwrap_or(false);
     if x.is_none() && entry.get("x").is_none() {
-        reader.report(entry.path_of("x"), "missing coefficient (expected c0, c1, c2 or c3)");
+        reader.report(
+            entry.path_of("x"),
+            "missing coefficient (expected c0, c1, c2 or c3)",
+        );
     }
     if y.is_none() && entry.get("y").is_none() {
-        reader.report(entry.path_of("y"), "missing coefficient (expected c0, c1, c2 or c3)");
+        reader.report(
+            entry.path_of("y"),
+            "missing coefficient (expected c0, c1, c2 or c3)",
+        );
     }
     let (r, g) = (r?, g?);
     if r.len() * g.len() > MAX_DATA_POINTS {
-        reader.report(entry.path(), format!("too many points (got {} × {}, expected at most {MAX_DATA_POINTS})", r.len(), g.len()));
+        reader.report(
+            entry.path(),
+            format!(
+                "too many points (got {} × {}, expected at most {MAX_DATA_POINTS})",
+                r.len(),
+                g.len()
+            ),
+        );
         return None;
     }
-    Some(Dataset::Gulbrandsen { x: x?, y: y?, z, r, g, g_remap })
+    Some(Dataset::Gulbrandsen {
+        x: x?,
+        y: y?,
+        z,
+        r,
+        g,
+        g_remap,
+    })
 }
 
 fn read_table(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
@@ -134,7 +187,14 @@ fn read_table(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
     let y = values(reader, entry, "y", any, "finite");
     let (x, y) = (x?, y?);
     if x.len() != y.len() {
-        reader.report(entry.path(), format!("x and y differ in length (got {} and {} values, expected as many y as x)", x.len(), y.len()));
+        reader.report(
+            entry.path(),
+            format!(
+                "x and y differ in length (got {} and {} values, expected as many y as x)",
+                x.len(),
+                y.len()
+            ),
+        );
         return None;
     }
     Some(Dataset::Table { x, y })
@@ -160,14 +220,38 @@ fn read_csv(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
     };
     match read_columns(&base_dir.join(&path), &x_column, &y_column) {
         Ok((x, y)) => {
-            let to_radians = if degrees { std::f64::consts::PI / 180.0 } else { 1.0 };
+            let to_radians = if degrees {
+                std::f64::consts::PI / 180.0
+            } else {
+                1.0
+            };
             let x: Vec<f64> = x.into_iter().map(|v| v * to_radians).collect();
-            if let Some(bad) = x.iter().find(|&&t| !(0.0..=std::f64::consts::FRAC_PI_2).contains(&t)) {
-                let unit = if degrees { "degrees within [0, 90]" } else { "radians within [0, π/2]" };
-                reader.report(at, format!("θ out of range in \"{path}\" (got {:?}, expected {unit})", bad / to_radians));
+            if let Some(bad) = x
+                .iter()
+                .find(|&&t| !(0.0..=std::f64::consts::FRAC_PI_2).contains(&t))
+            {
+                let unit = if degrees {
+                    "degrees within [0, 90]"
+                } else {
+                    "radians within [0, π/2]"
+                };
+                reader.report(
+                    at,
+                    format!(
+                        "θ out of range in \"{path}\" (got {:?}, expected {unit})",
+                        bad / to_radians
+                    ),
+                );
                 return None;
             }
-            Some(Dataset::Csv { path, x_column, y_column, degrees, x, y })
+            Some(Dataset::Csv {
+                path,
+                x_column,
+                y_column,
+                degrees,
+                x,
+                y,
+            })
         }
         Err(message) => {
             reader.report(at, format!("cannot read \"{path}\": {message}"));
@@ -177,14 +261,24 @@ fn read_csv(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
 }
 
 /// The columns `x_column` and `y_column` of a CSV file with a header, as finite numbers.
-fn read_columns(file: &std::path::Path, x_column: &str, y_column: &str) -> Result<(Vec<f64>, Vec<f64>), String> {
+fn read_columns(
+    file: &std::path::Path,
+    x_column: &str,
+    y_column: &str,
+) -> Result<(Vec<f64>, Vec<f64>), String> {
     let mut csv = csv::Reader::from_path(file).map_err(|e| e.to_string())?;
     let headers = csv.headers().map_err(|e| e.to_string())?.clone();
     let column = |name: &str| {
-        headers.iter().position(|h| h.trim() == name).ok_or_else(|| {
-            let names: Vec<&str> = headers.iter().collect();
-            format!("no column \"{name}\" (expected one of: {})", names.join(", "))
-        })
+        headers
+            .iter()
+            .position(|h| h.trim() == name)
+            .ok_or_else(|| {
+                let names: Vec<&str> = headers.iter().collect();
+                format!(
+                    "no column \"{name}\" (expected one of: {})",
+                    names.join(", ")
+                )
+            })
     };
     let (xi, yi) = (column(x_column)?, column(y_column)?);
     let (mut x, mut y) = (Vec::new(), Vec::new());
@@ -192,9 +286,10 @@ fn read_columns(file: &std::path::Path, x_column: &str, y_column: &str) -> Resul
         let record = record.map_err(|e| e.to_string())?;
         let number = |i: usize| -> Result<f64, String> {
             let text = record.get(i).unwrap_or("").trim();
-            text.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(|| {
-                format!("row {}: not a finite number (got \"{text}\")", row + 2)
-            })
+            text.parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| format!("row {}: not a finite number (got \"{text}\")", row + 2))
         };
         x.push(number(xi)?);
         y.push(number(yi)?);
@@ -242,7 +337,9 @@ pub fn default_labels(dataset: &Dataset) -> (String, String) {
         Dataset::Spectrum { .. } => ("index k".into(), "singular values".into()),
         Dataset::Gulbrandsen { x, y, .. } => (symbol(*x).into(), symbol(*y).into()),
         Dataset::Table { .. } => ("x".into(), "y".into()),
-        Dataset::Csv { x_column, y_column, .. } => (x_column.clone(), y_column.clone()),
+        Dataset::Csv {
+            x_column, y_column, ..
+        } => (x_column.clone(), y_column.clone()),
     }
 }
 

@@ -11,11 +11,11 @@ pub mod reader;
 pub mod sweep;
 
 use crate::curve::{self, Curve, Model, ParamValue};
+use crate::dataset::Dataset;
+use crate::fresnel::Fresnel;
 use crate::json::{Node, Value};
 use crate::ndf::Family;
 use crate::problem::{Problem, join_index, join_key, suggestion};
-use crate::dataset::Dataset;
-use crate::fresnel::Fresnel;
 use crate::series::{Canvas, Dash, Mark, PanelKind, Rgb, Style, XUnit, YScale};
 use reader::Reader;
 use std::f64::consts::FRAC_PI_2;
@@ -37,8 +37,20 @@ pub const MAX_SIDE_PX: f64 = 20_000.0;
 pub const MAX_PNG_PIXELS: f64 = 1e8;
 
 /// Keys a scene may have.
-pub const SCENE_KEYS: &[&str] =
-    &["$schema", "id", "title", "layout", "aspect_ratio", "width", "height", "font_px", "png_scale", "sampling", "panels", "interactive"];
+pub const SCENE_KEYS: &[&str] = &[
+    "$schema",
+    "id",
+    "title",
+    "layout",
+    "aspect_ratio",
+    "width",
+    "height",
+    "font_px",
+    "png_scale",
+    "sampling",
+    "panels",
+    "interactive",
+];
 /// Keys of `layout`.
 pub const LAYOUT_KEYS: &[&str] = &["rows", "cols"];
 /// Keys of `sampling` (exactly one of them).
@@ -88,7 +100,9 @@ impl Sampling {
     /// The sampling of drawn outputs (SVG, PNG).
     pub fn for_drawing(self) -> Sampling {
         match self {
-            Sampling::Default => Sampling::Adaptive { tolerance_px: DEFAULT_TOLERANCE_PX },
+            Sampling::Default => Sampling::Adaptive {
+                tolerance_px: DEFAULT_TOLERANCE_PX,
+            },
             given => given,
         }
     }
@@ -194,13 +208,18 @@ pub fn valid_id(id: &str) -> bool {
     !bytes.is_empty()
         && bytes.len() <= 64
         && (bytes[0].is_ascii_lowercase() || bytes[0].is_ascii_digit())
-        && bytes.iter().all(|&b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_' || b == b'-')
+        && bytes
+            .iter()
+            .all(|&b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_' || b == b'-')
 }
 
 /// Validates a parsed scene document; every problem is returned with its JSON path. Data files
 /// named by the spec resolve against `base_dir`, the spec's folder (`None`: no data files).
 pub fn parse(node: &Node, base_dir: Option<&std::path::Path>) -> Result<Scene, Vec<Problem>> {
-    let mut reader = Reader { problems: Vec::new(), base_dir: base_dir.map(std::path::Path::to_path_buf) };
+    let mut reader = Reader {
+        problems: Vec::new(),
+        base_dir: base_dir.map(std::path::Path::to_path_buf),
+    };
     let scene = read_scene(&mut reader, node);
     match scene {
         Some(scene) if reader.problems.is_empty() => Ok(scene),
@@ -209,10 +228,14 @@ pub fn parse(node: &Node, base_dir: Option<&std::path::Path>) -> Result<Scene, V
 }
 
 fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
-    let sliders = reader.object(node, "", SCENE_KEYS).and_then(|object| interactive::read_sliders(reader, &object));
+    let sliders = reader
+        .object(node, "", SCENE_KEYS)
+        .and_then(|object| interactive::read_sliders(reader, &object));
     // The figure at the sliders' start positions; `interactive::read` resolves the other positions.
     let at_start = interactive::at_start(reader, node, sliders.as_deref());
-    let Value::Object(members) = &at_start.value else { return None };
+    let Value::Object(members) = &at_start.value else {
+        return None;
+    };
     let object = reader::Object::from_members(members, "");
     let id = match reader.string(&object, "id") {
         Some(id) if valid_id(&id) => Some(id),
@@ -222,7 +245,10 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
         }
         None => {
             if object.get("id").is_none() {
-                reader.report("id", "missing scene id (expected a string matching ^[a-z0-9][a-z0-9_-]{0,63}$)");
+                reader.report(
+                    "id",
+                    "missing scene id (expected a string matching ^[a-z0-9][a-z0-9_-]{0,63}$)",
+                );
             }
             None
         }
@@ -234,19 +260,34 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
     let canvas = read_canvas(reader, &object, rows, cols, !title.is_empty());
     check_points(reader, sampling, panels.as_deref());
     let interactive = interactive::read(reader, node, sliders, panels.as_deref());
-    Some(Scene { id: id?, title, rows, cols, canvas: canvas?, sampling: sampling?, panels: panels?, interactive })
+    Some(Scene {
+        id: id?,
+        title,
+        rows,
+        cols,
+        canvas: canvas?,
+        sampling: sampling?,
+        panels: panels?,
+        interactive,
+    })
 }
 
 /// Reports a scene whose table would exceed [`MAX_POINTS_PER_SCENE`]: curves × uniform samples
 /// plus the points of its data series.
 fn check_points(reader: &mut Reader, sampling: Option<Sampling>, panels: Option<&[ScenePanel]>) {
-    let (Some(sampling), Some(panels)) = (sampling, panels) else { return };
+    let (Some(sampling), Some(panels)) = (sampling, panels) else {
+        return;
+    };
     let per_curve = match sampling.for_table() {
         Sampling::Uniform(n) => n,
         _ => 0,
     };
     let curves: usize = panels.iter().map(|p| p.curves.len()).sum();
-    let data: usize = panels.iter().flat_map(|p| &p.data).map(|d| data_points(&d.dataset)).sum();
+    let data: usize = panels
+        .iter()
+        .flat_map(|p| &p.data)
+        .map(|d| data_points(&d.dataset))
+        .sum();
     let total = curves.saturating_mul(per_curve).saturating_add(data);
     if total > MAX_POINTS_PER_SCENE {
         reader.report(
@@ -275,17 +316,23 @@ fn read_sampling(reader: &mut Reader, object: &reader::Object) -> Option<Samplin
         (Some(_), None) => {
             let expected = format!("a whole number from 2 to {MAX_SAMPLES_PER_CURVE}");
             let ok = |v: f64| v.fract() == 0.0 && (2.0..=MAX_SAMPLES_PER_CURVE as f64).contains(&v);
-            reader.number(&sampling, "uniform", ok, &expected).map(|n| Sampling::Uniform(n as usize))
+            reader
+                .number(&sampling, "uniform", ok, &expected)
+                .map(|n| Sampling::Uniform(n as usize))
         }
         (None, Some(adaptive)) => {
             let adaptive_path = sampling.path_of("adaptive");
             let adaptive = reader.object(adaptive, &adaptive_path, ADAPTIVE_KEYS)?;
             if adaptive.get("tolerance_px").is_none() {
-                return Some(Sampling::Adaptive { tolerance_px: DEFAULT_TOLERANCE_PX });
+                return Some(Sampling::Adaptive {
+                    tolerance_px: DEFAULT_TOLERANCE_PX,
+                });
             }
             let expected = format!("a number of pixels from {MIN_TOLERANCE_PX} to {MAX_SIDE_PX}");
             let ok = |v: f64| (MIN_TOLERANCE_PX..=MAX_SIDE_PX).contains(&v);
-            reader.number(&adaptive, "tolerance_px", ok, &expected).map(|tolerance_px| Sampling::Adaptive { tolerance_px })
+            reader
+                .number(&adaptive, "tolerance_px", ok, &expected)
+                .map(|tolerance_px| Sampling::Adaptive { tolerance_px })
         }
         _ => {
             reader.report(path, "expected exactly one of \"uniform\" (samples per curve) or \"adaptive\" ({\"tolerance_px\": t})");
@@ -304,41 +351,99 @@ fn read_layout(reader: &mut Reader, object: &reader::Object, panel_count: usize)
         return row;
     };
     let whole = |v: f64| v.fract() == 0.0 && (1.0..=100.0).contains(&v);
-    let rows = reader.number(&layout, "rows", whole, "a whole number from 1 to 100").unwrap_or(1.0) as usize;
+    let rows = reader
+        .number(&layout, "rows", whole, "a whole number from 1 to 100")
+        .unwrap_or(1.0) as usize;
     let cols = reader.number(&layout, "cols", whole, "a whole number from 1 to 100");
     let cols = cols.map_or_else(|| panel_count.div_ceil(rows).max(1), |c| c as usize);
     if rows * cols < panel_count {
-        reader.report(path, format!("a {rows} × {cols} grid has room for {} panels (got {panel_count} panels)", rows * cols));
+        reader.report(
+            path,
+            format!(
+                "a {rows} × {cols} grid has room for {} panels (got {panel_count} panels)",
+                rows * cols
+            ),
+        );
     }
     (rows, cols)
 }
 
-fn read_canvas(reader: &mut Reader, object: &reader::Object, rows: usize, cols: usize, titled: bool) -> Option<Canvas> {
+fn read_canvas(
+    reader: &mut Reader,
+    object: &reader::Object,
+    rows: usize,
+    cols: usize,
+    titled: bool,
+) -> Option<Canvas> {
     let side = |v: f64| (16.0..=MAX_SIDE_PX).contains(&v);
     let side_text = format!("16 to {MAX_SIDE_PX}");
-    let aspect = reader.number(object, "aspect_ratio", |v| (0.05..=20.0).contains(&v), "0.05 to 20").unwrap_or(DEFAULT_ASPECT_RATIO);
-    let width = reader.number(object, "width", side, &side_text).unwrap_or(default_width(cols));
+    let aspect = reader
+        .number(
+            object,
+            "aspect_ratio",
+            |v| (0.05..=20.0).contains(&v),
+            "0.05 to 20",
+        )
+        .unwrap_or(DEFAULT_ASPECT_RATIO);
+    let width = reader
+        .number(object, "width", side, &side_text)
+        .unwrap_or(default_width(cols));
     let title_band = if titled { 40.0 } else { 0.0 };
     let height = reader
         .number(object, "height", side, &side_text)
-        .unwrap_or_else(|| (rows as f64 * width / cols as f64 * aspect + title_band).round().clamp(16.0, MAX_SIDE_PX));
-    let font_px = reader.number(object, "font_px", |v| (4.0..=200.0).contains(&v), "4 to 200").unwrap_or(14.0);
-    let png_scale = reader.number(object, "png_scale", |v| (0.1..=16.0).contains(&v), "0.1 to 16").unwrap_or(2.0);
-    let canvas = Canvas { width_px: width.round() as u32, height_px: height.round() as u32, png_scale, font_px };
-    check_canvas(&canvas).map_err(|message| reader.report("png_scale", message)).ok()?;
+        .unwrap_or_else(|| {
+            (rows as f64 * width / cols as f64 * aspect + title_band)
+                .round()
+                .clamp(16.0, MAX_SIDE_PX)
+        });
+    let font_px = reader
+        .number(
+            object,
+            "font_px",
+            |v| (4.0..=200.0).contains(&v),
+            "4 to 200",
+        )
+        .unwrap_or(14.0);
+    let png_scale = reader
+        .number(
+            object,
+            "png_scale",
+            |v| (0.1..=16.0).contains(&v),
+            "0.1 to 16",
+        )
+        .unwrap_or(2.0);
+    let canvas = Canvas {
+        width_px: width.round() as u32,
+        height_px: height.round() as u32,
+        png_scale,
+        font_px,
+    };
+    check_canvas(&canvas)
+        .map_err(|message| reader.report("png_scale", message))
+        .ok()?;
     Some(canvas)
 }
 
 /// Default figure width in CSS pixels: 640 for one column, 480 per column otherwise.
 pub fn default_width(cols: usize) -> f64 {
-    if cols <= 1 { 640.0 } else { 480.0 * cols as f64 }
+    if cols <= 1 {
+        640.0
+    } else {
+        480.0 * cols as f64
+    }
 }
 
 /// Rejects canvases whose PNG would exceed [`MAX_PNG_PIXELS`].
 pub fn check_canvas(canvas: &Canvas) -> Result<(), String> {
-    let pixels = f64::from(canvas.width_px) * f64::from(canvas.height_px) * canvas.png_scale * canvas.png_scale;
+    let pixels = f64::from(canvas.width_px)
+        * f64::from(canvas.height_px)
+        * canvas.png_scale
+        * canvas.png_scale;
     if pixels > MAX_PNG_PIXELS {
-        Err(format!("the PNG would have {pixels:.0} pixels (got {}×{} px at scale {}, expected at most {MAX_PNG_PIXELS:.0} pixels)", canvas.width_px, canvas.height_px, canvas.png_scale))
+        Err(format!(
+            "the PNG would have {pixels:.0} pixels (got {}×{} px at scale {}, expected at most {MAX_PNG_PIXELS:.0} pixels)",
+            canvas.width_px, canvas.height_px, canvas.png_scale
+        ))
     } else {
         Ok(())
     }
@@ -346,7 +451,10 @@ pub fn check_canvas(canvas: &Canvas) -> Result<(), String> {
 
 fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<ScenePanel>> {
     let Some(node) = object.get("panels") else {
-        reader.report("panels", "missing panels (expected a list of panel objects)");
+        reader.report(
+            "panels",
+            "missing panels (expected a list of panel objects)",
+        );
         return None;
     };
     let Value::Array(items) = &node.value else {
@@ -354,7 +462,10 @@ fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<Scene
         return None;
     };
     if items.is_empty() {
-        reader.report("panels", "a scene needs at least one panel (got [], expected a list of panel objects)");
+        reader.report(
+            "panels",
+            "a scene needs at least one panel (got [], expected a list of panel objects)",
+        );
         return None;
     }
     let mut panels = Vec::with_capacity(items.len());
@@ -366,7 +477,12 @@ fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<Scene
         }
     }
     if total_curves > MAX_CURVES_PER_SCENE {
-        reader.report("panels", format!("too many curves (got {total_curves}, expected at most {MAX_CURVES_PER_SCENE})"));
+        reader.report(
+            "panels",
+            format!(
+                "too many curves (got {total_curves}, expected at most {MAX_CURVES_PER_SCENE})"
+            ),
+        );
         return None;
     }
     (panels.len() == items.len()).then_some(panels)
@@ -378,8 +494,12 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
     let legend = reader.boolean(&panel, "legend").unwrap_or(true);
     let x_path = panel.path_of("x");
     let y_path = panel.path_of("y");
-    let x = panel.get("x").and_then(|n| reader.object(n, &x_path, X_KEYS));
-    let y = panel.get("y").and_then(|n| reader.object(n, &y_path, Y_KEYS));
+    let x = panel
+        .get("x")
+        .and_then(|n| reader.object(n, &x_path, X_KEYS));
+    let y = panel
+        .get("y")
+        .and_then(|n| reader.object(n, &y_path, Y_KEYS));
     let series = read_series(reader, &panel)?;
     let only_data = series.curves.is_empty() && !series.data.iter().any(|d| d.dataset.is_theta());
     let x_unit = match x.and_then(|x| reader.choice(&x, "unit", X_UNITS)) {
@@ -390,13 +510,30 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
         None => XUnit::Radians,
     };
     if x_unit == XUnit::Plain && !only_data {
-        reader.report(&x_path, "curves of θ need an angle axis (got unit \"plain\", expected radians or degrees)");
+        reader.report(
+            &x_path,
+            "curves of θ need an angle axis (got unit \"plain\", expected radians or degrees)",
+        );
     }
     let x_range = match x_unit {
         XUnit::Degrees => x
-            .and_then(|x| reader.interval(&x, "range", |v| (0.0..=90.0).contains(&v), "degrees within [0, 90]"))
+            .and_then(|x| {
+                reader.interval(
+                    &x,
+                    "range",
+                    |v| (0.0..=90.0).contains(&v),
+                    "degrees within [0, 90]",
+                )
+            })
             .map(|(a, b)| (a.to_radians(), b.to_radians().min(FRAC_PI_2))),
-        XUnit::Radians => x.and_then(|x| reader.interval(&x, "range", |v| (0.0..=FRAC_PI_2).contains(&v), "radians within [0, π/2]")),
+        XUnit::Radians => x.and_then(|x| {
+            reader.interval(
+                &x,
+                "range",
+                |v| (0.0..=FRAC_PI_2).contains(&v),
+                "radians within [0, π/2]",
+            )
+        }),
         XUnit::Plain => x.and_then(|x| reader.interval(&x, "range", f64::is_finite, "finite")),
     };
     let y_scale = match y.and_then(|y| reader.choice(&y, "scale", Y_SCALES)) {
@@ -410,7 +547,11 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
     let kind = read_kind(reader, &panel, &series)?;
     let (default_x_label, default_y_label) = match (series.curves.first(), series.data.first()) {
         (Some(first), _) => {
-            let x_label = if x_unit == XUnit::Degrees { "θ (degrees)" } else { "θ (radians)" };
+            let x_label = if x_unit == XUnit::Degrees {
+                "θ (degrees)"
+            } else {
+                "θ (radians)"
+            };
             let y_label = match first.curve.model() {
                 Model::Fresnel(_) => "F(θ)",
                 _ => "D(θ)",
@@ -422,8 +563,12 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
     };
     Some(ScenePanel {
         title,
-        x_label: x.and_then(|x| reader.string(&x, "label")).unwrap_or(default_x_label),
-        y_label: y.and_then(|y| reader.string(&y, "label")).unwrap_or(default_y_label),
+        x_label: x
+            .and_then(|x| reader.string(&x, "label"))
+            .unwrap_or(default_x_label),
+        y_label: y
+            .and_then(|y| reader.string(&y, "label"))
+            .unwrap_or(default_y_label),
         x_unit,
         kind,
         y_scale,
@@ -436,7 +581,11 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
 }
 
 /// The panel kind: `"kind": "surface"` with its `z` axis and `view`, else 2D.
-fn read_kind(reader: &mut Reader, panel: &reader::Object, series: &PanelSeries) -> Option<PanelKind> {
+fn read_kind(
+    reader: &mut Reader,
+    panel: &reader::Object,
+    series: &PanelSeries,
+) -> Option<PanelKind> {
     let surface = reader.choice(panel, "kind", PANEL_KINDS) == Some("surface");
     for key in ["z", "view"] {
         if !surface && panel.get(key).is_some() {
@@ -445,23 +594,49 @@ fn read_kind(reader: &mut Reader, panel: &reader::Object, series: &PanelSeries) 
     }
     if !surface {
         if let Some(i) = series.data.iter().position(|d| d.dataset.has_z()) {
-            reader.report(panel.path_of("curves"), format!("series {i} has a z axis: it needs \"kind\": \"surface\""));
+            reader.report(
+                panel.path_of("curves"),
+                format!("series {i} has a z axis: it needs \"kind\": \"surface\""),
+            );
         }
         return Some(PanelKind::Cartesian);
     }
     if !series.curves.is_empty() || series.data.iter().any(|d| !d.dataset.has_z()) {
-        reader.report(panel.path_of("curves"), "a surface panel shows only data series with a z coefficient");
+        reader.report(
+            panel.path_of("curves"),
+            "a surface panel shows only data series with a z coefficient",
+        );
         return None;
     }
     let z_path = panel.path_of("z");
-    let z = panel.get("z").and_then(|n| reader.object(n, &z_path, Z_KEYS));
+    let z = panel
+        .get("z")
+        .and_then(|n| reader.object(n, &z_path, Z_KEYS));
     let view_path = panel.path_of("view");
-    let view = panel.get("view").and_then(|n| reader.object(n, &view_path, VIEW_KEYS));
+    let view = panel
+        .get("view")
+        .and_then(|n| reader.object(n, &view_path, VIEW_KEYS));
     let angle = |reader: &mut Reader, key: &str, default: f64| {
-        view.and_then(|v| reader.number(&v, key, |a| (-360.0..=360.0).contains(&a), "degrees within [-360, 360]")).unwrap_or(default)
+        view.and_then(|v| {
+            reader.number(
+                &v,
+                key,
+                |a| (-360.0..=360.0).contains(&a),
+                "degrees within [-360, 360]",
+            )
+        })
+        .unwrap_or(default)
     };
     Some(PanelKind::Surface {
-        z_label: z.and_then(|z| reader.string(&z, "label")).unwrap_or_else(|| series.data.first().map(|d| data::z_label(&d.dataset)).unwrap_or_default()),
+        z_label: z
+            .and_then(|z| reader.string(&z, "label"))
+            .unwrap_or_else(|| {
+                series
+                    .data
+                    .first()
+                    .map(|d| data::z_label(&d.dataset))
+                    .unwrap_or_default()
+            }),
         z_range: z.and_then(|z| reader.interval(&z, "range", f64::is_finite, "finite")),
         // The notebook's view_init(elev=65, azim=-45).
         elevation_deg: angle(reader, "elevation", 65.0),
@@ -478,7 +653,10 @@ struct PanelSeries {
 fn read_series(reader: &mut Reader, panel: &reader::Object) -> Option<PanelSeries> {
     let path = panel.path_of("curves");
     let Some(node) = panel.get("curves") else {
-        reader.report(path, "missing curves (expected a list of curve or data objects)");
+        reader.report(
+            path,
+            "missing curves (expected a list of curve or data objects)",
+        );
         return None;
     };
     let Value::Array(items) = &node.value else {
@@ -486,7 +664,10 @@ fn read_series(reader: &mut Reader, panel: &reader::Object) -> Option<PanelSerie
         return None;
     };
     if items.is_empty() {
-        reader.report(path, "a panel needs at least one curve (got [], expected a list of curve or data objects)");
+        reader.report(
+            path,
+            "a panel needs at least one curve (got [], expected a list of curve or data objects)",
+        );
         return None;
     }
     let mut curves = Vec::new();
@@ -500,7 +681,10 @@ fn read_series(reader: &mut Reader, panel: &reader::Object) -> Option<PanelSerie
             read_curve_entry(reader, item, &item_path, &mut curves);
         }
         if curves.len() + data.len() > MAX_CURVES_PER_SCENE {
-            reader.report(path, format!("too many curves (expected at most {MAX_CURVES_PER_SCENE})"));
+            reader.report(
+                path,
+                format!("too many curves (expected at most {MAX_CURVES_PER_SCENE})"),
+            );
             return None;
         }
     }
@@ -519,7 +703,9 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
             return;
         }
     };
-    let Value::Object(members) = &node.value else { return };
+    let Value::Object(members) = &node.value else {
+        return;
+    };
     let entry = reader::Object::from_members(members, path);
     let label_template = reader.string(&entry, "label");
     let base_style = read_style(reader, &entry, default_colour(resolved.model));
@@ -530,13 +716,19 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
     for (i, (spec, param_node)) in resolved.params.iter().zip(&resolved.nodes).enumerate() {
         let sweep = match param_node {
             None => Some(Sweep {
-                values: vec![sweep::SweepValue { value: spec.default.expect("resolve() reports missing keys"), label: String::new() }],
+                values: vec![sweep::SweepValue {
+                    value: spec.default.expect("resolve() reports missing keys"),
+                    label: String::new(),
+                }],
                 varies: false,
             }),
             // Fitted after the loop, once the other parameters (its fixed keys) are known.
             Some(n) if sweep::is_fit(n) && fitted.is_none() => {
                 fitted = Some((i, *n));
-                Some(Sweep { values: vec![], varies: true })
+                Some(Sweep {
+                    values: vec![],
+                    varies: true,
+                })
             }
             Some(n) => sweep::expand(reader, spec.name, spec.kind, n, &join_key(path, spec.name)),
         };
@@ -547,13 +739,19 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
     if let Some((i, n)) = fitted {
         let others: Vec<&Sweep> = sweeps.iter().map(|(_, s)| s).collect();
         let at = join_key(path, resolved.params[i].name);
-        let Some(fit) = sweep::fit(reader, resolved.model, &resolved.params, &others, i, n, &at) else { return };
+        let Some(fit) = sweep::fit(reader, resolved.model, &resolved.params, &others, i, n, &at)
+        else {
+            return;
+        };
         sweeps[i].1 = fit;
     }
     let Some(style) = base_style else { return };
     let count: usize = sweeps.iter().map(|(_, s)| s.values.len()).product();
     if count > MAX_CURVES_PER_SCENE {
-        reader.report(path, format!("the sweep gives {count} curves (expected at most {MAX_CURVES_PER_SCENE})"));
+        reader.report(
+            path,
+            format!("the sweep gives {count} curves (expected at most {MAX_CURVES_PER_SCENE})"),
+        );
         return;
     }
     // Product over swept keys in document order, the last key varying fastest.
@@ -568,7 +766,11 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
             choice[i] = rest % n;
             rest /= n;
         }
-        let values: Vec<ParamValue> = sweeps.iter().zip(&choice).map(|((_, s), &c)| s.values[c].value).collect();
+        let values: Vec<ParamValue> = sweeps
+            .iter()
+            .zip(&choice)
+            .map(|((_, s), &c)| s.values[c].value)
+            .collect();
         let curve = match resolved.build(&values, path) {
             Ok(curve) => curve,
             Err(problem) => {
@@ -590,8 +792,16 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
             Some(template) => fill_template(template, &curve, &resolved.params, &values),
             None => auto_label,
         };
-        let colour = if entry.get("colour").is_none() && count > 1 { shade(style.colour, k, count) } else { style.colour };
-        out.push(SceneCurve { curve, label, style: Style { colour, ..style } });
+        let colour = if entry.get("colour").is_none() && count > 1 {
+            shade(style.colour, k, count)
+        } else {
+            style.colour
+        };
+        out.push(SceneCurve {
+            curve,
+            label,
+            style: Style { colour, ..style },
+        });
     }
 }
 
@@ -604,7 +814,9 @@ fn with_family_prefix(curve: &Curve, text: &str) -> String {
         Model::Ndf(Family::Sgd) => format!("SGD {text}"),
         Model::Fresnel(model) => {
             let l2 = belcour_l2(curve).map_or(String::new(), |l2| format!(", L2 = {l2:.2}"));
-            format!("{} {text}{l2}", model.name()).trim_end().to_string()
+            format!("{} {text}{l2}", model.name())
+                .trim_end()
+                .to_string()
         }
         Model::Ndf(_) => text.to_string(),
     }
@@ -623,7 +835,12 @@ fn belcour_l2(curve: &Curve) -> Option<f64> {
 
 /// Replaces `{param}` in a label template by the parameter's value (`"TS {alpha_ts}"`), and `{l2}`
 /// by a Belcour reconstruction's error (two decimals, as the notebook prints it).
-fn fill_template(template: &str, curve: &Curve, params: &[curve::ParamSpec], values: &[ParamValue]) -> String {
+fn fill_template(
+    template: &str,
+    curve: &Curve,
+    params: &[curve::ParamSpec],
+    values: &[ParamValue],
+) -> String {
     let mut label = template.to_string();
     if let Some(l2) = belcour_l2(curve) {
         label = label.replace("{l2}", &format!("{l2:.2}"));
@@ -645,7 +862,11 @@ pub fn shade(base: Rgb, k: usize, n: usize) -> Rgb {
     let t = -0.35 + 0.8 * k as f64 / (n - 1).max(1) as f64;
     let mix = |c: u8| {
         let c = f64::from(c);
-        let v = if t < 0.0 { c * (1.0 + t) } else { c + (255.0 - c) * t };
+        let v = if t < 0.0 {
+            c * (1.0 + t)
+        } else {
+            c + (255.0 - c) * t
+        };
         v.round().clamp(0.0, 255.0) as u8
     };
     Rgb(mix(base.0), mix(base.1), mix(base.2))
@@ -660,16 +881,35 @@ fn default_colour(model: Model) -> Rgb {
 }
 
 /// Reads `style` (words from [`STYLE_WORDS`]), `colour` (#RRGGBB) and `mark` of a series entry.
-pub(crate) fn read_style(reader: &mut Reader, entry: &reader::Object, colour: Rgb) -> Option<Style> {
-    let mut style = Style { colour, width: 1.0, dash: Dash::Solid, mark: Mark::Line };
+pub(crate) fn read_style(
+    reader: &mut Reader,
+    entry: &reader::Object,
+    colour: Rgb,
+) -> Option<Style> {
+    let mut style = Style {
+        colour,
+        width: 1.0,
+        dash: Dash::Solid,
+        mark: Mark::Line,
+    };
     let before = reader.problems.len();
     if let Some(node) = entry.get("style") {
         let path = entry.path_of("style");
         let words: Vec<(&Node, String)> = match &node.value {
             Value::String(_) => vec![(node, path.clone())],
-            Value::Array(items) => items.iter().enumerate().map(|(i, n)| (n, join_index(&path, i))).collect(),
+            Value::Array(items) => items
+                .iter()
+                .enumerate()
+                .map(|(i, n)| (n, join_index(&path, i)))
+                .collect(),
             _ => {
-                reader.report(&path, format!("expected a style word or a list of them (got {node}, expected any of: {})", STYLE_WORDS.join(", ")));
+                reader.report(
+                    &path,
+                    format!(
+                        "expected a style word or a list of them (got {node}, expected any of: {})",
+                        STYLE_WORDS.join(", ")
+                    ),
+                );
                 vec![]
             }
         };
@@ -682,10 +922,17 @@ pub(crate) fn read_style(reader: &mut Reader, entry: &reader::Object, colour: Rg
                     "solid" => style.dash = Dash::Solid,
                     other => reader.report(
                         word_path,
-                        format!("unknown style (got \"{other}\", expected any of: {}){}", STYLE_WORDS.join(", "), suggestion(other, STYLE_WORDS.iter().copied())),
+                        format!(
+                            "unknown style (got \"{other}\", expected any of: {}){}",
+                            STYLE_WORDS.join(", "),
+                            suggestion(other, STYLE_WORDS.iter().copied())
+                        ),
                     ),
                 },
-                _ => reader.report(word_path, format!("expected a style word (got {word_node})")),
+                _ => reader.report(
+                    word_path,
+                    format!("expected a style word (got {word_node})"),
+                ),
             }
         }
     }
@@ -698,7 +945,10 @@ pub(crate) fn read_style(reader: &mut Reader, entry: &reader::Object, colour: Rg
     if let Some(text) = reader.string(entry, "colour") {
         match parse_hex_colour(&text) {
             Some(colour) => style.colour = colour,
-            None => reader.report(entry.path_of("colour"), format!("invalid colour (got \"{text}\", expected #RRGGBB)")),
+            None => reader.report(
+                entry.path_of("colour"),
+                format!("invalid colour (got \"{text}\", expected #RRGGBB)"),
+            ),
         }
     }
     (reader.problems.len() == before).then_some(style)

@@ -53,7 +53,12 @@ impl Reader {
 
     /// Reads `node` as an object whose keys must all be in `allowed`; unknown keys (with a
     /// "did you mean") and duplicates are reported, the object is still returned.
-    pub fn object<'a>(&mut self, node: &'a Node, path: &'a str, allowed: &[&str]) -> Option<Object<'a>> {
+    pub fn object<'a>(
+        &mut self,
+        node: &'a Node,
+        path: &'a str,
+        allowed: &[&str],
+    ) -> Option<Object<'a>> {
         let Value::Object(members) = &node.value else {
             self.report(path, format!("expected an object (got {node})"));
             return None;
@@ -81,7 +86,10 @@ impl Reader {
         match &node.value {
             Value::String(s) => Some(s.clone()),
             other => {
-                self.report(object.path_of(key), format!("expected a string (got {} {node})", other.kind()));
+                self.report(
+                    object.path_of(key),
+                    format!("expected a string (got {} {node})", other.kind()),
+                );
                 None
             }
         }
@@ -93,7 +101,10 @@ impl Reader {
         match &node.value {
             Value::Bool(b) => Some(*b),
             other => {
-                self.report(object.path_of(key), format!("expected true or false (got {} {node})", other.kind()));
+                self.report(
+                    object.path_of(key),
+                    format!("expected true or false (got {} {node})", other.kind()),
+                );
                 None
             }
         }
@@ -101,27 +112,55 @@ impl Reader {
 
     /// A number field that must satisfy `ok` (described by `expected`); `None` when absent or
     /// invalid (reported).
-    pub fn number(&mut self, object: &Object, key: &str, ok: impl Fn(f64) -> bool, expected: &str) -> Option<f64> {
+    pub fn number(
+        &mut self,
+        object: &Object,
+        key: &str,
+        ok: impl Fn(f64) -> bool,
+        expected: &str,
+    ) -> Option<f64> {
         let node = object.get(key)?;
         match &node.value {
             Value::Number(n) if ok(n.value) => Some(n.value),
             Value::Number(n) => {
-                self.report(object.path_of(key), format!("out of range (got {}, expected {expected})", n.literal));
+                self.report(
+                    object.path_of(key),
+                    format!("out of range (got {}, expected {expected})", n.literal),
+                );
                 None
             }
             other => {
-                self.report(object.path_of(key), format!("expected a number (got {} {node})", other.kind()));
+                self.report(
+                    object.path_of(key),
+                    format!("expected a number (got {} {node})", other.kind()),
+                );
                 None
             }
         }
     }
 
     /// A field holding `[low, high]` with low < high, both finite and satisfying `ok`.
-    pub fn interval(&mut self, object: &Object, key: &str, ok: impl Fn(f64) -> bool, expected: &str) -> Option<(f64, f64)> {
+    pub fn interval(
+        &mut self,
+        object: &Object,
+        key: &str,
+        ok: impl Fn(f64) -> bool,
+        expected: &str,
+    ) -> Option<(f64, f64)> {
         let node = object.get(key)?;
         let at = object.path_of(key);
         if let Value::Array(items) = &node.value {
-            if let [Node { value: Value::Number(a), .. }, Node { value: Value::Number(b), .. }] = items.as_slice() {
+            if let [
+                Node {
+                    value: Value::Number(a),
+                    ..
+                },
+                Node {
+                    value: Value::Number(b),
+                    ..
+                },
+            ] = items.as_slice()
+            {
                 if a.value < b.value && ok(a.value) && ok(b.value) {
                     return Some((a.value, b.value));
                 }
@@ -134,7 +173,12 @@ impl Reader {
     }
 
     /// A field holding one of `choices`; `None` when absent or invalid (reported with a suggestion).
-    pub fn choice(&mut self, object: &Object, key: &str, choices: &[&'static str]) -> Option<&'static str> {
+    pub fn choice(
+        &mut self,
+        object: &Object,
+        key: &str,
+        choices: &[&'static str],
+    ) -> Option<&'static str> {
         let text = self.string(object, key)?;
         let found = choices.iter().find(|&&c| c == text).copied();
         if found.is_none() {

@@ -46,33 +46,62 @@ pub struct Sweep {
 }
 
 /// Expands the node of parameter `name` (of `kind`) at `path`; problems go to `reader`.
-pub fn expand(reader: &mut Reader, name: &'static str, kind: ParamKind, node: &Node, path: &str) -> Option<Sweep> {
+pub fn expand(
+    reader: &mut Reader,
+    name: &'static str,
+    kind: ParamKind,
+    node: &Node,
+    path: &str,
+) -> Option<Sweep> {
     let label = |v: f64| format!("{} = {}", symbol(name), crate::curve::pretty(v));
     match (&node.value, kind) {
         (Value::Bool(b), ParamKind::Flag) => Some(Sweep {
-            values: vec![SweepValue { value: ParamValue::Flag(*b), label: format!("{name} = {b}") }],
+            values: vec![SweepValue {
+                value: ParamValue::Flag(*b),
+                label: format!("{name} = {b}"),
+            }],
             varies: false,
         }),
-        (Value::Object(_), ParamKind::Number) if name == FROM_BECKMANN_PARAM && has_key(node, FROM_BECKMANN_KEY) => {
+        (Value::Object(_), ParamKind::Number)
+            if name == FROM_BECKMANN_PARAM && has_key(node, FROM_BECKMANN_KEY) =>
+        {
             from_beckmann(reader, node, path)
         }
         (_, ParamKind::Number) => {
             let (numbers, varies) = numbers(reader, node, path)?;
-            let values = numbers.into_iter().map(|v| SweepValue { value: ParamValue::Number(v), label: label(v) }).collect();
+            let values = numbers
+                .into_iter()
+                .map(|v| SweepValue {
+                    value: ParamValue::Number(v),
+                    label: label(v),
+                })
+                .collect();
             Some(Sweep { values, varies })
         }
         (Value::Array(items), ParamKind::Flag) if !items.is_empty() => {
             let mut values = Vec::new();
             for (i, item) in items.iter().enumerate() {
                 match item.value {
-                    Value::Bool(b) => values.push(SweepValue { value: ParamValue::Flag(b), label: format!("{name} = {b}") }),
-                    _ => reader.report(join_index(path, i), format!("expected true or false (got {item})")),
+                    Value::Bool(b) => values.push(SweepValue {
+                        value: ParamValue::Flag(b),
+                        label: format!("{name} = {b}"),
+                    }),
+                    _ => reader.report(
+                        join_index(path, i),
+                        format!("expected true or false (got {item})"),
+                    ),
                 }
             }
-            (values.len() == items.len()).then_some(Sweep { values, varies: true })
+            (values.len() == items.len()).then_some(Sweep {
+                values,
+                varies: true,
+            })
         }
         _ => {
-            reader.report(path, format!("expected true, false or a list of them (got {node})"));
+            reader.report(
+                path,
+                format!("expected true, false or a list of them (got {node})"),
+            );
             None
         }
     }
@@ -92,7 +121,13 @@ fn numbers(reader: &mut Reader, node: &Node, path: &str) -> Option<(Vec<f64>, bo
             None
         }
         Value::Array(items) if items.len() > MAX_CURVES_PER_SCENE => {
-            reader.report(path, format!("list too long (got {} values, expected at most {MAX_CURVES_PER_SCENE})", items.len()));
+            reader.report(
+                path,
+                format!(
+                    "list too long (got {} values, expected at most {MAX_CURVES_PER_SCENE})",
+                    items.len()
+                ),
+            );
             None
         }
         Value::Array(items) => {
@@ -100,7 +135,10 @@ fn numbers(reader: &mut Reader, node: &Node, path: &str) -> Option<(Vec<f64>, bo
             for (i, item) in items.iter().enumerate() {
                 match &item.value {
                     Value::Number(n) => values.push(n.value),
-                    other => reader.report(join_index(path, i), format!("expected a number (got {} {item})", other.kind())),
+                    other => reader.report(
+                        join_index(path, i),
+                        format!("expected a number (got {} {item})", other.kind()),
+                    ),
                 }
             }
             (values.len() == items.len()).then_some((values, true))
@@ -108,13 +146,20 @@ fn numbers(reader: &mut Reader, node: &Node, path: &str) -> Option<(Vec<f64>, bo
         Value::Object(_) => {
             let object = reader.object(node, path, SWEEP_KEYS)?;
             if let Some(linspace_node) = object.get("linspace") {
-                return linspace(reader, linspace_node, &join_key(path, "linspace")).map(|v| (v, true));
+                return linspace(reader, linspace_node, &join_key(path, "linspace"))
+                    .map(|v| (v, true));
             }
             let Some(range_node) = object.get("range") else {
                 reader.report(path, format!("expected a number, a list, {{\"range\": [start, stop, step]}} or {{\"linspace\": [start, stop, count]}} (got {node})"));
                 return None;
             };
-            range(reader, range_node, &join_key(path, "range"), MAX_CURVES_PER_SCENE).map(|v| (v, true))
+            range(
+                reader,
+                range_node,
+                &join_key(path, "range"),
+                MAX_CURVES_PER_SCENE,
+            )
+            .map(|v| (v, true))
         }
         other => {
             reader.report(path, format!("expected a number, a list or {{\"range\": [start, stop, step]}} (got {} {node})", other.kind()));
@@ -138,11 +183,17 @@ pub(super) fn range(reader: &mut Reader, node: &Node, path: &str, cap: usize) ->
         })
         .collect();
     let [start, stop, step] = literals[..] else {
-        reader.report(path, format!("expected [start, stop, step] of three numbers (got {node})"));
+        reader.report(
+            path,
+            format!("expected [start, stop, step] of three numbers (got {node})"),
+        );
         return None;
     };
     if items.len() != 3 {
-        reader.report(path, format!("expected [start, stop, step] of three numbers (got {node})"));
+        reader.report(
+            path,
+            format!("expected [start, stop, step] of three numbers (got {node})"),
+        );
         return None;
     }
     let decimals = start.decimals().zip(step.decimals()).map(|(a, s)| a.max(s));
@@ -168,7 +219,9 @@ fn linspace(reader: &mut Reader, node: &Node, path: &str) -> Option<Vec<f64>> {
         _ => Vec::new(),
     };
     match numbers[..] {
-        [start, stop, count] if count.fract() == 0.0 && (1.0..=MAX_CURVES_PER_SCENE as f64).contains(&count) => {
+        [start, stop, count]
+            if count.fract() == 0.0 && (1.0..=MAX_CURVES_PER_SCENE as f64).contains(&count) =>
+        {
             Some(grid::linspace(start, stop, count as usize))
         }
         _ => {
@@ -200,7 +253,10 @@ fn from_beckmann(reader: &mut Reader, node: &Node, path: &str) -> Option<Sweep> 
             ),
         }
     }
-    Some(Sweep { values, varies: true })
+    Some(Sweep {
+        values,
+        varies: true,
+    })
 }
 
 /// Whether a parameter node asks for a fit (`{"fit": {…}}`).
@@ -223,7 +279,14 @@ pub fn fit(
     path: &str,
 ) -> Option<Sweep> {
     let Model::Ndf(family) = model else {
-        reader.report(path, format!("only NDF parameters can be fitted (got {} \"{}\", expected an ndf curve)", model.key(), model.name()));
+        reader.report(
+            path,
+            format!(
+                "only NDF parameters can be fitted (got {} \"{}\", expected an ndf curve)",
+                model.key(),
+                model.name()
+            ),
+        );
         return None;
     };
     let object = reader.object(node, path, &[FIT_KEY])?;
@@ -261,7 +324,12 @@ pub fn fit(
     }
     let mut targets = Vec::new();
     let before = reader.problems.len();
-    read_curve_entry(reader, target_node, &join_key(&fit_path, "target"), &mut targets);
+    read_curve_entry(
+        reader,
+        target_node,
+        &join_key(&fit_path, "target"),
+        &mut targets,
+    );
     if reader.problems.len() > before {
         return None;
     }
@@ -271,12 +339,24 @@ pub fn fit(
         match fit::fit(&target.curve, family, &fixed, by) {
             Ok(f) => values.push(SweepValue {
                 value: ParamValue::Number(f.value),
-                label: format!("{} = {} ({} fit to {})", symbol(name), crate::curve::pretty(f.value), by.name(), target.label),
+                label: format!(
+                    "{} = {} ({} fit to {})",
+                    symbol(name),
+                    crate::curve::pretty(f.value),
+                    by.name(),
+                    target.label
+                ),
             }),
-            Err(e) => reader.report(path, format!("fit to {}: {}: {}", target.label, e.key, e.message)),
+            Err(e) => reader.report(
+                path,
+                format!("fit to {}: {}: {}", target.label, e.key, e.message),
+            ),
         }
     }
-    (values.len() == targets.len()).then_some(Sweep { values, varies: true })
+    (values.len() == targets.len()).then_some(Sweep {
+        values,
+        varies: true,
+    })
 }
 
 /// Expands a difference entry `{"difference": "minus"|"ratio", "a": …, "b": …}` at `path` into
@@ -309,10 +389,14 @@ pub fn difference_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut 
         );
         return;
     }
-    let Value::Object(members) = &node.value else { return };
+    let Value::Object(members) = &node.value else {
+        return;
+    };
     let entry = reader::Object::from_members(members, path);
     let template = reader.string(&entry, "label");
-    let Some(style) = read_style(reader, &entry, default_colour(a[0].curve.model())) else { return };
+    let Some(style) = read_style(reader, &entry, default_colour(a[0].curve.model())) else {
+        return;
+    };
     let count = a.len().max(b.len());
     let sign = match op {
         DiffOp::Minus => "−",
@@ -331,8 +415,16 @@ pub fn difference_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut 
             Some(t) => t.replace("{a}", &x.label).replace("{b}", &y.label),
             None => format!("{} {sign} {}", x.label, y.label),
         };
-        let colour = if entry.get("colour").is_none() && count > 1 { shade(style.colour, k, count) } else { style.colour };
-        out.push(SceneCurve { curve, label, style: super::Style { colour, ..style } });
+        let colour = if entry.get("colour").is_none() && count > 1 {
+            shade(style.colour, k, count)
+        } else {
+            style.colour
+        };
+        out.push(SceneCurve {
+            curve,
+            label,
+            style: super::Style { colour, ..style },
+        });
     }
 }
 
@@ -345,7 +437,14 @@ mod tests {
         let node = json::parse(text).unwrap();
         let mut reader = Reader::default();
         let sweep = expand(&mut reader, name, ParamKind::Number, &node, "p");
-        (sweep, reader.problems.iter().map(|p| format!("{}: {}", p.at, p.message)).collect())
+        (
+            sweep,
+            reader
+                .problems
+                .iter()
+                .map(|p| format!("{}: {}", p.at, p.message))
+                .collect(),
+        )
     }
 
     fn numbers_of(sweep: &Sweep) -> Vec<f64> {
@@ -355,12 +454,21 @@ mod tests {
     #[test]
     fn ranges_lists_and_conversions() {
         let (sweep, _) = run(r#"{"range": [0.4, 1.0, 0.1]}"#, "alpha_b");
-        assert_eq!(numbers_of(&sweep.unwrap()), [0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0]);
+        assert_eq!(
+            numbers_of(&sweep.unwrap()),
+            [0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0]
+        );
         let (sweep, _) = run("[1, 10, 100]", "alpha_abc1");
         let sweep = sweep.unwrap();
-        assert_eq!((numbers_of(&sweep), sweep.varies), (vec![1.0, 10.0, 100.0], true));
+        assert_eq!(
+            (numbers_of(&sweep), sweep.varies),
+            (vec![1.0, 10.0, 100.0], true)
+        );
         assert_eq!(sweep.values[1].label, "a₁ = 10");
-        let (sweep, _) = run(r#"{"from_beckmann": {"range": [0.2, 0.5, 0.1]}}"#, "alpha_p");
+        let (sweep, _) = run(
+            r#"{"from_beckmann": {"range": [0.2, 0.5, 0.1]}}"#,
+            "alpha_p",
+        );
         let sweep = sweep.unwrap();
         assert_eq!(numbers_of(&sweep)[0], 2.0 / (0.2 * 0.2) - 2.0);
         assert_eq!(sweep.values[2].label, "α_p = 10.5 (α_b = 0.4)");
@@ -379,7 +487,10 @@ mod tests {
             (r#"["a"]"#, "p[0]: expected a number"),
         ] {
             let (_, problems) = run(text, "alpha_p");
-            assert!(problems.iter().any(|p| p.contains(needle)), "{text}: {problems:?}");
+            assert!(
+                problems.iter().any(|p| p.contains(needle)),
+                "{text}: {problems:?}"
+            );
         }
     }
 }
