@@ -202,16 +202,7 @@ fn read_slider(reader: &mut Reader, node: &Node, path: &str) -> Option<Slider> {
 /// numpy's `geomspace(start, stop, count)` for 0 < start, stop: log-uniform positions with both
 /// ends exact, rounded to [`GEOMSPACE_DIGITS`] significant digits.
 fn geomspace(reader: &mut Reader, node: &Node, path: &str) -> Option<Vec<f64>> {
-    let numbers: Vec<f64> = match &node.value {
-        Value::Array(items) => items
-            .iter()
-            .filter_map(|item| match &item.value {
-                Value::Number(n) => Some(n.value),
-                _ => None,
-            })
-            .collect(),
-        _ => Vec::new(),
-    };
+    let numbers = super::sweep::number_items(node);
     let cap = MAX_POSITIONS_PER_SLIDER as f64;
     match numbers[..] {
         [start, stop, count]

@@ -792,15 +792,10 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
             Some(template) => fill_template(template, &curve, &resolved.params, &values),
             None => auto_label,
         };
-        let colour = if entry.get("colour").is_none() && count > 1 {
-            shade(style.colour, k, count)
-        } else {
-            style.colour
-        };
         out.push(SceneCurve {
             curve,
             label,
-            style: Style { colour, ..style },
+            style: sweep_style(style, entry.get("colour").is_some(), k, count),
         });
     }
 }
@@ -853,6 +848,19 @@ fn fill_template(
         label = label.replace(&format!("{{{}}}", spec.name), &text);
     }
     label
+}
+
+/// The style of curve k of an entry's n: its shade of the family colour, unless the entry gives
+/// its own colour or shows a single curve.
+fn sweep_style(style: Style, colour_given: bool, k: usize, n: usize) -> Style {
+    if colour_given || n <= 1 {
+        style
+    } else {
+        Style {
+            colour: shade(style.colour, k, n),
+            ..style
+        }
+    }
 }
 
 /// The k-th of n shades of a colour, from darker (k = 0) to lighter, so that the curves of one

@@ -6,7 +6,7 @@
 //! The fitting itself is [`crate::fit`]'s; this module only expands entries into values and curves.
 
 use super::reader::{self, Reader};
-use super::{SceneCurve, default_colour, read_curve_entry, read_style, shade};
+use super::{SceneCurve, default_colour, read_curve_entry, read_style};
 use crate::curve::{self, DiffOp, Model, ParamKind, ParamSpec, ParamValue, symbol};
 use crate::fit::{self, By};
 use crate::grid;
@@ -206,9 +206,9 @@ pub(super) fn range(reader: &mut Reader, node: &Node, path: &str, cap: usize) ->
     }
 }
 
-/// numpy's `linspace(start, stop, count)`, both ends included, 1 ≤ count ≤ the scene cap.
-fn linspace(reader: &mut Reader, node: &Node, path: &str) -> Option<Vec<f64>> {
-    let numbers: Vec<f64> = match &node.value {
+/// The numbers of an array node, in order (non-numbers skipped; callers check the count).
+pub(super) fn number_items(node: &Node) -> Vec<f64> {
+    match &node.value {
         Value::Array(items) => items
             .iter()
             .filter_map(|item| match &item.value {
@@ -217,7 +217,12 @@ fn linspace(reader: &mut Reader, node: &Node, path: &str) -> Option<Vec<f64>> {
             })
             .collect(),
         _ => Vec::new(),
-    };
+    }
+}
+
+/// numpy's `linspace(start, stop, count)`, both ends included, 1 ≤ count ≤ the scene cap.
+fn linspace(reader: &mut Reader, node: &Node, path: &str) -> Option<Vec<f64>> {
+    let numbers = number_items(node);
     match numbers[..] {
         [start, stop, count]
             if count.fract() == 0.0 && (1.0..=MAX_CURVES_PER_SCENE as f64).contains(&count) =>
@@ -415,15 +420,10 @@ pub fn difference_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut 
             Some(t) => t.replace("{a}", &x.label).replace("{b}", &y.label),
             None => format!("{} {sign} {}", x.label, y.label),
         };
-        let colour = if entry.get("colour").is_none() && count > 1 {
-            shade(style.colour, k, count)
-        } else {
-            style.colour
-        };
         out.push(SceneCurve {
             curve,
             label,
-            style: super::Style { colour, ..style },
+            style: super::sweep_style(style, entry.get("colour").is_some(), k, count),
         });
     }
 }
