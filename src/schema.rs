@@ -108,6 +108,7 @@ fn scene_key(key: &str) -> Value {
             json!({ "type": "number" })
         }
         "sampling" => reference("sampling"),
+        "theme" => strings(scene::THEMES),
         "panels" => json!({ "type": "array", "items": reference("panel"), "minItems": 1 }),
         "interactive" => reference("interactive"),
         other => panic!("no schema for the scene key {other:?}"),

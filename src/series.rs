@@ -146,6 +146,19 @@ pub struct Canvas {
     pub font_px: f64,
 }
 
+/// Colours and line distinctions of a figure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Theme {
+    /// The notebooks' palette on white: series keep their spec colours.
+    #[default]
+    Notebook,
+    /// Okabe–Ito colour-blind-safe palette, assigned to the series' distinct colours in order of
+    /// first appearance, with dash patterns and widths cycling so curves differ without colour.
+    ColourBlind,
+    /// Light ink and grid on a dark background; series colours lightened to keep contrast.
+    Dark,
+}
+
 /// A figure ready for export: panels laid out on a `rows × cols` grid, filled row by row.
 #[derive(Debug, Clone)]
 pub struct Figure {
@@ -159,6 +172,8 @@ pub struct Figure {
     pub cols: usize,
     /// Size and typography.
     pub canvas: Canvas,
+    /// Colours and line distinctions.
+    pub theme: Theme,
     /// Panels, row-major; `panels.len() <= rows * cols`.
     pub panels: Vec<Panel>,
 }

@@ -9,7 +9,7 @@ use crate::error::{Error, Result};
 use crate::ndf::Family;
 use crate::output::{plot, write};
 use crate::series::{
-    Canvas, Dash, Figure, Mark, Panel, PanelKind, Rgb, Series, Style, XUnit, YScale,
+    Canvas, Dash, Figure, Mark, Panel, PanelKind, Rgb, Series, Style, Theme, XUnit, YScale,
 };
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -191,6 +191,7 @@ pub fn figure(rows: &[Row]) -> Figure {
         rows: 1,
         cols: 3,
         canvas: CANVAS,
+        theme: Theme::Notebook,
         panels: vec![
             panel(
                 "(a) drawing a curve",

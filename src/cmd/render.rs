@@ -238,6 +238,7 @@ pub fn figure(scene: &Scene, feeds: &[Vec<usize>], evaluated: &[Evaluated]) -> F
         rows: scene.rows,
         cols: scene.cols,
         canvas: scene.canvas,
+        theme: scene.theme,
         panels,
     }
 }

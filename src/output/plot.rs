@@ -1555,7 +1555,7 @@ mod tests {
     use std::sync::Arc;
 
     use super::*;
-    use crate::series::Style;
+    use crate::series::{Style, Theme};
 
     const RED: u32 = 0xDB2E2E;
     const BLUE: u32 = 0x2689D1;
@@ -1630,6 +1630,7 @@ mod tests {
                 png_scale: 2.0,
                 font_px: 12.0,
             },
+            theme: Theme::Notebook,
             panels,
         }
     }

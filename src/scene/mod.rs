@@ -16,7 +16,7 @@ use crate::fresnel::Fresnel;
 use crate::json::{Node, Value};
 use crate::ndf::Family;
 use crate::problem::{Problem, join_index, join_key, suggestion};
-use crate::series::{Canvas, Dash, Mark, PanelKind, Rgb, Style, XUnit, YScale};
+use crate::series::{Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 use reader::Reader;
 use std::f64::consts::FRAC_PI_2;
 use sweep::{MAX_CURVES_PER_SCENE, Sweep};
@@ -48,9 +48,12 @@ pub const SCENE_KEYS: &[&str] = &[
     "font_px",
     "png_scale",
     "sampling",
+    "theme",
     "panels",
     "interactive",
 ];
+/// Names of the themes (`theme`), in [`Theme`] order.
+pub const THEMES: &[&str] = &["notebook", "colour-blind", "dark"];
 /// Keys of `layout`.
 pub const LAYOUT_KEYS: &[&str] = &["rows", "cols"];
 /// Keys of `sampling` (exactly one of them).
@@ -195,6 +198,8 @@ pub struct Scene {
     pub canvas: Canvas,
     /// Sampling rule.
     pub sampling: Sampling,
+    /// Colours and line distinctions.
+    pub theme: Theme,
     /// Panels, row-major.
     pub panels: Vec<ScenePanel>,
     /// Sliders and the curves at every position, for scenes with an `interactive` key.
@@ -255,6 +260,7 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
     };
     let title = reader.string(&object, "title").unwrap_or_default();
     let sampling = read_sampling(reader, &object);
+    let theme = read_theme(reader, &object);
     let panels = read_panels(reader, &object);
     let (rows, cols) = read_layout(reader, &object, panels.as_ref().map_or(1, Vec::len));
     let canvas = read_canvas(reader, &object, rows, cols, !title.is_empty());
@@ -267,9 +273,24 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
         cols,
         canvas: canvas?,
         sampling: sampling?,
+        theme,
         panels: panels?,
         interactive,
     })
+}
+
+/// The scene's `theme`, [`Theme::Notebook`] when absent (or invalid, which is reported).
+fn read_theme(reader: &mut Reader, object: &reader::Object) -> Theme {
+    theme_named(reader.choice(object, "theme", THEMES).unwrap_or("notebook"))
+}
+
+/// The theme called `name`, one of [`THEMES`].
+pub fn theme_named(name: &str) -> Theme {
+    match name {
+        "colour-blind" => Theme::ColourBlind,
+        "dark" => Theme::Dark,
+        _ => Theme::Notebook,
+    }
 }
 
 /// Reports a scene whose table would exceed [`MAX_POINTS_PER_SCENE`]: curves × uniform samples
