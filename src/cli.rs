@@ -203,10 +203,11 @@ const FRESNEL_HELP: &str = "  fresnel exact        eta in [1e-150, 1e150], kappa
     ndfplot compare --a @a.json --b @b.json --format json --max-error max_rel=1e-3 --max-error l2_projected=0.01"
 )]
 pub struct CompareArgs {
-    /// The first curve: inline JSON, @FILE or - (one curve on stdin).
+    /// The first side: a curve, or a CSV series {"data": "csv", "path": …, "x": …, "y": …}, as
+    /// inline JSON, @FILE or - (one line on stdin).
     #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
     pub a: String,
-    /// The second curve, of the same kind as the first.
+    /// The second side; two curves must be of the same kind.
     #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
     pub b: String,
     /// Output: a readable table, or one JSON object for scripts.

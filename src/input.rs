@@ -3,8 +3,10 @@
 //! Every problem of every argument is collected before failing, so one run reports them all.
 
 use crate::curve::{self, Curve};
+use crate::dataset::Dataset;
 use crate::error::{Error, Result};
 use crate::json;
+use crate::metrics::sampled::{Operand, Samples};
 use crate::problem::{Problem, Problems};
 
 /// Reads a text file, naming it in the error.
@@ -22,6 +24,58 @@ pub fn parse_json(text: &str, source: &str) -> std::result::Result<json::Node, P
             format!("invalid JSON: {}", e.message),
         )],
     })
+}
+
+/// Parses one side of a comparison, with its canonical JSON: a curve, or a `{"data": "csv", …}`
+/// series whose file resolves against `base_dir`.
+fn parse_operand(
+    text: &str,
+    source: &str,
+    base_dir: &std::path::Path,
+) -> std::result::Result<(Operand, String), Problems> {
+    let node = parse_json(text, source)?;
+    let problems = |list| Problems {
+        source: source.to_string(),
+        list,
+    };
+    if crate::scene::data::is_data(&node) {
+        let series = crate::scene::data::parse_csv_series(&node, base_dir).map_err(problems)?;
+        let samples = match &series {
+            Dataset::Csv { x, y, .. } => Samples::new(x, y),
+            _ => None,
+        };
+        let Some(samples) = samples else {
+            return Err(problems(vec![Problem::new(
+                "data",
+                "expected θ and values",
+            )]));
+        };
+        return Ok((Operand::Samples(samples), series.canonical_json()));
+    }
+    let curve = curve::parse(&node, "").map_err(problems)?;
+    let name = curve.canonical_json();
+    Ok((Operand::Curve(curve), name))
+}
+
+/// Loads one side of `compare` from `arg`: inline JSON, `@path` or `-` (one line on `stdin`), holding a
+/// curve or a `{"data": "csv", "path": …}` series. The CSV path resolves against the folder of an
+/// `@path` file, else against the working directory. Returns the operand and its canonical JSON.
+pub fn load_operand(
+    arg: &str,
+    flag: &str,
+    stdin: impl FnOnce() -> std::io::Result<String>,
+) -> Result<(Operand, String)> {
+    let here = std::path::Path::new(".");
+    let (text, source, base_dir) = if arg == "-" {
+        let text = stdin().map_err(|e| Error::io("stdin", e))?;
+        (text, "stdin".to_string(), here)
+    } else if let Some(path) = arg.strip_prefix('@') {
+        let folder = std::path::Path::new(path).parent().unwrap_or(here);
+        (read_file(path)?, path.to_string(), folder)
+    } else {
+        (arg.to_string(), flag.to_string(), here)
+    };
+    parse_operand(&text, &source, base_dir).map_err(|p| Error::Input(vec![p]))
 }
 
 fn parse_curve(text: &str, source: &str) -> std::result::Result<Curve, Problems> {

@@ -122,7 +122,9 @@ fn panel_key(key: &str) -> Value {
         "x" => reference("x_axis"),
         "y" => reference("y_axis"),
         "z" => reference("z_axis"),
-        "view" => reference("view"),
+        "view" => strings(scene::VIEWS),
+        "transform" => strings(scene::PANEL_TRANSFORMS),
+        "camera" => reference("camera"),
         "legend" => json!({ "type": "boolean" }),
         "curves" => json!({
             "type": "array",
@@ -295,7 +297,7 @@ pub fn schema() -> Value {
     def("x_axis", object(scene::X_KEYS, &[], axis_key));
     def("y_axis", object(scene::Y_KEYS, &[], axis_key));
     def("z_axis", object(scene::Z_KEYS, &[], axis_key));
-    def("view", object(scene::VIEW_KEYS, &[], axis_key));
+    def("camera", object(scene::CAMERA_KEYS, &[], axis_key));
     def(
         "interactive",
         object(

@@ -48,6 +48,8 @@ pub enum XUnit {
     Degrees,
     /// Not an angle (an index, a coefficient): x shown as is.
     Plain,
+    /// The microfacet slope tan θ (data still θ in radians; displayed and ranged as tan θ).
+    Slope,
 }
 
 /// How a series' points are marked.
@@ -68,6 +70,10 @@ pub enum Mark {
 pub enum PanelKind {
     /// A 2D plot of y against x.
     Cartesian,
+    /// The lobe in the plane of incidence: each point (θ, v) drawn at angle θ from the vertical
+    /// normal and radius v (or log₁₀ v above the radial floor on a log y scale), mirrored over
+    /// −θ so the half-disc spans −π/2 … π/2; circular grid at radius ticks, spokes at angle ticks.
+    Polar,
     /// A 3D plot: series carry z values; a series with a `grid` is a surface, others are 3D lines.
     Surface {
         /// z axis label.

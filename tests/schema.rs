@@ -71,7 +71,7 @@ fn every_key_table_equals_the_schema_properties() {
         ("x_axis", scene::X_KEYS),
         ("y_axis", scene::Y_KEYS),
         ("z_axis", scene::Z_KEYS),
-        ("view", scene::VIEW_KEYS),
+        ("camera", scene::CAMERA_KEYS),
         ("interactive", INTERACTIVE_KEYS),
         ("slider", PARAM_KEYS),
         ("slider_reference", &[SLIDER_KEY]),
@@ -282,6 +282,8 @@ fn misspelt_keys_and_names_fail_the_schema_as_they_fail_the_validator() {
         "fit-by-misspelt",
         "empty-panels",
         "sweep-empty-list",
+        "view-misspelt",
+        "theme-misspelt",
     ] {
         let text = std::fs::read_to_string(dir.join(format!("{case}.json"))).unwrap();
         let instance: Value = serde_json::from_str(&text).unwrap();

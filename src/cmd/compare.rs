@@ -5,7 +5,8 @@
 
 use crate::curve::Curve;
 use crate::error::{Error, Result};
-use crate::metrics::{Comparison, Metric, compare};
+use crate::metrics::sampled::{Operand, compare_operands};
+use crate::metrics::{Comparison, Metric};
 use crate::problem::{Problem, Problems, suggestion};
 
 /// A `--max-error <metric>=<x>` bound.
@@ -73,15 +74,19 @@ pub fn check_kinds(a: &Curve, b: &Curve) -> Result<()> {
     }))
 }
 
-/// The metrics of `a` against `b`; a curve that is not finite somewhere or an integral that does not
-/// converge is an error (exit 2).
-pub fn metrics(a: &Curve, b: &Curve) -> Result<Comparison> {
-    check_kinds(a, b)?;
-    compare(a, b).map_err(|e| Error::Numerics(format!("compare: {e}")))
+/// The metrics of `a` against `b` (two curves of one kind, or a sampled series against anything); a
+/// side that is not finite somewhere, an integral that does not converge or two series with no θ in
+/// common is an error (exit 2).
+pub fn metrics(a: &Operand, b: &Operand) -> Result<Comparison> {
+    if let (Operand::Curve(a), Operand::Curve(b)) = (a, b) {
+        check_kinds(a, b)?;
+    }
+    compare_operands(a, b).map_err(|e| Error::Numerics(format!("compare: {e}")))
 }
 
-/// The readable report: the two curves, then one row per metric with the θ where it is reached.
-pub fn table(a: &Curve, b: &Curve, c: &Comparison) -> String {
+/// The readable report: the two sides (canonical JSON), then one row per metric with the θ where it
+/// is reached.
+pub fn table(a: &str, b: &str, c: &Comparison) -> String {
     let rows: [(&str, f64, Option<f64>); 6] = [
         ("max_abs", c.max_abs, Some(c.max_abs_theta)),
         ("max_rel", c.max_rel, Some(c.max_rel_theta)),
@@ -91,12 +96,8 @@ pub fn table(a: &Curve, b: &Curve, c: &Comparison) -> String {
         ("b_peak", c.b_peak.value, Some(c.b_peak.theta)),
     ];
     let mut out = format!(
-        "a  {}\nb  {}\n\n{:<14}{:<25}{}\n",
-        a.canonical_json(),
-        b.canonical_json(),
-        "metric",
-        "value",
-        "theta"
+        "a  {a}\nb  {b}\n\n{:<14}{:<25}{}\n",
+        "metric", "value", "theta"
     );
     for (name, value, theta) in rows {
         let theta = theta.map_or_else(String::new, |t| format!("{t:?}"));
@@ -106,14 +107,12 @@ pub fn table(a: &Curve, b: &Curve, c: &Comparison) -> String {
     out
 }
 
-/// One JSON object: `a` and `b` (canonical curves), each metric by name, `max_abs_theta`,
+/// One JSON object: `a` and `b` (canonical JSON of each side), each metric by name, `max_abs_theta`,
 /// `max_rel_theta`, `a_peak`, `a_peak_theta`, `b_peak`, `b_peak_theta`; numbers in round-trip form.
-pub fn json(a: &Curve, b: &Curve, c: &Comparison) -> String {
+pub fn json(a: &str, b: &str, c: &Comparison) -> String {
     format!(
-        "{{\"a\":{},\"b\":{},\"max_abs\":{:?},\"max_abs_theta\":{:?},\"max_rel\":{:?},\"max_rel_theta\":{:?},\
+        "{{\"a\":{a},\"b\":{b},\"max_abs\":{:?},\"max_abs_theta\":{:?},\"max_rel\":{:?},\"max_rel_theta\":{:?},\
          \"l2_projected\":{:?},\"l2_grid\":{:?},\"a_peak\":{:?},\"a_peak_theta\":{:?},\"b_peak\":{:?},\"b_peak_theta\":{:?}}}\n",
-        a.canonical_json(),
-        b.canonical_json(),
         c.max_abs,
         c.max_abs_theta,
         c.max_rel,

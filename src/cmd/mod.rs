@@ -84,13 +84,13 @@ fn run_compare(args: CompareArgs) -> Result<()> {
         .iter()
         .map(|b| compare::parse_bound(b))
         .collect::<Result<_>>()?;
-    let a = load_one_curve(&args.a, "--a")?;
-    let b = load_one_curve(&args.b, "--b")?;
+    let (a, a_name) = input::load_operand(&args.a, "--a", read_stdin)?;
+    let (b, b_name) = input::load_operand(&args.b, "--b", read_stdin)?;
     let metrics = compare::metrics(&a, &b)?;
     let report = if args.format == "json" {
-        compare::json(&a, &b, &metrics)
+        compare::json(&a_name, &b_name, &metrics)
     } else {
-        compare::table(&a, &b, &metrics)
+        compare::table(&a_name, &b_name, &metrics)
     };
     stdout::print(&report)?;
     compare::check_bounds(&metrics, &bounds)

@@ -339,7 +339,7 @@ where
 {
     let area = titled(cell, &panel.title, PANEL_TITLE_EM, m)?;
     match &panel.kind {
-        PanelKind::Cartesian => draw_cartesian(&area, panel, m),
+        PanelKind::Cartesian | PanelKind::Polar => draw_cartesian(&area, panel, m),
         PanelKind::Surface {
             z_label,
             z_range,
@@ -1104,11 +1104,13 @@ impl Axis {
                 let step = nice_step(hi - lo, max_ticks, &DECADE_MANTISSAS).0;
                 (step.max(1.0), 0)
             }
-            XUnit::Radians | XUnit::Plain => nice_step(hi - lo, max_ticks, &NICE_MANTISSAS),
+            XUnit::Radians | XUnit::Plain | XUnit::Slope => {
+                nice_step(hi - lo, max_ticks, &NICE_MANTISSAS)
+            }
         };
         let suffix = match unit {
             XUnit::Degrees => "°",
-            XUnit::Radians | XUnit::Plain => "",
+            XUnit::Radians | XUnit::Plain | XUnit::Slope => "",
         };
         Axis {
             lo,
@@ -1268,6 +1270,7 @@ const SUPERSCRIPT_DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '
 fn x_display(theta: f64, unit: XUnit) -> Option<f64> {
     let x = match unit {
         XUnit::Degrees => theta.to_degrees(),
+        XUnit::Slope => theta.tan(),
         XUnit::Radians | XUnit::Plain => theta,
     };
     x.is_finite().then_some(x)
@@ -1287,6 +1290,7 @@ fn default_x(unit: XUnit) -> (f64, f64) {
         XUnit::Degrees => (0.0, 90.0),
         XUnit::Radians => (0.0, std::f64::consts::FRAC_PI_2),
         XUnit::Plain => (0.0, 1.0),
+        XUnit::Slope => (0.0, 4.0),
     }
 }
 

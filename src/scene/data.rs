@@ -76,6 +76,31 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
     })
 }
 
+/// Validates a `{"data": "csv", …}` series given on its own (a `compare` side) at the root path, its
+/// file resolved against `base_dir`: a [`Dataset::Csv`] holding θ (radians) and values. Other data
+/// kinds are not functions of θ and are reported.
+pub fn parse_csv_series(
+    node: &Node,
+    base_dir: &std::path::Path,
+) -> Result<Dataset, Vec<crate::problem::Problem>> {
+    let mut reader = Reader {
+        problems: Vec::new(),
+        base_dir: Some(base_dir.to_path_buf()),
+    };
+    let entry = read_entry(&mut reader, node, "");
+    match entry.map(|e| e.dataset) {
+        Some(csv @ Dataset::Csv { .. }) if reader.problems.is_empty() => Ok(csv),
+        Some(other) => Err(vec![crate::problem::Problem::new(
+            "data",
+            format!(
+                "not a series of θ (got {}, expected {{\"data\": \"csv\", \"path\": …}})",
+                other.canonical_json()
+            ),
+        )]),
+        _ => Err(reader.problems),
+    }
+}
+
 fn read_spectrum(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
     let names: Vec<&'static str> = SpectrumQuantity::NAMES.iter().map(|(n, _)| *n).collect();
     let quantity = match entry.get("quantity") {

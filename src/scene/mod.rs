@@ -17,6 +17,7 @@ use crate::json::{Node, Value};
 use crate::ndf::Family;
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::series::{Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
+use crate::transform::Transform;
 use reader::Reader;
 use std::f64::consts::FRAC_PI_2;
 use sweep::{MAX_CURVES_PER_SCENE, Sweep};
@@ -61,17 +62,34 @@ pub const SAMPLING_KEYS: &[&str] = &["uniform", "adaptive"];
 /// Keys of `sampling.adaptive`.
 pub const ADAPTIVE_KEYS: &[&str] = &["tolerance_px"];
 /// Keys a panel may have.
-pub const PANEL_KEYS: &[&str] = &["title", "kind", "x", "y", "z", "view", "legend", "curves"];
+pub const PANEL_KEYS: &[&str] = &[
+    "title",
+    "kind",
+    "view",
+    "transform",
+    "x",
+    "y",
+    "z",
+    "camera",
+    "legend",
+    "curves",
+];
 /// Panel kinds (`kind`).
 pub const PANEL_KINDS: &[&str] = &["cartesian", "surface"];
+/// Views of a cartesian panel (`view`).
+pub const VIEWS: &[&str] = &["cartesian", "polar"];
+/// Value transforms a panel applies to its NDF curves (`transform`).
+pub const PANEL_TRANSFORMS: &[&str] = &["projected", "slope"];
+/// The slope range (tan θ) a slope axis shows when its `range` is not given.
+pub const DEFAULT_SLOPE_RANGE: (f64, f64) = (0.0, 4.0);
 /// Keys of a panel's `x` axis.
 pub const X_KEYS: &[&str] = &["unit", "range", "label"];
 /// Units of an `x` axis.
-pub const X_UNITS: &[&str] = &["radians", "degrees", "plain"];
+pub const X_UNITS: &[&str] = &["radians", "degrees", "slope", "plain"];
 /// Keys of a surface panel's `z` axis.
 pub const Z_KEYS: &[&str] = &["range", "label"];
-/// Keys of a surface panel's `view`.
-pub const VIEW_KEYS: &[&str] = &["elevation", "azimuth"];
+/// Keys of a surface panel's `camera`.
+pub const CAMERA_KEYS: &[&str] = &["elevation", "azimuth"];
 /// Keys of a panel's `y` axis.
 pub const Y_KEYS: &[&str] = &["scale", "range", "label"];
 /// Scales of a `y` axis.
@@ -265,6 +283,9 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
     let (rows, cols) = read_layout(reader, &object, panels.as_ref().map_or(1, Vec::len));
     let canvas = read_canvas(reader, &object, rows, cols, !title.is_empty());
     check_points(reader, sampling, panels.as_deref());
+    if sliders.is_some() {
+        check_interactive_views(reader, panels.as_deref().unwrap_or_default());
+    }
     let interactive = interactive::read(reader, node, sliders, panels.as_deref());
     Some(Scene {
         id: id?,
@@ -290,6 +311,25 @@ pub fn theme_named(name: &str) -> Theme {
         "colour-blind" => Theme::ColourBlind,
         "dark" => Theme::Dark,
         _ => Theme::Notebook,
+    }
+}
+
+/// Reports panels an interactive page cannot draw: its pages plot y against θ on cartesian axes.
+fn check_interactive_views(reader: &mut Reader, panels: &[ScenePanel]) {
+    for (i, panel) in panels.iter().enumerate() {
+        let path = join_index("panels", i);
+        if panel.kind == PanelKind::Polar {
+            reader.report(
+                join_key(&path, "view"),
+                "interactive pages draw cartesian panels (got \"polar\", expected \"cartesian\")",
+            );
+        }
+        if panel.x_unit == XUnit::Slope {
+            reader.report(
+                join_key(&join_key(&path, "x"), "unit"),
+                "interactive pages draw θ axes (got \"slope\", expected radians or degrees)",
+            );
+        }
     }
 }
 
@@ -521,42 +561,25 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
     let y = panel
         .get("y")
         .and_then(|n| reader.object(n, &y_path, Y_KEYS));
-    let series = read_series(reader, &panel)?;
+    let mut series = read_series(reader, &panel)?;
+    let transform = read_transform(reader, &panel, &mut series.curves);
     let only_data = series.curves.is_empty() && !series.data.iter().any(|d| d.dataset.is_theta());
     let x_unit = match x.and_then(|x| reader.choice(&x, "unit", X_UNITS)) {
         Some("degrees") => XUnit::Degrees,
         Some("radians") => XUnit::Radians,
+        Some("slope") => XUnit::Slope,
         Some(_) => XUnit::Plain,
         None if only_data => XUnit::Plain,
+        None if transform == Some(Transform::Slope) => XUnit::Slope,
         None => XUnit::Radians,
     };
     if x_unit == XUnit::Plain && !only_data {
         reader.report(
             &x_path,
-            "curves of θ need an angle axis (got unit \"plain\", expected radians or degrees)",
+            "curves of θ need an angle axis (got unit \"plain\", expected radians, degrees or slope)",
         );
     }
-    let x_range = match x_unit {
-        XUnit::Degrees => x
-            .and_then(|x| {
-                reader.interval(
-                    &x,
-                    "range",
-                    |v| (0.0..=90.0).contains(&v),
-                    "degrees within [0, 90]",
-                )
-            })
-            .map(|(a, b)| (a.to_radians(), b.to_radians().min(FRAC_PI_2))),
-        XUnit::Radians => x.and_then(|x| {
-            reader.interval(
-                &x,
-                "range",
-                |v| (0.0..=FRAC_PI_2).contains(&v),
-                "radians within [0, π/2]",
-            )
-        }),
-        XUnit::Plain => x.and_then(|x| reader.interval(&x, "range", f64::is_finite, "finite")),
-    };
+    let x_range = read_x_range(reader, x.as_ref(), x_unit);
     let y_scale = match y.and_then(|y| reader.choice(&y, "scale", Y_SCALES)) {
         Some("log") => YScale::Log,
         _ => YScale::Linear,
@@ -565,20 +588,9 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
         YScale::Log => reader.interval(&y, "range", |v| v > 0.0, "both > 0 on a log axis"),
         YScale::Linear => reader.interval(&y, "range", f64::is_finite, "finite"),
     });
-    let kind = read_kind(reader, &panel, &series)?;
+    let kind = read_kind(reader, &panel, &series, x_unit)?;
     let (default_x_label, default_y_label) = match (series.curves.first(), series.data.first()) {
-        (Some(first), _) => {
-            let x_label = if x_unit == XUnit::Degrees {
-                "θ (degrees)"
-            } else {
-                "θ (radians)"
-            };
-            let y_label = match first.curve.model() {
-                Model::Fresnel(_) => "F(θ)",
-                _ => "D(θ)",
-            };
-            (x_label.to_string(), y_label.to_string())
-        }
+        (Some(first), _) => default_curve_labels(first, x_unit, transform),
         (None, Some(first)) => data::default_labels(&first.dataset),
         (None, None) => (String::new(), String::new()),
     };
@@ -601,27 +613,145 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
     })
 }
 
-/// The panel kind: `"kind": "surface"` with its `z` axis and `view`, else 2D.
+/// The panel's `transform` (one of [`PANEL_TRANSFORMS`]), applied to each of its curves; a curve
+/// the transform does not apply to (a Fresnel curve) is reported under `transform`.
+fn read_transform(
+    reader: &mut Reader,
+    panel: &reader::Object,
+    curves: &mut [SceneCurve],
+) -> Option<Transform> {
+    let transform = Transform::from_name(reader.choice(panel, "transform", PANEL_TRANSFORMS)?)?;
+    let at = panel.path_of("transform");
+    for entry in curves.iter_mut() {
+        match curve::transformed(transform, entry.curve.clone(), &at) {
+            Ok(transformed) => entry.curve = transformed,
+            Err(problem) => {
+                reader.problems.push(problem);
+                return None;
+            }
+        }
+    }
+    Some(transform)
+}
+
+/// The x range in radians of θ: given in degrees, radians or slope (tan θ, converted with atan)
+/// per `unit`; a slope axis without a range shows [`DEFAULT_SLOPE_RANGE`], since tan θ is unbounded.
+fn read_x_range(
+    reader: &mut Reader,
+    x: Option<&reader::Object>,
+    unit: XUnit,
+) -> Option<(f64, f64)> {
+    match unit {
+        XUnit::Degrees => x
+            .and_then(|x| {
+                reader.interval(
+                    x,
+                    "range",
+                    |v| (0.0..=90.0).contains(&v),
+                    "degrees within [0, 90]",
+                )
+            })
+            .map(|(a, b)| (a.to_radians(), b.to_radians().min(FRAC_PI_2))),
+        XUnit::Radians => x.and_then(|x| {
+            reader.interval(
+                x,
+                "range",
+                |v| (0.0..=FRAC_PI_2).contains(&v),
+                "radians within [0, π/2]",
+            )
+        }),
+        XUnit::Slope => {
+            let slopes = x
+                .and_then(|x| {
+                    reader.interval(
+                        x,
+                        "range",
+                        |v| v.is_finite() && v >= 0.0,
+                        "slopes tan θ, finite and ≥ 0",
+                    )
+                })
+                .unwrap_or(DEFAULT_SLOPE_RANGE);
+            Some((slopes.0.atan(), slopes.1.atan()))
+        }
+        XUnit::Plain => x.and_then(|x| reader.interval(x, "range", f64::is_finite, "finite")),
+    }
+}
+
+/// Default axis labels of a panel whose first series is `first`, a curve of θ.
+fn default_curve_labels(
+    first: &SceneCurve,
+    unit: XUnit,
+    transform: Option<Transform>,
+) -> (String, String) {
+    let x_label = match unit {
+        XUnit::Degrees => "θ (degrees)",
+        XUnit::Slope => "slope tan θ",
+        _ => "θ (radians)",
+    };
+    let y_label = match (first.curve.model(), transform) {
+        (Model::Fresnel(_), _) => "F(θ)",
+        (_, Some(Transform::Projected)) => "D(θ) cos θ",
+        (_, Some(Transform::Slope)) => "P₂₂ = D(θ) cos⁴θ",
+        _ => "D(θ)",
+    };
+    (x_label.to_string(), y_label.to_string())
+}
+
+/// The panel kind: `"kind": "surface"` with its `z` axis and `camera`; otherwise a cartesian
+/// panel in its `view` (a polar view needs curves of θ on an angle axis).
 fn read_kind(
     reader: &mut Reader,
     panel: &reader::Object,
     series: &PanelSeries,
+    x_unit: XUnit,
 ) -> Option<PanelKind> {
     let surface = reader.choice(panel, "kind", PANEL_KINDS) == Some("surface");
-    for key in ["z", "view"] {
-        if !surface && panel.get(key).is_some() {
+    if surface {
+        if let Some(view) = panel.get("view") {
+            reader.report(
+                panel.path_of("view"),
+                format!("a surface panel has no view (got {view}, expected a \"camera\" object for its angle, or a cartesian panel)"),
+            );
+        }
+        return read_surface(reader, panel, series);
+    }
+    for key in ["z", "camera"] {
+        if panel.get(key).is_some() {
             reader.report(panel.path_of(key), "only surface panels have this key (got it on a cartesian panel, expected \"kind\": \"surface\" with it)");
         }
     }
-    if !surface {
-        if let Some(i) = series.data.iter().position(|d| d.dataset.has_z()) {
-            reader.report(
-                panel.path_of("curves"),
-                format!("series {i} has a z axis: it needs \"kind\": \"surface\""),
-            );
-        }
-        return Some(PanelKind::Cartesian);
+    if let Some(i) = series.data.iter().position(|d| d.dataset.has_z()) {
+        reader.report(
+            panel.path_of("curves"),
+            format!("series {i} has a z axis: it needs \"kind\": \"surface\""),
+        );
     }
+    match reader.choice(panel, "view", VIEWS) {
+        Some("polar") => {
+            if !matches!(x_unit, XUnit::Radians | XUnit::Degrees) {
+                let unit = if x_unit == XUnit::Slope {
+                    "slope"
+                } else {
+                    "plain"
+                };
+                reader.report(
+                    panel.path_of("view"),
+                    format!("a polar view draws θ as an angle (got x unit \"{unit}\", expected radians or degrees)"),
+                );
+                return None;
+            }
+            Some(PanelKind::Polar)
+        }
+        _ => Some(PanelKind::Cartesian),
+    }
+}
+
+/// A surface panel: only data series with a z coefficient, its `z` axis and `camera`.
+fn read_surface(
+    reader: &mut Reader,
+    panel: &reader::Object,
+    series: &PanelSeries,
+) -> Option<PanelKind> {
     if !series.curves.is_empty() || series.data.iter().any(|d| !d.dataset.has_z()) {
         reader.report(
             panel.path_of("curves"),
@@ -633,20 +763,21 @@ fn read_kind(
     let z = panel
         .get("z")
         .and_then(|n| reader.object(n, &z_path, Z_KEYS));
-    let view_path = panel.path_of("view");
-    let view = panel
-        .get("view")
-        .and_then(|n| reader.object(n, &view_path, VIEW_KEYS));
+    let camera_path = panel.path_of("camera");
+    let camera = panel
+        .get("camera")
+        .and_then(|n| reader.object(n, &camera_path, CAMERA_KEYS));
     let angle = |reader: &mut Reader, key: &str, default: f64| {
-        view.and_then(|v| {
-            reader.number(
-                &v,
-                key,
-                |a| (-360.0..=360.0).contains(&a),
-                "degrees within [-360, 360]",
-            )
-        })
-        .unwrap_or(default)
+        camera
+            .and_then(|v| {
+                reader.number(
+                    &v,
+                    key,
+                    |a| (-360.0..=360.0).contains(&a),
+                    "degrees within [-360, 360]",
+                )
+            })
+            .unwrap_or(default)
     };
     Some(PanelKind::Surface {
         z_label: z

@@ -12,6 +12,8 @@ use crate::math::tolerance::QUAD_REL_TOL;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::fmt;
 
+pub mod sampled;
+
 /// Nodes of the c-grid of `l2_grid`: c_i = numpy linspace(0, 1, 1000), θ_i = arccos c_i — the Fresnel
 /// notebook's grid (MATH.md, "The Belcour–Bati–Barla basis").
 pub const L2_GRID_NODES: usize = 1000;
@@ -57,6 +59,8 @@ pub enum MetricError {
     },
     /// An integral did not converge.
     Quad(QuadError),
+    /// Two sampled series share no θ.
+    Disjoint,
 }
 
 impl fmt::Display for MetricError {
@@ -64,6 +68,7 @@ impl fmt::Display for MetricError {
         match self {
             MetricError::NonFinite { theta } => write!(f, "not finite at theta = {theta:?}"),
             MetricError::Quad(e) => write!(f, "{e}"),
+            MetricError::Disjoint => write!(f, "the two series share no θ"),
         }
     }
 }
