@@ -949,3 +949,77 @@ fn eval_accepts_difference_series() {
         stdout(&out)
     );
 }
+
+#[test]
+fn compare_takes_a_csv_series_as_either_side() {
+    // A renderer's table: `eval` output with every value 2 % high, θ in degrees.
+    let dir = scratch("compare-csv");
+    let curve = r#"{"ndf":"ggx","alpha_tr":0.3}"#;
+    let eval = ndfplot(&["eval", "--curve", curve, "--theta", "0:90:91", "--degrees"]);
+    assert_eq!(eval.status.code(), Some(0), "{}", stderr(&eval));
+    let mut table = String::from("deg,D\n");
+    for line in stdout(&eval).lines().skip(1) {
+        let (theta, value) = line.split_once(',').unwrap();
+        let degrees = theta.parse::<f64>().unwrap().to_degrees();
+        table.push_str(&format!(
+            "{degrees},{}\n",
+            1.02 * value.parse::<f64>().unwrap()
+        ));
+    }
+    std::fs::write(dir.join("renderer.csv"), table).unwrap();
+    let series =
+        r#"{"data": "csv", "path": "renderer.csv", "x": "deg", "y": "D", "degrees": true}"#;
+    std::fs::write(dir.join("series.json"), series).unwrap();
+    let at_file = format!("@{}", dir.join("series.json").display());
+    for (a, b) in [(at_file.as_str(), curve), (curve, at_file.as_str())] {
+        let out = ndfplot(&["compare", "--a", a, "--b", b, "--format", "json"]);
+        assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+        let value: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+        let max_rel = value["max_rel"].as_f64().unwrap();
+        assert!((max_rel - 0.02 / 1.02).abs() < 1e-12, "{value}");
+        assert_eq!(value["max_abs_theta"], 0.0, "{value}");
+        let side = if a == curve { "b" } else { "a" };
+        assert_eq!(value[side]["path"], "renderer.csv", "{value}");
+    }
+    let same = ndfplot(&["compare", "--a", &at_file, "--b", &at_file]);
+    assert_eq!(same.status.code(), Some(0), "{}", stderr(&same));
+    assert!(
+        stdout(&same).contains("\nmax_abs       0.0 "),
+        "{}",
+        stdout(&same)
+    );
+    let gate = ndfplot(&[
+        "compare",
+        "--a",
+        &at_file,
+        "--b",
+        curve,
+        "--max-error",
+        "max_rel=0.01",
+    ]);
+    assert_eq!(gate.status.code(), Some(1), "{}", stderr(&gate));
+
+    let missing = dir.join("nowhere.csv");
+    let missing = format!(r#"{{"data": "csv", "path": "{}"}}"#, missing.display());
+    assert_input_error(
+        &ndfplot(&["compare", "--a", &missing, "--b", curve]),
+        "error: --a: path: cannot read",
+    );
+    let column = series.replace("\"D\"", "\"value\"");
+    std::fs::write(dir.join("column.json"), column).unwrap();
+    let column = format!("@{}", dir.join("column.json").display());
+    assert_input_error(
+        &ndfplot(&["compare", "--a", curve, "--b", &column]),
+        "no column \"value\" (expected one of: deg, D)",
+    );
+    assert_input_error(
+        &ndfplot(&[
+            "compare",
+            "--a",
+            r#"{"data": "table", "x": [0], "y": [1]}"#,
+            "--b",
+            curve,
+        ]),
+        "error: --a: data: not a series of θ",
+    );
+}
