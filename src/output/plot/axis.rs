@@ -1,0 +1,421 @@
+//! Axes in display units: automatic ranges ("PlotRange → All"), nice tick steps (degrees,
+//! decimals, decades), tick labels, and the plotters coordinate that maps display values to
+//! pixels.
+
+use std::ops::Range;
+
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint};
+use plotters::prelude::*;
+
+use crate::series::{Mark, Panel, Series, XUnit, YScale};
+
+/// Fraction of the data span added above (and below, unless clamped at 0) an automatic linear range.
+pub(super) const AUTO_MARGIN: f64 = 0.05;
+
+/// Finest tick count tried to give a short linear axis two labelled ticks (any range holds
+/// two multiples of a step a tenth of its span).
+pub(super) const MIN_TICKS_SEARCH: f64 = 12.0;
+/// Degree steps that read naturally on an angle axis, finest first.
+pub(super) const DEGREE_STEPS: [f64; 8] = [1.0, 2.0, 5.0, 15.0, 30.0, 45.0, 90.0, 180.0];
+/// Mantissas of "nice" linear steps.
+pub(super) const NICE_MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 5.0, 10.0];
+/// Mantissas of steps between labelled decades (a step of 25 decades reads badly).
+pub(super) const DECADE_MANTISSAS: [f64; 4] = [1.0, 2.0, 5.0, 10.0];
+/// At most this many decades get light lines at 2…9 × 10ᵏ.
+pub(super) const MAX_MINOR_DECADES: f64 = 8.0;
+
+/// How tick values are written.
+#[derive(Clone, Copy)]
+pub(super) enum TickFormat {
+    /// Fixed decimals, with an optional unit suffix (`°`).
+    Fixed {
+        decimals: usize,
+        suffix: &'static str,
+    },
+    /// The value is a base-10 exponent: written `10ᵏ`.
+    Decade,
+}
+
+/// One axis in display units (degrees or radians on x; values or log₁₀ values on y).
+#[derive(Clone)]
+pub(super) struct Axis {
+    pub(super) lo: f64,
+    pub(super) hi: f64,
+    /// Labelled ticks with bold grid lines.
+    pub(super) ticks: Vec<f64>,
+    /// Unlabelled light grid lines (log axes: 2…9 × 10ᵏ).
+    pub(super) minor: Vec<f64>,
+    pub(super) format: TickFormat,
+}
+
+impl Axis {
+    /// The x axis of `panel`, with at most about `max_ticks` ticks.
+    ///
+    /// An automatic θ range is the data's; an automatic plain range adds a margin (at least
+    /// half a bar spacing when bars are drawn). Plain axes whose x values are all whole
+    /// numbers (indices) tick at whole numbers.
+    pub(super) fn x(panel: &Panel, max_ticks: f64) -> Axis {
+        let unit = panel.x_unit;
+        let data = || {
+            panel
+                .series
+                .iter()
+                .flat_map(|s| s.points.iter())
+                .filter_map(move |&(theta, _)| x_display(theta, unit))
+        };
+        let automatic = || match extent(data()) {
+            None => default_x(unit),
+            Some((lo, hi)) if unit == XUnit::Plain => {
+                let half_bar = panel
+                    .series
+                    .iter()
+                    .filter(|s| s.style.mark == Mark::Bars)
+                    .filter_map(|s| median_spacing(s, unit))
+                    .fold(0.0, f64::max)
+                    / 2.0;
+                let pad = (AUTO_MARGIN * (hi - lo)).max(half_bar);
+                (lo - pad, hi + pad)
+            }
+            Some(range) => range,
+        };
+        let given = panel
+            .x_range
+            .and_then(|(a, b)| Some((x_display(a, unit)?, x_display(b, unit)?)));
+        let (lo, hi) = match given {
+            Some((a, b)) => (a.min(b), a.max(b)),
+            None => automatic(),
+        };
+        let (lo, hi) = widen_if_flat(lo, hi);
+        let whole = unit == XUnit::Plain && data().all(|v| v.fract() == 0.0);
+        let (step, decimals) = match unit {
+            XUnit::Degrees => degree_step(hi - lo, max_ticks),
+            XUnit::Plain if whole => {
+                let step = nice_step(hi - lo, max_ticks, &DECADE_MANTISSAS).0;
+                (step.max(1.0), 0)
+            }
+            XUnit::Radians | XUnit::Plain | XUnit::Slope => {
+                nice_step(hi - lo, max_ticks, &NICE_MANTISSAS)
+            }
+        };
+        let suffix = match unit {
+            XUnit::Degrees => "°",
+            XUnit::Radians | XUnit::Plain | XUnit::Slope => "",
+        };
+        Axis {
+            lo,
+            hi,
+            ticks: multiples(lo, hi, step),
+            minor: Vec::new(),
+            format: TickFormat::Fixed { decimals, suffix },
+        }
+    }
+
+    /// The value axis of `panel`, with at most about `max_ticks` ticks. An automatic linear
+    /// range includes 0 when bars are drawn.
+    pub(super) fn y(panel: &Panel, max_ticks: f64) -> Axis {
+        let scale = panel.y_scale;
+        let data = || {
+            panel
+                .series
+                .iter()
+                .flat_map(|s| s.points.iter())
+                .filter_map(move |&(_, v)| y_display(v, scale))
+        };
+        let given = panel.y_range.and_then(|(a, b)| {
+            let (a, b) = (y_display(a, scale)?, y_display(b, scale)?);
+            Some((a.min(b), a.max(b)))
+        });
+        match scale {
+            YScale::Linear => {
+                let bars = panel.series.iter().any(|s| s.style.mark == Mark::Bars);
+                let base = bars.then_some(0.0);
+                Axis::linear(given, extent(data().chain(base)), max_ticks)
+            }
+            YScale::Log => {
+                let (lo, hi) = given.unwrap_or_else(|| match extent(data()) {
+                    Some((a, b)) => (a.floor(), b.ceil()),
+                    None => (0.0, 1.0),
+                });
+                let (lo, hi) = if hi - lo < 1.0 && given.is_none() {
+                    (lo, lo + 1.0)
+                } else {
+                    widen_if_flat(lo, hi)
+                };
+                let step = nice_step(hi - lo, max_ticks, &DECADE_MANTISSAS).0.max(1.0);
+                let ticks = multiples(lo, hi, step);
+                let minor = if step == 1.0 && hi - lo <= MAX_MINOR_DECADES {
+                    (lo.floor() as i32..hi.ceil() as i32)
+                        .flat_map(|d| (2..10).map(move |m| f64::from(d) + f64::from(m).log10()))
+                        .filter(|v| (lo..=hi).contains(v))
+                        .collect()
+                } else {
+                    Vec::new()
+                };
+                Axis {
+                    lo,
+                    hi,
+                    ticks,
+                    minor,
+                    format: TickFormat::Decade,
+                }
+            }
+        }
+    }
+
+    /// The z axis of a surface panel: `given` or the extent of the series' z values.
+    pub(super) fn z(panel: &Panel, given: Option<(f64, f64)>, max_ticks: f64) -> Axis {
+        let data = panel
+            .series
+            .iter()
+            .filter_map(|s| s.z.as_deref())
+            .flatten()
+            .copied()
+            .filter(|v| v.is_finite());
+        let given = given.filter(|(a, b)| a.is_finite() && b.is_finite());
+        Axis::linear(
+            given.map(|(a, b)| (a.min(b), a.max(b))),
+            extent(data),
+            max_ticks,
+        )
+    }
+
+    /// A linear axis over `given`, else over the data `extent` as "PlotRange → All".
+    pub(super) fn linear(
+        given: Option<(f64, f64)>,
+        extent: Option<(f64, f64)>,
+        max_ticks: f64,
+    ) -> Axis {
+        let (lo, hi) = given.unwrap_or_else(|| auto_linear(extent));
+        let (lo, hi) = widen_if_flat(lo, hi);
+        // A short axis still gets two labelled ticks: finer steps until it does.
+        let mut max_ticks = max_ticks;
+        let (mut step, mut decimals) = nice_step(hi - lo, max_ticks, &NICE_MANTISSAS);
+        while multiples(lo, hi, step).len() < 2 && max_ticks < MIN_TICKS_SEARCH {
+            max_ticks += 1.0;
+            (step, decimals) = nice_step(hi - lo, max_ticks, &NICE_MANTISSAS);
+        }
+        Axis {
+            lo,
+            hi,
+            ticks: multiples(lo, hi, step),
+            minor: Vec::new(),
+            format: TickFormat::Fixed {
+                decimals,
+                suffix: "",
+            },
+        }
+    }
+
+    /// The tick label of display value `v`.
+    pub(super) fn label(&self, v: f64) -> String {
+        match self.format {
+            TickFormat::Fixed { decimals, suffix } => {
+                let v = if v.abs() < 1e-12 * (self.hi - self.lo) {
+                    0.0
+                } else {
+                    v
+                };
+                format!("{v:.decimals$}{suffix}").replace('-', "−")
+            }
+            TickFormat::Decade => {
+                let exponent = v.round() as i64;
+                let digits: String = exponent
+                    .to_string()
+                    .chars()
+                    .map(|c| match c {
+                        '-' => '⁻',
+                        d => SUPERSCRIPT_DIGITS[d.to_digit(10).unwrap_or(0) as usize],
+                    })
+                    .collect();
+                format!("10{digits}")
+            }
+        }
+    }
+}
+
+/// The axis as a plotters coordinate: linear in display units, ticks as bold key points and
+/// the minor lines as light ones.
+impl Ranged for Axis {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        let t = (value - self.lo) / (self.hi - self.lo);
+        limit.0 + (f64::from(limit.1 - limit.0) * t).round() as i32
+    }
+
+    fn key_points<Hint: KeyPointHint>(&self, hint: Hint) -> Vec<f64> {
+        if hint.weight().allow_light_points() {
+            self.minor.clone()
+        } else {
+            self.ticks.clone()
+        }
+    }
+
+    fn range(&self) -> Range<f64> {
+        self.lo..self.hi
+    }
+}
+
+pub(super) const SUPERSCRIPT_DIGITS: [char; 10] =
+    ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+
+/// θ (radians) in display units, if finite.
+pub(super) fn x_display(theta: f64, unit: XUnit) -> Option<f64> {
+    let x = match unit {
+        XUnit::Degrees => theta.to_degrees(),
+        XUnit::Slope => theta.tan(),
+        XUnit::Radians | XUnit::Plain => theta,
+    };
+    x.is_finite().then_some(x)
+}
+
+/// A value in display units (log₁₀ on log axes), if it can be drawn.
+pub(super) fn y_display(v: f64, scale: YScale) -> Option<f64> {
+    match scale {
+        YScale::Linear => v.is_finite().then_some(v),
+        YScale::Log => (v > 0.0 && v.is_finite()).then(|| v.log10()),
+    }
+}
+
+/// The x range shown when a panel has no data: 0 to π/2.
+pub(super) fn default_x(unit: XUnit) -> (f64, f64) {
+    match unit {
+        XUnit::Degrees => (0.0, 90.0),
+        XUnit::Radians => (0.0, std::f64::consts::FRAC_PI_2),
+        XUnit::Plain => (0.0, 1.0),
+        XUnit::Slope => (0.0, 4.0),
+    }
+}
+
+/// Minimum and maximum of `values`, `None` when empty.
+pub(super) fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    values.fold(None, |acc, v| match acc {
+        None => Some((v, v)),
+        Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
+    })
+}
+
+/// PlotRange → All on a linear axis: the data extent plus a margin, from 0 when all values are ≥ 0.
+pub(super) fn auto_linear(extent: Option<(f64, f64)>) -> (f64, f64) {
+    let Some((lo, hi)) = extent else {
+        return (0.0, 1.0);
+    };
+    let lo = if lo >= 0.0 { 0.0 } else { lo };
+    let span = hi - lo;
+    let lo = if lo == 0.0 {
+        0.0
+    } else {
+        lo - AUTO_MARGIN * span
+    };
+    (lo, hi + AUTO_MARGIN * span)
+}
+
+/// Opens up an empty range (a flat curve, a single point) around its value.
+pub(super) fn widen_if_flat(lo: f64, hi: f64) -> (f64, f64) {
+    if hi - lo > 1e-12 * lo.abs().max(hi.abs()) && hi - lo > f64::MIN_POSITIVE {
+        return (lo, hi);
+    }
+    let pad = if lo == 0.0 { 1.0 } else { lo.abs() * 0.5 };
+    (lo - pad, hi + pad)
+}
+
+/// A step `mantissa × 10ⁿ` giving at most about `max_ticks` ticks over `span`, and its decimals.
+pub(super) fn nice_step(span: f64, max_ticks: f64, mantissas: &[f64]) -> (f64, usize) {
+    let raw = span / (max_ticks.floor() - 1.0).max(1.0);
+    let magnitude = 10f64.powf(raw.log10().floor());
+    let mantissa = mantissas
+        .iter()
+        .copied()
+        .find(|&m| m * magnitude >= raw * (1.0 - 1e-9))
+        .unwrap_or(10.0);
+    let step = mantissa * magnitude;
+    let decimals =
+        (-(step.log10() + 1e-9).floor()).max(0.0) as usize + usize::from(mantissa == 2.5);
+    (step, decimals)
+}
+
+/// A step from [`DEGREE_STEPS`] giving at most about `max_ticks` ticks, else a nice step.
+pub(super) fn degree_step(span: f64, max_ticks: f64) -> (f64, usize) {
+    let limit = max_ticks.floor().max(2.0);
+    DEGREE_STEPS
+        .into_iter()
+        .filter(|&step| step <= span)
+        .find(|&step| (span / step).floor() + 1.0 <= limit)
+        .map_or_else(
+            || nice_step(span, max_ticks, &NICE_MANTISSAS),
+            |step| (step, 0),
+        )
+}
+
+/// The multiples of `step` in `[lo, hi]`.
+pub(super) fn multiples(lo: f64, hi: f64, step: f64) -> Vec<f64> {
+    let first = (lo / step - 1e-9).ceil() as i64;
+    let last = (hi / step + 1e-9).floor() as i64;
+    (first..=last).map(|i| i as f64 * step).collect()
+}
+
+/// The median gap between the distinct x values of `series` (display units), if it has two.
+pub(super) fn median_spacing(series: &Series, unit: XUnit) -> Option<f64> {
+    let mut xs: Vec<f64> = series
+        .points
+        .iter()
+        .filter_map(|&(theta, _)| x_display(theta, unit))
+        .collect();
+    xs.sort_by(f64::total_cmp);
+    let mut gaps: Vec<f64> = xs
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .filter(|&g| g > 0.0)
+        .collect();
+    gaps.sort_by(f64::total_cmp);
+    gaps.get(gaps.len() / 2).copied()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::output::plot::fixtures::{RED, panel, series};
+    use crate::series::Dash;
+    use std::f64::consts::PI;
+
+    #[test]
+    fn degree_axes_tick_at_angles() {
+        let axis = Axis::x(&panel(XUnit::Degrees, YScale::Linear, vec![]), 10.0);
+        assert_eq!(axis.ticks, [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 90.0]);
+        assert_eq!(axis.label(45.0), "45°");
+        let narrow = Axis::x(&panel(XUnit::Degrees, YScale::Linear, vec![]), 4.0);
+        assert_eq!(narrow.ticks, [0.0, 30.0, 60.0, 90.0]);
+    }
+
+    #[test]
+    fn automatic_ranges_show_every_point() {
+        let values = |v: &[f64]| {
+            let points = v
+                .iter()
+                .enumerate()
+                .map(|(i, &y)| (i as f64 * 0.1, y))
+                .collect();
+            vec![series("s", RED, 1.0, Dash::Solid, points)]
+        };
+        let linear = |v: &[f64]| Axis::y(&panel(XUnit::Radians, YScale::Linear, values(v)), 8.0);
+        let positive = linear(&[1.0, 3.0, 2.0]);
+        assert_eq!(positive.lo, 0.0);
+        assert!((positive.hi - 3.0 * (1.0 + AUTO_MARGIN)).abs() < 1e-12);
+        let signed = linear(&[-1.0, 1.0]);
+        assert!((signed.lo + 1.1).abs() < 1e-12 && (signed.hi - 1.1).abs() < 1e-12);
+        let flat = linear(&[1.0 / PI, 1.0 / PI]);
+        assert!(flat.lo == 0.0 && flat.hi > 1.0 / PI);
+        let zero = linear(&[0.0, 0.0]);
+        assert!(zero.lo < 0.0 && zero.hi > 0.0);
+
+        let log = Axis::y(
+            &panel(XUnit::Radians, YScale::Log, values(&[0.0, 2e-3, 40.0])),
+            8.0,
+        );
+        assert_eq!((log.lo, log.hi), (-3.0, 2.0));
+        assert_eq!(log.ticks, [-3.0, -2.0, -1.0, 0.0, 1.0, 2.0]);
+        assert_eq!(log.label(-3.0), "10⁻³");
+        assert_eq!(log.minor.len(), 5 * 8);
+    }
+}

@@ -1,0 +1,84 @@
+//! Bytes out: the device size of a canvas, the finishing touches of the SVG document and the
+//! PNG encoding. Nothing here draws.
+
+use super::PlotError;
+use super::style::{EM_PER_SIZE, FONT_NAME};
+use crate::series::Canvas;
+
+/// Largest raster accepted: 2²⁶ pixels (64 Mpx, a 192 MB RGB buffer).
+pub(super) const MAX_DEVICE_PIXELS: u64 = 1 << 26;
+
+/// `font-family` written into the SVG: the embedded face, then the generic fallback.
+pub(super) const SVG_FONT_FAMILY: &str = "DejaVu Sans, sans-serif";
+
+/// Device size of `canvas` at `scale`, after checking that it can be drawn.
+pub(super) fn device_size(canvas: &Canvas, scale: f64) -> Result<(u32, u32), PlotError> {
+    let fail = |reason| PlotError::Canvas {
+        width_px: canvas.width_px,
+        height_px: canvas.height_px,
+        scale,
+        font_px: canvas.font_px,
+        reason,
+    };
+    if !(scale.is_finite() && scale > 0.0) {
+        return Err(fail("the scale must be a positive number"));
+    }
+    if !(canvas.font_px.is_finite() && canvas.font_px > 0.0) {
+        return Err(fail("the font size must be a positive number"));
+    }
+    let width = (f64::from(canvas.width_px) * scale).round();
+    let height = (f64::from(canvas.height_px) * scale).round();
+    if width < 1.0 || height < 1.0 {
+        return Err(fail("the raster would be empty"));
+    }
+    if width * height > MAX_DEVICE_PIXELS as f64 {
+        return Err(fail("the raster would exceed 2^26 pixels"));
+    }
+    Ok((width as u32, height as u32))
+}
+
+/// Gives the SVG its CSS size, font family and font sizes.
+///
+/// The drawing was made at `SVG_UNITS_PER_PX` units per pixel, so the `viewBox` keeps those
+/// units. plotters' SVG backend writes `font-family="<registered name>" font-size="size / 1.24"`;
+/// the family gets its generic fallback, and the size becomes the em size that the raster
+/// backend uses for the same text style, so that SVG and PNG text have the same extent.
+pub(super) fn finish_svg(document: &str, canvas: &Canvas, (width, height): (u32, u32)) -> String {
+    /// plotters-svg 0.3.7 divides the style size by this to get `font-size`.
+    const PLOTTERS_SVG_DIVISOR: f64 = 1.24;
+    let drawn = format!(r#"<svg width="{width}" height="{height}" "#);
+    let sized = format!(
+        r#"<svg width="{}" height="{}" "#,
+        canvas.width_px, canvas.height_px
+    );
+    let document = document.replacen(&drawn, &sized, 1);
+    let marker = format!(r#"font-family="{FONT_NAME}" font-size=""#);
+    let mut parts = document.split(marker.as_str());
+    let mut out = String::with_capacity(document.len() + document.len() / 16);
+    out.push_str(parts.next().unwrap_or_default());
+    for part in parts {
+        let (size, rest) = part.split_once('"').unwrap_or(("", part));
+        let em = size.parse::<f64>().unwrap_or(0.0) * PLOTTERS_SVG_DIVISOR * EM_PER_SIZE;
+        out.push_str(&format!(
+            r#"font-family="{SVG_FONT_FAMILY}" font-size="{em:.2}"{rest}"#
+        ));
+    }
+    out
+}
+
+/// Encodes packed 8-bit RGB pixels as a PNG with fixed settings: fast deflate and the Sub
+/// filter, ~6× faster than adaptive filtering for files ~1.6× larger (plots are mostly flat).
+pub(super) fn encode_png(rgb: &[u8], width: u32, height: u32) -> Result<Vec<u8>, PlotError> {
+    let mut out = Vec::with_capacity(rgb.len() / 16);
+    let mut encoder = png::Encoder::new(&mut out, width, height);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.set_compression(png::Compression::Fast);
+    encoder.set_filter(png::FilterType::Sub);
+    encoder.set_adaptive_filter(png::AdaptiveFilterType::NonAdaptive);
+    encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
+    let mut writer = encoder.write_header()?;
+    writer.write_image_data(rgb)?;
+    writer.finish()?;
+    Ok(out)
+}

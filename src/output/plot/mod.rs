@@ -1,0 +1,560 @@
+//! Figure → SVG and PNG bytes, drawn with plotters and the embedded DejaVu Sans face.
+//!
+//! Owns the page layout (figure title, panel grid, axes, ticks, legend), the automatic
+//! ranges ("PlotRange → All") and the in-memory PNG encoding. It must not compute curves,
+//! decide what to plot, or touch the file system: callers hand it a finished [`Figure`] and
+//! write the returned bytes themselves.
+//!
+//! Cartesian panels draw lines, dots, lines with dots, or bars; surface panels draw a 3D
+//! axes box with back panes, depth-sorted translucent surface meshes and 3D lines, using the
+//! camera geometry of [`super::plot3d`].
+//!
+//! Both formats share one drawing routine, parameterised by a device scale `k` (device pixels
+//! per CSS pixel): the PNG is drawn at `k = png_scale`; the SVG at `k = SVG_UNITS_PER_PX` and
+//! then given a `viewBox` that maps it back to the canvas size, so that coordinates and line
+//! widths keep sub-pixel precision although plotters works in integer device units.
+//!
+//! This file holds the entry points and the page layout; each drawing job has its own file:
+//! [`axis`] (ranges, ticks, tick labels), [`clip`] (curves cut to the visible box),
+//! [`cartesian`] and [`surface`] (the two panel kinds), [`legend`], [`style`] (sizes, colours,
+//! font) and [`encode`] (SVG finishing and PNG encoding).
+
+mod axis;
+mod cartesian;
+mod clip;
+mod encode;
+#[cfg(test)]
+mod fixtures;
+mod legend;
+mod style;
+mod surface;
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+use super::plot3d::View;
+use crate::series::{Figure, Panel, PanelKind};
+use cartesian::draw_cartesian;
+use encode::{device_size, encode_png, finish_svg};
+use style::{EM_PER_SIZE, FIGURE_TITLE_EM, Metrics, PANEL_TITLE_EM, ensure_font};
+use surface::draw_surface;
+
+/// Why a figure could not be turned into bytes.
+#[derive(Debug, thiserror::Error)]
+pub enum PlotError {
+    /// The canvas cannot be rasterized (zero or non-finite size or scale, or too many pixels).
+    #[error(
+        "canvas {width_px}×{height_px} px at scale {scale} and font size {font_px} px cannot be drawn: {reason}"
+    )]
+    Canvas {
+        /// Requested width in CSS pixels.
+        width_px: u32,
+        /// Requested height in CSS pixels.
+        height_px: u32,
+        /// Device pixels per CSS pixel.
+        scale: f64,
+        /// Base font size in CSS pixels.
+        font_px: f64,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// The figure has more panels than grid cells.
+    #[error("{panels} panels do not fit a {rows}×{cols} grid")]
+    Layout {
+        /// Number of panels.
+        panels: usize,
+        /// Grid rows.
+        rows: usize,
+        /// Grid columns.
+        cols: usize,
+    },
+    /// A series cannot be drawn in its panel (a surface-panel series without z values, or a
+    /// grid that does not match the number of points).
+    #[error("series \"{label}\": {reason}")]
+    Series {
+        /// The series' legend label.
+        label: String,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// The embedded font could not be parsed.
+    #[error("the embedded DejaVu Sans font could not be loaded")]
+    Font,
+    /// plotters reported a drawing error.
+    #[error("drawing failed: {0}")]
+    Draw(String),
+    /// The PNG encoder failed.
+    #[error("PNG encoding failed: {0}")]
+    Encode(#[from] png::EncodingError),
+}
+
+/// Renders `figure` as a standalone SVG document (UTF-8 bytes).
+///
+/// Text stays text, in `font-family="DejaVu Sans, sans-serif"`; the font itself is not embedded.
+pub fn svg(figure: &Figure) -> Result<Vec<u8>, PlotError> {
+    let canvas = &figure.canvas;
+    let (width, height) = device_size(canvas, SVG_UNITS_PER_PX)?;
+    let mut document = String::with_capacity(SVG_CAPACITY);
+    {
+        let root = SVGBackend::with_string(&mut document, (width, height)).into_drawing_area();
+        draw_figure(&root, figure, SVG_UNITS_PER_PX)?;
+    }
+    Ok(finish_svg(&document, canvas, (width, height)).into_bytes())
+}
+
+/// Renders `figure` as a PNG of (width_px·png_scale) × (height_px·png_scale) pixels.
+///
+/// 8-bit RGB, tagged sRGB, no time stamp: identical figures give identical bytes.
+pub fn png(figure: &Figure) -> Result<Vec<u8>, PlotError> {
+    let scale = figure.canvas.png_scale;
+    let (width, height) = device_size(&figure.canvas, scale)?;
+    let mut rgb = vec![0u8; width as usize * height as usize * 3];
+    {
+        let root = BitMapBackend::with_buffer(&mut rgb, (width, height)).into_drawing_area();
+        draw_figure(&root, figure, scale)?;
+    }
+    encode_png(&rgb, width, height)
+}
+
+/// SVG device units per CSS pixel: plotters draws on an integer grid, so 4 gives 0.25 px
+/// precision for curve vertices and line widths (1.5 px = 6 units).
+const SVG_UNITS_PER_PX: f64 = 4.0;
+/// Initial SVG buffer size: a typical 10-curve figure is ~100-200 KB.
+const SVG_CAPACITY: usize = 1 << 18;
+
+/// Maps a plotters error (generic over the backend) to [`PlotError::Draw`].
+fn draw_err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> PlotError {
+    PlotError::Draw(e.to_string())
+}
+
+/// Draws the whole figure onto `root` at `k` device pixels per CSS pixel.
+fn draw_figure<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    figure: &Figure,
+    k: f64,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    ensure_font()?;
+    let (rows, cols) = (figure.rows.max(1), figure.cols.max(1));
+    if figure.panels.len() > rows * cols {
+        return Err(PlotError::Layout {
+            panels: figure.panels.len(),
+            rows: figure.rows,
+            cols: figure.cols,
+        });
+    }
+    let m = Metrics {
+        k,
+        unit: figure.canvas.font_px * k / EM_PER_SIZE,
+    };
+    root.fill(&WHITE).map_err(draw_err)?;
+    let body = titled(root, &figure.title, FIGURE_TITLE_EM, &m)?;
+    for (panel, cell) in figure.panels.iter().zip(body.split_evenly((rows, cols))) {
+        draw_panel(&cell, panel, &m)?;
+    }
+    root.present().map_err(draw_err)
+}
+
+/// Draws `title` (`size` base text sizes) centred at the top of `area`, if not empty, and
+/// returns the area below it.
+fn titled<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    title: &str,
+    size: f64,
+    m: &Metrics,
+) -> Result<DrawingArea<DB, Shift>, PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    if title.is_empty() {
+        return Ok(area.clone());
+    }
+    let style = m.font(size);
+    let pad = f64::from(m.px(0.5));
+    // plotters' raster text puts the baseline size/2 below a top anchor, so ascenders rise
+    // ≈0.3 × size above it (ascent 1901/2384 of the size for DejaVu Sans): start that much lower.
+    let top = (pad + 0.3 * size * m.unit).round() as i32;
+    let (_, text_h) = area.estimate_text_size(title, &style).map_err(draw_err)?;
+    let (width, _) = area.dim_in_pixel();
+    let centred = style.pos(Pos::new(HPos::Center, VPos::Top));
+    area.draw_text(title, &centred, (width as i32 / 2, top))
+        .map_err(draw_err)?;
+    Ok(area.split_vertically(top + text_h as i32 + pad as i32).1)
+}
+
+/// Draws one panel (title, axes, series, legend) into its grid cell.
+fn draw_panel<DB: DrawingBackend>(
+    cell: &DrawingArea<DB, Shift>,
+    panel: &Panel,
+    m: &Metrics,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let area = titled(cell, &panel.title, PANEL_TITLE_EM, m)?;
+    match &panel.kind {
+        PanelKind::Cartesian | PanelKind::Polar => draw_cartesian(&area, panel, m),
+        PanelKind::Surface {
+            z_label,
+            z_range,
+            elevation_deg,
+            azimuth_deg,
+        } => {
+            let view = View::new(*elevation_deg, *azimuth_deg);
+            draw_surface(&area, panel, (z_label, *z_range), view, m)
+        }
+    }
+}
+
+/// Strokes the border of a rectangle. A closed path rather than an unfilled `Rectangle`,
+/// whose SVG form would lose the stroke width.
+fn outline<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    [(x0, y0), (x1, y1)]: [(i32, i32); 2],
+    style: ShapeStyle,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)];
+    area.draw(&PathElement::new(corners, style))
+        .map_err(draw_err)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::output::plot::fixtures::{
+        BLACK, BLUE, ORANGE, RED, STEEL, decode, figure, fresnel_sample, in_3d, manifold_edge,
+        manifold_grid, marked, panel, polylines_in, sample, sampled, series, surface_kind, xy, zs,
+    };
+    use crate::series::{Dash, Mark, Series, XUnit, YScale};
+    use std::f64::consts::PI;
+
+    #[test]
+    fn svg_keeps_labels_as_text_in_the_embedded_face() {
+        let svg = String::from_utf8(svg(&sample()).unwrap()).unwrap();
+        assert!(svg.starts_with(r#"<svg width="400" height="250" viewBox="0 0 1600 1000""#));
+        assert!(svg.trim_end().ends_with("</svg>"));
+        assert_eq!(svg.matches("<text").count(), svg.matches("</text>").count());
+        for label in [
+            "NDF and Fresnel",
+            "Beckmann",
+            "θ",
+            "α_b = 0.4",
+            "F₀ = 0.04",
+            "10⁰",
+            "90°",
+        ] {
+            assert!(svg.contains(&format!("\n{label}\n</text>")), "{label}");
+        }
+        let families = svg.matches("font-family=").count();
+        assert!(families > 10);
+        assert_eq!(
+            svg.matches(r#"font-family="DejaVu Sans, sans-serif""#)
+                .count(),
+            families
+        );
+    }
+
+    #[test]
+    fn svg_draws_each_series_and_its_legend_sample() {
+        let svg = String::from_utf8(svg(&sample()).unwrap()).unwrap();
+        // Solid: one polyline for the curve, one for the legend sample.
+        assert_eq!(polylines_in(&svg, BLUE), 2);
+        assert_eq!(polylines_in(&svg, ORANGE), 2);
+        // Dashed and dotted series (both red): one polyline per dash.
+        assert!(polylines_in(&svg, RED) > 20);
+        let thick = format!(r##"stroke="#{ORANGE:06X}" stroke-width="12""##);
+        assert!(svg.contains(&thick), "thick = 2 × 1.5 px × 4 units");
+    }
+
+    #[test]
+    fn png_has_the_scaled_size_and_shows_the_curves() {
+        let (width, height, pixels) = decode(&png(&sample()).unwrap());
+        assert_eq!((width, height), (800, 500));
+        let has = |[r, g, b]: [u8; 3]| pixels.chunks_exact(3).any(|p| p == [r, g, b]);
+        assert!(has([0xFF, 0x99, 0x00]) && has([0x26, 0x89, 0xD1]) && has([0xDB, 0x2E, 0x2E]));
+    }
+
+    #[test]
+    fn renders_are_byte_identical_across_runs_and_threads() {
+        let figure = sample();
+        let (svg0, png0) = (svg(&figure).unwrap(), png(&figure).unwrap());
+        std::thread::scope(|scope| {
+            let runs: Vec<_> = (0..3)
+                .map(|_| scope.spawn(|| (svg(&figure).unwrap(), png(&figure).unwrap())))
+                .collect();
+            for run in runs {
+                let (svg1, png1) = run.join().unwrap();
+                assert!(svg1 == svg0 && png1 == png0);
+            }
+        });
+    }
+
+    #[test]
+    fn degenerate_figures_render() {
+        let flat = series("1/π", BLUE, 1.0, Dash::Solid, sampled(|_| 1.0 / PI));
+        let single = series("one", RED, 1.0, Dash::Dashed, vec![(0.3, 2.0)]);
+        let zeros = series("zero", RED, 1.0, Dash::Solid, sampled(|_| 0.0));
+        let nan = series("nan", RED, 1.0, Dash::Dotted, sampled(|_| f64::NAN));
+        let empty = series("", RED, 1.0, Dash::Solid, Vec::new());
+        let mut clipped = panel(XUnit::Degrees, YScale::Linear, vec![flat.clone()]);
+        clipped.y_range = Some((0.5, 0.1));
+        clipped.x_range = Some((0.2, 0.2));
+        let figures = [
+            figure(vec![panel(
+                XUnit::Degrees,
+                YScale::Linear,
+                vec![flat.clone()],
+            )]),
+            figure(vec![panel(XUnit::Radians, YScale::Log, vec![flat])]),
+            figure(vec![panel(
+                XUnit::Radians,
+                YScale::Linear,
+                vec![single.clone()],
+            )]),
+            figure(vec![panel(XUnit::Degrees, YScale::Log, vec![single])]),
+            figure(vec![panel(
+                XUnit::Degrees,
+                YScale::Log,
+                vec![zeros.clone()],
+            )]),
+            figure(vec![panel(
+                XUnit::Radians,
+                YScale::Linear,
+                vec![zeros, nan],
+            )]),
+            figure(vec![panel(XUnit::Degrees, YScale::Log, vec![empty])]),
+            figure(vec![panel(XUnit::Degrees, YScale::Linear, Vec::new())]),
+            figure(vec![clipped]),
+            figure(Vec::new()),
+        ];
+        for figure in &figures {
+            svg(figure).unwrap();
+            let (width, height, _) = decode(&png(figure).unwrap());
+            assert_eq!((width, height), (800, 500));
+        }
+    }
+
+    #[test]
+    fn unusable_canvases_and_grids_are_errors() {
+        let mut figure = sample();
+        figure.canvas.png_scale = 0.0;
+        assert!(matches!(png(&figure), Err(PlotError::Canvas { .. })));
+        figure.canvas.png_scale = f64::NAN;
+        assert!(matches!(png(&figure), Err(PlotError::Canvas { .. })));
+        let mut figure = sample();
+        figure.canvas.width_px = 0;
+        assert!(matches!(svg(&figure), Err(PlotError::Canvas { .. })));
+        let mut figure = sample();
+        figure.cols = 1;
+        assert!(matches!(svg(&figure), Err(PlotError::Layout { .. })));
+    }
+
+    #[test]
+    fn new_marks_and_surfaces_render_with_their_labels() {
+        let figure = fresnel_sample();
+        let svg = String::from_utf8(svg(&figure).unwrap()).unwrap();
+        for label in [
+            "Fresnel decomposition",
+            "Number of basis elements",
+            "Cumulative singular values",
+            "sₖ / Σs",
+            "cumulative",
+            "Gulbrandsen parametrization",
+            "c₀",
+            "c₂",
+            "c₃",
+            "manifold",
+            "g = 1",
+            "15",
+        ] {
+            assert!(svg.contains(&format!("\n{label}\n</text>")), "{label}");
+        }
+        // Whole-number ticks on the index axis.
+        assert!(!svg.contains("\n2.5\n</text>"));
+        // 2500 scatter dots, 20 line dots and 1 legend dot; 361 mesh cells and 1 legend patch.
+        let steel = format!(r##"fill="#{STEEL:06X}""##);
+        let dots = svg
+            .lines()
+            .filter(|l| l.starts_with("<circle") && l.contains(&steel))
+            .count();
+        assert_eq!(dots, 2500);
+        let orange = format!(r##"fill="#{ORANGE:06X}""##);
+        let marker_dots = svg
+            .lines()
+            .filter(|l| l.starts_with("<circle") && l.contains(&orange))
+            .count();
+        assert_eq!(marker_dots, 20 + 1);
+        assert_eq!(svg.matches("<polygon").count(), 3 + 361);
+        // 20 bars, the legend box of the bars and the legend patch of the surface.
+        assert_eq!(
+            svg.lines()
+                .filter(|l| l.starts_with("<rect") && l.contains(&steel))
+                .count(),
+            20 + 1 + 1
+        );
+        // The 3D lines: one polyline each, plus a legend sample.
+        assert_eq!(polylines_in(&svg, BLACK), 2 + 2);
+
+        let (width, height, pixels) = decode(&png(&figure).unwrap());
+        assert_eq!((width, height), (2700, 900));
+        let has = |[r, g, b]: [u8; 3]| pixels.chunks_exact(3).any(|p| p == [r, g, b]);
+        assert!(has([0x1F, 0x77, 0xB4]) && has([0xFF, 0x99, 0x00]) && has([0, 0, 0]));
+    }
+
+    #[test]
+    fn new_marks_and_surfaces_render_identically_across_threads() {
+        let figure = fresnel_sample();
+        let (svg0, png0) = (svg(&figure).unwrap(), png(&figure).unwrap());
+        std::thread::scope(|scope| {
+            let runs: Vec<_> = (0..2)
+                .map(|_| scope.spawn(|| (svg(&figure).unwrap(), png(&figure).unwrap())))
+                .collect();
+            for run in runs {
+                let (svg1, png1) = run.join().unwrap();
+                assert!(svg1 == svg0 && png1 == png0);
+            }
+        });
+    }
+
+    #[test]
+    fn degenerate_surfaces_and_marks_render() {
+        let grid = manifold_grid(5);
+        let surface = |series: Vec<Series>| {
+            let mut p = panel(XUnit::Plain, YScale::Linear, series);
+            p.kind = surface_kind(None);
+            figure(vec![p])
+        };
+        let flat: Vec<f64> = vec![0.5; grid.len()];
+        let row = manifold_edge(0.5);
+        let lone_bar = marked(
+            series("one", RED, 1.0, Dash::Solid, vec![(3.0, 2.0)]),
+            Mark::Bars,
+        );
+        let log_bars = marked(
+            series(
+                "log",
+                RED,
+                1.0,
+                Dash::Solid,
+                vec![(1.0, 0.0), (2.0, 1e-3), (3.0, 1.0)],
+            ),
+            Mark::Bars,
+        );
+        let nan_dots = marked(
+            series(
+                "nan",
+                RED,
+                1.0,
+                Dash::Solid,
+                vec![(f64::NAN, 1.0), (1.0, f64::NAN)],
+            ),
+            Mark::LinePoints,
+        );
+        let figures = [
+            surface(vec![in_3d(
+                series("flat", STEEL, 1.0, Dash::Solid, xy(&grid)),
+                flat,
+                Some((5, 5)),
+            )]),
+            surface(vec![in_3d(
+                series("row", STEEL, 1.0, Dash::Dashed, xy(&row)),
+                zs(&row),
+                Some((1, 100)),
+            )]),
+            surface(vec![in_3d(
+                series("", STEEL, 1.0, Dash::Solid, Vec::new()),
+                Vec::new(),
+                Some((0, 0)),
+            )]),
+            surface(vec![series("empty", STEEL, 1.0, Dash::Solid, Vec::new())]),
+            surface(vec![in_3d(
+                marked(
+                    series("nan", RED, 1.0, Dash::Solid, vec![(f64::NAN, 0.0); 4]),
+                    Mark::Points,
+                ),
+                vec![f64::NAN; 4],
+                Some((2, 2)),
+            )]),
+            surface(Vec::new()),
+            figure(vec![panel(XUnit::Plain, YScale::Linear, vec![lone_bar])]),
+            figure(vec![panel(XUnit::Plain, YScale::Log, vec![log_bars])]),
+            figure(vec![panel(XUnit::Degrees, YScale::Linear, vec![nan_dots])]),
+            figure(vec![panel(
+                XUnit::Plain,
+                YScale::Linear,
+                vec![marked(
+                    series("none", RED, 1.0, Dash::Solid, Vec::new()),
+                    Mark::Points,
+                )],
+            )]),
+        ];
+        for figure in &figures {
+            svg(figure).unwrap();
+            let (width, height, _) = decode(&png(figure).unwrap());
+            assert_eq!((width, height), (800, 500));
+        }
+    }
+
+    #[test]
+    fn surface_series_without_matching_z_are_errors() {
+        let grid = manifold_grid(4);
+        let mut p = panel(
+            XUnit::Plain,
+            YScale::Linear,
+            vec![series("no z", STEEL, 1.0, Dash::Solid, xy(&grid))],
+        );
+        p.kind = surface_kind(None);
+        let missing = figure(vec![p.clone()]);
+        assert!(matches!(svg(&missing), Err(PlotError::Series { label, .. }) if label == "no z"));
+        assert!(matches!(png(&missing), Err(PlotError::Series { .. })));
+        p.series[0] = in_3d(p.series[0].clone(), zs(&grid), Some((3, 4)));
+        assert!(matches!(
+            svg(&figure(vec![p.clone()])),
+            Err(PlotError::Series { .. })
+        ));
+        p.series[0] = in_3d(p.series[0].clone(), vec![0.0; 3], None);
+        assert!(matches!(
+            svg(&figure(vec![p])),
+            Err(PlotError::Series { .. })
+        ));
+    }
+
+    /// Writes the sample figures to the temporary directory to look at, with render times.
+    #[test]
+    #[ignore]
+    fn write_sample_figures() {
+        let dir = std::env::temp_dir();
+        let fresnel = fresnel_sample();
+        let mut automatic = fresnel.panels[2].clone();
+        automatic.kind = surface_kind(None);
+        (automatic.x_range, automatic.y_range) = (None, None);
+        automatic.title = "Automatic ranges".to_owned();
+        let mut manifold = figure(vec![fresnel.panels[2].clone(), automatic]);
+        (manifold.canvas.width_px, manifold.canvas.height_px) = (900, 400);
+        for (name, figure) in [
+            ("ndfplot-fresnel", fresnel),
+            ("ndfplot-manifold", manifold),
+            ("ndfplot-ndf", sample()),
+        ] {
+            let start = std::time::Instant::now();
+            let svg_bytes = svg(&figure).unwrap();
+            let svg_time = start.elapsed();
+            let start = std::time::Instant::now();
+            let png_bytes = png(&figure).unwrap();
+            let png_time = start.elapsed();
+            eprintln!(
+                "{name}: svg {svg_time:?} ({} B), png {png_time:?} ({} B)",
+                svg_bytes.len(),
+                png_bytes.len()
+            );
+            std::fs::write(dir.join(format!("{name}.svg")), svg_bytes).unwrap();
+            std::fs::write(dir.join(format!("{name}.png")), png_bytes).unwrap();
+        }
+    }
+}
