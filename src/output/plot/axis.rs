@@ -7,10 +7,7 @@ use std::ops::Range;
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint};
 use plotters::prelude::*;
 
-use crate::series::{Mark, Panel, Series, XUnit, YScale};
-
-/// Fraction of the data span added above (and below, unless clamped at 0) an automatic linear range.
-pub(super) const AUTO_MARGIN: f64 = 0.05;
+use crate::series::{AUTO_MARGIN, Mark, Panel, Series, XUnit, YScale, widen_if_flat};
 
 /// Finest tick count tried to give a short linear axis two labelled ticks (any range holds
 /// two multiples of a step a tenth of its span).
@@ -51,7 +48,7 @@ pub(super) struct Axis {
 impl Axis {
     /// The x axis of `panel`, with at most about `max_ticks` ticks.
     ///
-    /// An automatic θ range is the data's; an automatic plain range adds a margin (at least
+    /// An automatic θ range is the data's (a slope axis shows tan θ ∈ [0, 4]); an automatic plain range adds a margin (at least
     /// half a bar spacing when bars are drawn). Plain axes whose x values are all whole
     /// numbers (indices) tick at whole numbers.
     pub(super) fn x(panel: &Panel, max_ticks: f64) -> Axis {
@@ -83,6 +80,8 @@ impl Axis {
             .and_then(|(a, b)| Some((x_display(a, unit)?, x_display(b, unit)?)));
         let (lo, hi) = match given {
             Some((a, b)) => (a.min(b), a.max(b)),
+            // tan θ is unbounded: the data's extent would reach 10¹⁶ at θ = π/2.
+            None if unit == XUnit::Slope => default_x(unit),
             None => automatic(),
         };
         let (lo, hi) = widen_if_flat(lo, hi);
@@ -110,59 +109,53 @@ impl Axis {
         }
     }
 
-    /// The value axis of `panel`, with at most about `max_ticks` ticks. An automatic linear
-    /// range includes 0 when bars are drawn.
+    /// The value axis of `panel`, with at most about `max_ticks` ticks, over
+    /// [`YScale::range`]. An automatic linear range includes 0 when bars are drawn.
     pub(super) fn y(panel: &Panel, max_ticks: f64) -> Axis {
-        let scale = panel.y_scale;
-        let data = || {
-            panel
-                .series
-                .iter()
-                .flat_map(|s| s.points.iter())
-                .filter_map(move |&(_, v)| y_display(v, scale))
+        let bars = panel.series.iter().any(|s| s.style.mark == Mark::Bars);
+        let base = (bars && panel.y_scale == YScale::Linear).then_some(0.0);
+        let data = extent(values(panel).chain(base));
+        let range = panel.y_scale.range(panel.y_range, data);
+        Axis::values(panel.y_scale, range, max_ticks)
+    }
+
+    /// The radius axis of a polar panel, with at most about `max_ticks` ticks, over
+    /// [`YScale::radial_range`]: the centre is its low end, the rim its high end.
+    pub(super) fn radius(panel: &Panel, max_ticks: f64) -> Axis {
+        let range = panel
+            .y_scale
+            .radial_range(panel.y_range, extent(values(panel)));
+        Axis::values(panel.y_scale, range, max_ticks)
+    }
+
+    /// An axis of values on `scale` over `(lo, hi)` (display units): decimal ticks on a
+    /// linear scale; on a log scale labelled decades, with light lines at 2…9 × 10ᵏ when every
+    /// decade is labelled and there are at most [`MAX_MINOR_DECADES`].
+    fn values(scale: YScale, (lo, hi): (f64, f64), max_ticks: f64) -> Axis {
+        if scale == YScale::Linear {
+            return Axis::linear((lo, hi), max_ticks);
+        }
+        let step = nice_step(hi - lo, max_ticks, &DECADE_MANTISSAS).0.max(1.0);
+        let ticks = multiples(lo, hi, step);
+        let minor = if step == 1.0 && hi - lo <= MAX_MINOR_DECADES {
+            (lo.floor() as i32..hi.ceil() as i32)
+                .flat_map(|d| (2..10).map(move |m| f64::from(d) + f64::from(m).log10()))
+                .filter(|v| (lo..=hi).contains(v))
+                .collect()
+        } else {
+            Vec::new()
         };
-        let given = panel.y_range.and_then(|(a, b)| {
-            let (a, b) = (y_display(a, scale)?, y_display(b, scale)?);
-            Some((a.min(b), a.max(b)))
-        });
-        match scale {
-            YScale::Linear => {
-                let bars = panel.series.iter().any(|s| s.style.mark == Mark::Bars);
-                let base = bars.then_some(0.0);
-                Axis::linear(given, extent(data().chain(base)), max_ticks)
-            }
-            YScale::Log => {
-                let (lo, hi) = given.unwrap_or_else(|| match extent(data()) {
-                    Some((a, b)) => (a.floor(), b.ceil()),
-                    None => (0.0, 1.0),
-                });
-                let (lo, hi) = if hi - lo < 1.0 && given.is_none() {
-                    (lo, lo + 1.0)
-                } else {
-                    widen_if_flat(lo, hi)
-                };
-                let step = nice_step(hi - lo, max_ticks, &DECADE_MANTISSAS).0.max(1.0);
-                let ticks = multiples(lo, hi, step);
-                let minor = if step == 1.0 && hi - lo <= MAX_MINOR_DECADES {
-                    (lo.floor() as i32..hi.ceil() as i32)
-                        .flat_map(|d| (2..10).map(move |m| f64::from(d) + f64::from(m).log10()))
-                        .filter(|v| (lo..=hi).contains(v))
-                        .collect()
-                } else {
-                    Vec::new()
-                };
-                Axis {
-                    lo,
-                    hi,
-                    ticks,
-                    minor,
-                    format: TickFormat::Decade,
-                }
-            }
+        Axis {
+            lo,
+            hi,
+            ticks,
+            minor,
+            format: TickFormat::Decade,
         }
     }
 
-    /// The z axis of a surface panel: `given` or the extent of the series' z values.
+    /// The z axis of a surface panel: `given` or the extent of the series' z values, as a
+    /// linear [`YScale::range`].
     pub(super) fn z(panel: &Panel, given: Option<(f64, f64)>, max_ticks: f64) -> Axis {
         let data = panel
             .series
@@ -171,22 +164,12 @@ impl Axis {
             .flatten()
             .copied()
             .filter(|v| v.is_finite());
-        let given = given.filter(|(a, b)| a.is_finite() && b.is_finite());
-        Axis::linear(
-            given.map(|(a, b)| (a.min(b), a.max(b))),
-            extent(data),
-            max_ticks,
-        )
+        let range = YScale::Linear.range(given, extent(data));
+        Axis::linear(range, max_ticks)
     }
 
-    /// A linear axis over `given`, else over the data `extent` as "PlotRange → All".
-    pub(super) fn linear(
-        given: Option<(f64, f64)>,
-        extent: Option<(f64, f64)>,
-        max_ticks: f64,
-    ) -> Axis {
-        let (lo, hi) = given.unwrap_or_else(|| auto_linear(extent));
-        let (lo, hi) = widen_if_flat(lo, hi);
+    /// A linear axis over `(lo, hi)` with decimal ticks.
+    fn linear((lo, hi): (f64, f64), max_ticks: f64) -> Axis {
         // A short axis still gets two labelled ticks: finer steps until it does.
         let mut max_ticks = max_ticks;
         let (mut step, mut decimals) = nice_step(hi - lo, max_ticks, &NICE_MANTISSAS);
@@ -270,15 +253,8 @@ pub(super) fn x_display(theta: f64, unit: XUnit) -> Option<f64> {
     x.is_finite().then_some(x)
 }
 
-/// A value in display units (log₁₀ on log axes), if it can be drawn.
-pub(super) fn y_display(v: f64, scale: YScale) -> Option<f64> {
-    match scale {
-        YScale::Linear => v.is_finite().then_some(v),
-        YScale::Log => (v > 0.0 && v.is_finite()).then(|| v.log10()),
-    }
-}
-
-/// The x range shown when a panel has no data: 0 to π/2.
+/// The x range shown when a panel has no data: 0 to π/2; a slope axis' range when none is
+/// given: tan θ from 0 to 4.
 pub(super) fn default_x(unit: XUnit) -> (f64, f64) {
     match unit {
         XUnit::Degrees => (0.0, 90.0),
@@ -288,36 +264,21 @@ pub(super) fn default_x(unit: XUnit) -> (f64, f64) {
     }
 }
 
+/// The values of every series of `panel` in display units, where they can be drawn.
+fn values(panel: &Panel) -> impl Iterator<Item = f64> + '_ {
+    panel
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter())
+        .filter_map(|&(_, v)| panel.y_scale.display(v))
+}
+
 /// Minimum and maximum of `values`, `None` when empty.
 pub(super) fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
     values.fold(None, |acc, v| match acc {
         None => Some((v, v)),
         Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
     })
-}
-
-/// PlotRange → All on a linear axis: the data extent plus a margin, from 0 when all values are ≥ 0.
-pub(super) fn auto_linear(extent: Option<(f64, f64)>) -> (f64, f64) {
-    let Some((lo, hi)) = extent else {
-        return (0.0, 1.0);
-    };
-    let lo = if lo >= 0.0 { 0.0 } else { lo };
-    let span = hi - lo;
-    let lo = if lo == 0.0 {
-        0.0
-    } else {
-        lo - AUTO_MARGIN * span
-    };
-    (lo, hi + AUTO_MARGIN * span)
-}
-
-/// Opens up an empty range (a flat curve, a single point) around its value.
-pub(super) fn widen_if_flat(lo: f64, hi: f64) -> (f64, f64) {
-    if hi - lo > 1e-12 * lo.abs().max(hi.abs()) && hi - lo > f64::MIN_POSITIVE {
-        return (lo, hi);
-    }
-    let pad = if lo == 0.0 { 1.0 } else { lo.abs() * 0.5 };
-    (lo - pad, hi + pad)
 }
 
 /// A step `mantissa × 10ⁿ` giving at most about `max_ticks` ticks over `span`, and its decimals.
@@ -386,6 +347,26 @@ mod tests {
         assert_eq!(axis.label(45.0), "45°");
         let narrow = Axis::x(&panel(XUnit::Degrees, YScale::Linear, vec![]), 4.0);
         assert_eq!(narrow.ticks, [0.0, 30.0, 60.0, 90.0]);
+    }
+
+    #[test]
+    fn slope_axes_tick_in_tan_theta() {
+        let curve = vec![series(
+            "s",
+            RED,
+            1.0,
+            Dash::Solid,
+            vec![(0.0, 1.0), (1.5, 0.1)],
+        )];
+        let mut p = panel(XUnit::Slope, YScale::Linear, curve);
+        let automatic = Axis::x(&p, 6.0);
+        assert_eq!((automatic.lo, automatic.hi), (0.0, 4.0));
+        assert_eq!(automatic.ticks, [0.0, 1.0, 2.0, 3.0, 4.0]);
+        p.x_range = Some((0.0, 3.0f64.atan()));
+        let given = Axis::x(&p, 8.0);
+        assert!(given.lo == 0.0 && (given.hi - 3.0).abs() < 1e-12);
+        assert_eq!(given.ticks, [0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]);
+        assert_eq!(given.label(1.5), "1.5");
     }
 
     #[test]

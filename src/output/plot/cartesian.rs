@@ -4,15 +4,13 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::axis::{Axis, median_spacing, x_display, y_display};
+use super::axis::{Axis, median_spacing, x_display};
 use super::clip::visible_pieces;
 use super::legend::{Sample, draw_legend};
-use super::style::{
-    AXIS_LABEL_EM, FRAME, GRID, MARKER_RADIUS_PX, MINOR_GRID, Metrics, POINT_RADIUS_PX,
-    dash_pattern,
-};
+use super::style::{AXIS_LABEL_EM, Metrics, stroke};
+use super::theme::Look;
 use super::{PlotError, draw_err, outline};
-use crate::series::{Dash, Mark, Panel, Series, YScale};
+use crate::series::{Mark, Panel, Series, YScale};
 
 /// Bar width as a fraction of the median spacing of a series' x values.
 pub(super) const BAR_FRACTION: f64 = 0.6;
@@ -23,10 +21,11 @@ pub(super) const LONE_BAR_FRACTION: f64 = 0.05;
 pub(super) const X_TICK_SPACING_EM: f64 = 4.0;
 pub(super) const Y_TICK_SPACING_EM: f64 = 3.0;
 
-/// Draws a 2D panel: axes, each series in its mark, legend.
+/// Draws a 2D panel: axes, each series in its mark and look, legend.
 pub(super) fn draw_cartesian<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     panel: &Panel,
+    looks: &[Look],
     m: &Metrics,
 ) -> Result<(), PlotError>
 where
@@ -81,9 +80,9 @@ where
         .y_label_formatter(&y_fmt)
         .label_style(tick_font.clone())
         .axis_desc_style(label_font)
-        .bold_line_style(m.line(GRID))
-        .light_line_style(m.line(MINOR_GRID))
-        .axis_style(m.line(FRAME))
+        .bold_line_style(m.line(m.palette.grid))
+        .light_line_style(m.line(m.palette.minor_grid))
+        .axis_style(m.line(m.palette.frame))
         .set_all_tick_mark_size(tick_len)
         .draw()
         .map_err(draw_err)?;
@@ -98,22 +97,26 @@ where
     };
     // What each series covers, in plot pixels, for the legend to avoid.
     let mut covered: Vec<Vec<(f64, f64)>> = Vec::new();
-    for series in &panel.series {
-        let colour = series.style.colour;
+    let base = plot.get_base_pixel();
+    for (series, look) in panel.series.iter().zip(looks) {
+        let colour = look.colour;
         let mark = series.style.mark;
         if matches!(mark, Mark::Line | Mark::LinePoints) {
             let style = m.curve_style(colour, series.style.width);
             for piece in visible_pieces(series, panel, &x, &y) {
-                draw_piece(&mut chart, &piece, style, series.style.dash)?;
+                let path = piece
+                    .iter()
+                    .map(|p| {
+                        let (px, py) = chart.plotting_area().map_coordinate(p);
+                        (px - base.0, py - base.1)
+                    })
+                    .collect();
+                stroke(&plot, path, style, look.pattern)?;
                 covered.push(piece.into_iter().map(to_plot_px).collect());
             }
         }
         if matches!(mark, Mark::Points | Mark::LinePoints) {
-            let radius = m.dot(if mark == Mark::Points {
-                POINT_RADIUS_PX
-            } else {
-                MARKER_RADIUS_PX
-            });
+            let radius = m.mark_dot(mark);
             let dots = visible_points(series, panel, &x, &y);
             let fill = m.fill(colour, 1.0);
             chart
@@ -141,37 +144,18 @@ where
     outline(
         &plot,
         [(0, 0), (pw as i32 - 1, ph as i32 - 1)],
-        m.line(FRAME),
+        m.line(m.palette.frame),
     )?;
     if panel.legend {
-        let entries: Vec<(&Series, Sample)> = panel
+        let entries: Vec<(&Series, Look, Sample)> = panel
             .series
             .iter()
-            .map(|s| (s, Sample::of(s.style.mark)))
+            .zip(looks)
+            .map(|(s, &look)| (s, look, Sample::of(s.style.mark)))
             .collect();
         draw_legend(&plot, &entries, &covered, &tick_font, m)?;
     }
     Ok(())
-}
-
-/// Draws one unbroken piece of a curve (display coordinates) in its dash pattern.
-pub(super) fn draw_piece<DB: DrawingBackend>(
-    chart: &mut ChartContext<DB, Cartesian2d<Axis, Axis>>,
-    piece: &[(f64, f64)],
-    style: ShapeStyle,
-    dash: Dash,
-) -> Result<(), PlotError>
-where
-    DB::ErrorType: 'static,
-{
-    let points = piece.iter().copied();
-    match dash_pattern(dash, &style) {
-        None => chart.draw_series(LineSeries::new(points, style)).map(drop),
-        Some((on, off)) => chart
-            .draw_series(DashedLineSeries::new(points, on, off, style))
-            .map(drop),
-    }
-    .map_err(draw_err)
 }
 
 /// The points of `series` inside the axes box, in display coordinates.
@@ -184,7 +168,7 @@ pub(super) fn visible_points(
     series
         .points
         .iter()
-        .filter_map(|&(theta, v)| x_display(theta, panel.x_unit).zip(y_display(v, panel.y_scale)))
+        .filter_map(|&(theta, v)| x_display(theta, panel.x_unit).zip(panel.y_scale.display(v)))
         .filter(|&(vx, vy)| (x.lo..=x.hi).contains(&vx) && (y.lo..=y.hi).contains(&vy))
         .collect()
 }
@@ -206,7 +190,7 @@ pub(super) fn visible_bars(
     series
         .points
         .iter()
-        .filter_map(|&(theta, v)| x_display(theta, panel.x_unit).zip(y_display(v, panel.y_scale)))
+        .filter_map(|&(theta, v)| x_display(theta, panel.x_unit).zip(panel.y_scale.display(v)))
         .filter_map(|(centre, top)| {
             let (x0, x1) = (
                 (centre - width / 2.0).max(x.lo),

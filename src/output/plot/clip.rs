@@ -1,7 +1,7 @@
 //! Curves cut to what is visible: broken at points that cannot be drawn and clipped to the
 //! axes box (Liang–Barsky), in display coordinates.
 
-use super::axis::{Axis, x_display, y_display};
+use super::axis::{Axis, x_display};
 use crate::series::{Panel, Series};
 
 /// The drawable parts of `series` in display coordinates: broken at undrawable points
@@ -12,7 +12,19 @@ pub(super) fn visible_pieces(
     x: &Axis,
     y: &Axis,
 ) -> Vec<Vec<(f64, f64)>> {
-    let bounds = [x.lo, x.hi, y.lo, y.hi];
+    let points = series
+        .points
+        .iter()
+        .map(|&(theta, v)| x_display(theta, panel.x_unit).zip(panel.y_scale.display(v)));
+    pieces(points, [x.lo, x.hi, y.lo, y.hi])
+}
+
+/// The unbroken parts of a polyline inside `bounds` = `[x0, x1, y0, y1]`: a `None` point
+/// breaks it, a segment leaving the box ends a part and one entering it starts the next.
+pub(super) fn pieces(
+    points: impl Iterator<Item = Option<(f64, f64)>>,
+    bounds: [f64; 4],
+) -> Vec<Vec<(f64, f64)>> {
     let mut pieces = Vec::new();
     let mut current: Vec<(f64, f64)> = Vec::new();
     let mut flush = |current: &mut Vec<(f64, f64)>| {
@@ -23,8 +35,7 @@ pub(super) fn visible_pieces(
         }
     };
     let mut previous: Option<(f64, f64)> = None;
-    for &(theta, v) in series.points.iter() {
-        let point = x_display(theta, panel.x_unit).zip(y_display(v, panel.y_scale));
+    for point in points {
         match (previous, point) {
             (_, None) => flush(&mut current),
             (None, Some(p)) => {

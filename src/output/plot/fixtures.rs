@@ -282,3 +282,35 @@ pub(super) fn polylines_in(svg: &str, hex: u32) -> usize {
         .filter(|l| l.starts_with("<polyline") && l.contains(&stroke))
         .count()
 }
+
+/// Phong's lobe (α_p + 2)/(2π) cos^α_p θ over [0, π/2].
+pub(super) fn phong(alpha_p: f64) -> Vec<(f64, f64)> {
+    sampled(|theta| (alpha_p + 2.0) / (2.0 * PI) * theta.cos().powf(alpha_p))
+}
+
+/// Two polar panels: Beckmann lobes on a linear radius in degrees, and Phong lobes on a log
+/// radius in radians.
+pub(super) fn polar_sample() -> Figure {
+    let polar = |title: &str, x_unit, y_scale, series| {
+        let mut p = panel(x_unit, y_scale, series);
+        p.kind = PanelKind::Polar;
+        p.title = title.to_owned();
+        p
+    };
+    let beckmann = vec![
+        series("α_b = 0.4", RED, 1.0, Dash::Dashed, beckmann(0.4)),
+        series("α_b = 0.8", BLUE, 1.0, Dash::Solid, beckmann(0.8)),
+    ];
+    let phong = vec![
+        series("α_p = 10", RED, 2.0, Dash::Solid, phong(10.0)),
+        series("α_p = 100", ORANGE, 1.0, Dash::Solid, phong(100.0)),
+    ];
+    let mut figure = figure(vec![
+        polar("Beckmann", XUnit::Degrees, YScale::Linear, beckmann),
+        polar("Phong, log radius", XUnit::Radians, YScale::Log, phong),
+    ]);
+    figure.title = "Lobes in the plane of incidence".to_owned();
+    figure.canvas.width_px = 900;
+    figure.canvas.height_px = 400;
+    figure
+}

@@ -2,14 +2,12 @@
 //! and its label) in a translucent box placed where it hides the least of what is drawn.
 
 use plotters::coord::Shift;
-use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::clip::{Clipped, clip};
-use super::style::{
-    LEGEND_BORDER, MARKER_RADIUS_PX, Metrics, SURFACE_OPACITY, dash_pattern, mesh_colour,
-};
+use super::style::{MARKER_RADIUS_PX, Metrics, SURFACE_OPACITY, mesh_colour, stroke};
+use super::theme::Look;
 use super::{PlotError, draw_err, outline};
 use crate::series::{Mark, Series};
 
@@ -45,13 +43,65 @@ impl Sample {
     }
 }
 
+/// What a panel has drawn, as polylines in the legend's area pixels, for the legend to avoid.
+#[derive(Default)]
+pub(super) struct Covered(pub(super) Vec<Vec<(f64, f64)>>);
+
+impl Covered {
+    /// Records the polyline `path` (whole pixels).
+    pub(super) fn add(&mut self, path: &[(i32, i32)]) {
+        self.0.push(
+            path.iter()
+                .map(|&(x, y)| (f64::from(x), f64::from(y)))
+                .collect(),
+        );
+    }
+}
+
+/// Padding, sample length, gap before the label and row height of the legend box, in device
+/// pixels.
+fn legend_spacing(m: &Metrics) -> (u32, u32, u32, u32) {
+    (m.px(0.5), m.px(2.2), m.px(0.5), m.px(1.35))
+}
+
+/// Distance between the legend box and the edge of its area, in device pixels.
+pub(super) fn legend_inset(m: &Metrics) -> i32 {
+    m.px(0.6) as i32
+}
+
+/// Width and height in device pixels of the legend box of `entries`; `None` when no entry has
+/// a label (no legend is drawn).
+pub(super) fn legend_size<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    entries: &[(&Series, Look, Sample)],
+    font: &TextStyle,
+    m: &Metrics,
+) -> Result<Option<(i32, i32)>, PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let (pad, sample, gap, row) = legend_spacing(m);
+    let mut rows = 0;
+    let mut text_w = 0;
+    for (s, _, _) in entries.iter().filter(|(s, _, _)| !s.label.is_empty()) {
+        text_w = text_w.max(area.estimate_text_size(&s.label, font).map_err(draw_err)?.0);
+        rows += 1;
+    }
+    if rows == 0 {
+        return Ok(None);
+    }
+    let box_w = (2 * pad + sample + gap + text_w) as i32;
+    let box_h = (2 * pad + row * rows) as i32;
+    Ok(Some((box_w, box_h)))
+}
+
 /// Draws the legend inside `plot` where it hides the least of what is drawn.
 ///
 /// `covered` are the drawn curves, dots and bars in plot-area pixels. Series with an empty
 /// label get no entry.
 pub(super) fn draw_legend<DB: DrawingBackend>(
     plot: &DrawingArea<DB, Shift>,
-    entries: &[(&Series, Sample)],
+    entries: &[(&Series, Look, Sample)],
     covered: &[Vec<(f64, f64)>],
     font: &TextStyle,
     m: &Metrics,
@@ -59,49 +109,39 @@ pub(super) fn draw_legend<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let entries: Vec<&(&Series, Sample)> = entries
-        .iter()
-        .filter(|(s, _)| !s.label.is_empty())
-        .collect();
-    if entries.is_empty() {
+    let Some((box_w, box_h)) = legend_size(plot, entries, font, m)? else {
         return Ok(());
-    }
-    let (pad, sample, gap, row) = (m.px(0.5), m.px(2.2), m.px(0.5), m.px(1.35));
-    let mut text_w = 0;
-    for (s, _) in &entries {
-        text_w = text_w.max(plot.estimate_text_size(&s.label, font).map_err(draw_err)?.0);
-    }
-    let box_w = (2 * pad + sample + gap + text_w) as i32;
-    let box_h = (2 * pad + row * entries.len() as u32) as i32;
+    };
+    let entries: Vec<&(&Series, Look, Sample)> = entries
+        .iter()
+        .filter(|(s, _, _)| !s.label.is_empty())
+        .collect();
+    let (pad, sample, gap, row) = legend_spacing(m);
     let (pw, ph) = plot.dim_in_pixel();
     let (x0, y0) = legend_position(
         (pw as i32, ph as i32),
         (box_w, box_h),
-        m.px(0.6) as i32,
+        legend_inset(m),
         covered,
     );
 
-    let background = WHITE.mix(LEGEND_OPACITY).filled();
+    let background = m.palette.background.mix(LEGEND_OPACITY).filled();
     let bounds = [(x0, y0), (x0 + box_w, y0 + box_h)];
     plot.draw(&Rectangle::new(bounds, background))
         .map_err(draw_err)?;
-    outline(plot, bounds, m.line(LEGEND_BORDER))?;
+    outline(plot, bounds, m.line(m.palette.legend_border))?;
     let label_style = font.pos(Pos::new(HPos::Left, VPos::Center));
-    for (i, (s, kind)) in entries.iter().enumerate() {
+    for (i, (s, look, kind)) in entries.iter().enumerate() {
         let cy = y0 + (pad + row * i as u32 + row / 2) as i32;
         let sx = x0 + pad as i32;
-        let colour = s.style.colour;
+        let colour = look.colour;
         let mid = sx + sample as i32 / 2;
         let (half_w, half_h) = (sample as i32 / 4, row as i32 * 3 / 10);
         let patch = [(mid - half_w, cy - half_h), (mid + half_w, cy + half_h)];
         if matches!(kind, Sample::Line | Sample::LineDot) {
             let style = m.curve_style(colour, s.style.width);
-            let line = [(sx, cy), (sx + sample as i32, cy)];
-            match dash_pattern(s.style.dash, &style) {
-                None => plot.draw(&PathElement::new(line, style)),
-                Some((on, off)) => plot.draw(&DashedPathElement::new(line, on, off, style)),
-            }
-            .map_err(draw_err)?;
+            let line = vec![(sx, cy), (sx + sample as i32, cy)];
+            stroke(plot, line, style, look.pattern)?;
         }
         match kind {
             Sample::Line => {}

@@ -26,8 +26,11 @@ mod encode;
 #[cfg(test)]
 mod fixtures;
 mod legend;
+mod polar;
 mod style;
 mod surface;
+mod text;
+mod theme;
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -37,8 +40,10 @@ use super::plot3d::View;
 use crate::series::{Figure, Panel, PanelKind};
 use cartesian::draw_cartesian;
 use encode::{device_size, encode_png, finish_svg};
+use polar::draw_polar;
 use style::{EM_PER_SIZE, FIGURE_TITLE_EM, Metrics, PANEL_TITLE_EM, ensure_font};
 use surface::draw_surface;
+use theme::Look;
 
 /// Why a figure could not be turned into bytes.
 #[derive(Debug, thiserror::Error)]
@@ -149,11 +154,13 @@ where
     let m = Metrics {
         k,
         unit: figure.canvas.font_px * k / EM_PER_SIZE,
+        palette: theme::palette(figure.theme),
     };
-    root.fill(&WHITE).map_err(draw_err)?;
+    root.fill(&m.palette.background).map_err(draw_err)?;
     let body = titled(root, &figure.title, FIGURE_TITLE_EM, &m)?;
-    for (panel, cell) in figure.panels.iter().zip(body.split_evenly((rows, cols))) {
-        draw_panel(&cell, panel, &m)?;
+    let cells = body.split_evenly((rows, cols));
+    for ((panel, looks), cell) in figure.panels.iter().zip(theme::looks(figure)).zip(cells) {
+        draw_panel(&cell, panel, &looks, &m)?;
     }
     root.present().map_err(draw_err)
 }
@@ -185,10 +192,11 @@ where
     Ok(area.split_vertically(top + text_h as i32 + pad as i32).1)
 }
 
-/// Draws one panel (title, axes, series, legend) into its grid cell.
+/// Draws one panel (title, axes, series in their `looks`, legend) into its grid cell.
 fn draw_panel<DB: DrawingBackend>(
     cell: &DrawingArea<DB, Shift>,
     panel: &Panel,
+    looks: &[Look],
     m: &Metrics,
 ) -> Result<(), PlotError>
 where
@@ -196,7 +204,8 @@ where
 {
     let area = titled(cell, &panel.title, PANEL_TITLE_EM, m)?;
     match &panel.kind {
-        PanelKind::Cartesian | PanelKind::Polar => draw_cartesian(&area, panel, m),
+        PanelKind::Cartesian => draw_cartesian(&area, panel, looks, m),
+        PanelKind::Polar => draw_polar(&area, panel, looks, m),
         PanelKind::Surface {
             z_label,
             z_range,
@@ -204,7 +213,7 @@ where
             azimuth_deg,
         } => {
             let view = View::new(*elevation_deg, *azimuth_deg);
-            draw_surface(&area, panel, (z_label, *z_range), view, m)
+            draw_surface(&area, panel, looks, (z_label, *z_range), view, m)
         }
     }
 }
@@ -231,7 +240,7 @@ mod tests {
         BLACK, BLUE, ORANGE, RED, STEEL, decode, figure, fresnel_sample, in_3d, manifold_edge,
         manifold_grid, marked, panel, polylines_in, sample, sampled, series, surface_kind, xy, zs,
     };
-    use crate::series::{Dash, Mark, Series, XUnit, YScale};
+    use crate::series::{Dash, Mark, Series, Theme, XUnit, YScale};
     use std::f64::consts::PI;
 
     #[test]
@@ -338,6 +347,37 @@ mod tests {
             let (width, height, _) = decode(&png(figure).unwrap());
             assert_eq!((width, height), (800, 500));
         }
+    }
+
+    #[test]
+    fn themes_colour_the_page_and_the_series() {
+        let dark = Figure {
+            theme: Theme::Dark,
+            ..sample()
+        };
+        let (width, _, pixels) = decode(&png(&dark).unwrap());
+        assert_eq!(pixels[..3], [0x16, 0x18, 0x1C], "top-left corner");
+        let last = pixels.len() - 3;
+        assert_eq!(pixels[last..], [0x16, 0x18, 0x1C], "bottom-right corner");
+        assert_eq!(width, 800);
+        let text = String::from_utf8(svg(&dark).unwrap()).unwrap();
+        assert!(text.contains(r##"fill="#E4E6EA""##), "light text");
+
+        let blind = Figure {
+            theme: Theme::ColourBlind,
+            ..sample()
+        };
+        let text = String::from_utf8(svg(&blind).unwrap()).unwrap();
+        // RED, BLUE, ORANGE in order of appearance: blue, vermillion, bluish green.
+        for hex in [0x0072B2, 0xD55E00, 0x009E73] {
+            assert!(polylines_in(&text, hex) > 0, "{hex:06X}");
+        }
+        for hex in [RED, BLUE, ORANGE] {
+            assert_eq!(polylines_in(&text, hex), 0, "{hex:06X}");
+        }
+        // BLUE (solid in the spec) is the second colour: dashed, one polyline per dash.
+        assert!(polylines_in(&text, 0xD55E00) > 10);
+        assert!(svg(&blind).unwrap() == text.into_bytes());
     }
 
     #[test]
@@ -541,6 +581,20 @@ mod tests {
             ("ndfplot-fresnel", fresnel),
             ("ndfplot-manifold", manifold),
             ("ndfplot-ndf", sample()),
+            (
+                "ndfplot-ndf-dark",
+                Figure {
+                    theme: Theme::Dark,
+                    ..sample()
+                },
+            ),
+            (
+                "ndfplot-fresnel-colour-blind",
+                Figure {
+                    theme: Theme::ColourBlind,
+                    ..fresnel_sample()
+                },
+            ),
         ] {
             let start = std::time::Instant::now();
             let svg_bytes = svg(&figure).unwrap();

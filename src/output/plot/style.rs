@@ -3,11 +3,13 @@
 
 use std::sync::OnceLock;
 
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::{FontFamily, FontStyle, register_font};
 
-use super::PlotError;
-use crate::series::{Dash, Rgb};
+use super::theme::{Palette, Pattern};
+use super::{PlotError, draw_err};
+use crate::series::{Mark, Rgb};
 
 /// Name under which the embedded face is registered; the SVG names it first.
 pub(super) const FONT_NAME: &str = "DejaVu Sans";
@@ -21,8 +23,10 @@ pub(super) const BASE_LINE_PX: f64 = 1.5;
 pub(super) const DASHED: (f64, f64) = (4.0, 2.5);
 /// Dot and gap lengths of dotted curves, in multiples of the curve's width.
 pub(super) const DOTTED: (f64, f64) = (1.0, 1.5);
+/// Dash, gap, dot and gap lengths of dash-dot curves, in multiples of the curve's width.
+pub(super) const DASH_DOT: [f64; 4] = [4.0, 1.5, 1.0, 1.5];
 /// Radius of the dots of a scatter (`Mark::Points`), in CSS pixels.
-pub(super) const POINT_RADIUS_PX: f64 = 1.5;
+const POINT_RADIUS_PX: f64 = 1.5;
 /// Radius of the dots on a line (`Mark::LinePoints`) and of legend dots, in CSS pixels.
 pub(super) const MARKER_RADIUS_PX: f64 = 3.0;
 
@@ -35,17 +39,6 @@ pub(super) const MESH_DARKEN: f64 = 0.7;
 pub(super) const AXIS_LABEL_EM: f64 = 1.1;
 pub(super) const PANEL_TITLE_EM: f64 = 1.2;
 pub(super) const FIGURE_TITLE_EM: f64 = 1.4;
-
-/// Text; frame, axes and ticks; major and minor grid lines; legend border.
-pub(super) const INK: RGBColor = RGBColor(0x22, 0x22, 0x22);
-pub(super) const FRAME: RGBColor = RGBColor(0x55, 0x55, 0x55);
-pub(super) const GRID: RGBColor = RGBColor(0xE3, 0xE3, 0xE3);
-pub(super) const MINOR_GRID: RGBColor = RGBColor(0xF1, 0xF1, 0xF1);
-pub(super) const LEGEND_BORDER: RGBColor = RGBColor(0xBB, 0xBB, 0xBB);
-/// 3D back panes, their grid lines and their edges.
-pub(super) const PANE: RGBColor = RGBColor(0xF4, 0xF4, 0xF4);
-pub(super) const PANE_GRID: RGBColor = RGBColor(0xDD, 0xDD, 0xDD);
-pub(super) const PANE_EDGE: RGBColor = RGBColor(0xC4, 0xC4, 0xC4);
 
 /// Registers the embedded face once per process; later calls return the first outcome.
 pub(super) fn ensure_font() -> Result<(), PlotError> {
@@ -66,6 +59,8 @@ pub(super) struct Metrics {
     /// plotters text size of the tick labels in device pixels (their em is `font_px · k`):
     /// the unit of all other text sizes and of the layout spacings.
     pub(super) unit: f64,
+    /// Page colours.
+    pub(super) palette: &'static Palette,
 }
 
 impl Metrics {
@@ -79,7 +74,8 @@ impl Metrics {
     }
     /// Text style at `units` times the base size.
     pub(super) fn font(&self, units: f64) -> TextStyle<'static> {
-        TextStyle::from((FontFamily::Name(FONT_NAME), units * self.unit).into_font()).color(&INK)
+        TextStyle::from((FontFamily::Name(FONT_NAME), units * self.unit).into_font())
+            .color(&self.palette.ink)
     }
     /// Stroke of a curve drawn `multiplier` times the default width.
     pub(super) fn curve_style(&self, colour: Rgb, multiplier: f64) -> ShapeStyle {
@@ -91,6 +87,15 @@ impl Metrics {
             filled: false,
             stroke_width: width as u32,
         }
+    }
+    /// Radius in whole device pixels of the dots of a series drawn with `mark`: small for a
+    /// scatter, larger on a line.
+    pub(super) fn mark_dot(&self, mark: Mark) -> u32 {
+        self.dot(if mark == Mark::Points {
+            POINT_RADIUS_PX
+        } else {
+            MARKER_RADIUS_PX
+        })
     }
     /// Radius in whole device pixels of a dot of `radius_px` CSS pixels.
     pub(super) fn dot(&self, radius_px: f64) -> u32 {
@@ -116,12 +121,151 @@ pub(super) fn mesh_colour(colour: Rgb) -> RGBColor {
     RGBColor(dim(colour.0), dim(colour.1), dim(colour.2))
 }
 
-/// Dash and gap lengths in device pixels for `dash` drawn with `style`; `None` when solid.
-pub(super) fn dash_pattern(dash: Dash, style: &ShapeStyle) -> Option<(f64, f64)> {
+/// On and off lengths in whole device pixels, starting with "on", for `pattern` drawn with
+/// `style`; `None` when solid.
+pub(super) fn dash_lengths(pattern: Pattern, style: &ShapeStyle) -> Option<Vec<f32>> {
     let width = f64::from(style.stroke_width);
-    match dash {
-        Dash::Solid => None,
-        Dash::Dashed => Some((DASHED.0 * width, DASHED.1 * width)),
-        Dash::Dotted => Some((DOTTED.0 * width, DOTTED.1 * width)),
+    let lengths: &[f64] = match pattern {
+        Pattern::Solid => return None,
+        Pattern::Dashed => &[DASHED.0, DASHED.1],
+        Pattern::Dotted => &[DOTTED.0, DOTTED.1],
+        Pattern::DashDot => &DASH_DOT,
+    };
+    // Whole pixels, truncated as plotters sizes its own dashes.
+    Some(lengths.iter().map(|l| (l * width) as i32 as f32).collect())
+}
+
+/// Strokes the polyline `path` (pixels of `area`) in `style` and `pattern`: one path when
+/// solid, one per dash otherwise (see [`dashes`]).
+pub(super) fn stroke<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    path: Vec<(i32, i32)>,
+    style: ShapeStyle,
+    pattern: Pattern,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    match dash_lengths(pattern, &style) {
+        None => area.draw(&PathElement::new(path, style)).map_err(draw_err),
+        Some(lengths) => dashes(&path, &lengths)
+            .into_iter()
+            .try_for_each(|dash| area.draw(&PathElement::new(dash, style)).map_err(draw_err)),
+    }
+}
+
+/// The "on" stretches of the polyline `points` walked with the repeating on/off `lengths`
+/// (device pixels, starting "on"): plotters' `DashedPathElement` walk, the same f32 steps and
+/// rounding, so that two lengths give exactly its dashes, for any number of lengths.
+pub(super) fn dashes(points: &[(i32, i32)], lengths: &[f32]) -> Vec<Vec<(i32, i32)>> {
+    let to_f = |&(x, y): &(i32, i32)| (x as f32, y as f32);
+    let to_i = |(x, y): (f32, f32)| (x.round() as i32, y.round() as i32);
+    let mut out = Vec::new();
+    let Some(first) = points.first() else {
+        return out;
+    };
+    if lengths.first().is_none_or(|&l| l <= 0.0) {
+        return out;
+    }
+    let mut start = to_f(first);
+    let (mut phase, mut dist) = (0, 0.0f32);
+    let mut queue = vec![to_i(start)];
+    for point in &points[1..] {
+        let end = to_f(point);
+        while start != end {
+            let (dx, dy) = (end.0 - start.0, end.1 - start.1);
+            let d = dx.hypot(dy);
+            let length = lengths[phase];
+            let left = length - dist;
+            if left < d {
+                let t = left / d;
+                start = (start.0 + dx * t, start.1 + dy * t);
+                dist += left;
+            } else {
+                start = end;
+                dist += d;
+            }
+            let on = phase % 2 == 0;
+            if on {
+                queue.push(to_i(start));
+            }
+            if length <= dist {
+                if on {
+                    out.push(std::mem::take(&mut queue));
+                } else {
+                    queue.push(to_i(start));
+                }
+                dist = 0.0;
+                phase = (phase + 1) % lengths.len();
+            }
+        }
+    }
+    if queue.len() > 1 {
+        out.push(queue);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use plotters::element::DashedPathElement;
+
+    #[test]
+    fn dashes_repeat_their_lengths_along_the_path() {
+        let line = [(0, 0), (100, 0)];
+        let two = dashes(&line, &[10.0, 5.0]);
+        assert_eq!(two.len(), 7);
+        assert_eq!(two[0], [(0, 0), (10, 0)]);
+        assert_eq!(two[1], [(15, 0), (25, 0)]);
+        let four = dashes(&line, &[10.0, 5.0, 2.0, 5.0]);
+        assert_eq!(
+            four[..3],
+            [
+                vec![(0, 0), (10, 0)],
+                vec![(15, 0), (17, 0)],
+                vec![(22, 0), (32, 0)]
+            ]
+        );
+        // Corners are kept inside a dash.
+        let bent = dashes(&[(0, 0), (4, 0), (4, 4)], &[6.0, 1.0]);
+        assert_eq!(bent[0], [(0, 0), (4, 0), (4, 2)]);
+        assert!(dashes(&line, &[0.0, 1.0]).is_empty());
+    }
+
+    #[test]
+    fn two_lengths_draw_exactly_plotters_dashes() {
+        // A pseudo-random zig-zag (a linear congruential sequence), dashed and dotted.
+        let mut state = 12345u64;
+        let mut next = || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1);
+            ((state >> 33) % 200) as i32
+        };
+        let path: Vec<(i32, i32)> = (0..60).map(|_| (next(), next())).collect();
+        let style = ShapeStyle {
+            color: BLACK.to_rgba(),
+            filled: false,
+            stroke_width: 3,
+        };
+        for (pattern, (on, off)) in [(Pattern::Dashed, DASHED), (Pattern::Dotted, DOTTED)] {
+            let draw = |ours: bool| {
+                let mut pixels = vec![0u8; 200 * 200 * 3];
+                {
+                    let area =
+                        BitMapBackend::with_buffer(&mut pixels, (200, 200)).into_drawing_area();
+                    if ours {
+                        stroke(&area, path.clone(), style, pattern).unwrap();
+                    } else {
+                        let (on, off) = (on * 3.0, off * 3.0);
+                        let dashed = DashedPathElement::new(path.clone(), on, off, style);
+                        area.draw(&dashed).unwrap();
+                    }
+                }
+                pixels
+            };
+            assert!(draw(true) == draw(false), "{pattern:?}");
+        }
     }
 }

@@ -3,16 +3,14 @@
 //! [`crate::output::plot3d`].
 
 use plotters::coord::Shift;
-use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::axis::{Axis, x_display, y_display};
-use super::legend::{Sample, draw_legend};
-use super::style::{
-    AXIS_LABEL_EM, FRAME, MARKER_RADIUS_PX, Metrics, PANE, PANE_EDGE, PANE_GRID, POINT_RADIUS_PX,
-    SURFACE_OPACITY, dash_pattern, mesh_colour,
-};
+use super::axis::{Axis, x_display};
+use super::legend::{Covered, Sample, draw_legend};
+use super::style::{AXIS_LABEL_EM, Metrics, SURFACE_OPACITY, mesh_colour, stroke};
+use super::text::{anchor_towards, text_box, text_size};
+use super::theme::Look;
 use super::{PlotError, draw_err};
 use crate::output::plot3d::{self, P3, Projector, View};
 use crate::series::{Mark, Panel, Rgb, Series};
@@ -29,6 +27,7 @@ pub(super) const TICK_CLEARANCE_EM: f64 = 0.8;
 pub(super) fn draw_surface<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     panel: &Panel,
+    looks: &[Look],
     (z_label, z_range): (&str, Option<(f64, f64)>),
     view: View,
     m: &Metrics,
@@ -39,11 +38,7 @@ where
     let z_values = z_columns(panel)?;
     let tick_font = m.font(1.0);
     let label_font = m.font(AXIS_LABEL_EM);
-    let text = |s: &str, font: &TextStyle| {
-        area.estimate_text_size(s, font)
-            .map(|(w, h)| (f64::from(w), f64::from(h)))
-            .map_err(draw_err)
-    };
+    let text = |s: &str, font: &TextStyle| text_size(area, s, font);
     let tick_len = f64::from(m.px(0.35));
     let gap = f64::from(m.px(0.4));
     let (_, tick_h) = text("0", &tick_font)?;
@@ -104,20 +99,13 @@ where
             .collect()
     };
     // Everything drawn, in area pixels, for the legend to avoid.
-    let mut covered: Vec<Vec<(f64, f64)>> = Vec::new();
-    let mut cover = |path: &[(i32, i32)]| {
-        covered.push(
-            path.iter()
-                .map(|&(x, y)| (f64::from(x), f64::from(y)))
-                .collect(),
-        );
-    };
+    let mut covered = Covered::default();
 
     // Back panes and their grid lines.
     let far = view.far_sides();
     for (axis, &high) in far.iter().enumerate() {
         let corners = plot3d::face(axis, high);
-        area.draw(&Polygon::new(ring(&corners), PANE.filled()))
+        area.draw(&Polygon::new(ring(&corners), m.palette.pane.filled()))
             .map_err(draw_err)?;
         for other in [(axis + 1) % 3, (axis + 2) % 3] {
             let across = 3 - axis - other;
@@ -127,14 +115,20 @@ where
                 a[across] = -plot3d::BOX_ASPECT[across] / 2.0;
                 let mut b = a;
                 b[across] = -a[across];
-                area.draw(&PathElement::new([px(a), px(b)], m.line(PANE_GRID)))
-                    .map_err(draw_err)?;
+                area.draw(&PathElement::new(
+                    [px(a), px(b)],
+                    m.line(m.palette.pane_grid),
+                ))
+                .map_err(draw_err)?;
             }
         }
         let outline = ring(&corners);
-        area.draw(&PathElement::new(outline.clone(), m.line(PANE_EDGE)))
-            .map_err(draw_err)?;
-        cover(&outline);
+        area.draw(&PathElement::new(
+            outline.clone(),
+            m.line(m.palette.pane_edge),
+        ))
+        .map_err(draw_err)?;
+        covered.add(&outline);
     }
 
     // Series in box coordinates (NaN where a point cannot be drawn).
@@ -148,7 +142,7 @@ where
                 .iter()
                 .zip(zs.iter())
                 .map(|(&(x, y), &z)| {
-                    let shown = x_display(x, panel.x_unit).zip(y_display(y, panel.y_scale));
+                    let shown = x_display(x, panel.x_unit).zip(panel.y_scale.display(y));
                     match shown {
                         Some((x, y)) if z.is_finite() => {
                             let v = [x, y, z];
@@ -171,7 +165,7 @@ where
     }
     plot3d::back_to_front(&mut quads);
     for quad in &quads {
-        let colour = panel.series[quad.surface].style.colour;
+        let colour = looks[quad.surface].colour;
         let shade = |c: u8| (f64::from(c) * quad.shade).round() as u8;
         let shaded = Rgb(shade(colour.0), shade(colour.1), shade(colour.2));
         let outline = ring(&quad.corners);
@@ -186,40 +180,30 @@ where
             area.draw(&PathElement::new(edge, m.line(mesh_colour(colour))))
                 .map_err(draw_err)?;
         }
-        cover(&outline);
+        covered.add(&outline);
     }
 
     // Lines and dots over the surfaces.
-    for (series, points) in panel.series.iter().zip(&placed) {
+    for ((series, points), look) in panel.series.iter().zip(&placed).zip(looks) {
         if is_surface(series) {
             continue;
         }
-        let (colour, mark) = (series.style.colour, series.style.mark);
+        let (colour, mark) = (look.colour, series.style.mark);
         if mark != Mark::Points {
             let style = m.curve_style(colour, series.style.width);
             for piece in plot3d::visible_pieces(points) {
                 let path: Vec<(i32, i32)> = piece.iter().map(|&p| px(p)).collect();
-                match dash_pattern(series.style.dash, &style) {
-                    None => area.draw(&PathElement::new(path.clone(), style)),
-                    Some((on, off)) => {
-                        area.draw(&DashedPathElement::new(path.clone(), on, off, style))
-                    }
-                }
-                .map_err(draw_err)?;
-                cover(&path);
+                covered.add(&path);
+                stroke(area, path, style, look.pattern)?;
             }
         }
         if matches!(mark, Mark::Points | Mark::LinePoints) {
-            let radius = m.dot(if mark == Mark::Points {
-                POINT_RADIUS_PX
-            } else {
-                MARKER_RADIUS_PX
-            });
+            let radius = m.mark_dot(mark);
             for &p in points.iter().filter(|&&p| plot3d::inside(p)) {
                 area.draw(&Circle::new(px(p), radius, m.fill(colour, 1.0)))
                     .map_err(draw_err)?;
                 let (x, y) = px(p);
-                cover(&[(x - radius as i32, y), (x + radius as i32, y)]);
+                covered.add(&[(x - radius as i32, y), (x + radius as i32, y)]);
             }
         }
     }
@@ -230,7 +214,7 @@ where
     for (i, edge) in edges.iter().enumerate() {
         area.draw(&PathElement::new(
             [px(edge.from), px(edge.to)],
-            m.line(FRAME),
+            m.line(m.palette.frame),
         ))
         .map_err(draw_err)?;
         let mid = projector.px(edge.midpoint());
@@ -242,7 +226,7 @@ where
             let (x, y) = projector.px(edge.at(plot3d::to_box(i, tick, ranges[i])));
             let end = (x + out.0 * tick_len, y + out.1 * tick_len);
             let tick_mark = [(x, y), end].map(|(x, y)| (x.round() as i32, y.round() as i32));
-            area.draw(&PathElement::new(tick_mark, m.line(FRAME)))
+            area.draw(&PathElement::new(tick_mark, m.line(m.palette.frame)))
                 .map_err(draw_err)?;
             let label = axes[i].label(tick);
             let size = text(&label, &tick_font)?;
@@ -250,7 +234,7 @@ where
             area.draw_text(&label, &style, (at.0.round() as i32, at.1.round() as i32))
                 .map_err(draw_err)?;
             reach = reach.max(out.0.abs() * size.0 + out.1.abs() * size.1);
-            cover(&text_box(at, size, corner));
+            covered.add(&text_box(at, size, corner));
         }
         if !titles[i].is_empty() {
             let (w, h) = text(titles[i], &label_font)?;
@@ -271,24 +255,25 @@ where
                 (at.0.round() as i32, at.1.round() as i32),
             )
             .map_err(draw_err)?;
-            cover(&text_box(at, size, (0.5, 0.5)));
+            covered.add(&text_box(at, size, (0.5, 0.5)));
         }
     }
 
     if panel.legend {
-        let entries: Vec<(&Series, Sample)> = panel
+        let entries: Vec<(&Series, Look, Sample)> = panel
             .series
             .iter()
-            .map(|s| {
+            .zip(looks)
+            .map(|(s, &look)| {
                 let sample = match s.style.mark {
                     _ if is_surface(s) => Sample::Patch,
                     Mark::Bars => Sample::Line,
                     mark => Sample::of(mark),
                 };
-                (s, sample)
+                (s, look, sample)
             })
             .collect();
-        draw_legend(area, &entries, &covered, &tick_font, m)?;
+        draw_legend(area, &entries, &covered.0, &tick_font, m)?;
     }
     Ok(())
 }
@@ -325,9 +310,6 @@ pub(super) fn z_columns(panel: &Panel) -> Result<Vec<&[f64]>, PlotError> {
         .collect()
 }
 
-/// Sine of 22.5°: a label direction leaning less than this toward an axis counts as along it.
-pub(super) const LEAN: f64 = 0.382_683_432_365_089_8;
-
 /// Unit screen direction of `d`; horizontal only when `horizontal` (the upright z axis).
 pub(super) fn outward((dx, dy): (f64, f64), horizontal: bool) -> (f64, f64) {
     let (dx, dy) = if horizontal { (dx, 0.0) } else { (dx, dy) };
@@ -337,35 +319,4 @@ pub(super) fn outward((dx, dy): (f64, f64), horizontal: bool) -> (f64, f64) {
     } else {
         (0.0, 1.0)
     }
-}
-
-/// The text anchor for a label set off in direction `out` from its point, and that anchor's
-/// place in the label's box as fractions of its width and height (0 = left or top).
-pub(super) fn anchor_towards((dx, dy): (f64, f64)) -> (Pos, (f64, f64)) {
-    let (h, fx) = if dx > LEAN {
-        (HPos::Left, 0.0)
-    } else if dx < -LEAN {
-        (HPos::Right, 1.0)
-    } else {
-        (HPos::Center, 0.5)
-    };
-    let (v, fy) = if dy > LEAN {
-        (VPos::Top, 0.0)
-    } else if dy < -LEAN {
-        (VPos::Bottom, 1.0)
-    } else {
-        (VPos::Center, 0.5)
-    };
-    (Pos::new(h, v), (fx, fy))
-}
-
-/// The outline of a text box of `(w, h)` whose anchor at `at` sits at `(fx, fy)` in it.
-pub(super) fn text_box(
-    at: (f64, f64),
-    (w, h): (f64, f64),
-    (fx, fy): (f64, f64),
-) -> [(i32, i32); 5] {
-    let (x0, y0) = (at.0 - fx * w, at.1 - fy * h);
-    let [x0, y0, x1, y1] = [x0, y0, x0 + w, y0 + h].map(|v| v.round() as i32);
-    [(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)]
 }

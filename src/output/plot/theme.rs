@@ -1,0 +1,256 @@
+//! Themes: the page colours of a figure and the colour and line pattern each series is drawn
+//! in. [`Theme::Notebook`] keeps every spec colour and pattern; [`Theme::ColourBlind`] maps the
+//! figure's distinct colours onto the Okabe–Ito palette and a cycle of line patterns;
+//! [`Theme::Dark`] lightens the colours that would be lost on its dark background.
+
+use plotters::style::RGBColor;
+
+use crate::series::{Dash, Figure, Rgb, Series, Theme};
+
+/// The colours of everything that is not a series.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Palette {
+    /// Page and plot background.
+    pub(super) background: RGBColor,
+    /// Text.
+    pub(super) ink: RGBColor,
+    /// Frame, axes and ticks.
+    pub(super) frame: RGBColor,
+    /// Major grid lines.
+    pub(super) grid: RGBColor,
+    /// Minor grid lines (log decades).
+    pub(super) minor_grid: RGBColor,
+    /// Legend box border.
+    pub(super) legend_border: RGBColor,
+    /// 3D back panes.
+    pub(super) pane: RGBColor,
+    /// Grid lines on the 3D panes.
+    pub(super) pane_grid: RGBColor,
+    /// Edges of the 3D panes.
+    pub(super) pane_edge: RGBColor,
+}
+
+/// Dark ink and light grey rules on white.
+const NOTEBOOK: Palette = Palette {
+    background: RGBColor(0xFF, 0xFF, 0xFF),
+    ink: RGBColor(0x22, 0x22, 0x22),
+    frame: RGBColor(0x55, 0x55, 0x55),
+    grid: RGBColor(0xE3, 0xE3, 0xE3),
+    minor_grid: RGBColor(0xF1, 0xF1, 0xF1),
+    legend_border: RGBColor(0xBB, 0xBB, 0xBB),
+    pane: RGBColor(0xF4, 0xF4, 0xF4),
+    pane_grid: RGBColor(0xDD, 0xDD, 0xDD),
+    pane_edge: RGBColor(0xC4, 0xC4, 0xC4),
+};
+
+/// Light ink on a near-black blue-grey, rules a few steps above the background.
+const DARK: Palette = Palette {
+    background: RGBColor(0x16, 0x18, 0x1C),
+    ink: RGBColor(0xE4, 0xE6, 0xEA),
+    frame: RGBColor(0x9A, 0x9E, 0xA6),
+    grid: RGBColor(0x34, 0x38, 0x40),
+    minor_grid: RGBColor(0x23, 0x26, 0x2C),
+    legend_border: RGBColor(0x55, 0x5A, 0x63),
+    pane: RGBColor(0x1F, 0x22, 0x28),
+    pane_grid: RGBColor(0x38, 0x3C, 0x45),
+    pane_edge: RGBColor(0x4A, 0x4F, 0x58),
+};
+
+/// The Okabe–Ito colour-blind-safe palette (Okabe & Ito 2008, "Color Universal Design"),
+/// most distinct first: blue, vermillion, bluish green, orange, reddish purple, sky blue,
+/// black, and last yellow, the weakest on white.
+const OKABE_ITO: [u32; 8] = [
+    0x0072B2, 0xD55E00, 0x009E73, 0xE69F00, 0xCC79A7, 0x56B4E9, 0x000000, 0xF0E442,
+];
+
+/// Line patterns cycled with the colour-blind palette, so that curves differ without colour.
+const PATTERN_CYCLE: [Pattern; 4] = [
+    Pattern::Solid,
+    Pattern::Dashed,
+    Pattern::Dotted,
+    Pattern::DashDot,
+];
+
+/// Least relative luminance of a series colour on the dark background: (0.35 + 0.05) /
+/// (L(#16181C) + 0.05) ≈ 6.8, above WCAG's 4.5:1 for text, so thin curves stay clear.
+const DARK_MIN_LUMINANCE: f64 = 0.35;
+/// Steps of the mix towards white tried when lightening a colour (the first that is light
+/// enough is kept): 1/32 changes a channel by at most 8 levels.
+const LIGHTEN_STEPS: u32 = 32;
+
+/// How a line is stroked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Pattern {
+    /// Continuous.
+    Solid,
+    /// Long dashes.
+    Dashed,
+    /// Short dots.
+    Dotted,
+    /// Alternating dashes and dots.
+    DashDot,
+}
+
+impl From<Dash> for Pattern {
+    fn from(dash: Dash) -> Pattern {
+        match dash {
+            Dash::Solid => Pattern::Solid,
+            Dash::Dashed => Pattern::Dashed,
+            Dash::Dotted => Pattern::Dotted,
+        }
+    }
+}
+
+/// The colour and pattern a series is drawn in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Look {
+    /// Line, dot, bar or surface colour.
+    pub(super) colour: Rgb,
+    /// Line pattern.
+    pub(super) pattern: Pattern,
+}
+
+/// The page colours of `theme` (the colour-blind theme is on the notebook's white page).
+pub(super) fn palette(theme: Theme) -> &'static Palette {
+    match theme {
+        Theme::Notebook | Theme::ColourBlind => &NOTEBOOK,
+        Theme::Dark => &DARK,
+    }
+}
+
+/// The look of every series of `figure` under its theme, per panel and series.
+///
+/// Notebook: the spec's colour and dash. Colour-blind: the k-th distinct spec colour in order
+/// of first appearance across the figure becomes `OKABE_ITO[k mod 8]` and, unless the series
+/// has a dash of its own, `PATTERN_CYCLE[k mod 4]`; so one spec colour looks the same in every
+/// panel. Dark: colours darker than [`DARK_MIN_LUMINANCE`] mixed towards white until they are not.
+pub(super) fn looks(figure: &Figure) -> Vec<Vec<Look>> {
+    let mut distinct: Vec<Rgb> = Vec::new();
+    let mut rank = |colour: Rgb| match distinct.iter().position(|&c| c == colour) {
+        Some(k) => k,
+        None => {
+            distinct.push(colour);
+            distinct.len() - 1
+        }
+    };
+    let mut look = |s: &Series| {
+        let own = Look {
+            colour: s.style.colour,
+            pattern: s.style.dash.into(),
+        };
+        match figure.theme {
+            Theme::Notebook => own,
+            Theme::ColourBlind => {
+                let k = rank(s.style.colour);
+                Look {
+                    colour: Rgb::from_hex(OKABE_ITO[k % OKABE_ITO.len()]),
+                    pattern: match s.style.dash {
+                        Dash::Solid => PATTERN_CYCLE[k % PATTERN_CYCLE.len()],
+                        dash => dash.into(),
+                    },
+                }
+            }
+            Theme::Dark => Look {
+                colour: lighten(s.style.colour),
+                ..own
+            },
+        }
+    };
+    figure
+        .panels
+        .iter()
+        .map(|panel| panel.series.iter().map(&mut look).collect())
+        .collect()
+}
+
+/// `colour` mixed towards white in steps of 1/[`LIGHTEN_STEPS`] until its relative luminance
+/// reaches [`DARK_MIN_LUMINANCE`]; unchanged when it already does.
+fn lighten(colour: Rgb) -> Rgb {
+    (0..=LIGHTEN_STEPS)
+        .map(|step| {
+            let t = f64::from(step) / f64::from(LIGHTEN_STEPS);
+            let mix = |c: u8| (f64::from(c) + t * (255.0 - f64::from(c))).round() as u8;
+            Rgb(mix(colour.0), mix(colour.1), mix(colour.2))
+        })
+        .find(|&c| luminance(c) >= DARK_MIN_LUMINANCE)
+        .unwrap_or(Rgb(255, 255, 255))
+}
+
+/// WCAG 2 relative luminance of an sRGB colour: 0.2126 R + 0.7152 G + 0.0722 B of the
+/// linearised channels.
+fn luminance(Rgb(r, g, b): Rgb) -> f64 {
+    let linear = |c: u8| {
+        let c = f64::from(c) / 255.0;
+        if c <= 0.04045 {
+            c / 12.92
+        } else {
+            ((c + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    0.2126 * linear(r) + 0.7152 * linear(g) + 0.0722 * linear(b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::output::plot::fixtures::{BLACK, BLUE, RED, figure, panel, sample, series};
+    use crate::series::{XUnit, YScale};
+
+    #[test]
+    fn the_notebook_theme_keeps_spec_colours_and_dashes() {
+        let figure = sample();
+        for (panel, looks) in figure.panels.iter().zip(looks(&figure)) {
+            for (s, look) in panel.series.iter().zip(looks) {
+                assert_eq!(look.colour, s.style.colour);
+                assert_eq!(look.pattern, Pattern::from(s.style.dash));
+            }
+        }
+    }
+
+    #[test]
+    fn colour_blind_colours_follow_the_spec_colour_across_panels() {
+        let line = |hex, dash| series("s", hex, 1.0, dash, vec![(0.0, 1.0), (1.0, 2.0)]);
+        let first = panel(
+            XUnit::Radians,
+            YScale::Linear,
+            vec![
+                line(RED, Dash::Solid),
+                line(BLUE, Dash::Solid),
+                line(BLACK, Dash::Dotted),
+            ],
+        );
+        let second = panel(
+            XUnit::Radians,
+            YScale::Linear,
+            vec![line(BLUE, Dash::Solid), line(0x123456, Dash::Solid)],
+        );
+        let mut figure = figure(vec![first, second]);
+        figure.theme = Theme::ColourBlind;
+        let looks = looks(&figure);
+        let okabe = |k: usize| Rgb::from_hex(OKABE_ITO[k]);
+        assert_eq!(looks[0][0].colour, okabe(0));
+        assert_eq!(looks[0][1].colour, okabe(1));
+        assert_eq!(looks[1][0], looks[0][1], "blue is blue in both panels");
+        assert_eq!(looks[0][0].pattern, Pattern::Solid);
+        assert_eq!(looks[0][1].pattern, Pattern::Dashed);
+        assert_eq!(looks[0][2].pattern, Pattern::Dotted, "its own dash");
+        assert_eq!(looks[1][1].colour, okabe(3));
+        assert_eq!(looks[1][1].pattern, Pattern::DashDot);
+    }
+
+    #[test]
+    fn the_dark_theme_lightens_only_dark_colours() {
+        let black = lighten(Rgb(0, 0, 0));
+        assert!(luminance(black) >= DARK_MIN_LUMINANCE);
+        assert!(
+            luminance(black) < DARK_MIN_LUMINANCE + 0.05,
+            "no lighter than needed"
+        );
+        assert_eq!(black.0, black.1);
+        let orange = Rgb::from_hex(0xFF9900);
+        assert_eq!(lighten(orange), orange);
+        let blue = lighten(Rgb::from_hex(0x2689D1));
+        assert!(blue.2 > blue.0, "stays blue");
+        assert!((luminance(Rgb(255, 255, 255)) - 1.0).abs() < 1e-12);
+    }
+}
