@@ -13,7 +13,7 @@
 //! Phong 2048 between 0 and 0.05 rad), two probes cannot both do so. On a parabola the deviation at
 //! a third is 8/9 of the largest, so probes are held to 8/9 of the tolerance.
 
-use crate::series::YScale;
+use crate::series::{PanelKind, XUnit, YScale};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
@@ -39,27 +39,52 @@ const NON_PLOT_WIDTH_EM: f64 = 4.0;
 const NON_PLOT_HEIGHT_EM: f64 = 4.0;
 /// Height of the figure title band in base font sizes (title size 1.4 plus spacing).
 const FIGURE_TITLE_EM: f64 = 2.0;
-/// Fraction of the data span added to an automatic linear range: the plot writer's rule.
-const AUTO_MARGIN: f64 = 0.05;
 /// Relative growth of the automatic y span after refinement that triggers a second refinement
 /// (a peak the initial grid missed changes the pixel scale by more than this).
 const RESCALE_THRESHOLD: f64 = 0.01;
 
+/// How a panel places (θ, v) in pixels.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Geometry {
+    /// x linear in θ (radians or degrees axes), y linear in the displayed value.
+    #[default]
+    Angle,
+    /// x linear in tan θ (slope axes), y linear in the displayed value.
+    Slope,
+    /// A polar panel: the point at radius r(v) and angle θ from the vertical,
+    /// r(v) · (sin θ, cos θ), the radial range filling the plot area's inscribed half-disc.
+    Polar,
+}
+
+impl Geometry {
+    /// The geometry of a panel of `kind` with x axis `x_unit`: polar panels are [`Geometry::Polar`],
+    /// slope axes [`Geometry::Slope`], everything else [`Geometry::Angle`].
+    pub fn of(kind: &PanelKind, x_unit: XUnit) -> Geometry {
+        match (kind, x_unit) {
+            (PanelKind::Polar, _) => Geometry::Polar,
+            (_, XUnit::Slope) => Geometry::Slope,
+            _ => Geometry::Angle,
+        }
+    }
+}
+
 /// The pixel geometry of one panel before its y range is known.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Frame {
-    /// θ interval shown (radians), the x axis.
+    /// θ interval shown (radians): the x axis, or the polar panel's angles either side of the normal.
     pub theta_range: (f64, f64),
     /// Plot area width in output pixels.
     pub width_px: f64,
     /// Plot area height in output pixels.
     pub height_px: f64,
-    /// y scale of the panel.
+    /// y scale of the panel (the radius scale of a polar panel).
     pub y_scale: YScale,
     /// Given y range, `None` = automatic from the data.
     pub y_range: Option<(f64, f64)>,
     /// Tolerance in output pixels.
     pub tolerance_px: f64,
+    /// How (θ, v) become pixels.
+    pub geometry: Geometry,
 }
 
 impl Frame {
@@ -73,7 +98,7 @@ impl Frame {
         font_px: f64,
         titled: bool,
         scale: f64,
-        theta_range: (f64, f64),
+        (theta_range, geometry): ((f64, f64), Geometry),
         (y_scale, y_range): (YScale, Option<(f64, f64)>),
         tolerance_px: f64,
     ) -> Frame {
@@ -91,58 +116,70 @@ impl Frame {
             y_scale,
             y_range,
             tolerance_px,
+            geometry,
         }
     }
 
-    /// The pixel map once the panel's data extent `(lo, hi)` is known (ignored for a given range).
-    /// The automatic range follows the plot writer: linear from 0 (or 5% below a negative minimum) to
-    /// 5% above the maximum; log from the decade below the minimum to the decade above the maximum.
-    pub fn map(&self, extent: Option<(f64, f64)>) -> PixelMap {
-        let display = |v: f64| match self.y_scale {
-            YScale::Linear => v,
-            YScale::Log => v.log10(),
+    /// The pixel map once the panel's data `extent` is known (ignored for a given range). The
+    /// displayed range is the plot writer's: [`YScale::range`], or [`YScale::radial_range`] for a
+    /// polar panel, whose radius range fills the largest half-disc of the plot area that shows
+    /// the θ range either side of the normal.
+    pub fn map(&self, extent: Option<Extent>) -> PixelMap {
+        let data = extent.and_then(|e| e.display(self.y_scale));
+        let (y_lo, y_hi) = match self.geometry {
+            Geometry::Polar => self.y_scale.radial_range(self.y_range, data),
+            Geometry::Angle | Geometry::Slope => self.y_scale.range(self.y_range, data),
         };
-        let (lo, hi) = match (self.y_range, extent) {
-            (Some((a, b)), _) => (display(a.min(b)), display(a.max(b))),
-            (None, None) => (0.0, 1.0),
-            (None, Some((lo, hi))) => match self.y_scale {
-                YScale::Linear => {
-                    let lo = if lo >= 0.0 {
-                        0.0
-                    } else {
-                        lo - AUTO_MARGIN * (hi - lo)
-                    };
-                    (lo, hi + AUTO_MARGIN * (hi - lo))
-                }
-                YScale::Log => {
-                    let (lo, hi) = (display(lo).floor(), display(hi).ceil());
-                    (lo, hi.max(lo + 1.0))
-                }
-            },
-        };
-        let span = if hi - lo > f64::MIN_POSITIVE && (hi - lo) > 1e-12 * lo.abs().max(hi.abs()) {
-            hi - lo
-        } else {
-            lo.abs().max(1.0)
+        let (a, b) = self.theta_range;
+        let x_span = |lo: f64, hi: f64| (hi - lo).max(f64::MIN_POSITIVE);
+        let (x, y_px) = match self.geometry {
+            Geometry::Angle => (
+                XMap::Linear {
+                    lo: a,
+                    px_per: self.width_px / x_span(a, b),
+                },
+                self.height_px,
+            ),
+            Geometry::Slope => (
+                XMap::Tan {
+                    lo: a.tan(),
+                    px_per: self.width_px / x_span(a.tan(), b.tan()),
+                },
+                self.height_px,
+            ),
+            Geometry::Polar => {
+                let half_width = b.clamp(0.0, std::f64::consts::FRAC_PI_2).sin();
+                let radius =
+                    (self.width_px / 2.0 / half_width.max(f64::MIN_POSITIVE)).min(self.height_px);
+                (XMap::Polar, radius)
+            }
         };
         PixelMap {
-            theta_lo: self.theta_range.0,
-            px_per_theta: self.width_px
-                / (self.theta_range.1 - self.theta_range.0).max(f64::MIN_POSITIVE),
-            y_lo: lo,
-            y_hi: lo + span,
-            px_per_y: self.height_px / span,
+            x,
+            y_lo,
+            y_hi,
+            px_per_y: y_px / (y_hi - y_lo),
             log: self.y_scale == YScale::Log,
         }
     }
 }
 
-/// The data-to-pixel transform of a panel: θ → x px, value → y px (clamped to the visible range,
-/// since the plot clips there).
+/// How θ becomes a pixel coordinate.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum XMap {
+    /// x = (θ − lo) · px_per.
+    Linear { lo: f64, px_per: f64 },
+    /// x = (tan θ − lo) · px_per.
+    Tan { lo: f64, px_per: f64 },
+    /// The y pixel distance is a radius, turned by θ from the vertical.
+    Polar,
+}
+
+/// The data-to-pixel transform of a panel: (θ, v) → pixels, the value clamped to the visible
+/// range since the plot clips there.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PixelMap {
-    theta_lo: f64,
-    px_per_theta: f64,
+    x: XMap,
     y_lo: f64,
     y_hi: f64,
     px_per_y: f64,
@@ -152,6 +189,20 @@ pub struct PixelMap {
 impl PixelMap {
     /// (x, y) in pixels of the point (θ, v); a non-finite v stays non-finite.
     pub fn px(&self, theta: f64, v: f64) -> (f64, f64) {
+        let y_px = self.y_px(v);
+        match self.x {
+            XMap::Linear { lo, px_per } => ((theta - lo) * px_per, y_px),
+            XMap::Tan { lo, px_per } => ((theta.tan() - lo) * px_per, y_px),
+            XMap::Polar => {
+                let (sin, cos) = theta.sin_cos();
+                (y_px * sin, y_px * cos)
+            }
+        }
+    }
+
+    /// The value's pixel distance from the bottom of the y axis (from the centre of a polar
+    /// panel), clamped to the visible range.
+    fn y_px(&self, v: f64) -> f64 {
         let y = if self.log {
             if v > 0.0 {
                 v.log10()
@@ -168,10 +219,46 @@ impl PixelMap {
         } else {
             y.clamp(self.y_lo, self.y_hi)
         };
-        (
-            (theta - self.theta_lo) * self.px_per_theta,
-            (y - self.y_lo) * self.px_per_y,
-        )
+        (y - self.y_lo) * self.px_per_y
+    }
+
+    /// How far in pixels the drawn point `p` lies from the chord `a`–`b`. On a polar panel, the
+    /// larger of that and the same distance in the unrolled plane (θ at the rim's scale, radius):
+    /// a lobe much narrower than its interval folds onto the normal in the disc, where probes
+    /// at the interval's thirds see almost nothing, but not in the unrolled plane, whose
+    /// distances bound the disc's (the disc scales θ by the radius, at most the rim's).
+    fn deviation(&self, a: (f64, f64), p: (f64, f64), b: (f64, f64)) -> f64 {
+        let drawn = distance_to_segment(self.px(p.0, p.1), self.px(a.0, a.1), self.px(b.0, b.1));
+        match self.x {
+            XMap::Polar => {
+                let rim = (self.y_hi - self.y_lo) * self.px_per_y;
+                let unrolled = |(theta, v): (f64, f64)| (rim * theta, self.y_px(v));
+                drawn.max(distance_to_segment(unrolled(p), unrolled(a), unrolled(b)))
+            }
+            XMap::Linear { .. } | XMap::Tan { .. } => drawn,
+        }
+    }
+
+    /// How far apart in pixels θ = `a` and θ = `b` can be drawn whatever their values: their
+    /// x distance, or on a polar panel the arc between them at the rim.
+    fn reach_px(&self, a: f64, b: f64) -> f64 {
+        match self.x {
+            XMap::Linear { px_per, .. } => (b - a).abs() * px_per,
+            XMap::Tan { px_per, .. } => (b.tan() - a.tan()).abs() * px_per,
+            XMap::Polar => (b - a).abs() * (self.y_hi - self.y_lo) * self.px_per_y,
+        }
+    }
+
+    /// The θ at a third and two thirds of the way from `a` to `b` along the x axis (in tan θ on a
+    /// slope axis, in θ otherwise), where [`THIRD_TO_MAX`] holds.
+    fn thirds(&self, a: f64, b: f64) -> [f64; 2] {
+        match self.x {
+            XMap::Tan { .. } => {
+                let (ta, tb) = (a.tan(), b.tan());
+                [(2.0 * ta + tb) / 3.0, (ta + 2.0 * tb) / 3.0].map(f64::atan)
+            }
+            XMap::Linear { .. } | XMap::Polar => [(2.0 * a + b) / 3.0, (a + 2.0 * b) / 3.0],
+        }
     }
 }
 
@@ -264,17 +351,16 @@ pub fn refine(
     let mut spent = 0;
     let mut points = start.points;
     let judge = |a: (f64, f64), b: (f64, f64), spent: &mut usize| -> Option<Candidate> {
-        let (pa, pb) = (map.px(a.0, a.1), map.px(b.0, b.1));
-        let thirds = [(2.0 * a.0 + b.0) / 3.0, (a.0 + 2.0 * b.0) / 3.0];
+        let thirds = map.thirds(a.0, b.0);
         let ordered = a.0 < thirds[0] && thirds[0] < thirds[1] && thirds[1] < b.0;
-        if (pb.0 - pa.0).abs() < MIN_SPLIT_PX || !ordered || *spent + 2 > budget {
+        if map.reach_px(a.0, b.0) < MIN_SPLIT_PX || !ordered || *spent + 2 > budget {
             return None;
         }
         *spent += 2;
         let probes = thirds.map(|t| (t, f(t)));
         let deviation = probes
             .iter()
-            .map(|p| distance_to_segment(map.px(p.0, p.1), pa, pb))
+            .map(|&p| map.deviation(a, p, b))
             .fold(0.0, f64::max);
         let deviation = if probes.iter().any(|p| !p.1.is_finite()) {
             f64::NAN
@@ -309,16 +395,53 @@ pub fn refine(
     }
 }
 
-/// The y extent (min, max of finite values) of several polylines; `None` when there is none.
-pub fn extent<'a>(polylines: impl IntoIterator<Item = &'a [(f64, f64)]>) -> Option<(f64, f64)> {
+/// The values of a panel's polylines as far as its automatic y range needs them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Extent {
+    /// Least finite value.
+    pub min: f64,
+    /// Greatest finite value.
+    pub max: f64,
+    /// Least positive finite value, the low end of what a log scale shows.
+    pub min_positive: Option<f64>,
+}
+
+impl Extent {
+    /// The extent in display units of `scale` ([`YScale::display`]): (min, max) on a linear
+    /// scale, the logarithms of the least positive value and the maximum on a log scale;
+    /// `None` when no value can be displayed.
+    pub fn display(&self, scale: YScale) -> Option<(f64, f64)> {
+        match scale {
+            YScale::Linear => Some((self.min, self.max)),
+            YScale::Log => Some((scale.display(self.min_positive?)?, scale.display(self.max)?)),
+        }
+    }
+}
+
+/// The extent of the finite values of several polylines; `None` when there is none.
+pub fn extent<'a>(polylines: impl IntoIterator<Item = &'a [(f64, f64)]>) -> Option<Extent> {
     polylines
         .into_iter()
         .flatten()
         .map(|p| p.1)
         .filter(|v| v.is_finite())
-        .fold(None, |acc, v| match acc {
-            None => Some((v, v)),
-            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
+        .fold(None, |acc: Option<Extent>, v| {
+            let positive = (v > 0.0).then_some(v);
+            Some(match acc {
+                None => Extent {
+                    min: v,
+                    max: v,
+                    min_positive: positive,
+                },
+                Some(e) => Extent {
+                    min: e.min.min(v),
+                    max: e.max.max(v),
+                    min_positive: match (e.min_positive, positive) {
+                        (Some(a), Some(b)) => Some(a.min(b)),
+                        (a, b) => a.or(b),
+                    },
+                },
+            })
         })
 }
 
@@ -334,7 +457,7 @@ pub fn sample(
     f: &dyn Fn(f64) -> f64,
     frame: &Frame,
     start: Refined,
-    panel_extent: Option<(f64, f64)>,
+    panel_extent: Option<Extent>,
 ) -> Refined {
     let map = frame.map(panel_extent);
     refine(f, &map, frame.tolerance_px, MAX_EVALUATIONS, start)
@@ -375,6 +498,7 @@ mod tests {
             y_scale: YScale::Linear,
             y_range,
             tolerance_px: 0.25,
+            geometry: Geometry::Angle,
         }
     }
 
@@ -417,5 +541,100 @@ mod tests {
         let start = initial(&f, (0.0, 1.0), &[]);
         let refined = refine(&f, &frame(Some((-1.0, 1.0))).map(None), 1e-3, 500, start);
         assert_eq!(refined.evaluations, INITIAL_POINTS + 500);
+    }
+
+    /// Samples `f` adaptively in `frame` and returns the drawn error in pixels under the same
+    /// frame's map, and the number of points.
+    fn drawn_error(f: &dyn Fn(f64) -> f64, frame: &Frame, hints: &[f64]) -> (f64, usize) {
+        let start = initial(f, frame.theta_range, hints);
+        let e = extent([start.points.as_slice()]);
+        let refined = sample(f, frame, start, e);
+        let map = frame.map(extent([refined.points.as_slice()]));
+        (
+            max_deviation_px(f, &map, &refined.points, 16),
+            refined.points.len(),
+        )
+    }
+
+    #[test]
+    fn geometries_follow_the_panel() {
+        use crate::series::PanelKind;
+        assert_eq!(
+            Geometry::of(&PanelKind::Polar, XUnit::Degrees),
+            Geometry::Polar
+        );
+        assert_eq!(
+            Geometry::of(&PanelKind::Cartesian, XUnit::Slope),
+            Geometry::Slope
+        );
+        assert_eq!(
+            Geometry::of(&PanelKind::Cartesian, XUnit::Radians),
+            Geometry::Angle
+        );
+    }
+
+    #[test]
+    fn polar_and_slope_maps_place_points_like_the_plot() {
+        let polar = Frame {
+            geometry: Geometry::Polar,
+            y_range: Some((0.0, 1.0)),
+            ..frame(None)
+        };
+        // The rim's radius is the inscribed half-disc's: min(400 / 2, 250).
+        let map = polar.map(None);
+        let (x, y) = map.px(0.0, 1.0);
+        assert!(x.abs() < 1e-12 && (y - 200.0).abs() < 1e-9);
+        let (x, y) = map.px(std::f64::consts::FRAC_PI_2, 0.5);
+        assert!((x - 100.0).abs() < 1e-9 && y.abs() < 1e-9);
+        let slope = Frame {
+            geometry: Geometry::Slope,
+            theta_range: (0.0, 3.0f64.atan()),
+            ..frame(Some((0.0, 1.0)))
+        };
+        let (x, _) = slope.map(None).px(1.0f64.atan(), 0.5);
+        assert!((x - 400.0 / 3.0).abs() < 1e-9, "x linear in tan θ");
+    }
+
+    #[test]
+    fn a_narrow_lobe_is_drawn_within_tolerance_in_polar_and_slope_panels() {
+        let lobe = |t: f64| (-(t / 0.01).powi(2)).exp();
+        for (y_scale, y_range) in [(YScale::Linear, None), (YScale::Log, Some((1e-4, 1.0)))] {
+            let polar = Frame {
+                geometry: Geometry::Polar,
+                y_scale,
+                y_range,
+                ..frame(None)
+            };
+            let (error, points) = drawn_error(&lobe, &polar, &[0.0]);
+            assert!(
+                error <= 0.25 * 1.05,
+                "{y_scale:?}: {error} px, {points} points"
+            );
+            assert!(points < 2000, "{points} points");
+        }
+        // A lobe narrow in slope space: P₂₂-like exp(−tan²θ / 0.05²) over tan θ ∈ [0, 3].
+        let sloped = |t: f64| (-(t.tan() / 0.05).powi(2)).exp();
+        let slope = Frame {
+            geometry: Geometry::Slope,
+            theta_range: (0.0, 3.0f64.atan()),
+            ..frame(None)
+        };
+        let (error, points) = drawn_error(&sloped, &slope, &[0.0]);
+        assert!(error <= 0.25 * 1.05, "{error} px, {points} points");
+    }
+
+    #[test]
+    fn log_extents_skip_values_that_cannot_be_shown() {
+        let points = [(0.0, 0.0), (0.5, 1e-3), (1.0, 20.0)];
+        let e = extent([points.as_slice()]).unwrap();
+        assert_eq!(e.min_positive, Some(1e-3));
+        assert_eq!(e.display(YScale::Log), Some((-3.0, 20f64.log10())));
+        let log = Frame {
+            y_scale: YScale::Log,
+            ..frame(None)
+        };
+        let map = log.map(Some(e));
+        assert_eq!((map.y_lo, map.y_hi), (-3.0, 2.0));
+        assert!(map.px(0.3, 0.0).1 == 0.0, "zero sits at the bottom");
     }
 }

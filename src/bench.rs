@@ -150,6 +150,7 @@ fn drawing_map(ndf: &Ndf) -> (Frame, PixelMap) {
         y_scale: YScale::Linear,
         y_range: None,
         tolerance_px: DRAWING_TOLERANCE_PX,
+        geometry: adaptive::Geometry::Angle,
     };
     let dense = crate::grid::linspace(0.0, FRAC_PI_2, ERROR_PROBES);
     let values: Vec<(f64, f64)> = dense.into_iter().map(|t| (t, ndf.eval(t))).collect();

@@ -6,7 +6,7 @@
 //! requested (drawn figures, tables), and nothing that no series shows (the Fresnel basis is built
 //! only by a job that needs it). It decides, never evaluates.
 
-use crate::adaptive::Frame;
+use crate::adaptive::{Frame, Geometry};
 use crate::curve::Curve;
 use crate::dataset::Dataset;
 use crate::scene::{Sampling, Scene, ScenePanel};
@@ -182,7 +182,7 @@ fn frame(scene: &Scene, panel: &ScenePanel, png: bool, tolerance_px: f64) -> Fra
         canvas.font_px,
         !scene.title.is_empty(),
         scale,
-        panel.theta_range(),
+        (panel.theta_range(), Geometry::of(&panel.kind, panel.x_unit)),
         (panel.y_scale, panel.y_range),
         tolerance_px,
     )
