@@ -133,6 +133,7 @@ fn frame() -> Frame {
         y_scale: YScale::Linear,
         y_range: None,
         tolerance_px: 0.25,
+        geometry: adaptive::Geometry::Angle,
     }
 }
 
