@@ -234,9 +234,12 @@ pub enum Theme {
     #[default]
     Notebook,
     /// Okabe–Ito colour-blind-safe palette, assigned to the series' distinct colours in order of
-    /// first appearance, with dash patterns and widths cycling so curves differ without colour.
+    /// first appearance across the figure (one spec colour, one palette colour in every panel),
+    /// the k-th distinct colour also dashed solid, dashed, dotted or dash-dot (k mod 4) unless its
+    /// series has a dash of its own, so curves differ without colour.
     ColourBlind,
-    /// Light ink and grid on a dark background; series colours lightened to keep contrast.
+    /// Light ink and grid on a dark background; series colours darker than a relative luminance
+    /// of 0.35 mixed towards white until they reach it.
     Dark,
 }
 

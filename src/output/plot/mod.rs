@@ -595,6 +595,13 @@ mod tests {
                     ..fresnel_sample()
                 },
             ),
+            (
+                "ndfplot-fresnel-dark",
+                Figure {
+                    theme: Theme::Dark,
+                    ..fresnel_sample()
+                },
+            ),
         ] {
             let start = std::time::Instant::now();
             let svg_bytes = svg(&figure).unwrap();

@@ -100,7 +100,11 @@ where
             full.centre.0.clamp(width - w, width),
             full.centre.1.clamp(0.0, h),
         );
-        let clear = (near.0 - full.centre.0).hypot(near.1 - full.centre.1) >= full.r + side;
+        let (dx, dy) = (near.0 - full.centre.0, full.centre.1 - near.1);
+        // Clear of the rim and its labels, or wholly beside the sector's edge and its labels.
+        let beyond_rim = dx.hypot(dy) >= full.r + side;
+        let beside_edge = (width - w - full.centre.0).atan2(full.centre.1) >= b + side / full.r;
+        let clear = beyond_rim || beside_edge;
         if clear && h <= height {
             return (full, Place::Over);
         }
@@ -560,10 +564,21 @@ mod tests {
     #[ignore]
     fn write_polar_figures() {
         let dir = std::env::temp_dir();
-        for theme in [Theme::Notebook, Theme::ColourBlind, Theme::Dark] {
-            let mut figure = polar_sample();
-            figure.theme = theme;
-            let name = format!("ndfplot-polar-{theme:?}");
+        let mut sector = polar_sample();
+        for p in &mut sector.panels {
+            p.x_range = Some((0.0, 50f64.to_radians()));
+            p.series[0].style.mark = Mark::LinePoints;
+        }
+        sector.panels[1].series[1].style.mark = Mark::Points;
+        let themed = [Theme::Notebook, Theme::ColourBlind, Theme::Dark].map(|theme| Figure {
+            theme,
+            ..polar_sample()
+        });
+        for (name, figure) in themed
+            .into_iter()
+            .map(|f| (format!("ndfplot-polar-{:?}", f.theme), f))
+            .chain([("ndfplot-polar-sector".to_owned(), sector)])
+        {
             std::fs::write(dir.join(format!("{name}.svg")), svg(&figure).unwrap()).unwrap();
             std::fs::write(dir.join(format!("{name}.png")), png(&figure).unwrap()).unwrap();
         }
