@@ -97,21 +97,29 @@ where
     };
     // What each series covers, in plot pixels, for the legend to avoid.
     let mut covered: Vec<Vec<(f64, f64)>> = Vec::new();
-    let base = plot.get_base_pixel();
+    // Curve vertices in plot pixels, clamped to the plot area as plotters clamps the points
+    // of the elements it draws (the dashes are walked along the clamped polyline).
+    let (x_px, y_px) = plot.get_pixel_range();
+    let coordinates = chart.plotting_area().clone();
+    let vertex = |p: &(f64, f64)| {
+        let (px, py) = coordinates.map_coordinate(p);
+        (
+            px.clamp(x_px.start, x_px.end) - x_px.start,
+            py.clamp(y_px.start, y_px.end) - y_px.start,
+        )
+    };
     for (series, look) in panel.series.iter().zip(looks) {
         let colour = look.colour;
         let mark = series.style.mark;
         if matches!(mark, Mark::Line | Mark::LinePoints) {
             let style = m.curve_style(colour, series.style.width);
             for piece in visible_pieces(series, panel, &x, &y) {
-                let path = piece
-                    .iter()
-                    .map(|p| {
-                        let (px, py) = chart.plotting_area().map_coordinate(p);
-                        (px - base.0, py - base.1)
-                    })
-                    .collect();
-                stroke(&plot, path, style, look.pattern)?;
+                stroke(
+                    &plot,
+                    piece.iter().map(vertex).collect(),
+                    style,
+                    look.pattern,
+                )?;
                 covered.push(piece.into_iter().map(to_plot_px).collect());
             }
         }

@@ -146,12 +146,17 @@ pub(super) fn stroke<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    match dash_lengths(pattern, &style) {
-        None => area.draw(&PathElement::new(path, style)).map_err(draw_err),
-        Some(lengths) => dashes(&path, &lengths)
-            .into_iter()
-            .try_for_each(|dash| area.draw(&PathElement::new(dash, style)).map_err(draw_err)),
-    }
+    let Some(lengths) = dash_lengths(pattern, &style) else {
+        return area.draw(&PathElement::new(path, style)).map_err(draw_err);
+    };
+    // Walked in backend pixels, as plotters walks its dashes: the f32 steps round differently
+    // at other offsets.
+    let (x0, y0) = area.get_base_pixel();
+    let backend: Vec<(i32, i32)> = path.iter().map(|&(x, y)| (x + x0, y + y0)).collect();
+    dashes(&backend, &lengths).into_iter().try_for_each(|dash| {
+        let dash: Vec<(i32, i32)> = dash.into_iter().map(|(x, y)| (x - x0, y - y0)).collect();
+        area.draw(&PathElement::new(dash, style)).map_err(draw_err)
+    })
 }
 
 /// The "on" stretches of the polyline `points` walked with the repeating on/off `lengths`
@@ -235,15 +240,15 @@ mod tests {
 
     #[test]
     fn two_lengths_draw_exactly_plotters_dashes() {
-        // A pseudo-random zig-zag (a linear congruential sequence), dashed and dotted.
-        let mut state = 12345u64;
-        let mut next = || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1);
-            ((state >> 33) % 200) as i32
-        };
-        let path: Vec<(i32, i32)> = (0..60).map(|_| (next(), next())).collect();
+        // A wavy polyline with vertices a pixel or two apart, like a sampled curve, drawn on
+        // an area offset from the backend's origin (the walk is not translation invariant in f32).
+        let path: Vec<(i32, i32)> = (0..400)
+            .map(|i| {
+                let t = f64::from(i) * 0.37;
+                let y = 100.0 + 60.0 * (t * 0.05).sin() + 3.0 * (t * 0.3).cos();
+                ((t * 1.3) as i32, y as i32)
+            })
+            .collect();
         let style = ShapeStyle {
             color: BLACK.to_rgba(),
             filled: false,
@@ -251,10 +256,11 @@ mod tests {
         };
         for (pattern, (on, off)) in [(Pattern::Dashed, DASHED), (Pattern::Dotted, DOTTED)] {
             let draw = |ours: bool| {
-                let mut pixels = vec![0u8; 200 * 200 * 3];
+                let mut pixels = vec![0u8; 700 * 300 * 3];
                 {
-                    let area =
-                        BitMapBackend::with_buffer(&mut pixels, (200, 200)).into_drawing_area();
+                    let root =
+                        BitMapBackend::with_buffer(&mut pixels, (700, 300)).into_drawing_area();
+                    let area = root.margin(37, 0, 91, 0);
                     if ours {
                         stroke(&area, path.clone(), style, pattern).unwrap();
                     } else {
