@@ -24,7 +24,7 @@
 //! - 1 − F is also offered without cancellation (`one_minus_reflectance`): the basis training set
 //!   divides by 1 − F₀ = 2e-5 for one material, which would amplify the rounding of F 5e4-fold.
 
-use nalgebra::Complex;
+use num_complex::Complex;
 
 /// Exact unpolarized reflectance F(c; η, κ) of MATH.md's normative form, in [0, 1].
 ///

@@ -16,7 +16,7 @@
 use super::batch;
 use crate::domain::{DomainError, check};
 use errorfunctions::{ComplexErrorFunctions, RealErrorFunctions};
-use nalgebra::Complex;
+use num_complex::Complex;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Smallest accepted α_ts: N ≈ π α_ts² ≈ 3e-300 stays a normal double and D(0) = 1/N is finite.
