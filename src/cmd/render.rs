@@ -13,6 +13,7 @@ use crate::output::{csv::figure_csv, html, plot, write};
 use crate::plan::{Outputs, plan};
 use crate::problem::{Problem, Problems};
 use crate::progress::Progress;
+use crate::provenance::Provenance;
 use crate::sample::{Evaluated, evaluate_all};
 use crate::scene::{self, Scene};
 use crate::series::{Figure, Panel, Series, XUnit};
@@ -125,7 +126,8 @@ pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
 }
 
 /// Parses and validates every source; all problems of all sources are reported together, and
-/// duplicate ids across sources are problems too.
+/// duplicate ids across sources are problems too. On success there is one scene per source, in
+/// the order of `sources`.
 pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Result<Vec<Scene>> {
     let mut scenes = Vec::new();
     let mut failures = Vec::new();
@@ -188,8 +190,14 @@ fn apply_override(
     Ok(scene)
 }
 
-/// Builds the figure of `scene` from its evaluated jobs (`feeds[panel][series]` → job index).
-pub fn figure(scene: &Scene, feeds: &[Vec<usize>], evaluated: &[Evaluated]) -> Figure {
+/// Builds the figure of `scene`, drawn from the spec `provenance` records, from its evaluated jobs
+/// (`feeds[panel][series]` → job index).
+pub fn figure(
+    scene: &Scene,
+    provenance: &Provenance,
+    feeds: &[Vec<usize>],
+    evaluated: &[Evaluated],
+) -> Figure {
     let panels = scene
         .panels
         .iter()
@@ -240,6 +248,7 @@ pub fn figure(scene: &Scene, feeds: &[Vec<usize>], evaluated: &[Evaluated]) -> F
         canvas: scene.canvas,
         theme: scene.theme,
         panels,
+        provenance: provenance.clone(),
     }
 }
 
@@ -339,7 +348,12 @@ fn encode_outputs(
     quiet: bool,
 ) -> Result<(Files, RenderStats)> {
     let start = std::time::Instant::now();
-    let scenes = load_scenes(&sources(&options.paths)?, options.canvas)?;
+    let sources = sources(&options.paths)?;
+    let scenes = load_scenes(&sources, options.canvas)?;
+    let provenance: Vec<Provenance> = sources
+        .iter()
+        .map(|(_, text, _)| Provenance::of_spec(text.as_bytes()))
+        .collect();
     let has = |f: Format| options.formats.contains(&f);
     let outputs = Outputs {
         drawn: !tables_only && (has(Format::Svg) || has(Format::Png)),
@@ -380,8 +394,9 @@ fn encode_outputs(
             .collect();
         let figures: Vec<Figure> = scenes
             .iter()
+            .zip(&provenance)
             .zip(feeds)
-            .map(|(s, f)| figure(s, f, &evaluated))
+            .map(|((s, p), f)| figure(s, p, f, &evaluated))
             .collect();
         let encoded: Vec<(String, Vec<u8>)> = figures
             .par_iter()
