@@ -384,7 +384,7 @@ fn render_output_is_identical_across_runs_and_thread_counts() {
                 "-o",
                 out_dir.to_str().unwrap(),
                 "--format",
-                "svg,png,csv",
+                "svg,png,pdf,csv",
             ])
             .env("RAYON_NUM_THREADS", threads)
             .status()
@@ -394,7 +394,7 @@ fn render_output_is_identical_across_runs_and_thread_counts() {
             .iter()
             .map(|f| std::fs::read(out_dir.join(f)).unwrap())
             .collect();
-        assert_eq!(bytes.len(), 3, "{:?}", files_in(&out_dir));
+        assert_eq!(bytes.len(), 4, "{:?}", files_in(&out_dir));
         outputs.push(bytes);
     }
     assert_eq!(outputs[0], outputs[1]);
@@ -427,10 +427,12 @@ fn render_formats_and_canvas_flags() {
     let width = u32::from_be_bytes(png[16..20].try_into().unwrap());
     let height = u32::from_be_bytes(png[20..24].try_into().unwrap());
     assert_eq!((width, height), (600, 450));
-    assert_input_error(
-        &ndfplot(&["render", spec.to_str().unwrap(), "--format", "gif"]),
-        "unknown format (got \"gif\", expected a comma list of svg, png, csv, html)",
-    );
+    for list in ["gif", "pdf,gif"] {
+        assert_input_error(
+            &ndfplot(&["render", spec.to_str().unwrap(), "--format", list]),
+            "unknown format (got \"gif\", expected a comma list of svg, png, pdf, csv, html)",
+        );
+    }
 }
 
 /// The `tEXt` chunks of a PNG as (keyword, text).
@@ -468,7 +470,7 @@ fn has_bytes(haystack: &[u8], needle: &str) -> bool {
         .any(|w| w == needle.as_bytes())
 }
 
-/// Asserts that the SVG and PNG of `id` in `dir` (those that exist) record this version and
+/// Asserts that the SVG, PNG and PDF of `id` in `dir` (those that exist) record this version and
 /// `hash`, and that its CSV records nothing.
 fn assert_provenance(dir: &Path, id: &str, hash: &str) {
     let version = env!("CARGO_PKG_VERSION");
@@ -492,6 +494,11 @@ fn assert_provenance(dir: &Path, id: &str, hash: &str) {
             );
         }
     }
+    if let Some(pdf) = read("pdf") {
+        assert!(has_bytes(&pdf, &format!("/Producer (ndfplot {version})")));
+        let keywords = format!("/Keywords (ndfplot-version={version}, spec-sha256={hash})");
+        assert!(has_bytes(&pdf, &keywords), "{id}.pdf");
+    }
     if let Some(csv) = read("csv") {
         assert!(csv.starts_with(b"panel,series,curve,x,y"), "{id}.csv");
         assert!(
@@ -511,6 +518,48 @@ fn render_into(specs: &[&Path], out: &Path, formats: &str) {
 }
 
 #[test]
+fn render_pdf_is_a_vector_page_in_the_embedded_face() {
+    let dir = scratch("render-pdf");
+    let spec = dir.join("spec.json");
+    std::fs::write(&spec, SPEC).unwrap();
+    let configs = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs");
+    let polar = configs.join("beckmann-vs-phong-polar.json");
+    let surface = configs.join("gulbrandsen-manifold.json");
+    let out_dir = dir.join("out");
+    render_into(&[&spec, &polar, &surface], &out_dir, "pdf");
+    assert_eq!(
+        files_in(&out_dir),
+        [
+            "beckmann-vs-phong-polar.pdf",
+            "gulbrandsen-manifold.pdf",
+            "two-panels.pdf"
+        ],
+        "pdf only, as asked"
+    );
+    for (id, source) in [
+        ("two-panels", &spec),
+        ("beckmann-vs-phong-polar", &polar),
+        ("gulbrandsen-manifold", &surface),
+    ] {
+        let pdf = std::fs::read(out_dir.join(format!("{id}.pdf"))).unwrap();
+        assert!(pdf.starts_with(b"%PDF-"), "{id}");
+        assert!(pdf.trim_ascii_end().ends_with(b"%%EOF"), "{id}");
+        assert!(has_bytes(&pdf, "/FontFile2"), "{id}: the face is embedded");
+        assert!(has_bytes(&pdf, "DejaVuSans"), "{id}");
+        assert!(
+            !has_bytes(&pdf, "/Subtype /Image"),
+            "{id}: nothing rasterized"
+        );
+        assert!(!has_bytes(&pdf, "/CreationDate"), "{id}: no time stamp");
+        assert_provenance(&out_dir, id, &sha256_hex(&std::fs::read(source).unwrap()));
+    }
+    let two_panels = std::fs::read(out_dir.join("two-panels.pdf")).unwrap();
+    assert!(has_bytes(&two_panels, "/Title (Test figure)"));
+    // Two columns of 480 CSS px, 337 px high, at 0.75 pt per px.
+    assert!(has_bytes(&two_panels, "/MediaBox [0 0 720 252.75]"));
+}
+
+#[test]
 fn render_records_the_version_and_spec_hash_in_drawn_outputs_only() {
     let dir = scratch("render-provenance");
     let spec = dir.join("spec.json");
@@ -520,13 +569,13 @@ fn render_records_the_version_and_spec_hash_in_drawn_outputs_only() {
     let interactive =
         Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/tr-vs-phong-interactive.json");
     let out_dir = dir.join("out");
-    render_into(&[&spec, &interactive], &out_dir, "svg,png,csv,html");
+    render_into(&[&spec, &interactive], &out_dir, "svg,png,pdf,csv,html");
     let id = "tr-vs-phong-interactive";
-    let expected: Vec<String> = ["csv", "html", "png", "svg"]
+    let expected: Vec<String> = ["csv", "html", "pdf", "png", "svg"]
         .iter()
         .map(|ext| format!("{id}.{ext}"))
         .chain(
-            ["csv", "png", "svg"]
+            ["csv", "pdf", "png", "svg"]
                 .iter()
                 .map(|ext| format!("two-panels.{ext}")),
         )
@@ -554,6 +603,7 @@ fn render_without_arguments_renders_the_catalogue_into_plots() {
         for ext in ["svg", "png", "csv"] {
             assert!(files.contains(&format!("{id}.{ext}")), "missing {id}.{ext}");
         }
+        assert!(!files.contains(&format!("{id}.pdf")), "pdf only when asked");
         // The embedded spec is the file, byte for byte: `sha256sum configs/<id>.json` verifies.
         let hash = sha256_hex(&std::fs::read(configs_dir.join(config)).unwrap());
         assert_provenance(&dir.join("plots"), id, &hash);

@@ -1,4 +1,4 @@
-//! `ndfplot render`: scene specs (or the built-in catalogue) to SVG, PNG and CSV files, and an
+//! `ndfplot render`: scene specs (or the built-in catalogue) to SVG, PNG, PDF and CSV files, and an
 //! HTML page per interactive scene.
 //!
 //! Every spec is read and validated before anything is evaluated or written, so a bad spec
@@ -9,7 +9,7 @@ use crate::catalogue::CATALOGUE;
 use crate::check_outputs;
 use crate::error::{Error, Result};
 use crate::input::{parse_json, read_file};
-use crate::output::{csv::figure_csv, html, plot, write};
+use crate::output::{csv::figure_csv, html, pdf, plot, write};
 use crate::plan::{Outputs, plan};
 use crate::problem::{Problem, Problems};
 use crate::progress::Progress;
@@ -27,6 +27,8 @@ pub enum Format {
     Svg,
     /// Raster image with text drawn from the embedded font.
     Png,
+    /// One-page vector PDF of the SVG, text in the embedded font; only when asked for.
+    Pdf,
     /// The sampled points, long format (CONTRACTS.md).
     Csv,
     /// A self-contained interactive page, for scenes with sliders only.
@@ -35,13 +37,20 @@ pub enum Format {
 
 impl Format {
     /// Every format, in output order.
-    pub const ALL: [Format; 4] = [Format::Svg, Format::Png, Format::Csv, Format::Html];
+    pub const ALL: [Format; 5] = [
+        Format::Svg,
+        Format::Png,
+        Format::Pdf,
+        Format::Csv,
+        Format::Html,
+    ];
 
     /// File extension.
     pub fn extension(self) -> &'static str {
         match self {
             Format::Svg => "svg",
             Format::Png => "png",
+            Format::Pdf => "pdf",
             Format::Csv => "csv",
             Format::Html => "html",
         }
@@ -52,7 +61,7 @@ impl Format {
         let mut formats = Vec::new();
         for word in text.split(',').map(str::trim) {
             let format = Format::ALL.into_iter().find(|f| f.extension() == word).ok_or_else(|| {
-                Error::Usage(format!("--format: unknown format (got \"{word}\", expected a comma list of svg, png, csv, html)"))
+                Error::Usage(format!("--format: unknown format (got \"{word}\", expected a comma list of svg, png, pdf, csv, html)"))
             })?;
             if !formats.contains(&format) {
                 formats.push(format);
@@ -252,13 +261,18 @@ pub fn figure(
     }
 }
 
-/// The bytes of one output of a figure.
+/// The bytes of one output of a figure. The PDF is converted from the figure's SVG.
 pub fn encode(figure: &Figure, format: Format) -> Result<Vec<u8>> {
     let plot_error =
         |e: plot::PlotError| Error::Numerics(format!("{}: drawing failed: {e}", figure.id));
     match format {
         Format::Svg => plot::svg(figure).map_err(plot_error),
         Format::Png => plot::png(figure).map_err(plot_error),
+        Format::Pdf => {
+            let svg = plot::svg(figure).map_err(plot_error)?;
+            pdf::from_svg(&svg, &figure.title, &figure.provenance)
+                .map_err(|e| Error::Numerics(format!("{}: PDF conversion failed: {e}", figure.id)))
+        }
         Format::Csv => Ok(figure_csv(figure)),
         Format::Html => unreachable!("pages are built from scenes, by `pages`"),
     }
@@ -288,14 +302,15 @@ pub fn run(options: &RenderOptions) -> Result<Vec<PathBuf>> {
 pub struct RenderStats {
     /// Reading, planning and evaluating (wall time).
     pub evaluation: std::time::Duration,
-    /// Drawing SVG and PNG, rasterization and PNG compression included (wall time).
+    /// Drawing SVG, PNG and PDF, rasterization, PNG compression and PDF conversion included
+    /// (wall time).
     pub drawing: std::time::Duration,
     /// Formatting CSV and writing every file (wall time).
     pub encoding: std::time::Duration,
     /// Curve evaluations over all jobs.
     pub evaluations: usize,
-    /// Outputs produced per format, in [`Format::ALL`] order.
-    pub produced: [usize; 3],
+    /// Outputs produced per format, in [`Format::ALL`] order without HTML: SVG, PNG, PDF, CSV.
+    pub produced: [usize; 4],
 }
 
 /// [`run`], also returning where the time went.
@@ -356,7 +371,7 @@ fn encode_outputs(
         .collect();
     let has = |f: Format| options.formats.contains(&f);
     let outputs = Outputs {
-        drawn: !tables_only && (has(Format::Svg) || has(Format::Png)),
+        drawn: !tables_only && (has(Format::Svg) || has(Format::Png) || has(Format::Pdf)),
         table: has(Format::Csv),
     };
     let plan = plan(&scenes, outputs, has(Format::Png));
