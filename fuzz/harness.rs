@@ -13,6 +13,7 @@ use ndfplot::cmd::render::{self, CanvasOverride, Format};
 use ndfplot::curve::{Curve, FresnelModel, Model, ParamKind};
 use ndfplot::dataset::Dataset;
 use ndfplot::plan::{Outputs, plan};
+use ndfplot::provenance::Provenance;
 use ndfplot::sample::evaluate_all;
 use ndfplot::scene::Sampling;
 use std::f64::consts::FRAC_PI_2;
@@ -100,11 +101,12 @@ fn spec(bytes: &[u8]) {
     let Ok(evaluated) = evaluate_all(&plan) else {
         return;
     };
+    let provenance = Provenance::of_spec(bytes);
     for (scene, feeds) in scenes
         .iter()
         .zip(plan.table.as_ref().expect("tables were planned"))
     {
-        let figure = render::figure(scene, feeds, &evaluated);
+        let figure = render::figure(scene, &provenance, feeds, &evaluated);
         let csv = render::encode(&figure, Format::Csv).expect("CSV encoding cannot fail");
         let text = String::from_utf8(csv).expect("the CSV is UTF-8");
         assert!(

@@ -87,6 +87,7 @@ pub struct CoeffsArgs {
     Examples:\n  \
     ndfplot render\n  \
     ndfplot render configs/abc-vs-tr.json my-scenes/ -o out --format svg,csv\n  \
+    ndfplot render configs/beckmann-vs-phong.json -o out --format pdf\n  \
     ndfplot render --check plots\n  \
     ndfplot render configs/ --check plots --tolerance 1e-9"
 )]
@@ -98,7 +99,8 @@ pub struct RenderArgs {
     /// Output folder (created if missing); files are <DIR>/<id>.<ext>.
     #[arg(short, long, value_name = "DIR", default_value = "plots")]
     pub out: PathBuf,
-    /// Formats to write, comma-separated; html only for scenes with sliders.
+    /// Formats to write, comma-separated, from svg, png, pdf, csv, html; html only for scenes
+    /// with sliders, pdf only when listed.
     #[arg(long, value_name = "LIST", default_value = "svg,png,csv,html")]
     pub format: String,
     /// Figure width in CSS pixels for every scene (the height follows unless --height is given).

@@ -26,6 +26,7 @@ pub mod output;
 pub mod plan;
 pub mod problem;
 pub mod progress;
+pub mod provenance;
 pub mod sample;
 pub mod scene;
 pub mod schema;

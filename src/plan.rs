@@ -43,7 +43,7 @@ pub type Feeds = Vec<Vec<Vec<usize>>>;
 /// Which kinds of output a run produces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Outputs {
-    /// Drawn figures (SVG or PNG).
+    /// Drawn figures (SVG, PNG or PDF).
     pub drawn: bool,
     /// Tables (CSV).
     pub table: bool,

@@ -2,6 +2,7 @@
 //!
 //! Exporters (SVG, PNG, CSV) turn a [`Figure`] into bytes and never decide what to compute.
 
+use crate::provenance::Provenance;
 use std::sync::Arc;
 
 /// An sRGB colour, 8 bits per channel.
@@ -260,6 +261,8 @@ pub struct Figure {
     pub theme: Theme,
     /// Panels, row-major; `panels.len() <= rows * cols`.
     pub panels: Vec<Panel>,
+    /// Which ndfplot drew it from which spec; every drawn format embeds it, tables do not.
+    pub provenance: Provenance,
 }
 
 #[cfg(test)]

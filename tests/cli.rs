@@ -383,6 +383,8 @@ fn render_output_is_identical_across_runs_and_thread_counts() {
                 spec.to_str().unwrap(),
                 "-o",
                 out_dir.to_str().unwrap(),
+                "--format",
+                "svg,png,pdf,csv",
             ])
             .env("RAYON_NUM_THREADS", threads)
             .status()
@@ -392,6 +394,7 @@ fn render_output_is_identical_across_runs_and_thread_counts() {
             .iter()
             .map(|f| std::fs::read(out_dir.join(f)).unwrap())
             .collect();
+        assert_eq!(bytes.len(), 4, "{:?}", files_in(&out_dir));
         outputs.push(bytes);
     }
     assert_eq!(outputs[0], outputs[1]);
@@ -424,10 +427,163 @@ fn render_formats_and_canvas_flags() {
     let width = u32::from_be_bytes(png[16..20].try_into().unwrap());
     let height = u32::from_be_bytes(png[20..24].try_into().unwrap());
     assert_eq!((width, height), (600, 450));
-    assert_input_error(
-        &ndfplot(&["render", spec.to_str().unwrap(), "--format", "gif"]),
-        "unknown format",
+    for list in ["gif", "pdf,gif"] {
+        assert_input_error(
+            &ndfplot(&["render", spec.to_str().unwrap(), "--format", list]),
+            "unknown format (got \"gif\", expected a comma list of svg, png, pdf, csv, html)",
+        );
+    }
+}
+
+/// The `tEXt` chunks of a PNG as (keyword, text).
+fn png_text(png: &[u8]) -> Vec<(String, String)> {
+    let mut chunks = Vec::new();
+    let mut at = 8;
+    while at + 8 <= png.len() {
+        let length = u32::from_be_bytes(png[at..at + 4].try_into().unwrap()) as usize;
+        let data = &png[at + 8..at + 8 + length];
+        if &png[at + 4..at + 8] == b"tEXt" {
+            let nul = data.iter().position(|&b| b == 0).unwrap();
+            chunks.push((
+                String::from_utf8(data[..nul].to_vec()).unwrap(),
+                String::from_utf8(data[nul + 1..].to_vec()).unwrap(),
+            ));
+        }
+        at += 12 + length;
+    }
+    chunks
+}
+
+/// Lowercase hex SHA-256 of `bytes`.
+fn sha256_hex(bytes: &[u8]) -> String {
+    use sha2::Digest;
+    sha2::Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
+}
+
+/// Whether `needle` occurs in `haystack`.
+fn has_bytes(haystack: &[u8], needle: &str) -> bool {
+    haystack
+        .windows(needle.len())
+        .any(|w| w == needle.as_bytes())
+}
+
+/// Asserts that the SVG, PNG and PDF of `id` in `dir` (those that exist) record this version and
+/// `hash`, and that its CSV records nothing.
+fn assert_provenance(dir: &Path, id: &str, hash: &str) {
+    let version = env!("CARGO_PKG_VERSION");
+    let words = format!("ndfplot-version={version} spec-sha256={hash}");
+    let read = |ext: &str| std::fs::read(dir.join(format!("{id}.{ext}"))).ok();
+    if let Some(svg) = read("svg") {
+        let svg = String::from_utf8(svg).unwrap();
+        let second = svg.lines().nth(1).unwrap();
+        assert_eq!(second, format!("<metadata>{words}</metadata>"), "{id}.svg");
+    }
+    if let Some(png) = read("png") {
+        let text = png_text(&png);
+        for (key, value) in [
+            ("Software", format!("ndfplot {version}")),
+            ("ndfplot-version", version.to_owned()),
+            ("spec-sha256", hash.to_owned()),
+        ] {
+            assert!(
+                text.contains(&(key.to_owned(), value.clone())),
+                "{id}.png: {key}={value} not in {text:?}"
+            );
+        }
+    }
+    if let Some(pdf) = read("pdf") {
+        assert!(has_bytes(&pdf, &format!("/Producer (ndfplot {version})")));
+        let keywords = format!("/Keywords (ndfplot-version={version}, spec-sha256={hash})");
+        assert!(has_bytes(&pdf, &keywords), "{id}.pdf");
+    }
+    if let Some(csv) = read("csv") {
+        assert!(csv.starts_with(b"panel,series,curve,x,y"), "{id}.csv");
+        assert!(
+            !has_bytes(&csv, "ndfplot") && !has_bytes(&csv, hash),
+            "{id}.csv"
+        );
+    }
+}
+
+/// Runs `render SPECS… -o out --format formats` and asserts that it succeeds.
+fn render_into(specs: &[&Path], out: &Path, formats: &str) {
+    let mut args: Vec<&str> = vec!["render"];
+    args.extend(specs.iter().map(|p| p.to_str().unwrap()));
+    args.extend(["-o", out.to_str().unwrap(), "--format", formats]);
+    let output = ndfplot(&args);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+}
+
+#[test]
+fn render_pdf_is_a_vector_page_in_the_embedded_face() {
+    let dir = scratch("render-pdf");
+    let spec = dir.join("spec.json");
+    std::fs::write(&spec, SPEC).unwrap();
+    let configs = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs");
+    let polar = configs.join("beckmann-vs-phong-polar.json");
+    let surface = configs.join("gulbrandsen-manifold.json");
+    let out_dir = dir.join("out");
+    render_into(&[&spec, &polar, &surface], &out_dir, "pdf");
+    assert_eq!(
+        files_in(&out_dir),
+        [
+            "beckmann-vs-phong-polar.pdf",
+            "gulbrandsen-manifold.pdf",
+            "two-panels.pdf"
+        ],
+        "pdf only, as asked"
     );
+    for (id, source) in [
+        ("two-panels", &spec),
+        ("beckmann-vs-phong-polar", &polar),
+        ("gulbrandsen-manifold", &surface),
+    ] {
+        let pdf = std::fs::read(out_dir.join(format!("{id}.pdf"))).unwrap();
+        assert!(pdf.starts_with(b"%PDF-"), "{id}");
+        assert!(pdf.trim_ascii_end().ends_with(b"%%EOF"), "{id}");
+        assert!(has_bytes(&pdf, "/FontFile2"), "{id}: the face is embedded");
+        assert!(has_bytes(&pdf, "DejaVuSans"), "{id}");
+        assert!(
+            !has_bytes(&pdf, "/Subtype /Image"),
+            "{id}: nothing rasterized"
+        );
+        assert!(!has_bytes(&pdf, "/CreationDate"), "{id}: no time stamp");
+        assert_provenance(&out_dir, id, &sha256_hex(&std::fs::read(source).unwrap()));
+    }
+    let two_panels = std::fs::read(out_dir.join("two-panels.pdf")).unwrap();
+    assert!(has_bytes(&two_panels, "/Title (Test figure)"));
+    // Two columns of 480 CSS px, 337 px high, at 0.75 pt per px.
+    assert!(has_bytes(&two_panels, "/MediaBox [0 0 720 252.75]"));
+}
+
+#[test]
+fn render_records_the_version_and_spec_hash_in_drawn_outputs_only() {
+    let dir = scratch("render-provenance");
+    let spec = dir.join("spec.json");
+    // Bytes as read: the hash is of the file, trailing spaces and all.
+    let text = format!("{SPEC}  \n");
+    std::fs::write(&spec, &text).unwrap();
+    let interactive =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/tr-vs-phong-interactive.json");
+    let out_dir = dir.join("out");
+    render_into(&[&spec, &interactive], &out_dir, "svg,png,pdf,csv,html");
+    let id = "tr-vs-phong-interactive";
+    let expected: Vec<String> = ["csv", "html", "pdf", "png", "svg"]
+        .iter()
+        .map(|ext| format!("{id}.{ext}"))
+        .chain(
+            ["csv", "pdf", "png", "svg"]
+                .iter()
+                .map(|ext| format!("two-panels.{ext}")),
+        )
+        .collect();
+    assert_eq!(files_in(&out_dir), expected);
+    assert_provenance(&out_dir, "two-panels", &sha256_hex(text.as_bytes()));
+    let bytes = std::fs::read(&interactive).unwrap();
+    assert_provenance(&out_dir, id, &sha256_hex(&bytes));
 }
 
 #[test]
@@ -440,12 +596,17 @@ fn render_without_arguments_renders_the_catalogue_into_plots() {
         .unwrap();
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let files = files_in(&dir.join("plots"));
-    let configs = files_in(&Path::new(env!("CARGO_MANIFEST_DIR")).join("configs"));
+    let configs_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs");
+    let configs = files_in(&configs_dir);
     for config in configs.iter().filter(|c| c.ends_with(".json")) {
         let id = config.trim_end_matches(".json");
         for ext in ["svg", "png", "csv"] {
             assert!(files.contains(&format!("{id}.{ext}")), "missing {id}.{ext}");
         }
+        assert!(!files.contains(&format!("{id}.pdf")), "pdf only when asked");
+        // The embedded spec is the file, byte for byte: `sha256sum configs/<id>.json` verifies.
+        let hash = sha256_hex(&std::fs::read(configs_dir.join(config)).unwrap());
+        assert_provenance(&dir.join("plots"), id, &hash);
     }
     assert!(
         !files.iter().any(|f| f.starts_with('.')),

@@ -8,6 +8,7 @@ use crate::bench::{self, Row};
 use crate::error::{Error, Result};
 use crate::ndf::Family;
 use crate::output::{plot, write};
+use crate::provenance::Provenance;
 use crate::series::{
     Canvas, Dash, Figure, Mark, Panel, PanelKind, Rgb, Series, Style, Theme, XUnit, YScale,
 };
@@ -192,6 +193,7 @@ pub fn figure(rows: &[Row]) -> Figure {
         cols: 3,
         canvas: CANVAS,
         theme: Theme::Notebook,
+        provenance: Provenance::without_spec(),
         panels: vec![
             panel(
                 "(a) drawing a curve",

@@ -1,4 +1,4 @@
-//! `ndfplot render`: scene specs (or the built-in catalogue) to SVG, PNG and CSV files, and an
+//! `ndfplot render`: scene specs (or the built-in catalogue) to SVG, PNG, PDF and CSV files, and an
 //! HTML page per interactive scene.
 //!
 //! Every spec is read and validated before anything is evaluated or written, so a bad spec
@@ -9,10 +9,11 @@ use crate::catalogue::CATALOGUE;
 use crate::check_outputs;
 use crate::error::{Error, Result};
 use crate::input::{parse_json, read_file};
-use crate::output::{csv::figure_csv, html, plot, write};
+use crate::output::{csv::figure_csv, html, pdf, plot, write};
 use crate::plan::{Outputs, plan};
 use crate::problem::{Problem, Problems};
 use crate::progress::Progress;
+use crate::provenance::Provenance;
 use crate::sample::{Evaluated, evaluate_all};
 use crate::scene::{self, Scene};
 use crate::series::{Figure, Panel, Series, XUnit};
@@ -26,6 +27,8 @@ pub enum Format {
     Svg,
     /// Raster image with text drawn from the embedded font.
     Png,
+    /// One-page vector PDF of the SVG, text in the embedded font; only when asked for.
+    Pdf,
     /// The sampled points, long format (CONTRACTS.md).
     Csv,
     /// A self-contained interactive page, for scenes with sliders only.
@@ -34,13 +37,20 @@ pub enum Format {
 
 impl Format {
     /// Every format, in output order.
-    pub const ALL: [Format; 4] = [Format::Svg, Format::Png, Format::Csv, Format::Html];
+    pub const ALL: [Format; 5] = [
+        Format::Svg,
+        Format::Png,
+        Format::Pdf,
+        Format::Csv,
+        Format::Html,
+    ];
 
     /// File extension.
     pub fn extension(self) -> &'static str {
         match self {
             Format::Svg => "svg",
             Format::Png => "png",
+            Format::Pdf => "pdf",
             Format::Csv => "csv",
             Format::Html => "html",
         }
@@ -51,7 +61,7 @@ impl Format {
         let mut formats = Vec::new();
         for word in text.split(',').map(str::trim) {
             let format = Format::ALL.into_iter().find(|f| f.extension() == word).ok_or_else(|| {
-                Error::Usage(format!("--format: unknown format (got \"{word}\", expected a comma list of svg, png, csv, html)"))
+                Error::Usage(format!("--format: unknown format (got \"{word}\", expected a comma list of svg, png, pdf, csv, html)"))
             })?;
             if !formats.contains(&format) {
                 formats.push(format);
@@ -125,7 +135,8 @@ pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
 }
 
 /// Parses and validates every source; all problems of all sources are reported together, and
-/// duplicate ids across sources are problems too.
+/// duplicate ids across sources are problems too. On success there is one scene per source, in
+/// the order of `sources`.
 pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Result<Vec<Scene>> {
     let mut scenes = Vec::new();
     let mut failures = Vec::new();
@@ -188,8 +199,14 @@ fn apply_override(
     Ok(scene)
 }
 
-/// Builds the figure of `scene` from its evaluated jobs (`feeds[panel][series]` → job index).
-pub fn figure(scene: &Scene, feeds: &[Vec<usize>], evaluated: &[Evaluated]) -> Figure {
+/// Builds the figure of `scene`, drawn from the spec `provenance` records, from its evaluated jobs
+/// (`feeds[panel][series]` → job index).
+pub fn figure(
+    scene: &Scene,
+    provenance: &Provenance,
+    feeds: &[Vec<usize>],
+    evaluated: &[Evaluated],
+) -> Figure {
     let panels = scene
         .panels
         .iter()
@@ -240,16 +257,22 @@ pub fn figure(scene: &Scene, feeds: &[Vec<usize>], evaluated: &[Evaluated]) -> F
         canvas: scene.canvas,
         theme: scene.theme,
         panels,
+        provenance: provenance.clone(),
     }
 }
 
-/// The bytes of one output of a figure.
+/// The bytes of one output of a figure. The PDF is converted from the figure's SVG.
 pub fn encode(figure: &Figure, format: Format) -> Result<Vec<u8>> {
     let plot_error =
         |e: plot::PlotError| Error::Numerics(format!("{}: drawing failed: {e}", figure.id));
     match format {
         Format::Svg => plot::svg(figure).map_err(plot_error),
         Format::Png => plot::png(figure).map_err(plot_error),
+        Format::Pdf => {
+            let svg = plot::svg(figure).map_err(plot_error)?;
+            pdf::from_svg(&svg, &figure.title, &figure.provenance)
+                .map_err(|e| Error::Numerics(format!("{}: PDF conversion failed: {e}", figure.id)))
+        }
         Format::Csv => Ok(figure_csv(figure)),
         Format::Html => unreachable!("pages are built from scenes, by `pages`"),
     }
@@ -279,14 +302,15 @@ pub fn run(options: &RenderOptions) -> Result<Vec<PathBuf>> {
 pub struct RenderStats {
     /// Reading, planning and evaluating (wall time).
     pub evaluation: std::time::Duration,
-    /// Drawing SVG and PNG, rasterization and PNG compression included (wall time).
+    /// Drawing SVG, PNG and PDF, rasterization, PNG compression and PDF conversion included
+    /// (wall time).
     pub drawing: std::time::Duration,
     /// Formatting CSV and writing every file (wall time).
     pub encoding: std::time::Duration,
     /// Curve evaluations over all jobs.
     pub evaluations: usize,
-    /// Outputs produced per format, in [`Format::ALL`] order.
-    pub produced: [usize; 3],
+    /// Outputs produced per format, in [`Format::ALL`] order without HTML: SVG, PNG, PDF, CSV.
+    pub produced: [usize; 4],
 }
 
 /// [`run`], also returning where the time went.
@@ -339,10 +363,15 @@ fn encode_outputs(
     quiet: bool,
 ) -> Result<(Files, RenderStats)> {
     let start = std::time::Instant::now();
-    let scenes = load_scenes(&sources(&options.paths)?, options.canvas)?;
+    let sources = sources(&options.paths)?;
+    let scenes = load_scenes(&sources, options.canvas)?;
+    let provenance: Vec<Provenance> = sources
+        .iter()
+        .map(|(_, text, _)| Provenance::of_spec(text.as_bytes()))
+        .collect();
     let has = |f: Format| options.formats.contains(&f);
     let outputs = Outputs {
-        drawn: !tables_only && (has(Format::Svg) || has(Format::Png)),
+        drawn: !tables_only && (has(Format::Svg) || has(Format::Png) || has(Format::Pdf)),
         table: has(Format::Csv),
     };
     let plan = plan(&scenes, outputs, has(Format::Png));
@@ -380,8 +409,9 @@ fn encode_outputs(
             .collect();
         let figures: Vec<Figure> = scenes
             .iter()
+            .zip(&provenance)
             .zip(feeds)
-            .map(|(s, f)| figure(s, f, &evaluated))
+            .map(|((s, p), f)| figure(s, p, f, &evaluated))
             .collect();
         let encoded: Vec<(String, Vec<u8>)> = figures
             .par_iter()

@@ -2,6 +2,7 @@
 
 pub mod csv;
 pub mod html;
+pub mod pdf;
 pub mod plot;
 pub mod plot3d;
 pub mod write;

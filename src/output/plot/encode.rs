@@ -1,8 +1,10 @@
 //! Bytes out: the device size of a canvas, the finishing touches of the SVG document and the
-//! PNG encoding. Nothing here draws.
+//! PNG encoding, each carrying the figure's provenance record. Nothing here draws, and nothing
+//! here computes the record: it only embeds it.
 
 use super::PlotError;
 use super::style::{EM_PER_SIZE, FONT_NAME};
+use crate::provenance::Provenance;
 use crate::series::Canvas;
 
 /// Largest raster accepted: 2²⁶ pixels (64 Mpx, a 192 MB RGB buffer).
@@ -37,13 +39,20 @@ pub(super) fn device_size(canvas: &Canvas, scale: f64) -> Result<(u32, u32), Plo
     Ok((width as u32, height as u32))
 }
 
-/// Gives the SVG its CSS size, font family and font sizes.
+/// Gives the SVG its CSS size, font family and font sizes, and puts the provenance record in a
+/// `<metadata>` element right after the opening tag, as `key=value` words
+/// (`<metadata>ndfplot-version=0.1.0 spec-sha256=…</metadata>`).
 ///
 /// The drawing was made at `SVG_UNITS_PER_PX` units per pixel, so the `viewBox` keeps those
 /// units. plotters' SVG backend writes `font-family="<registered name>" font-size="size / 1.24"`;
 /// the family gets its generic fallback, and the size becomes the em size that the raster
 /// backend uses for the same text style, so that SVG and PNG text have the same extent.
-pub(super) fn finish_svg(document: &str, canvas: &Canvas, (width, height): (u32, u32)) -> String {
+pub(super) fn finish_svg(
+    document: &str,
+    canvas: &Canvas,
+    (width, height): (u32, u32),
+    provenance: &Provenance,
+) -> String {
     /// plotters-svg 0.3.7 divides the style size by this to get `font-size`.
     const PLOTTERS_SVG_DIVISOR: f64 = 1.24;
     let drawn = format!(r#"<svg width="{width}" height="{height}" "#);
@@ -52,6 +61,14 @@ pub(super) fn finish_svg(document: &str, canvas: &Canvas, (width, height): (u32,
         canvas.width_px, canvas.height_px
     );
     let document = document.replacen(&drawn, &sized, 1);
+    // The opening tag ends at the first `>`: plotters writes no `>` inside its attributes.
+    let document = match document.split_once('>') {
+        Some((open, rest)) => format!(
+            "{open}>\n<metadata>{}</metadata>{rest}",
+            provenance.words().join(" ")
+        ),
+        None => document,
+    };
     let marker = format!(r#"font-family="{FONT_NAME}" font-size=""#);
     let mut parts = document.split(marker.as_str());
     let mut out = String::with_capacity(document.len() + document.len() / 16);
@@ -68,7 +85,13 @@ pub(super) fn finish_svg(document: &str, canvas: &Canvas, (width, height): (u32,
 
 /// Encodes packed 8-bit RGB pixels as a PNG with fixed settings: fast deflate and the Sub
 /// filter, ~6× faster than adaptive filtering for files ~1.6× larger (plots are mostly flat).
-pub(super) fn encode_png(rgb: &[u8], width: u32, height: u32) -> Result<Vec<u8>, PlotError> {
+/// The provenance record goes into `tEXt` chunks before the image data: `Software` =
+/// `ndfplot <version>`, then one chunk per field, keyed as [`Provenance::fields`] names them.
+pub(super) fn encode_png(
+    rgb: &[u8],
+    (width, height): (u32, u32),
+    provenance: &Provenance,
+) -> Result<Vec<u8>, PlotError> {
     let mut out = Vec::with_capacity(rgb.len() / 16);
     let mut encoder = png::Encoder::new(&mut out, width, height);
     encoder.set_color(png::ColorType::Rgb);
@@ -77,6 +100,10 @@ pub(super) fn encode_png(rgb: &[u8], width: u32, height: u32) -> Result<Vec<u8>,
     encoder.set_filter(png::FilterType::Sub);
     encoder.set_adaptive_filter(png::AdaptiveFilterType::NonAdaptive);
     encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
+    encoder.add_text_chunk("Software".to_owned(), provenance.software())?;
+    for (key, value) in provenance.fields() {
+        encoder.add_text_chunk(key.to_owned(), value)?;
+    }
     let mut writer = encoder.write_header()?;
     writer.write_image_data(rgb)?;
     writer.finish()?;

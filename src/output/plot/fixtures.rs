@@ -4,9 +4,13 @@
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
+use crate::provenance::Provenance;
 use crate::series::{
     Canvas, Dash, Figure, Mark, Panel, PanelKind, Rgb, Series, Style, Theme, XUnit, YScale,
 };
+
+/// The spec text the test figures claim to come from.
+pub(super) const SPEC: &[u8] = br#"{"id": "sample"}"#;
 
 pub(super) const RED: u32 = 0xDB2E2E;
 pub(super) const BLUE: u32 = 0x2689D1;
@@ -89,6 +93,7 @@ pub(super) fn figure(panels: Vec<Panel>) -> Figure {
         },
         theme: Theme::Notebook,
         panels,
+        provenance: Provenance::of_spec(SPEC),
     }
 }
 

@@ -97,6 +97,7 @@ pub enum PlotError {
 /// Renders `figure` as a standalone SVG document (UTF-8 bytes).
 ///
 /// Text stays text, in `font-family="DejaVu Sans, sans-serif"`; the font itself is not embedded.
+/// The figure's provenance is in a `<metadata>` element after the opening tag.
 pub fn svg(figure: &Figure) -> Result<Vec<u8>, PlotError> {
     let canvas = &figure.canvas;
     let (width, height) = device_size(canvas, SVG_UNITS_PER_PX)?;
@@ -105,12 +106,13 @@ pub fn svg(figure: &Figure) -> Result<Vec<u8>, PlotError> {
         let root = SVGBackend::with_string(&mut document, (width, height)).into_drawing_area();
         draw_figure(&root, figure, SVG_UNITS_PER_PX)?;
     }
-    Ok(finish_svg(&document, canvas, (width, height)).into_bytes())
+    Ok(finish_svg(&document, canvas, (width, height), &figure.provenance).into_bytes())
 }
 
 /// Renders `figure` as a PNG of (width_px·png_scale) × (height_px·png_scale) pixels.
 ///
-/// 8-bit RGB, tagged sRGB, no time stamp: identical figures give identical bytes.
+/// 8-bit RGB, tagged sRGB, no time stamp: identical figures give identical bytes. The figure's
+/// provenance is in `tEXt` chunks (`Software`, `ndfplot-version`, `spec-sha256`).
 pub fn png(figure: &Figure) -> Result<Vec<u8>, PlotError> {
     let scale = figure.canvas.png_scale;
     let (width, height) = device_size(&figure.canvas, scale)?;
@@ -119,7 +121,7 @@ pub fn png(figure: &Figure) -> Result<Vec<u8>, PlotError> {
         let root = BitMapBackend::with_buffer(&mut rgb, (width, height)).into_drawing_area();
         draw_figure(&root, figure, scale)?;
     }
-    encode_png(&rgb, width, height)
+    encode_png(&rgb, (width, height), &figure.provenance)
 }
 
 /// SVG device units per CSS pixel: plotters draws on an integer grid, so 4 gives 0.25 px
@@ -237,9 +239,11 @@ where
 mod tests {
     use super::*;
     use crate::output::plot::fixtures::{
-        BLACK, BLUE, ORANGE, RED, STEEL, decode, figure, fresnel_sample, in_3d, manifold_edge,
-        manifold_grid, marked, panel, polylines_in, sample, sampled, series, surface_kind, xy, zs,
+        BLACK, BLUE, ORANGE, RED, SPEC, STEEL, decode, figure, fresnel_sample, in_3d,
+        manifold_edge, manifold_grid, marked, panel, polylines_in, sample, sampled, series,
+        surface_kind, xy, zs,
     };
+    use crate::provenance::Provenance;
     use crate::series::{Dash, Mark, Series, Theme, XUnit, YScale};
     use std::f64::consts::PI;
 
@@ -267,6 +271,37 @@ mod tests {
                 .count(),
             families
         );
+    }
+
+    #[test]
+    fn svg_and_png_embed_the_provenance_record() {
+        let figure = sample();
+        let record = Provenance::of_spec(SPEC);
+        let svg = String::from_utf8(svg(&figure).unwrap()).unwrap();
+        assert_eq!(
+            svg.lines().nth(1),
+            Some(format!("<metadata>{}</metadata>", record.words().join(" ")).as_str())
+        );
+        roxmltree::Document::parse(&svg).expect("still well-formed XML");
+        let bytes = png(&figure).unwrap();
+        let reader = png::Decoder::new(bytes.as_slice()).read_info().unwrap();
+        let text: Vec<(&str, &str)> = reader
+            .info()
+            .uncompressed_latin1_text
+            .iter()
+            .map(|chunk| (chunk.keyword.as_str(), chunk.text.as_str()))
+            .collect();
+        let hash = record.spec_sha256.as_deref().unwrap();
+        assert_eq!(
+            text,
+            [
+                ("Software", record.software().as_str()),
+                ("ndfplot-version", record.version),
+                ("spec-sha256", hash)
+            ]
+        );
+        let (width, height, _) = decode(&bytes);
+        assert_eq!((width, height), (800, 500));
     }
 
     #[test]
