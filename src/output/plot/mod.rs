@@ -10,9 +10,10 @@
 //! camera geometry of [`super::plot3d`].
 //!
 //! Both formats share one drawing routine, parameterised by a device scale `k` (device pixels
-//! per CSS pixel): the PNG is drawn at `k = png_scale`; the SVG at `k = SVG_UNITS_PER_PX` and
-//! then given a `viewBox` that maps it back to the canvas size, so that coordinates and line
-//! widths keep sub-pixel precision although plotters works in integer device units.
+//! per CSS pixel): the SVG is drawn at `k = SVG_UNITS_PER_PX` and then given a `viewBox` that
+//! maps it back to the canvas size, so that coordinates and line widths keep sub-pixel precision
+//! although plotters works in integer device units; the PNG is drawn on the same grid (a whole
+//! multiple of `png_scale`, at least `SVG_UNITS_PER_PX`) and box-filtered down to `png_scale`.
 //!
 //! This file holds the entry points and the page layout; each drawing job has its own file:
 //! [`axis`] (ranges, ticks, tick labels), [`clip`] (curves cut to the visible box),
@@ -39,7 +40,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::plot3d::View;
 use crate::series::{Figure, Panel, PanelKind};
 use cartesian::draw_cartesian;
-use encode::{device_size, encode_png, finish_svg};
+use encode::{MAX_DEVICE_PIXELS, device_size, downsample, encode_png, finish_svg};
 use polar::draw_polar;
 use style::{EM_PER_SIZE, FIGURE_TITLE_EM, Metrics, PANEL_TITLE_EM, ensure_font};
 use surface::draw_surface;
@@ -110,16 +111,34 @@ pub fn svg(figure: &Figure) -> Result<Vec<u8>, PlotError> {
 
 /// Renders `figure` as a PNG of (width_px·png_scale) × (height_px·png_scale) pixels.
 ///
-/// 8-bit RGB, tagged sRGB, no time stamp: identical figures give identical bytes.
+/// Drawn [`supersampling`] times larger on each side and box-filtered down, so that curve
+/// vertices and edges keep sub-pixel positions. 8-bit RGB, tagged sRGB, no time stamp:
+/// identical figures give identical bytes.
 pub fn png(figure: &Figure) -> Result<Vec<u8>, PlotError> {
     let scale = figure.canvas.png_scale;
     let (width, height) = device_size(&figure.canvas, scale)?;
-    let mut rgb = vec![0u8; width as usize * height as usize * 3];
+    let factor = supersampling(scale, (width, height));
+    let drawn = (width * factor, height * factor);
+    let mut rgb = vec![0u8; drawn.0 as usize * drawn.1 as usize * 3];
     {
-        let root = BitMapBackend::with_buffer(&mut rgb, (width, height)).into_drawing_area();
-        draw_figure(&root, figure, scale)?;
+        let root = BitMapBackend::with_buffer(&mut rgb, drawn).into_drawing_area();
+        draw_figure(&root, figure, scale * f64::from(factor))?;
     }
-    encode_png(&rgb, width, height)
+    encode_png(&downsample(rgb, drawn, factor), width, height)
+}
+
+/// How many times larger on each side a PNG of `(width, height)` pixels at `scale` pixels per
+/// CSS pixel is drawn: the least whole factor that reaches [`SVG_UNITS_PER_PX`] device units per
+/// CSS pixel, so that the raster snaps vertices to the SVG's grid (2 at the default scale of 2,
+/// where whole output pixels would move a vertex by up to 0.7 px and kink a curve at every
+/// vertex), smaller while the drawn raster would exceed [`MAX_DEVICE_PIXELS`].
+fn supersampling(scale: f64, (width, height): (u32, u32)) -> u32 {
+    let pixels = u64::from(width) * u64::from(height);
+    let wanted = (SVG_UNITS_PER_PX / scale).ceil().max(1.0) as u64;
+    (1..=wanted)
+        .rev()
+        .find(|f| pixels * f * f <= MAX_DEVICE_PIXELS)
+        .unwrap_or(1) as u32
 }
 
 /// SVG device units per CSS pixel: plotters draws on an integer grid, so 4 gives 0.25 px
@@ -279,6 +298,16 @@ mod tests {
         assert!(polylines_in(&svg, RED) > 20);
         let thick = format!(r##"stroke="#{ORANGE:06X}" stroke-width="12""##);
         assert!(svg.contains(&thick), "thick = 2 × 1.5 px × 4 units");
+    }
+
+    #[test]
+    fn pngs_are_drawn_on_the_svg_grid_within_the_pixel_cap() {
+        assert_eq!(supersampling(2.0, (1920, 960)), 2);
+        assert_eq!(supersampling(1.0, (960, 480)), 4);
+        assert_eq!(supersampling(3.0, (960, 480)), 2);
+        assert_eq!(supersampling(4.0, (960, 480)), 1);
+        // 6000 × 6000 px: 2 × 2 would exceed the cap.
+        assert_eq!(supersampling(2.0, (6000, 6000)), 1);
     }
 
     #[test]
