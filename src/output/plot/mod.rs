@@ -44,6 +44,7 @@ use encode::{MAX_DEVICE_PIXELS, device_size, downsample, encode_png, finish_svg}
 use polar::draw_polar;
 use style::{EM_PER_SIZE, FIGURE_TITLE_EM, Metrics, PANEL_TITLE_EM, ensure_font};
 use surface::draw_surface;
+use text::{LINE_GAP_EM, fit_text, text_size};
 use theme::Look;
 
 /// Why a figure could not be turned into bytes.
@@ -185,7 +186,8 @@ where
 }
 
 /// Draws `title` (`size` base text sizes) centred at the top of `area`, if not empty, and
-/// returns the area below it.
+/// returns the area below it. A title wider than the area less its padding is shrunk or
+/// wrapped ([`fit_text`]), never clipped.
 fn titled<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
@@ -198,17 +200,25 @@ where
     if title.is_empty() {
         return Ok(area.clone());
     }
-    let style = m.font(size);
     let pad = f64::from(m.px(0.5));
+    let (width, _) = area.dim_in_pixel();
+    let measure = |text: &str, size: f64| Ok(text_size(area, text, &m.font(size))?.0);
+    let (size, lines) = fit_text(title, size, f64::from(width) - 2.0 * pad, measure)?;
+    let style = m.font(size);
     // plotters' raster text puts the baseline size/2 below a top anchor, so ascenders rise
     // ≈0.3 × size above it (ascent 1901/2384 of the size for DejaVu Sans): start that much lower.
-    let top = (pad + 0.3 * size * m.unit).round() as i32;
-    let (_, text_h) = area.estimate_text_size(title, &style).map_err(draw_err)?;
-    let (width, _) = area.dim_in_pixel();
+    let mut top = (pad + 0.3 * size * m.unit).round() as i32;
     let centred = style.pos(Pos::new(HPos::Center, VPos::Top));
-    area.draw_text(title, &centred, (width as i32 / 2, top))
-        .map_err(draw_err)?;
-    Ok(area.split_vertically(top + text_h as i32 + pad as i32).1)
+    for (i, line) in lines.iter().enumerate() {
+        let (_, text_h) = area.estimate_text_size(line, &style).map_err(draw_err)?;
+        area.draw_text(line, &centred, (width as i32 / 2, top))
+            .map_err(draw_err)?;
+        top += text_h as i32;
+        if i + 1 < lines.len() {
+            top += m.px(LINE_GAP_EM * size) as i32;
+        }
+    }
+    Ok(area.split_vertically(top + pad as i32).1)
 }
 
 /// Draws one panel (title, axes, series in their `looks`, legend) into its grid cell.
