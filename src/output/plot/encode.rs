@@ -81,9 +81,11 @@ pub(super) fn downsample(rgb: Vec<u8>, (width, height): (u32, u32), factor: u32)
     for rows in rgb.chunks_exact(row * f) {
         sums.fill(0);
         for line in rows.chunks_exact(row) {
-            for (x, pixels) in line.chunks_exact(3 * f).enumerate() {
-                for (i, &c) in pixels.iter().enumerate() {
-                    sums[3 * x + i % 3] += u32::from(c);
+            for (sum, pixels) in sums.chunks_exact_mut(3).zip(line.chunks_exact(3 * f)) {
+                for pixel in pixels.chunks_exact(3) {
+                    for (s, &c) in sum.iter_mut().zip(pixel) {
+                        *s += u32::from(c);
+                    }
                 }
             }
         }
