@@ -293,8 +293,14 @@ where
         match place {
             Place::Over => draw_legend(area, &entries, &covered.0, &tick_font, m)?,
             Place::Right(x) => {
+                // Level with the middle of the sector's height, as far as the area allows.
                 let (w, h) = legend_strip(legend, inset);
-                let strip = area.clone().shrink((x.round() as i32, 0), (w, h));
+                let middle = sector.centre.1 - sector.r / 2.0;
+                let top =
+                    (middle - f64::from(h) / 2.0).clamp(0.0, (height - f64::from(h)).max(0.0));
+                let strip = area
+                    .clone()
+                    .shrink((x.round() as i32, top.round() as i32), (w, h));
                 draw_legend(&strip, &entries, &[], &tick_font, m)?;
             }
             Place::Below(y) => {
@@ -320,7 +326,7 @@ fn legend_strip(size: Option<(i32, i32)>, inset: f64) -> (u32, u32) {
 enum Place {
     /// Over the panel, where it hides least.
     Over,
-    /// In the strip right of this x.
+    /// In the strip right of this x, level with the sector.
     Right(f64),
     /// In the strip below this y.
     Below(f64),
