@@ -25,7 +25,8 @@ where
 /// smaller still reads as a heading (a figure title, 1.4 base sizes, stays above the axis
 /// labels' 1.1); smaller, it would not.
 pub(super) const MIN_SHRINK: f64 = 0.8;
-/// Space between the lines of a wrapped title, in multiples of its size.
+/// Space between the lines of a wrapped title, in multiples of its size: the measured text
+/// height already spans ascenders to descenders, so a small gap reads as one heading.
 pub(super) const LINE_GAP_EM: f64 = 0.15;
 
 /// The size and lines at which `text`, wanted at `size`, fits `width` (device pixels, as
