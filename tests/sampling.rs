@@ -233,6 +233,23 @@ fn default_sampling_draws_adaptively_and_tabulates_uniformly() {
 }
 
 #[test]
+fn polar_panels_are_drawn_adaptively_in_the_disc() {
+    let dir = temp_dir("polar");
+    let scenes = load(
+        &dir,
+        r#"{"id":"s","panels":[{"view":"polar","curves":[{"ndf":"phong","alpha_p":48}]}]}"#,
+    );
+    let outputs = Outputs {
+        drawn: true,
+        table: false,
+    };
+    let p = plan(&scenes, outputs, true);
+    let job = p.drawn.as_ref().unwrap()[0][0][0];
+    assert!(matches!(p.jobs[job], Job::Adaptive { frame: 0, .. }));
+    assert_eq!(p.frames[0].geometry, adaptive::Geometry::Polar);
+}
+
+#[test]
 fn explicit_sampling_applies_to_tables_too() {
     let dir = temp_dir("explicit");
     let uniform = load(&dir, &scene(r#""sampling":{"uniform":50},"#));
