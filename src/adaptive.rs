@@ -262,8 +262,8 @@ impl PixelMap {
     }
 }
 
-/// Distance in pixels from `p` to the segment `a`–`b`.
-fn distance_to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+/// Distance in pixels from `p` to the segment `a`–`b` (to `a` when the segment is a point).
+pub fn distance_to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
     let (dx, dy) = (b.0 - a.0, b.1 - a.1);
     let length2 = dx * dx + dy * dy;
     let t = if length2 > 0.0 {

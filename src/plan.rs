@@ -115,7 +115,10 @@ impl Planner {
         let (a, b) = panel.theta_range();
         let mut feed = Vec::with_capacity(panel.curves.len() + panel.data.len());
         match sampling {
-            Sampling::Adaptive { tolerance_px } if panel.kind == PanelKind::Cartesian => {
+            // Cartesian and polar panels place (θ, v) in a 2D pixel frame; surface panels do not.
+            Sampling::Adaptive { tolerance_px }
+                if !matches!(panel.kind, PanelKind::Surface { .. }) =>
+            {
                 let frame = frame(scene, panel, png, tolerance_px);
                 // An adaptive curve depends on its panel's frame and, through the automatic y range,
                 // on every other curve of the panel.

@@ -1,13 +1,14 @@
 //! Sampling: the batch path (`Ndf::eval_grid`) against the accurate `eval` over every family's domain,
-//! adaptive sampling of drawn curves (within tolerance, few samples), the spec's `sampling` key, and
-//! the plan skipping what a run does not need (formats not requested, jobs shared between panels).
+//! adaptive sampling of drawn curves (within tolerance, few samples, also as drawn in projected, slope
+//! and polar panels), the spec's `sampling` key, and the plan skipping what a run does not need
+//! (formats not requested, jobs shared between panels).
 
-use ndfplot::adaptive::{self, Frame, max_deviation_px};
+use ndfplot::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
 use ndfplot::cmd::render::{self, CanvasOverride, Format, RenderOptions};
 use ndfplot::ndf::{Family, Ndf};
 use ndfplot::plan::{Job, Outputs, plan};
 use ndfplot::sample::{eval_grid_parallel, evaluate_all};
-use ndfplot::series::YScale;
+use ndfplot::series::{Dash, PanelKind, Rgb, XUnit, YScale};
 use std::f64::consts::FRAC_PI_2;
 use std::path::PathBuf;
 
@@ -232,6 +233,23 @@ fn default_sampling_draws_adaptively_and_tabulates_uniformly() {
 }
 
 #[test]
+fn polar_panels_are_drawn_adaptively_in_the_disc() {
+    let dir = temp_dir("polar");
+    let scenes = load(
+        &dir,
+        r#"{"id":"s","panels":[{"view":"polar","curves":[{"ndf":"phong","alpha_p":48}]}]}"#,
+    );
+    let outputs = Outputs {
+        drawn: true,
+        table: false,
+    };
+    let p = plan(&scenes, outputs, true);
+    let job = p.drawn.as_ref().unwrap()[0][0][0];
+    assert!(matches!(p.jobs[job], Job::Adaptive { frame: 0, .. }));
+    assert_eq!(p.frames[0].geometry, adaptive::Geometry::Polar);
+}
+
+#[test]
 fn explicit_sampling_applies_to_tables_too() {
     let dir = temp_dir("explicit");
     let uniform = load(&dir, &scene(r#""sampling":{"uniform":50},"#));
@@ -335,4 +353,226 @@ fn a_run_produces_only_the_requested_formats_and_needed_jobs() {
         .drawn
         .is_none()
     );
+}
+
+/// The vertices of each `<polyline>` of `svg` stroked in `hex`, in SVG units.
+fn polylines(svg: &str, hex: &str) -> Vec<Vec<(f64, f64)>> {
+    let document = roxmltree::Document::parse(svg).unwrap();
+    document
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke") == Some(hex))
+        .map(|n| {
+            let vertex = |p: &str| {
+                let (x, y) = p.split_once(',').unwrap();
+                (x.parse().unwrap(), y.parse().unwrap())
+            };
+            n.attribute("points")
+                .unwrap()
+                .split_whitespace()
+                .map(vertex)
+                .collect()
+        })
+        .collect()
+}
+
+/// The least-squares solution of `rows` (coefficients, right-hand side), by the normal equations
+/// and Gauss–Jordan elimination with partial pivoting.
+fn least_squares(rows: &[(Vec<f64>, f64)]) -> Vec<f64> {
+    let n = rows[0].0.len();
+    let mut a = vec![vec![0.0; n + 1]; n];
+    for (r, y) in rows {
+        for i in 0..n {
+            for j in 0..n {
+                a[i][j] += r[i] * r[j];
+            }
+            a[i][n] += r[i] * y;
+        }
+    }
+    for i in 0..n {
+        let pivot = (i..n)
+            .max_by(|&p, &q| a[p][i].abs().total_cmp(&a[q][i].abs()))
+            .unwrap();
+        a.swap(i, pivot);
+        for r in (0..n).filter(|&r| r != i) {
+            let f = a[r][i] / a[i][i];
+            for c in i..=n {
+                a[r][c] -= f * a[i][c];
+            }
+        }
+    }
+    (0..n).map(|i| a[i][n] / a[i][i]).collect()
+}
+
+/// What [`drawn_deviation`] measures for one series, in output (PNG) pixels.
+struct Drawn {
+    /// Largest distance of the true curve from the polyline through the samples, placed by the
+    /// panel's own data-to-pixel map (fitted to the drawing).
+    sampled: f64,
+    /// Largest distance of the true curve from the polyline as drawn (vertices on whole device units).
+    drawn: f64,
+    /// Largest distance of a drawn vertex from its sample placed by the fitted map.
+    snapped: f64,
+}
+
+/// Probes per polyline segment when the true curve is compared with it.
+const PROBES: usize = 16;
+/// Error, in output pixels, of a data-to-pixel map fitted by least squares to a few dozen
+/// vertices snapped to whole device units (half an output pixel): a few hundredths of a pixel.
+const FIT_SLACK_PX: f64 = 0.05;
+
+/// Draws series `s` of panel `p` of catalogue figure `id` in a colour of its own (a solid
+/// line, legend off: nothing else of the layout changes) and measures it against its curve in
+/// the panel's pixels, as rendered with PNG output; `None` when its drawn polyline is not one
+/// vertex per sample (clipped).
+fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
+    const UNIQUE: &str = "#010203";
+    let scenes = render::load_scenes(&render::sources(&[]).unwrap(), CanvasOverride::default())
+        .unwrap()
+        .into_iter()
+        .filter(|scene| scene.id == id)
+        .collect::<Vec<_>>();
+    let scene = &scenes[0];
+    let outputs = Outputs {
+        drawn: true,
+        table: false,
+    };
+    let planned = plan(&scenes, outputs, true);
+    let evaluated = evaluate_all(&planned).unwrap();
+    let mut figure = render::figure(scene, &planned.drawn.as_ref().unwrap()[0], &evaluated);
+    let panel = &mut figure.panels[p];
+    panel.legend = false;
+    panel.series[s].style.colour = Rgb::from_hex(0x010203);
+    panel.series[s].style.dash = Dash::Solid;
+    let panel = &figure.panels[p];
+    let svg = String::from_utf8(ndfplot::output::plot::svg(&figure).unwrap()).unwrap();
+    // SVG units per output pixel: the viewBox width over the CSS width, over the PNG scale.
+    let root = roxmltree::Document::parse(&svg).unwrap();
+    let root = root.root_element();
+    let css_width: f64 = root.attribute("width").unwrap().parse().unwrap();
+    let view_width: f64 = root
+        .attribute("viewBox")
+        .unwrap()
+        .split(' ')
+        .nth(2)
+        .unwrap()
+        .parse()
+        .unwrap();
+    let units_per_px = view_width / css_width / scene.canvas.png_scale;
+    let curve = &scene.panels[p].curves[s].curve;
+    let points = &panel.series[s].points;
+    let lines = polylines(&svg, UNIQUE);
+    let polar = panel.kind == PanelKind::Polar;
+    let drawn: Vec<(f64, f64)> = match (polar, lines.as_slice()) {
+        // One path through the normal: the mirror image, then the lobe itself from θ = 0.
+        (true, [line]) if line.len() == 2 * points.len() - 1 => line[points.len() - 1..].to_vec(),
+        (false, [line]) if line.len() == points.len() => line.clone(),
+        _ => return None,
+    };
+    // The panel's map from (θ, value) to SVG units, fitted to the drawn vertices.
+    let y_display = |v: f64| match panel.y_scale {
+        YScale::Linear => v,
+        YScale::Log => v.log10(),
+    };
+    let place: Box<dyn Fn(f64, f64) -> (f64, f64)> = if polar {
+        let floor = panel
+            .y_range
+            .map_or(f64::NEG_INFINITY, |(lo, hi)| y_display(lo.min(hi)));
+        let rho = move |v: f64| y_display(v).max(floor);
+        let rows: Vec<(Vec<f64>, f64)> = points
+            .iter()
+            .zip(&drawn)
+            .flat_map(|(&(t, v), &(x, y))| {
+                let (sin, cos) = t.sin_cos();
+                [
+                    (vec![1.0, 0.0, rho(v) * sin, sin], x),
+                    (vec![0.0, 1.0, -rho(v) * cos, -cos], y),
+                ]
+            })
+            .collect();
+        let c = least_squares(&rows);
+        Box::new(move |t: f64, v: f64| {
+            let (sin, cos) = t.sin_cos();
+            let r = c[2] * rho(v) + c[3];
+            (c[0] + r * sin, c[1] - r * cos)
+        })
+    } else {
+        let x_display = move |t: f64| match panel.x_unit {
+            XUnit::Degrees => t.to_degrees(),
+            XUnit::Slope => t.tan(),
+            XUnit::Radians | XUnit::Plain => t,
+        };
+        let fit = |pick: &dyn Fn(usize) -> (f64, f64)| {
+            let rows: Vec<(Vec<f64>, f64)> = (0..points.len())
+                .map(pick)
+                .map(|(u, w)| (vec![1.0, u], w))
+                .collect();
+            least_squares(&rows)
+        };
+        let cx = fit(&|i| (x_display(points[i].0), drawn[i].0));
+        let cy = fit(&|i| (y_display(points[i].1), drawn[i].1));
+        Box::new(move |t: f64, v: f64| (cx[0] + cx[1] * x_display(t), cy[0] + cy[1] * y_display(v)))
+    };
+    let mut measured = Drawn {
+        sampled: 0.0,
+        drawn: 0.0,
+        snapped: 0.0,
+    };
+    for (i, w) in points.windows(2).enumerate() {
+        let chord = (place(w[0].0, w[0].1), place(w[1].0, w[1].1));
+        for k in 1..PROBES {
+            let t = w[0].0 + (w[1].0 - w[0].0) * k as f64 / PROBES as f64;
+            let truth = place(t, curve.eval(t));
+            measured.sampled = measured
+                .sampled
+                .max(distance_to_segment(truth, chord.0, chord.1));
+            measured.drawn = measured
+                .drawn
+                .max(distance_to_segment(truth, drawn[i], drawn[i + 1]));
+        }
+        let (x, y) = chord.0;
+        let snap = (x - drawn[i].0).hypot(y - drawn[i].1);
+        measured.snapped = measured.snapped.max(snap);
+    }
+    for value in [
+        &mut measured.sampled,
+        &mut measured.drawn,
+        &mut measured.snapped,
+    ] {
+        *value /= units_per_px;
+    }
+    Some(measured)
+}
+
+/// The drawn polylines of transformed (projected, slope) and polar panels stay within the
+/// sampling tolerance of their true curves in the panel's own pixels, as rendered: the map is
+/// fitted to the drawing itself, so a wrong frame, y range or scale in the sampler shows here.
+#[test]
+fn drawn_curves_of_every_view_follow_their_true_curves_in_the_panels_pixels() {
+    let tolerance = ndfplot::scene::DEFAULT_TOLERANCE_PX;
+    // Device units are a quarter CSS pixel, half an output pixel at PNG scale 2: a vertex moves
+    // at most half a diagonal of that when it is snapped, plus the error of a map fitted to
+    // vertices snapped so.
+    let snap = std::f64::consts::SQRT_2 / 4.0 + FIT_SLACK_PX;
+    for (id, panel, series) in [
+        // Projected: Phong α_p = 10.5 and Trowbridge–Reitz α = 0.4, 0.1.
+        ("tr-vs-phong-projected", 0, 7),
+        ("tr-vs-phong-projected", 0, 0),
+        ("tr-vs-phong-projected", 1, 0),
+        // Slope, log y: ABC fitted to SGD.
+        ("sgd-vs-abc-slope", 0, 4),
+        ("sgd-vs-abc-slope", 1, 5),
+        // Polar, linear and log radius: Phong α_p = 48, Beckmann α_b = 0.5.
+        ("beckmann-vs-phong-polar", 0, 4),
+        ("beckmann-vs-phong-polar", 1, 3),
+    ] {
+        let Drawn {
+            sampled,
+            drawn,
+            snapped,
+        } = drawn_deviation(id, panel, series).unwrap_or_else(|| panic!("{id} {panel} {series}"));
+        let at = format!("{id}, panel {panel}, series {series}");
+        assert!(sampled <= tolerance, "{at}: samples {sampled} px off");
+        assert!(snapped <= snap, "{at}: vertices snapped {snapped} px");
+        assert!(drawn <= tolerance + snap, "{at}: drawn {drawn} px off");
+    }
 }

@@ -284,6 +284,7 @@ fn misspelt_keys_and_names_fail_the_schema_as_they_fail_the_validator() {
         "sweep-empty-list",
         "view-misspelt",
         "theme-misspelt",
+        "transform-misspelt",
     ] {
         let text = std::fs::read_to_string(dir.join(format!("{case}.json"))).unwrap();
         let instance: Value = serde_json::from_str(&text).unwrap();

@@ -614,7 +614,8 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
 }
 
 /// The panel's `transform` (one of [`PANEL_TRANSFORMS`]), applied to each of its curves; a curve
-/// the transform does not apply to (a Fresnel curve) is reported under `transform`.
+/// the transform does not apply to (a Fresnel curve), or a panel without curves for it to apply
+/// to (only data series), is reported under `transform`.
 fn read_transform(
     reader: &mut Reader,
     panel: &reader::Object,
@@ -622,6 +623,16 @@ fn read_transform(
 ) -> Option<Transform> {
     let transform = Transform::from_name(reader.choice(panel, "transform", PANEL_TRANSFORMS)?)?;
     let at = panel.path_of("transform");
+    if curves.is_empty() {
+        reader.report(
+            at,
+            format!(
+                "the {} view applies to NDF curves (got a panel without curves, expected at least one NDF curve)",
+                transform.name()
+            ),
+        );
+        return None;
+    }
     for entry in curves.iter_mut() {
         match curve::transformed(transform, entry.curve.clone(), &at) {
             Ok(transformed) => entry.curve = transformed,

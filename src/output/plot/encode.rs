@@ -83,6 +83,34 @@ pub(super) fn finish_svg(
     out
 }
 
+/// The packed 8-bit RGB raster `rgb` of `(width, height)` pixels shrunk `factor` times on each
+/// side: each output pixel is the mean of its `factor` × `factor` block, rounded (a box filter,
+/// which turns a supersampled drawing into anti-aliased pixels). `factor` 1 returns `rgb`.
+pub(super) fn downsample(rgb: Vec<u8>, (width, height): (u32, u32), factor: u32) -> Vec<u8> {
+    if factor <= 1 {
+        return rgb;
+    }
+    let (f, row) = (factor as usize, width as usize * 3);
+    let out_row = row / f;
+    let block = (f * f) as u32;
+    let mut out = Vec::with_capacity(out_row * height as usize / f);
+    let mut sums = vec![0u32; out_row];
+    for rows in rgb.chunks_exact(row * f) {
+        sums.fill(0);
+        for line in rows.chunks_exact(row) {
+            for (sum, pixels) in sums.chunks_exact_mut(3).zip(line.chunks_exact(3 * f)) {
+                for pixel in pixels.chunks_exact(3) {
+                    for (s, &c) in sum.iter_mut().zip(pixel) {
+                        *s += u32::from(c);
+                    }
+                }
+            }
+        }
+        out.extend(sums.iter().map(|&s| ((s + block / 2) / block) as u8));
+    }
+    out
+}
+
 /// Encodes packed 8-bit RGB pixels as a PNG with fixed settings: fast deflate and the Sub
 /// filter, ~6× faster than adaptive filtering for files ~1.6× larger (plots are mostly flat).
 /// The provenance record goes into `tEXt` chunks before the image data: `Software` =
@@ -108,4 +136,20 @@ pub(super) fn encode_png(
     writer.write_image_data(rgb)?;
     writer.finish()?;
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn downsampling_averages_each_block_per_channel() {
+        // A 4×2 raster, factor 2: two output pixels, each the rounded mean of a 2×2 block.
+        let rgb = vec![
+            0, 10, 255, 2, 10, 255, /**/ 9, 9, 9, 9, 9, 9, //
+            0, 10, 255, 3, 11, 0, /**/ 9, 9, 9, 9, 9, 10,
+        ];
+        assert_eq!(downsample(rgb.clone(), (4, 2), 2), [1, 10, 191, 9, 9, 9]);
+        assert_eq!(downsample(rgb.clone(), (4, 2), 1), rgb);
+    }
 }

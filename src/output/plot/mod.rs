@@ -10,9 +10,10 @@
 //! camera geometry of [`super::plot3d`].
 //!
 //! Both formats share one drawing routine, parameterised by a device scale `k` (device pixels
-//! per CSS pixel): the PNG is drawn at `k = png_scale`; the SVG at `k = SVG_UNITS_PER_PX` and
-//! then given a `viewBox` that maps it back to the canvas size, so that coordinates and line
-//! widths keep sub-pixel precision although plotters works in integer device units.
+//! per CSS pixel): the SVG is drawn at `k = SVG_UNITS_PER_PX` and then given a `viewBox` that
+//! maps it back to the canvas size, so that coordinates and line widths keep sub-pixel precision
+//! although plotters works in integer device units; the PNG is drawn on the same grid (a whole
+//! multiple of `png_scale`, at least `SVG_UNITS_PER_PX`) and box-filtered down to `png_scale`.
 //!
 //! This file holds the entry points and the page layout; each drawing job has its own file:
 //! [`axis`] (ranges, ticks, tick labels), [`clip`] (curves cut to the visible box),
@@ -39,10 +40,11 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::plot3d::View;
 use crate::series::{Figure, Panel, PanelKind};
 use cartesian::draw_cartesian;
-use encode::{device_size, encode_png, finish_svg};
+use encode::{MAX_DEVICE_PIXELS, device_size, downsample, encode_png, finish_svg};
 use polar::draw_polar;
 use style::{EM_PER_SIZE, FIGURE_TITLE_EM, Metrics, PANEL_TITLE_EM, ensure_font};
 use surface::draw_surface;
+use text::{LINE_GAP_EM, fit_text, text_size};
 use theme::Look;
 
 /// Why a figure could not be turned into bytes.
@@ -111,17 +113,35 @@ pub fn svg(figure: &Figure) -> Result<Vec<u8>, PlotError> {
 
 /// Renders `figure` as a PNG of (width_px·png_scale) × (height_px·png_scale) pixels.
 ///
-/// 8-bit RGB, tagged sRGB, no time stamp: identical figures give identical bytes. The figure's
-/// provenance is in `tEXt` chunks (`Software`, `ndfplot-version`, `spec-sha256`).
+/// Drawn [`supersampling`] times larger on each side and box-filtered down, so that curve
+/// vertices and edges keep sub-pixel positions. 8-bit RGB, tagged sRGB, no time stamp:
+/// identical figures give identical bytes. The figure's provenance is in `tEXt` chunks
+/// (`Software`, `ndfplot-version`, `spec-sha256`).
 pub fn png(figure: &Figure) -> Result<Vec<u8>, PlotError> {
     let scale = figure.canvas.png_scale;
     let (width, height) = device_size(&figure.canvas, scale)?;
-    let mut rgb = vec![0u8; width as usize * height as usize * 3];
+    let factor = supersampling(scale, (width, height));
+    let drawn = (width * factor, height * factor);
+    let mut rgb = vec![0u8; drawn.0 as usize * drawn.1 as usize * 3];
     {
-        let root = BitMapBackend::with_buffer(&mut rgb, (width, height)).into_drawing_area();
-        draw_figure(&root, figure, scale)?;
+        let root = BitMapBackend::with_buffer(&mut rgb, drawn).into_drawing_area();
+        draw_figure(&root, figure, scale * f64::from(factor))?;
     }
-    encode_png(&rgb, (width, height), &figure.provenance)
+    encode_png(&downsample(rgb, drawn, factor), (width, height), &figure.provenance)
+}
+
+/// How many times larger on each side a PNG of `(width, height)` pixels at `scale` pixels per
+/// CSS pixel is drawn: the least whole factor that reaches [`SVG_UNITS_PER_PX`] device units per
+/// CSS pixel, so that the raster snaps vertices to the SVG's grid (2 at the default scale of 2,
+/// where whole output pixels would move a vertex by up to 0.7 px and kink a curve at every
+/// vertex), smaller while the drawn raster would exceed [`MAX_DEVICE_PIXELS`].
+fn supersampling(scale: f64, (width, height): (u32, u32)) -> u32 {
+    let pixels = u64::from(width) * u64::from(height);
+    let wanted = (SVG_UNITS_PER_PX / scale).ceil().max(1.0) as u64;
+    (1..=wanted)
+        .rev()
+        .find(|f| pixels * f * f <= MAX_DEVICE_PIXELS)
+        .unwrap_or(1) as u32
 }
 
 /// SVG device units per CSS pixel: plotters draws on an integer grid, so 4 gives 0.25 px
@@ -168,7 +188,8 @@ where
 }
 
 /// Draws `title` (`size` base text sizes) centred at the top of `area`, if not empty, and
-/// returns the area below it.
+/// returns the area below it. A title wider than the area less its padding is shrunk or
+/// wrapped ([`fit_text`]), never clipped.
 fn titled<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
@@ -181,17 +202,25 @@ where
     if title.is_empty() {
         return Ok(area.clone());
     }
-    let style = m.font(size);
     let pad = f64::from(m.px(0.5));
+    let (width, _) = area.dim_in_pixel();
+    let measure = |text: &str, size: f64| Ok(text_size(area, text, &m.font(size))?.0);
+    let (size, lines) = fit_text(title, size, f64::from(width) - 2.0 * pad, measure)?;
+    let style = m.font(size);
     // plotters' raster text puts the baseline size/2 below a top anchor, so ascenders rise
     // ≈0.3 × size above it (ascent 1901/2384 of the size for DejaVu Sans): start that much lower.
-    let top = (pad + 0.3 * size * m.unit).round() as i32;
-    let (_, text_h) = area.estimate_text_size(title, &style).map_err(draw_err)?;
-    let (width, _) = area.dim_in_pixel();
+    let mut top = (pad + 0.3 * size * m.unit).round() as i32;
     let centred = style.pos(Pos::new(HPos::Center, VPos::Top));
-    area.draw_text(title, &centred, (width as i32 / 2, top))
-        .map_err(draw_err)?;
-    Ok(area.split_vertically(top + text_h as i32 + pad as i32).1)
+    for (i, line) in lines.iter().enumerate() {
+        let (_, text_h) = area.estimate_text_size(line, &style).map_err(draw_err)?;
+        area.draw_text(line, &centred, (width as i32 / 2, top))
+            .map_err(draw_err)?;
+        top += text_h as i32;
+        if i + 1 < lines.len() {
+            top += m.px(LINE_GAP_EM * size) as i32;
+        }
+    }
+    Ok(area.split_vertically(top + pad as i32).1)
 }
 
 /// Draws one panel (title, axes, series in their `looks`, legend) into its grid cell.
@@ -314,6 +343,16 @@ mod tests {
         assert!(polylines_in(&svg, RED) > 20);
         let thick = format!(r##"stroke="#{ORANGE:06X}" stroke-width="12""##);
         assert!(svg.contains(&thick), "thick = 2 × 1.5 px × 4 units");
+    }
+
+    #[test]
+    fn pngs_are_drawn_on_the_svg_grid_within_the_pixel_cap() {
+        assert_eq!(supersampling(2.0, (1920, 960)), 2);
+        assert_eq!(supersampling(1.0, (960, 480)), 4);
+        assert_eq!(supersampling(3.0, (960, 480)), 2);
+        assert_eq!(supersampling(4.0, (960, 480)), 1);
+        // 6000 × 6000 px: 2 × 2 would exceed the cap.
+        assert_eq!(supersampling(2.0, (6000, 6000)), 1);
     }
 
     #[test]

@@ -31,8 +31,11 @@ const ANGLE_STEPS_DEG: [f64; 4] = [15.0, 30.0, 45.0, 90.0];
 const ANGLE_CLEARANCE_EM: f64 = 0.8;
 /// Minimum distance between radius labels along an edge, centre to centre, in base text sizes.
 const RADIUS_SPACING_EM: f64 = 3.0;
-/// Arcs are polylines with a vertex at least every this many CSS pixels along them.
-const ARC_STEP_PX: f64 = 2.0;
+/// Largest distance in CSS pixels between an arc's chords and its circle: a quarter of an
+/// output pixel at the default PNG scale of 2, the tolerance curves are sampled to. Chords this
+/// long (≈ 15 px on a 230 px rim) keep the arcs as smooth as the curves; chords of a pixel or
+/// two, snapped to whole device units, would wobble.
+const ARC_TOLERANCE_PX: f64 = 0.125;
 /// Widest angle label, used to lay out the rim before the angle step is known.
 const TYPICAL_ANGLE_LABEL: &str = "−5π/12";
 
@@ -144,10 +147,11 @@ where
     }
     let (sector, place) = layout(side + 2.0 * gap);
     let to_r = |rho: f64| sector.r * (rho - radius.lo) / (radius.hi - radius.lo);
-    let hairline = f64::from(m.hairline());
     let arc = |r: f64| -> Vec<(i32, i32)> {
-        // An even count, so that the top of the arc is a vertex.
-        let n = ((b * r / (ARC_STEP_PX * hairline)).ceil() as usize).max(4) * 2;
+        // A chord over angle δ strays r (1 − cos δ/2) ≈ r δ²/8 from the circle. An even count,
+        // so that the top of the arc is a vertex.
+        let delta = (8.0 * ARC_TOLERANCE_PX * m.k / r.max(1.0)).sqrt();
+        let n = ((b / delta).ceil() as usize).max(4) * 2;
         (0..=n)
             .map(|i| sector.px(r, -b + 2.0 * b * i as f64 / n as f64))
             .collect()
@@ -289,8 +293,14 @@ where
         match place {
             Place::Over => draw_legend(area, &entries, &covered.0, &tick_font, m)?,
             Place::Right(x) => {
+                // Level with the middle of the sector's height, as far as the area allows.
                 let (w, h) = legend_strip(legend, inset);
-                let strip = area.clone().shrink((x.round() as i32, 0), (w, h));
+                let middle = sector.centre.1 - sector.r / 2.0;
+                let top =
+                    (middle - f64::from(h) / 2.0).clamp(0.0, (height - f64::from(h)).max(0.0));
+                let strip = area
+                    .clone()
+                    .shrink((x.round() as i32, top.round() as i32), (w, h));
                 draw_legend(&strip, &entries, &[], &tick_font, m)?;
             }
             Place::Below(y) => {
@@ -316,7 +326,7 @@ fn legend_strip(size: Option<(i32, i32)>, inset: f64) -> (u32, u32) {
 enum Place {
     /// Over the panel, where it hides least.
     Over,
-    /// In the strip right of this x.
+    /// In the strip right of this x, level with the sector.
     Right(f64),
     /// In the strip below this y.
     Below(f64),
