@@ -7,6 +7,7 @@ use ndfplot::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
 use ndfplot::cmd::render::{self, CanvasOverride, Format, RenderOptions};
 use ndfplot::ndf::{Family, Ndf};
 use ndfplot::plan::{Job, Outputs, plan};
+use ndfplot::provenance::Provenance;
 use ndfplot::sample::{eval_grid_parallel, evaluate_all};
 use ndfplot::series::{Dash, PanelKind, Rgb, XUnit, YScale};
 use std::f64::consts::FRAC_PI_2;
@@ -438,7 +439,12 @@ fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
     };
     let planned = plan(&scenes, outputs, true);
     let evaluated = evaluate_all(&planned).unwrap();
-    let mut figure = render::figure(scene, &planned.drawn.as_ref().unwrap()[0], &evaluated);
+    let mut figure = render::figure(
+        scene,
+        &Provenance::without_spec(),
+        &planned.drawn.as_ref().unwrap()[0],
+        &evaluated,
+    );
     let panel = &mut figure.panels[p];
     panel.legend = false;
     panel.series[s].style.colour = Rgb::from_hex(0x010203);
