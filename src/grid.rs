@@ -79,7 +79,7 @@ pub fn range(
         return Err(GridError::WrongSign);
     }
     let count = (steps + RANGE_COUNT_SLACK).floor() + 1.0;
-    if !(count <= cap as f64) {
+    if count.is_nan() || count > cap as f64 {
         return Err(GridError::TooMany { count, cap });
     }
     let count = count as usize;

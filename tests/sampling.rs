@@ -11,7 +11,7 @@ use ndfplot::provenance::Provenance;
 use ndfplot::sample::{eval_grid_parallel, evaluate_all};
 use ndfplot::series::{Dash, PanelKind, Rgb, XUnit, YScale};
 use std::f64::consts::FRAC_PI_2;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Accuracy bound of Trowbridge–Reitz, relative (the reference tests' bound).
 const TR_TOL: f64 = 1e-13;
@@ -186,7 +186,7 @@ fn temp_dir(name: &str) -> PathBuf {
     dir
 }
 
-fn load(dir: &PathBuf, text: &str) -> Vec<ndfplot::scene::Scene> {
+fn load(dir: &Path, text: &str) -> Vec<ndfplot::scene::Scene> {
     let path = dir.join("s.json");
     std::fs::write(&path, text).unwrap();
     render::load_scenes(
@@ -396,8 +396,9 @@ fn least_squares(rows: &[(Vec<f64>, f64)]) -> Vec<f64> {
         a.swap(i, pivot);
         for r in (0..n).filter(|&r| r != i) {
             let f = a[r][i] / a[i][i];
-            for c in i..=n {
-                a[r][c] -= f * a[i][c];
+            let pivot_row = a[i].clone();
+            for (x, p) in a[r][i..=n].iter_mut().zip(&pivot_row[i..=n]) {
+                *x -= f * p;
             }
         }
     }
