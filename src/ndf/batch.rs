@@ -5,9 +5,11 @@
 //! It must not replace `eval`: the single-point forms stay the accurate reference, and
 //! `tests/sampling.rs` checks this path against them over every family's domain.
 //!
-//! - Angles: θ_i = θ₀ + i Δθ in blocks of ≈ √(2n) points (at most [`BLOCK`]; see [`block_len`]). Each block seeds sin and cos from libm at
-//!   its two ends and rotates by tabulated sin(kΔθ), cos(kΔθ) (libm, once per grid): sin forward from
-//!   the first point, sin(θ_s + kΔθ) = sin θ_s cos kΔθ + cos θ_s sin kΔθ, and cos backward from the last,
+//! - Angles: θ_i = θ₀ + i Δθ in blocks of ≈ √n points (at most [`BLOCK`]; see [`block_len`]). Each
+//!   block seeds sin and cos from libm at its first point θ_s and at θ_e, the next block's first point
+//!   (the grid's last point for the last block), so one `sin_cos` per block, and rotates by tabulated
+//!   sin(kΔθ), cos(kΔθ) (libm, once per grid): sin forward from θ_s,
+//!   sin(θ_s + kΔθ) = sin θ_s cos kΔθ + cos θ_s sin kΔθ, and cos backward from θ_e,
 //!   cos(θ_e − kΔθ) = cos θ_e cos kΔθ + sin θ_e sin kΔθ. For θ, kΔθ ∈ [0, π/2] both are sums of
 //!   non-negative terms: no cancellation, a few ulp relative error at every point, and no error
 //!   accumulates along the block (each point is one rotation from a seed). The seeds' angles are
@@ -27,17 +29,23 @@
 //! SIMD width gives the same bits. Both vector paths require FMA hardware; the portable fallback,
 //! for CPUs without AVX2 and FMA, gets the same bits from a software `fma`, slowly.
 
-/// Most points per block: two libm `sin_cos` seeds per block cost ~0.1 ns per point at this size, and
-/// the block's sin, cos and rotation tables (4 × 4 KiB) stay in L1.
+/// Most points per block: the libm `sin_cos` seed of each block (~30 ns) costs ~0.06 ns per point at
+/// this size, and the block's sin, cos and rotation tables (5 × 4 KiB) stay in L1.
 pub const BLOCK: usize = 512;
 /// Fewest points per block (below it the seeds cost more than the points).
 const MIN_BLOCK: usize = 16;
 
+/// Doubles in an AVX-512 vector (two AVX2 vectors): blocks are a multiple of it, so that only the
+/// grid's last block leaves a scalar remainder (a scalar `exp` costs about as much as a vector one).
+const LANES: usize = 8;
+
 /// Points per block for a grid of `n`: a grid costs one `sin_cos` per table entry (the block length
-/// b) plus two per block (2n/b), least at b = √(2n); 45 for a 1000-point plot, [`BLOCK`] from
-/// 2¹⁷ points on.
+/// b) plus one per block (n/b), least at b = √n, rounded up to a multiple of [`LANES`]; 32 for a
+/// 1000-point plot, [`BLOCK`] from 2¹⁸ points on.
 pub fn block_len(n: usize) -> usize {
-    ((2.0 * n as f64).sqrt() as usize).clamp(MIN_BLOCK, BLOCK)
+    ((n as f64).sqrt() as usize)
+        .next_multiple_of(LANES)
+        .clamp(MIN_BLOCK, BLOCK)
 }
 
 /// 1.5 × 2⁵²: adding it rounds a double of magnitude < 2⁵¹ to an integer held in the low mantissa bits.
@@ -151,22 +159,22 @@ pub fn ln_1p(x: f64) -> f64 {
     if u.is_infinite() { u } else { ln_u }
 }
 
-/// Tabulated rotations cos(kΔθ), sin(kΔθ) for k below the block length.
+/// Tabulated rotations cos(kΔθ), sin(kΔθ) for k from 0 to the block length (both included).
 struct Rotations {
-    cos: [f64; BLOCK],
-    sin: [f64; BLOCK],
+    cos: [f64; BLOCK + 1],
+    sin: [f64; BLOCK + 1],
     /// k as a double (integer-to-double conversions of 64-bit lanes need AVX-512DQ).
-    index: [f64; BLOCK],
+    index: [f64; BLOCK + 1],
 }
 
 impl Rotations {
     fn new(dtheta: f64, len: usize) -> Rotations {
         let mut rotations = Rotations {
-            cos: [0.0; BLOCK],
-            sin: [0.0; BLOCK],
-            index: [0.0; BLOCK],
+            cos: [0.0; BLOCK + 1],
+            sin: [0.0; BLOCK + 1],
+            index: [0.0; BLOCK + 1],
         };
-        for k in 0..len {
+        for k in 0..=len {
             rotations.index[k] = k as f64;
             let (s, c) = (k as f64 * dtheta).sin_cos();
             rotations.sin[k] = s;
@@ -180,22 +188,29 @@ impl Rotations {
 /// recurrence). `kernel` must be branch-free arithmetic for the loop to vectorize.
 #[inline(always)]
 fn fill_blocks(theta0: f64, dtheta: f64, out: &mut [f64], kernel: impl Fn(f64, f64, f64) -> f64) {
-    let len = block_len(out.len());
+    let n = out.len();
+    let len = block_len(n);
     let rotations = Rotations::new(dtheta, len);
+    let angle = |i: usize| theta0 + i as f64 * dtheta;
     let mut sin = [0.0; BLOCK];
     let mut cos = [0.0; BLOCK];
+    let (mut sin_s, mut cos_s) = angle(0).sin_cos();
     for (b, block) in out.chunks_mut(len).enumerate() {
         let first = b * len;
-        let last = block.len() - 1;
-        let (sin_s, cos_s) = (theta0 + first as f64 * dtheta).sin_cos();
-        let (sin_e, cos_e) = (theta0 + (first + last) as f64 * dtheta).sin_cos();
-        let steps = rotations.cos[..block.len()]
-            .iter()
-            .zip(&rotations.sin[..block.len()]);
-        for (s, (&cos_k, &sin_k)) in sin.iter_mut().zip(steps.clone()) {
+        // The seed of cos: the next block's first point, whose sin and cos then seed that block, or
+        // the grid's last point for the last block.
+        let end = (first + len).min(n - 1);
+        let (sin_e, cos_e) = angle(end).sin_cos();
+        let steps_to_end = end - first;
+        let rotate = |k_max: usize| rotations.cos[..=k_max].iter().zip(&rotations.sin[..=k_max]);
+        for (s, (&cos_k, &sin_k)) in sin.iter_mut().zip(rotate(block.len() - 1)) {
             *s = sin_s * cos_k + cos_s * sin_k;
         }
-        for (c, (&cos_k, &sin_k)) in cos.iter_mut().zip(steps.rev()) {
+        for (c, (&cos_k, &sin_k)) in cos
+            .iter_mut()
+            .zip(rotate(steps_to_end).rev())
+            .take(block.len())
+        {
             *c = cos_e * cos_k + sin_e * sin_k;
         }
         let first_float = first as f64;
@@ -205,6 +220,7 @@ fn fill_blocks(theta0: f64, dtheta: f64, out: &mut [f64], kernel: impl Fn(f64, f
         {
             *o = kernel(theta0 + (first_float + k) * dtheta, s, c);
         }
+        (sin_s, cos_s) = (sin_e, cos_e);
     }
 }
 
