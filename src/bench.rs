@@ -8,7 +8,7 @@
 use crate::adaptive::{self, Frame, PixelMap};
 use crate::math::quad::integrate;
 use crate::ndf::{Abc, Family, Ndf, TorranceSparrow};
-use crate::sample::eval_grid_parallel;
+use crate::sample::{PARALLEL_CHUNK, eval_grid_parallel};
 use crate::series::YScale;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::time::{Duration, Instant};
@@ -55,13 +55,21 @@ pub struct Settings {
 
 impl Settings {
     /// The settings of `ndfplot bench`: 50 ms batches, median of 5, grids of 2²⁰ points (8 MiB:
-    /// beyond the caches, so that the memory write is part of a sample's cost).
-    pub const DEFAULT: Settings = Settings {
-        min_batch: Duration::from_millis(50),
-        batches: 5,
-        throughput_points: 1 << 20,
-    };
+    /// beyond the per-core caches, so that the memory write is part of a sample's cost), or of two
+    /// [`PARALLEL_CHUNK`] tasks per rayon thread where that is more, so that the all-threads rows
+    /// keep every thread busy.
+    pub fn standard() -> Settings {
+        Settings {
+            min_batch: Duration::from_millis(50),
+            batches: 5,
+            throughput_points: THROUGHPUT_POINTS
+                .max(2 * rayon::current_num_threads() * PARALLEL_CHUNK),
+        }
+    }
 }
+
+/// The smallest throughput grid of `ndfplot bench`.
+const THROUGHPUT_POINTS: usize = 1 << 20;
 
 /// One measured case.
 #[derive(Debug, Clone, PartialEq)]
