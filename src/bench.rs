@@ -7,6 +7,7 @@
 
 use crate::adaptive::{self, Frame, PixelMap};
 use crate::math::quad::integrate;
+use crate::math::special::upper_gamma_scaled;
 use crate::ndf::{Abc, Family, Ndf, TorranceSparrow};
 use crate::sample::{PARALLEL_CHUNK, eval_grid_parallel};
 use crate::series::YScale;
@@ -274,6 +275,16 @@ const ABC_REFERENCE: [(f64, f64, f64); 4] = [
     (0.0212, 1000.0, 0.282651269230233),
     (3.0, 0.5, 2.32710566932577),
 ];
+/// SGD check values: (a₁, a₂, e^{a₁} Γ(1 − a₂, a₁)), the normalizing factor of its D(0), from mpmath 1.3
+/// at 40 digits (`exp(x) * gammainc(s, x)` at the exact doubles), rounded to doubles: the notebook's
+/// s = 1 − a₂ = 0.5, 0 (E₁) and −0.5 at small and moderate a₁, and a₁ = 10.
+const SGD_REFERENCE: [(f64, f64, f64); 5] = [
+    (1.0, 0.5, 0.7578721561413121),
+    (0.5, 1.0, 0.9229106324837305),
+    (0.2, 1.5, 2.18996595078266),
+    (0.1, 0.5, 1.2825093897118496),
+    (10.0, 1.5, 0.027773264582582575),
+];
 /// Relative tolerances of the quadrature route.
 const QUAD_TOLERANCES: [f64; 4] = [1e-6, 1e-9, 1e-12, 1e-14];
 /// The references carry 15 significant digits: errors below this are not resolved.
@@ -285,6 +296,13 @@ fn quadrature(u: impl Fn(f64) -> f64, rel_tol: f64) -> f64 {
         .map_or(f64::NAN, |v| 2.0 * PI * v)
 }
 
+/// e^x Γ(s, x) = ∫₀^∞ (x + u)^{s−1} e^{−u} du = ∫₀¹ (x − ln w)^{s−1} dw (w = e^{−u}) by adaptive
+/// Gauss–Kronrod at `rel_tol` (the nodes are interior, so the integrable end w = 0 is never evaluated);
+/// NaN if it fails.
+pub fn sgd_gamma_quadrature(s: f64, x: f64, rel_tol: f64) -> f64 {
+    integrate(|w| (x - w.ln()).powf(s - 1.0), 0.0, 1.0, rel_tol).unwrap_or(f64::NAN)
+}
+
 /// MATH.md's closed form of the ABC normalization, as the notebook wrote it:
 /// N = 2π (U^{2−a₂} − 1 + a₁(a₂ − 2)) / (a₁² (a₂ − 2)(a₂ − 1)), U = 1 + a₁ (0/0 at a₂ = 1, 2).
 pub fn abc_closed_form(a1: f64, a2: f64) -> f64 {
@@ -292,7 +310,8 @@ pub fn abc_closed_form(a1: f64, a2: f64) -> f64 {
     2.0 * PI * (u.powf(2.0 - a2) - 1.0 + a1 * (a2 - 2.0)) / (a1 * a1 * (a2 - 2.0) * (a2 - 1.0))
 }
 
-/// Section (b): every normalization route against MATH.md's 15-digit values.
+/// Section (b): every normalization route against MATH.md's 15-digit values (Torrance–Sparrow, ABC)
+/// and mpmath's (SGD's e^{a₁} Γ(1 − a₂, a₁)).
 pub fn normalization(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
     let mut rows = Vec::new();
     let mut push = |case: String, method: &str, setting: f64, f: &dyn Fn() -> f64, want: f64| {
@@ -362,6 +381,25 @@ pub fn normalization(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
                         tol,
                     )
                 },
+                want,
+            );
+        }
+    }
+    for (a1, a2, want) in SGD_REFERENCE {
+        let case = format!("{{\"ndf\":\"sgd\",\"alpha_sgd1\":{a1:?},\"alpha_sgd2\":{a2:?}}}");
+        push(
+            case.clone(),
+            "series_continued_fraction",
+            0.0,
+            &|| upper_gamma_scaled(1.0 - a2, a1),
+            want,
+        );
+        for tol in QUAD_TOLERANCES {
+            push(
+                case.clone(),
+                "quadrature",
+                tol,
+                &|| sgd_gamma_quadrature(1.0 - a2, a1, tol),
                 want,
             );
         }
@@ -511,6 +549,22 @@ mod tests {
         }
         let text = csv(&rows);
         assert!(text.starts_with("section,case,method,setting,samples,seconds,error\nthroughput,\"phong\",eval_1_thread,1.0,1000,0.0,0.0\n"), "{text}");
+    }
+
+    #[test]
+    fn both_sgd_gamma_routes_match_mpmath() {
+        for (a1, a2, want) in SGD_REFERENCE {
+            let s = 1.0 - a2;
+            for got in [
+                upper_gamma_scaled(s, a1),
+                sgd_gamma_quadrature(s, a1, QUAD_TOLERANCES[3]),
+            ] {
+                assert!(
+                    ((got - want) / want).abs() <= crate::math::tolerance::REL_TOL_SPECIAL,
+                    "a1 = {a1}, a2 = {a2}: {got} vs {want}"
+                );
+            }
+        }
     }
 
     #[test]
