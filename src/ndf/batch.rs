@@ -40,7 +40,7 @@ const MIN_BLOCK: usize = 16;
 const LANES: usize = 8;
 
 /// Points per block for a grid of `n`: a grid costs one `sin_cos` per table entry (the block length
-/// b) plus one per block (n/b), least at b = √n, rounded up to a multiple of [`LANES`]; 32 for a
+/// b) plus one per block (n/b), least at b = √n, rounded up to a multiple of 8 (`LANES`); 32 for a
 /// 1000-point plot, [`BLOCK`] from 2¹⁸ points on.
 pub fn block_len(n: usize) -> usize {
     ((n as f64).sqrt() as usize)
