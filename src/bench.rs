@@ -7,8 +7,9 @@
 
 use crate::adaptive::{self, Frame, PixelMap};
 use crate::math::quad::integrate;
+use crate::math::special::upper_gamma_scaled;
 use crate::ndf::{Abc, Family, Ndf, TorranceSparrow};
-use crate::sample::eval_grid_parallel;
+use crate::sample::{PARALLEL_CHUNK, eval_grid_parallel};
 use crate::series::YScale;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::time::{Duration, Instant};
@@ -55,13 +56,21 @@ pub struct Settings {
 
 impl Settings {
     /// The settings of `ndfplot bench`: 50 ms batches, median of 5, grids of 2²⁰ points (8 MiB:
-    /// beyond the caches, so that the memory write is part of a sample's cost).
-    pub const DEFAULT: Settings = Settings {
-        min_batch: Duration::from_millis(50),
-        batches: 5,
-        throughput_points: 1 << 20,
-    };
+    /// beyond the per-core caches, so that the memory write is part of a sample's cost), or of two
+    /// [`PARALLEL_CHUNK`] tasks per rayon thread where that is more, so that the all-threads rows
+    /// keep every thread busy.
+    pub fn standard() -> Settings {
+        Settings {
+            min_batch: Duration::from_millis(50),
+            batches: 5,
+            throughput_points: THROUGHPUT_POINTS
+                .max(2 * rayon::current_num_threads() * PARALLEL_CHUNK),
+        }
+    }
 }
+
+/// The smallest throughput grid of `ndfplot bench`.
+const THROUGHPUT_POINTS: usize = 1 << 20;
 
 /// One measured case.
 #[derive(Debug, Clone, PartialEq)]
@@ -266,6 +275,16 @@ const ABC_REFERENCE: [(f64, f64, f64); 4] = [
     (0.0212, 1000.0, 0.282651269230233),
     (3.0, 0.5, 2.32710566932577),
 ];
+/// SGD check values: (a₁, a₂, e^{a₁} Γ(1 − a₂, a₁)), the normalizing factor of its D(0), from mpmath 1.3
+/// at 40 digits (`exp(x) * gammainc(s, x)` at the exact doubles), rounded to doubles: the notebook's
+/// s = 1 − a₂ = 0.5, 0 (E₁) and −0.5 at small and moderate a₁, and a₁ = 10.
+const SGD_REFERENCE: [(f64, f64, f64); 5] = [
+    (1.0, 0.5, 0.7578721561413121),
+    (0.5, 1.0, 0.9229106324837305),
+    (0.2, 1.5, 2.18996595078266),
+    (0.1, 0.5, 1.2825093897118496),
+    (10.0, 1.5, 0.027773264582582575),
+];
 /// Relative tolerances of the quadrature route.
 const QUAD_TOLERANCES: [f64; 4] = [1e-6, 1e-9, 1e-12, 1e-14];
 /// The references carry 15 significant digits: errors below this are not resolved.
@@ -277,6 +296,13 @@ fn quadrature(u: impl Fn(f64) -> f64, rel_tol: f64) -> f64 {
         .map_or(f64::NAN, |v| 2.0 * PI * v)
 }
 
+/// e^x Γ(s, x) = ∫₀^∞ (x + u)^{s−1} e^{−u} du = ∫₀¹ (x − ln w)^{s−1} dw (w = e^{−u}) by adaptive
+/// Gauss–Kronrod at `rel_tol` (the nodes are interior, so the integrable end w = 0 is never evaluated);
+/// NaN if it fails.
+pub fn sgd_gamma_quadrature(s: f64, x: f64, rel_tol: f64) -> f64 {
+    integrate(|w| (x - w.ln()).powf(s - 1.0), 0.0, 1.0, rel_tol).unwrap_or(f64::NAN)
+}
+
 /// MATH.md's closed form of the ABC normalization, as the notebook wrote it:
 /// N = 2π (U^{2−a₂} − 1 + a₁(a₂ − 2)) / (a₁² (a₂ − 2)(a₂ − 1)), U = 1 + a₁ (0/0 at a₂ = 1, 2).
 pub fn abc_closed_form(a1: f64, a2: f64) -> f64 {
@@ -284,43 +310,46 @@ pub fn abc_closed_form(a1: f64, a2: f64) -> f64 {
     2.0 * PI * (u.powf(2.0 - a2) - 1.0 + a1 * (a2 - 2.0)) / (a1 * a1 * (a2 - 2.0) * (a2 - 1.0))
 }
 
-/// Section (b): every normalization route against MATH.md's 15-digit values.
+/// Section (b): every normalization route against MATH.md's 15-digit values (Torrance–Sparrow, ABC)
+/// and mpmath's (SGD's e^{a₁} Γ(1 − a₂, a₁)).
 pub fn normalization(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
     let mut rows = Vec::new();
-    let mut push = |case: String, method: &str, setting: f64, f: &dyn Fn() -> f64, want: f64| {
-        let seconds = time(clock, settings, &mut || {
-            std::hint::black_box(f());
-        });
-        let error = ((f() - want) / want).abs();
-        let error = if error.is_finite() { error } else { 1.0 };
-        rows.push(Row {
-            section: "normalization",
-            case,
-            method: method.into(),
-            setting,
-            samples: 1,
-            seconds,
-            error,
-        });
-    };
+    // One row per setting of a route: the quadrature tolerances, or 0 for a route without one.
+    let mut push =
+        |case: &str, method: &str, route_settings: &[f64], f: &dyn Fn(f64) -> f64, want: f64| {
+            for &setting in route_settings {
+                let seconds = time(clock, settings, &mut || {
+                    std::hint::black_box(f(setting));
+                });
+                let error = ((f(setting) - want) / want).abs();
+                let error = if error.is_finite() { error } else { 1.0 };
+                rows.push(Row {
+                    section: "normalization",
+                    case: case.to_string(),
+                    method: method.into(),
+                    setting,
+                    samples: 1,
+                    seconds,
+                    error,
+                });
+            }
+        };
     for (alpha, want) in TS_REFERENCE {
         let case = format!("{{\"ndf\":\"torrance_sparrow\",\"alpha_ts\":{alpha:?}}}");
         push(
-            case.clone(),
+            &case,
             "dawson_faddeeva",
-            0.0,
-            &|| TorranceSparrow::new(alpha).map_or(f64::NAN, |d| d.normalization()),
+            &[0.0],
+            &|_| TorranceSparrow::new(alpha).map_or(f64::NAN, |d| d.normalization()),
             want,
         );
-        for tol in QUAD_TOLERANCES {
-            push(
-                case.clone(),
-                "quadrature",
-                tol,
-                &|| quadrature(|t| (-(t / alpha).powi(2)).exp(), tol),
-                want,
-            );
-        }
+        push(
+            &case,
+            "quadrature",
+            &QUAD_TOLERANCES,
+            &|tol| quadrature(|t| (-(t / alpha).powi(2)).exp(), tol),
+            want,
+        );
     }
     for (a1, a2, want) in ABC_REFERENCE {
         let case = format!("{{\"ndf\":\"abc\",\"alpha_abc1\":{a1:?},\"alpha_abc2\":{a2:?}}}");
@@ -330,33 +359,48 @@ pub fn normalization(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
             "stable_exprel"
         };
         push(
-            case.clone(),
+            &case,
             stable,
-            0.0,
-            &|| Abc::new(a1, a2).map_or(f64::NAN, |d| d.normalization()),
+            &[0.0],
+            &|_| Abc::new(a1, a2).map_or(f64::NAN, |d| d.normalization()),
             want,
         );
         push(
-            case.clone(),
+            &case,
             "closed_form",
-            0.0,
-            &|| abc_closed_form(a1, a2),
+            &[0.0],
+            &|_| abc_closed_form(a1, a2),
             want,
         );
-        for tol in QUAD_TOLERANCES {
-            push(
-                case.clone(),
-                "quadrature",
-                tol,
-                &|| {
-                    quadrature(
-                        |t| (-a2 * (a1 * 2.0 * (0.5 * t).sin().powi(2)).ln_1p()).exp(),
-                        tol,
-                    )
-                },
-                want,
-            );
-        }
+        push(
+            &case,
+            "quadrature",
+            &QUAD_TOLERANCES,
+            &|tol| {
+                quadrature(
+                    |t| (-a2 * (a1 * 2.0 * (0.5 * t).sin().powi(2)).ln_1p()).exp(),
+                    tol,
+                )
+            },
+            want,
+        );
+    }
+    for (a1, a2, want) in SGD_REFERENCE {
+        let case = format!("{{\"ndf\":\"sgd\",\"alpha_sgd1\":{a1:?},\"alpha_sgd2\":{a2:?}}}");
+        push(
+            &case,
+            "series_continued_fraction",
+            &[0.0],
+            &|_| upper_gamma_scaled(1.0 - a2, a1),
+            want,
+        );
+        push(
+            &case,
+            "quadrature",
+            &QUAD_TOLERANCES,
+            &|tol| sgd_gamma_quadrature(1.0 - a2, a1, tol),
+            want,
+        );
     }
     rows
 }
@@ -503,6 +547,22 @@ mod tests {
         }
         let text = csv(&rows);
         assert!(text.starts_with("section,case,method,setting,samples,seconds,error\nthroughput,\"phong\",eval_1_thread,1.0,1000,0.0,0.0\n"), "{text}");
+    }
+
+    #[test]
+    fn both_sgd_gamma_routes_match_mpmath() {
+        for (a1, a2, want) in SGD_REFERENCE {
+            let s = 1.0 - a2;
+            for got in [
+                upper_gamma_scaled(s, a1),
+                sgd_gamma_quadrature(s, a1, QUAD_TOLERANCES[3]),
+            ] {
+                assert!(
+                    ((got - want) / want).abs() <= crate::math::tolerance::REL_TOL_SPECIAL,
+                    "a1 = {a1}, a2 = {a2}: {got} vs {want}"
+                );
+            }
+        }
     }
 
     #[test]

@@ -275,9 +275,11 @@ pub struct CheckArgs {
     deviation from the true curve in px, narrow and broad lobes; uniform_needed: the fewest\n                 \
     uniform samples within 0.25 px\n  \
     normalization  Torrance-Sparrow (Dawson/Faddeeva vs quadrature), ABC (stable vs closed form vs\n                 \
-    quadrature): relative error against MATH.md's 15-digit values\n  \
-    throughput     D values written per second on a 2^20-point grid: eval on one thread, the batch\n                 \
-    path on one thread and on all threads (error: largest relative difference from eval)\n\n\
+    quadrature): relative error against MATH.md's 15-digit values; SGD's e^a1 Gamma(1 - a2, a1)\n                 \
+    (series and continued fraction vs quadrature) against mpmath\n  \
+    throughput     D values written per second on a 2^20-point grid (two 2^18-point tasks per thread\n                 \
+    if that is more): eval on one thread, the batch path on one thread and on all threads\n                 \
+    (error: largest relative difference from eval)\n\n\
     Times are medians of 5 batches of at least 50 ms; machines shared with other work give noisy numbers.\n\n\
     Example:\n  \
     ndfplot bench -o plots/bench"

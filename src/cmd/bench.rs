@@ -30,7 +30,7 @@ const PALETTE: [u32; 6] = [0x268BD2, 0xDC322F, 0x859900, 0xB58900, 0x6C71C4, 0x2
 
 /// Runs every measurement with the system clock and writes the CSV and the figure into `dir`.
 pub fn run(dir: &Path) -> Result<Vec<PathBuf>> {
-    let rows = bench::run(&bench::SystemClock::new(), &bench::Settings::DEFAULT);
+    let rows = bench::run(&bench::SystemClock::new(), &bench::Settings::standard());
     write_outputs(dir, &rows)
 }
 

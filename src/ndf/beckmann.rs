@@ -57,9 +57,10 @@ impl Beckmann {
 
     /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), on the batch path (see [`batch`]) as
     /// D = exp(ln D(0) − (tan θ/α_b)²) · (1 + tan²θ)². Unlike the log-space form of [`eval`](Self::eval)
-    /// this needs no logarithm; it loses nothing in the domain: exp(…) is subnormal only where
-    /// tan²θ/α_b² > 700, and (1 + tan²θ)² ≤ 7.5e64 brings D back above 1e-280 only for
-    /// tan θ > 1e7, where tan²θ/α_b² ≥ 1e6 (α_b ≤ 1e4) and D is 0 anyway.
+    /// this needs no logarithm; it loses nothing in the domain: exp(…) falls below the normal range
+    /// (where [`batch::exp`] returns 0) only where tan²θ/α_b² > 688, and (1 + tan²θ)² ≤ 7.5e64
+    /// brings D back above 1e-280 only for tan θ > 1e7, where tan²θ/α_b² ≥ 1e6 (α_b ≤ 1e4) and D
+    /// is 0 anyway.
     pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
         let (ln_peak, inv_alpha_b) = (self.ln_peak, 1.0 / self.alpha_b);
         batch::fill_grid(
