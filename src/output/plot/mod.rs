@@ -127,7 +127,11 @@ pub fn png(figure: &Figure) -> Result<Vec<u8>, PlotError> {
         let root = BitMapBackend::with_buffer(&mut rgb, drawn).into_drawing_area();
         draw_figure(&root, figure, scale * f64::from(factor))?;
     }
-    encode_png(&downsample(rgb, drawn, factor), (width, height), &figure.provenance)
+    encode_png(
+        &downsample(rgb, drawn, factor),
+        (width, height),
+        &figure.provenance,
+    )
 }
 
 /// How many times larger on each side a PNG of `(width, height)` pixels at `scale` pixels per
