@@ -44,7 +44,7 @@ pub enum Command {
         ndfplot man | gzip > /usr/local/share/man/man1/ndfplot.1.gz")]
     Man,
     /// Measure run time against error (drawing, normalization routes, throughput); writes
-    /// bench.csv and bench.svg.
+    /// bench.csv, bench.svg and bench.png.
     Bench(BenchArgs),
 }
 
@@ -285,7 +285,7 @@ pub struct CheckArgs {
     ndfplot bench -o plots/bench"
 )]
 pub struct BenchArgs {
-    /// Output folder (created if missing) for bench.csv and bench.svg.
+    /// Output folder (created if missing) for bench.csv, bench.svg and bench.png.
     #[arg(short, long, value_name = "DIR", default_value = "plots/bench")]
     pub out: PathBuf,
 }

@@ -1,5 +1,5 @@
 //! `ndfplot bench`: measures run time against error (see [`crate::bench`]) and writes
-//! `<DIR>/bench.csv` and the log–log figure `<DIR>/bench.svg`.
+//! `<DIR>/bench.csv` and the log–log figure `<DIR>/bench.svg` and `<DIR>/bench.png`.
 //!
 //! Owns the figure of the measurements; the measuring is the library's, the writing `output::write`'s.
 //! Its outputs are timings: never part of the catalogue or of `render --check`.
@@ -34,15 +34,18 @@ pub fn run(dir: &Path) -> Result<Vec<PathBuf>> {
     write_outputs(dir, &rows)
 }
 
-/// Writes `bench.csv` and `bench.svg` of `rows` into `dir`.
+/// Writes `bench.csv`, `bench.svg` and `bench.png` of `rows` into `dir`.
 pub fn write_outputs(dir: &Path, rows: &[Row]) -> Result<Vec<PathBuf>> {
-    let svg = plot::svg(&figure(rows))
-        .map_err(|e| Error::Numerics(format!("bench: drawing failed: {e}")))?;
+    let figure = figure(rows);
+    let drawing_failed = |e| Error::Numerics(format!("bench: drawing failed: {e}"));
+    let svg = plot::svg(&figure).map_err(drawing_failed)?;
+    let png = plot::png(&figure).map_err(drawing_failed)?;
     write::ensure_dir(dir)?;
     let mut written = Vec::new();
     for (name, bytes) in [
         ("bench.csv", bench::csv(rows).into_bytes()),
         ("bench.svg", svg),
+        ("bench.png", png),
     ] {
         write::remove_stale(dir, name)?;
         write::write_atomic(dir, name, &bytes)?;
@@ -214,5 +217,48 @@ pub fn figure(rows: &[Row]) -> Figure {
                 throughput,
             ),
         ],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(section: &'static str, case: &str, method: &str, setting: f64, error: f64) -> Row {
+        Row {
+            section,
+            case: case.into(),
+            method: method.into(),
+            setting,
+            samples: 1000,
+            seconds: 1e-4 * setting,
+            error,
+        }
+    }
+
+    #[test]
+    fn outputs_are_the_table_and_the_figure_as_svg_and_png() {
+        let curve = r#"{"ndf":"phong","alpha_p":2048.0}"#;
+        let rows = [
+            row("drawing", curve, "uniform", 16.0, 16.5),
+            row("drawing", curve, "uniform", 1024.0, 0.1),
+            row("drawing", curve, "adaptive", 0.25, 0.2),
+            row("normalization", "abc", "stable", 1.0, 1e-16),
+            row("throughput", "beckmann", "batch_1_thread", 1.0, 1e-15),
+        ];
+        let dir = std::env::temp_dir().join(format!("ndfplot-bench-out-{}", std::process::id()));
+        let written = write_outputs(&dir, &rows).unwrap();
+        let names: Vec<String> = written
+            .iter()
+            .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(names, ["bench.csv", "bench.svg", "bench.png"]);
+        let read = |name: &str| std::fs::read(dir.join(name)).unwrap();
+        assert!(
+            read("bench.csv").starts_with(b"section,case,method,setting,samples,seconds,error\n")
+        );
+        assert!(read("bench.svg").starts_with(b"<svg"));
+        assert!(read("bench.png").starts_with(b"\x89PNG\r\n\x1a\n"));
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }
