@@ -422,10 +422,12 @@ pub(super) fn choose_outside(
     }
 }
 
-/// Top-left corner for a legend box of `size` in a plot area of `plot` pixels, and the curve
-/// length it hides there: among [`LEGEND_HEIGHTS`] heights along the right, left and centre,
-/// the position hiding the least curve length (`pieces`, in plot pixels). Ties go to the
-/// higher, then right, left, centre.
+/// Top-left corner for a legend box of `size` in a plot area of `plot` pixels, `inset` from
+/// its edges, and the curve length it hides there: among [`LEGEND_HEIGHTS`] heights along the
+/// right, left and centre, the position hiding the least curve length (`pieces`, in plot
+/// pixels). A curve within half the inset of the box counts as hidden, so that none runs
+/// along its border; curves along the plot's frame stay clear. Ties go to the higher, then
+/// right, left, centre.
 pub(super) fn legend_position(
     (plot_w, plot_h): (f64, f64),
     (box_w, box_h): (f64, f64),
@@ -441,17 +443,19 @@ pub(super) fn legend_position(
     let rows: Vec<i32> = (0..LEGEND_HEIGHTS)
         .map(|i| inset + (bottom - inset) * i / (LEGEND_HEIGHTS - 1))
         .collect();
+    let clearance = f64::from(inset) / 2.0;
     // Hidden curve length per position, row-major; rows and columns reject segments separately.
     let mut hidden = vec![0.0; rows.len() * columns.len()];
     for pair in pieces.iter().flat_map(|piece| piece.windows(2)) {
         let ((ax, ay), (bx, by)) = (pair[0], pair[1]);
         for (r, &y0) in rows.iter().enumerate() {
-            let (y_top, y_bottom) = (f64::from(y0), f64::from(y0 + box_h));
+            let (y_top, y_bottom) = (f64::from(y0) - clearance, f64::from(y0 + box_h) + clearance);
             if ay.max(by) < y_top || ay.min(by) > y_bottom {
                 continue;
             }
             for (c, &x0) in columns.iter().enumerate() {
-                let (x_left, x_right) = (f64::from(x0), f64::from(x0 + box_w));
+                let (x_left, x_right) =
+                    (f64::from(x0) - clearance, f64::from(x0 + box_w) + clearance);
                 if ax.max(bx) < x_left || ax.min(bx) > x_right {
                     continue;
                 }
@@ -503,12 +507,13 @@ mod tests {
             legend_position((400.0, 300.0), size, 10.0, &[]),
             ((290, 10), 0.0)
         );
-        // Curves everywhere: the least hidden, and how much.
+        // Curves everywhere, 10 px apart: six run through the box and the 5 px clearance
+        // around it, 110 px each.
         let rows: Vec<Vec<(f64, f64)>> = (0..30)
             .map(|i| vec![(0.0, f64::from(i) * 10.0), (400.0, f64::from(i) * 10.0)])
             .collect();
         let ((_, _), hidden) = legend_position((400.0, 300.0), size, 10.0, &rows);
-        assert_eq!(hidden, 5.0 * 100.0);
+        assert!((hidden - 6.0 * 110.0).abs() < 1e-9, "{hidden}");
     }
 
     #[test]
