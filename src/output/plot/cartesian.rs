@@ -10,6 +10,7 @@ use super::legend::{Legend, Outside, Sample, Side};
 use super::style::{AXIS_LABEL_EM, Metrics, stroke};
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
+use crate::scene::DEFAULT_ASPECT_RATIO;
 use crate::series::{Mark, Panel, Series, YScale};
 
 /// Bar width as a fraction of the median spacing of a series' x values.
@@ -107,8 +108,6 @@ const LABEL_GAP_EM: f64 = 0.5;
 /// Smallest plot area an outside legend may leave, as the width of the largest rectangle of
 /// the default panel aspect 1/φ inside it, in base text sizes: two x tick spacings.
 const MIN_PLOT_EM: f64 = 2.0 * X_TICK_SPACING_EM;
-/// The golden ratio φ: panels default to an aspect (height/width) of 1/φ.
-const PHI: f64 = 1.618_033_988_749_895;
 
 /// The layout of a chart in an area: its axes, the sizes of the tick-label areas and of the
 /// plot area, in device pixels.
@@ -179,7 +178,7 @@ impl Frame {
         let (top, right, side) = margins(m);
         let plot_w = w - f64::from(side + right + self.y_area);
         let plot_h = h - f64::from(top + side + self.x_area);
-        let golden = plot_w.min(PHI * plot_h);
+        let golden = plot_w.min(plot_h / DEFAULT_ASPECT_RATIO);
         (golden >= MIN_PLOT_EM * m.unit).then_some(golden)
     }
 }
