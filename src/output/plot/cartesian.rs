@@ -6,10 +6,11 @@ use plotters::prelude::*;
 
 use super::axis::{Axis, median_spacing, x_display};
 use super::clip::visible_pieces;
-use super::legend::{Sample, draw_legend};
+use super::legend::{Legend, Outside, Sample, Side};
 use super::style::{AXIS_LABEL_EM, Metrics, stroke};
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
+use crate::scene::DEFAULT_ASPECT_RATIO;
 use crate::series::{Mark, Panel, Series, YScale};
 
 /// Bar width as a fraction of the median spacing of a series' x values.
@@ -21,7 +22,8 @@ pub(super) const LONE_BAR_FRACTION: f64 = 0.05;
 pub(super) const X_TICK_SPACING_EM: f64 = 4.0;
 pub(super) const Y_TICK_SPACING_EM: f64 = 3.0;
 
-/// Draws a 2D panel: axes, each series in its mark and look, legend.
+/// Draws a 2D panel: axes, each series in its mark and look, legend (inside the plot area
+/// or beside or below it, by the rule of [`super::legend`]).
 pub(super) fn draw_cartesian<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     panel: &Panel,
@@ -31,43 +33,183 @@ pub(super) fn draw_cartesian<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let tick_font = m.font(1.0);
-    let label_font = m.font(AXIS_LABEL_EM);
-    let tick_len = m.px(0.35);
-    let (margin_top, margin_right, margin_side) = (m.px(0.8), m.px(1.4), m.px(0.4));
-    let (_, tick_h) = area.estimate_text_size("0", &tick_font).map_err(draw_err)?;
-    let (_, label_h) = area
-        .estimate_text_size("θ", &label_font)
-        .map_err(draw_err)?;
-    let label_gap = m.px(0.5);
-    let x_area = 2 * tick_len + tick_h + label_gap + label_h;
-
-    // y ticks first: their widest label decides the width left for the x axis.
+    let legend = Legend::of_panel(area, panel, looks, |s| Sample::of(s.style.mark), m)?;
     let (width, height) = area.dim_in_pixel();
-    let plot_h = height
-        .saturating_sub(margin_top + margin_side + x_area)
-        .max(1);
-    let y = Axis::y(panel, f64::from(plot_h) / (Y_TICK_SPACING_EM * m.unit));
-    let mut widest = 0;
-    for &tick in &y.ticks {
-        let (w, _) = area
-            .estimate_text_size(&y.label(tick), &tick_font)
-            .map_err(draw_err)?;
-        widest = widest.max(w);
-    }
-    let y_area = 2 * tick_len + widest + label_gap + label_h;
-    let plot_w = width
-        .saturating_sub(margin_side + margin_right + y_area)
-        .max(1);
-    let x = Axis::x(panel, f64::from(plot_w) / (X_TICK_SPACING_EM * m.unit));
+    let full = Frame::fit(area, (width, height), panel, m)?;
+    let outside = match &legend {
+        Some(legend)
+            if legend
+                .inside(full.plot_f(), &covered(panel, &full, m), m)
+                .is_none() =>
+        {
+            let dims = (f64::from(width), f64::from(height));
+            Some(legend.outside(dims, m, |w, h| full.score((w, h), m)))
+        }
+        _ => None,
+    };
+    let (chart_area, frame) = match outside {
+        None => (area.clone(), full),
+        Some(Outside { side, strip, .. }) => {
+            let chart_area = match side {
+                Side::Right => area.split_horizontally(width - strip.0.ceil() as u32).0,
+                Side::Below => area.split_vertically(height - strip.1.ceil() as u32).0,
+            };
+            let frame = Frame::fit(&chart_area, chart_area.dim_in_pixel(), panel, m)?;
+            (chart_area, frame)
+        }
+    };
+    let plot = draw_chart(&chart_area, panel, looks, &frame, m)?;
 
+    let Some(legend) = legend else {
+        return Ok(());
+    };
+    match outside {
+        None => {
+            let (pw, ph) = plot.dim_in_pixel();
+            let covered = covered(
+                panel,
+                &Frame {
+                    plot: (pw, ph),
+                    ..frame
+                },
+                m,
+            );
+            legend.draw_over(&plot, &covered, m)
+        }
+        Some(Outside { side, setting, .. }) => {
+            let (box_w, box_h) = legend.size(setting, m);
+            let inset = Legend::inset(m);
+            let (width, height) = (f64::from(width), f64::from(height));
+            let (left, top) = frame.origin(m);
+            let (pw, ph) = frame.plot_f();
+            // Level with the middle of the plot area, or centred under it, inside the area.
+            let at = match side {
+                Side::Right => (
+                    width - inset - box_w,
+                    (top + (ph - box_h) / 2.0).clamp(inset, (height - inset - box_h).max(inset)),
+                ),
+                Side::Below => (
+                    (left + (pw - box_w) / 2.0).clamp(inset, (width - inset - box_w).max(inset)),
+                    height - inset - box_h,
+                ),
+            };
+            legend.draw(area, at, setting, m)
+        }
+    }
+}
+
+/// Margins around the chart: above the plot area, right of it (room for the last x tick
+/// label), and left of the y label and below the x label, in base text sizes.
+const MARGIN_EM: (f64, f64, f64) = (0.8, 1.4, 0.4);
+/// Length of the tick marks and the gap between tick labels and axis labels, in base text
+/// sizes.
+const TICK_EM: f64 = 0.35;
+const LABEL_GAP_EM: f64 = 0.5;
+/// Smallest plot area an outside legend may leave, as the width of the largest rectangle of
+/// the default panel aspect 1/φ inside it, in base text sizes: two x tick spacings.
+const MIN_PLOT_EM: f64 = 2.0 * X_TICK_SPACING_EM;
+
+/// The layout of a chart in an area: its axes, the sizes of the tick-label areas and of the
+/// plot area, in device pixels.
+#[derive(Clone)]
+struct Frame {
+    x: Axis,
+    y: Axis,
+    x_area: u32,
+    y_area: u32,
+    plot: (u32, u32),
+}
+
+impl Frame {
+    /// The chart of `panel` in an area of `(width, height)` pixels: y ticks first, as their
+    /// widest label decides the width left for the x axis.
+    fn fit<DB: DrawingBackend>(
+        area: &DrawingArea<DB, Shift>,
+        (width, height): (u32, u32),
+        panel: &Panel,
+        m: &Metrics,
+    ) -> Result<Frame, PlotError>
+    where
+        DB::ErrorType: 'static,
+    {
+        let tick_font = m.font(1.0);
+        let (_, tick_h) = area.estimate_text_size("0", &tick_font).map_err(draw_err)?;
+        let (_, label_h) = area
+            .estimate_text_size("θ", &m.font(AXIS_LABEL_EM))
+            .map_err(draw_err)?;
+        let (tick_len, label_gap) = (m.px(TICK_EM), m.px(LABEL_GAP_EM));
+        let (top, right, side) = margins(m);
+        let x_area = 2 * tick_len + tick_h + label_gap + label_h;
+        let plot_h = height.saturating_sub(top + side + x_area).max(1);
+        let y = Axis::y(panel, f64::from(plot_h) / (Y_TICK_SPACING_EM * m.unit));
+        let mut widest = 0;
+        for &tick in &y.ticks {
+            let (w, _) = area
+                .estimate_text_size(&y.label(tick), &tick_font)
+                .map_err(draw_err)?;
+            widest = widest.max(w);
+        }
+        let y_area = 2 * tick_len + widest + label_gap + label_h;
+        let plot_w = width.saturating_sub(side + right + y_area).max(1);
+        let x = Axis::x(panel, f64::from(plot_w) / (X_TICK_SPACING_EM * m.unit));
+        Ok(Frame {
+            x,
+            y,
+            x_area,
+            y_area,
+            plot: (plot_w, plot_h),
+        })
+    }
+
+    /// The plot area's size in pixels.
+    fn plot_f(&self) -> (f64, f64) {
+        (f64::from(self.plot.0), f64::from(self.plot.1))
+    }
+
+    /// The plot area's top-left corner in its chart area.
+    fn origin(&self, m: &Metrics) -> (f64, f64) {
+        let (top, _, side) = margins(m);
+        (f64::from(side + self.y_area), f64::from(top))
+    }
+
+    /// How good a plot area the chart would have in `(w, h)` pixels with these tick-label
+    /// areas: the width of the largest 1/φ rectangle inside it; `None` below [`MIN_PLOT_EM`].
+    fn score(&self, (w, h): (f64, f64), m: &Metrics) -> Option<f64> {
+        let (top, right, side) = margins(m);
+        let plot_w = w - f64::from(side + right + self.y_area);
+        let plot_h = h - f64::from(top + side + self.x_area);
+        let golden = plot_w.min(plot_h / DEFAULT_ASPECT_RATIO);
+        (golden >= MIN_PLOT_EM * m.unit).then_some(golden)
+    }
+}
+
+/// [`MARGIN_EM`] in device pixels: top, right, and the other two sides.
+fn margins(m: &Metrics) -> (u32, u32, u32) {
+    let (top, right, side) = MARGIN_EM;
+    (m.px(top), m.px(right), m.px(side))
+}
+
+/// Draws the axes and the series of `panel` in `area`, laid out as `frame`, and returns the
+/// plot area.
+fn draw_chart<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    panel: &Panel,
+    looks: &[Look],
+    frame: &Frame,
+    m: &Metrics,
+) -> Result<DrawingArea<DB, Shift>, PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let (x, y) = (&frame.x, &frame.y);
+    let (top, right, side) = margins(m);
     let mut chart = ChartBuilder::on(area)
-        .margin_top(margin_top)
-        .margin_right(margin_right)
-        .margin_left(margin_side)
-        .margin_bottom(margin_side)
-        .x_label_area_size(x_area)
-        .y_label_area_size(y_area)
+        .margin_top(top)
+        .margin_right(right)
+        .margin_left(side)
+        .margin_bottom(side)
+        .x_label_area_size(frame.x_area)
+        .y_label_area_size(frame.y_area)
         .build_cartesian_2d(x.clone(), y.clone())
         .map_err(draw_err)?;
     let x_fmt = |v: &f64| x.label(*v);
@@ -78,25 +220,17 @@ where
         .y_desc(panel.y_label.as_str())
         .x_label_formatter(&x_fmt)
         .y_label_formatter(&y_fmt)
-        .label_style(tick_font.clone())
-        .axis_desc_style(label_font)
+        .label_style(m.font(1.0))
+        .axis_desc_style(m.font(AXIS_LABEL_EM))
         .bold_line_style(m.line(m.palette.grid))
         .light_line_style(m.line(m.palette.minor_grid))
         .axis_style(m.line(m.palette.frame))
-        .set_all_tick_mark_size(tick_len)
+        .set_all_tick_mark_size(m.px(TICK_EM))
         .draw()
         .map_err(draw_err)?;
 
     let plot = chart.plotting_area().strip_coord_spec();
     let (pw, ph) = plot.dim_in_pixel();
-    let to_plot_px = |(vx, vy): (f64, f64)| {
-        (
-            (vx - x.lo) / (x.hi - x.lo) * f64::from(pw),
-            (y.hi - vy) / (y.hi - y.lo) * f64::from(ph),
-        )
-    };
-    // What each series covers, in plot pixels, for the legend to avoid.
-    let mut covered: Vec<Vec<(f64, f64)>> = Vec::new();
     // Curve vertices in plot pixels, clamped to the plot area as plotters clamps the points
     // of the elements it draws (the dashes are walked along the clamped polyline).
     let (x_px, y_px) = plot.get_pixel_range();
@@ -113,57 +247,81 @@ where
         let mark = series.style.mark;
         if matches!(mark, Mark::Line | Mark::LinePoints) {
             let style = m.curve_style(colour, series.style.width);
-            for piece in visible_pieces(series, panel, &x, &y) {
+            for piece in visible_pieces(series, panel, x, y) {
                 stroke(
                     &plot,
                     piece.iter().map(vertex).collect(),
                     style,
                     look.pattern,
                 )?;
-                covered.push(piece.into_iter().map(to_plot_px).collect());
             }
         }
         if matches!(mark, Mark::Points | Mark::LinePoints) {
             let radius = m.mark_dot(mark);
-            let dots = visible_points(series, panel, &x, &y);
             let fill = m.fill(colour, 1.0);
+            let dots = visible_points(series, panel, x, y);
             chart
-                .draw_series(dots.iter().map(|&p| Circle::new(p, radius, fill)))
+                .draw_series(dots.into_iter().map(|p| Circle::new(p, radius, fill)))
                 .map_err(draw_err)?;
-            let r = f64::from(radius);
-            covered.extend(dots.into_iter().map(|p| {
-                let (px, py) = to_plot_px(p);
-                vec![(px - r, py), (px + r, py)]
-            }));
         }
         if mark == Mark::Bars {
-            let bars = visible_bars(series, panel, &x, &y);
             let fill = m.fill(colour, 1.0);
+            let bars = visible_bars(series, panel, x, y);
             chart
-                .draw_series(bars.iter().map(|&corners| Rectangle::new(corners, fill)))
+                .draw_series(
+                    bars.into_iter()
+                        .map(|corners| Rectangle::new(corners, fill)),
+                )
                 .map_err(draw_err)?;
-            covered.extend(bars.into_iter().map(|[(x0, y0), (x1, y1)]| {
-                let centre = (x0 + x1) / 2.0;
-                vec![to_plot_px((centre, y0)), to_plot_px((centre, y1))]
-            }));
         }
     }
-
     outline(
         &plot,
         [(0, 0), (pw as i32 - 1, ph as i32 - 1)],
         m.line(m.palette.frame),
     )?;
-    if panel.legend {
-        let entries: Vec<(&Series, Look, Sample)> = panel
-            .series
-            .iter()
-            .zip(looks)
-            .map(|(s, &look)| (s, look, Sample::of(s.style.mark)))
-            .collect();
-        draw_legend(&plot, &entries, &covered, &tick_font, m)?;
+    Ok(plot)
+}
+
+/// What the series of `panel` cover in the plot area of `frame`, in plot pixels, for the
+/// legend to avoid: the visible pieces of lines, a dot's width across each dot, and each
+/// bar's centre line.
+fn covered(panel: &Panel, frame: &Frame, m: &Metrics) -> Vec<Vec<(f64, f64)>> {
+    let (x, y) = (&frame.x, &frame.y);
+    let (pw, ph) = frame.plot_f();
+    let to_plot_px = |(vx, vy): (f64, f64)| {
+        (
+            (vx - x.lo) / (x.hi - x.lo) * pw,
+            (y.hi - vy) / (y.hi - y.lo) * ph,
+        )
+    };
+    let mut covered: Vec<Vec<(f64, f64)>> = Vec::new();
+    for series in &panel.series {
+        let mark = series.style.mark;
+        if matches!(mark, Mark::Line | Mark::LinePoints) {
+            covered.extend(
+                visible_pieces(series, panel, x, y)
+                    .into_iter()
+                    .map(|piece| piece.into_iter().map(to_plot_px).collect()),
+            );
+        }
+        if matches!(mark, Mark::Points | Mark::LinePoints) {
+            let r = f64::from(m.mark_dot(mark));
+            covered.extend(visible_points(series, panel, x, y).into_iter().map(|p| {
+                let (px, py) = to_plot_px(p);
+                vec![(px - r, py), (px + r, py)]
+            }));
+        }
+        if mark == Mark::Bars {
+            covered.extend(visible_bars(series, panel, x, y).into_iter().map(
+                |[(x0, y0), (x1, y1)]| {
+                    let centre = (x0 + x1) / 2.0;
+                    vec![to_plot_px((centre, y0)), to_plot_px((centre, y1))]
+                },
+            ));
+        }
     }
-    Ok(())
+    covered
 }
 
 /// The points of `series` inside the axes box, in display coordinates.

@@ -277,7 +277,7 @@ mod tests {
         surface_kind, xy, zs,
     };
     use crate::provenance::Provenance;
-    use crate::series::{Dash, Mark, Series, Theme, XUnit, YScale};
+    use crate::series::{Dash, Mark, PanelKind, Series, Theme, XUnit, YScale};
     use std::f64::consts::PI;
 
     #[test]
@@ -641,6 +641,119 @@ mod tests {
             svg(&figure(vec![p])),
             Err(PlotError::Series { .. })
         ));
+    }
+
+    /// The legend boxes of an SVG (its translucent rectangles), as [x, y, width, height] in
+    /// SVG units, in drawing order.
+    fn legend_boxes(svg: &roxmltree::Document) -> Vec<[f64; 4]> {
+        let number = |node: &roxmltree::Node, key| node.attribute(key).unwrap().parse().unwrap();
+        svg.descendants()
+            .filter(|n| n.has_tag_name("rect") && n.attribute("opacity") == Some("0.85"))
+            .map(|n| ["x", "y", "width", "height"].map(|key| number(&n, key)))
+            .collect()
+    }
+
+    #[test]
+    fn long_legends_stay_in_their_panel_cells_clear_of_the_axis_labels() {
+        // Ten Beckmann curves a panel under a panel title, as in the catalogue's comparisons, at
+        // the default font size, on canvases too small for the legend to fit inside the plot
+        // area: wide and flat (the notebook's two-panel rows), tall, a 2 × 2 grid, polar, tiny.
+        let sweep = |n: u32| -> Vec<Series> {
+            (0..n)
+                .map(|i| {
+                    let alpha = 0.2 + 0.08 * f64::from(i);
+                    let label =
+                        format!("α_p = {:.4} (α_b = {alpha:.2})", 2.0 / alpha / alpha - 2.0);
+                    series(
+                        &label,
+                        RED,
+                        1.0,
+                        Dash::Solid,
+                        sampled(|t| {
+                            let tan2 = t.tan().powi(2);
+                            (-tan2 / (alpha * alpha)).exp() / (PI * alpha * alpha * t.cos().powi(4))
+                        }),
+                    )
+                })
+                .collect()
+        };
+        let cartesian = || panel(XUnit::Radians, YScale::Linear, sweep(10));
+        let polar = || {
+            let mut p = cartesian();
+            p.kind = PanelKind::Polar;
+            p
+        };
+        let layouts = [
+            ((960, 300), 1, 2, vec![cartesian(), cartesian()]),
+            ((480, 600), 1, 1, vec![cartesian()]),
+            (
+                (640, 400),
+                2,
+                2,
+                vec![cartesian(), cartesian(), cartesian(), polar()],
+            ),
+            ((960, 300), 1, 2, vec![polar(), polar()]),
+            ((200, 120), 1, 1, vec![cartesian()]),
+        ];
+        for ((width, height), rows, cols, panels) in layouts {
+            let mut fig = figure(panels);
+            fig.title.clear();
+            fig.canvas.font_px = 14.0;
+            for p in &mut fig.panels {
+                p.title = "α_b = 0.2 … 0.92".to_owned();
+            }
+            (fig.rows, fig.cols) = (rows, cols);
+            (fig.canvas.width_px, fig.canvas.height_px) = (width, height);
+            let text = String::from_utf8(svg(&fig).unwrap()).unwrap();
+            let doc = roxmltree::Document::parse(&text).unwrap();
+            let boxes = legend_boxes(&doc);
+            assert_eq!(boxes.len(), fig.panels.len(), "{width}×{height}");
+            // SVG units: the canvas at SVG_UNITS_PER_PX.
+            let (cell_w, cell_h) = (
+                f64::from(width) * SVG_UNITS_PER_PX / cols as f64,
+                f64::from(height) * SVG_UNITS_PER_PX / rows as f64,
+            );
+            for (i, [x, y, w, h]) in boxes.iter().copied().enumerate() {
+                let (left, top) = ((i % cols) as f64 * cell_w, (i / cols) as f64 * cell_h);
+                assert!(
+                    x >= left && x + w <= left + cell_w && y >= top && y + h <= top + cell_h,
+                    "{width}×{height}, panel {i}: legend {:?} outside its cell",
+                    [x, y, w, h]
+                );
+            }
+            // Every entry's label is in a legend box (plotters clips the box to its drawing
+            // area, but not the text), and no tick label or axis label is under one.
+            let inside = |x: f64, y: f64| {
+                boxes
+                    .iter()
+                    .any(|[bx, by, bw, bh]| x > *bx && x < bx + bw && y > *by && y < by + bh)
+            };
+            let anchor = |node: &roxmltree::Node| {
+                let at = |key| node.attribute(key).unwrap().parse::<f64>().unwrap();
+                (at("x"), at("y"))
+            };
+            let entries = doc.descendants().filter(|n| {
+                n.has_tag_name("text") && n.text().unwrap_or_default().trim().starts_with("α_p")
+            });
+            assert_eq!(entries.clone().count(), 10 * fig.panels.len());
+            for entry in entries {
+                let (x, y) = anchor(&entry);
+                assert!(inside(x, y), "{width}×{height}: {:?} outside", entry.text());
+            }
+            let labels = doc.descendants().filter(|n| {
+                let content = n.text().unwrap_or_default().trim();
+                n.has_tag_name("text")
+                    && (content == "θ" || content == "D(θ)" || content.parse::<f64>().is_ok())
+            });
+            for label in labels {
+                let (x, y) = anchor(&label);
+                assert!(
+                    !inside(x, y),
+                    "{width}×{height}: {:?} under a legend",
+                    label.text()
+                );
+            }
+        }
     }
 
     /// Writes the sample figures to the temporary directory to look at, with render times.

@@ -18,12 +18,12 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axis::Axis;
 use super::clip::pieces;
-use super::legend::{Covered, Sample, draw_legend, legend_inset, legend_size};
+use super::legend::{Covered, Legend, Outside, Sample, Setting, Side};
 use super::style::{AXIS_LABEL_EM, Metrics, stroke};
 use super::text::{anchor_towards, text_box, text_size};
 use super::theme::Look;
 use super::{PlotError, draw_err};
-use crate::series::{Mark, Panel, Series, XUnit, YScale};
+use crate::series::{Mark, Panel, XUnit, YScale};
 
 /// Angle steps tried for spokes and labels, in degrees, finest first.
 const ANGLE_STEPS_DEG: [f64; 4] = [15.0, 30.0, 45.0, 90.0];
@@ -71,19 +71,10 @@ where
     let (width, height) = (f64::from(width), f64::from(height));
     let (a, b) = theta_range(panel);
 
-    let entries: Vec<(&Series, Look, Sample)> = panel
-        .series
-        .iter()
-        .zip(looks)
-        .map(|(s, &look)| (s, look, Sample::of(s.style.mark)))
-        .collect();
-    let legend = match panel.legend {
-        true => legend_size(area, &entries, &tick_font, m)?,
-        false => None,
-    };
-    let inset = f64::from(legend_inset(m));
+    let legend = Legend::of_panel(area, panel, looks, |s| Sample::of(s.style.mark), m)?;
+    let inset = Legend::inset(m);
     // The sector, and where the legend goes: over the panel in a top corner clear of the rim
-    // and its labels, else in a strip right of or below the sector, whichever leaves it larger.
+    // and its labels, else outside the sector, where the sector is largest.
     let layout = |side: f64| {
         let fit = |size| {
             Sector::fit(
@@ -95,10 +86,11 @@ where
             )
         };
         let full = fit((width, height));
-        let Some((w, h)) = legend else {
-            return (full, Place::Over);
+        let Some(legend) = &legend else {
+            return (full, None);
         };
-        let (w, h) = (f64::from(w) + 2.0 * inset, f64::from(h) + 2.0 * inset);
+        let (w, h) = legend.size(Setting::FULL, m);
+        let (w, h) = (w + 2.0 * inset, h + 2.0 * inset);
         let near = (
             full.centre.0.clamp(width - w, width),
             full.centre.1.clamp(0.0, h),
@@ -108,15 +100,16 @@ where
         let beyond_rim = dx.hypot(dy) >= full.r + side;
         let beside_edge = (width - w - full.centre.0).atan2(full.centre.1) >= b + side / full.r;
         let clear = beyond_rim || beside_edge;
-        if clear && h <= height {
-            return (full, Place::Over);
+        if clear && w <= width && h <= height {
+            return (full, None);
         }
-        let (right, below) = (fit((width - w, height)), fit((width, height - h)));
-        if right.r >= below.r {
-            (right, Place::Right(width - w))
-        } else {
-            (below, Place::Below(height - h))
-        }
+        let outside = legend.outside((width, height), m, |w, h| Some(fit((w, h)).r));
+        let (w, h) = outside.strip;
+        let sector = match outside.side {
+            Side::Right => fit((width - w, height)),
+            Side::Below => fit((width, height - h)),
+        };
+        (sector, Some(outside))
     };
 
     // A first layout with the widest likely angle label fixes the angle step and the radius
@@ -289,47 +282,29 @@ where
         draw_label(area, &panel.y_label, &centred, at)?;
     }
 
-    if legend.is_some() {
-        match place {
-            Place::Over => draw_legend(area, &entries, &covered.0, &tick_font, m)?,
-            Place::Right(x) => {
+    let Some(legend) = legend else {
+        return Ok(());
+    };
+    match place {
+        None => legend.draw_over(area, &covered.0, m),
+        Some(Outside {
+            side,
+            setting,
+            strip,
+        }) => {
+            let (box_w, box_h) = legend.size(setting, m);
+            let at = match side {
                 // Level with the middle of the sector's height, as far as the area allows.
-                let (w, h) = legend_strip(legend, inset);
-                let middle = sector.centre.1 - sector.r / 2.0;
-                let top =
-                    (middle - f64::from(h) / 2.0).clamp(0.0, (height - f64::from(h)).max(0.0));
-                let strip = area
-                    .clone()
-                    .shrink((x.round() as i32, top.round() as i32), (w, h));
-                draw_legend(&strip, &entries, &[], &tick_font, m)?;
-            }
-            Place::Below(y) => {
-                let (w, h) = legend_strip(legend, inset);
-                let left = ((width - f64::from(w)) / 2.0).round() as i32;
-                let strip = area.clone().shrink((left, y.round() as i32), (w, h));
-                draw_legend(&strip, &entries, &[], &tick_font, m)?;
-            }
+                Side::Right => (
+                    width - strip.0 + inset,
+                    (sector.centre.1 - sector.r / 2.0 - box_h / 2.0)
+                        .clamp(inset, (height - inset - box_h).max(inset)),
+                ),
+                Side::Below => ((width - box_w) / 2.0, height - strip.1 + inset),
+            };
+            legend.draw(area, at, setting, m)
         }
     }
-    Ok(())
-}
-
-/// The size of a strip that holds the legend box of `size` with `inset` around it.
-fn legend_strip(size: Option<(i32, i32)>, inset: f64) -> (u32, u32) {
-    let (w, h) = size.unwrap_or((0, 0));
-    let pad = 2 * inset.round() as i32;
-    ((w + pad).max(1) as u32, (h + pad).max(1) as u32)
-}
-
-/// Where a polar panel's legend goes.
-#[derive(Debug, Clone, Copy)]
-enum Place {
-    /// Over the panel, where it hides least.
-    Over,
-    /// In the strip right of this x, level with the sector.
-    Right(f64),
-    /// In the strip below this y.
-    Below(f64),
 }
 
 /// Where the sector sits in its area: the centre (on the normal, at the sector's bottom) and
@@ -441,7 +416,7 @@ mod tests {
         BLUE, RED, figure, marked, panel, polar_sample, sampled, series,
     };
     use crate::output::plot::{png, svg};
-    use crate::series::{Dash, Figure, PanelKind, Theme};
+    use crate::series::{Dash, Figure, PanelKind, Series, Theme};
 
     #[test]
     fn angle_labels_read_in_degrees_or_fractions_of_pi() {

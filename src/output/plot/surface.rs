@@ -7,7 +7,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axis::{Axis, x_display};
-use super::legend::{Covered, Sample, draw_legend};
+use super::legend::{Covered, Legend, Sample};
 use super::style::{AXIS_LABEL_EM, Metrics, SURFACE_OPACITY, mesh_colour, stroke};
 use super::text::{anchor_towards, text_box, text_size};
 use super::theme::Look;
@@ -259,21 +259,13 @@ where
         }
     }
 
-    if panel.legend {
-        let entries: Vec<(&Series, Look, Sample)> = panel
-            .series
-            .iter()
-            .zip(looks)
-            .map(|(s, &look)| {
-                let sample = match s.style.mark {
-                    _ if is_surface(s) => Sample::Patch,
-                    Mark::Bars => Sample::Line,
-                    mark => Sample::of(mark),
-                };
-                (s, look, sample)
-            })
-            .collect();
-        draw_legend(area, &entries, &covered.0, &tick_font, m)?;
+    let sample = |s: &Series| match s.style.mark {
+        _ if is_surface(s) => Sample::Patch,
+        Mark::Bars => Sample::Line,
+        mark => Sample::of(mark),
+    };
+    if let Some(legend) = Legend::of_panel(area, panel, looks, sample, m)? {
+        legend.draw_over(area, &covered.0, m)?;
     }
     Ok(())
 }
