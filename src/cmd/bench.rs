@@ -15,10 +15,11 @@ use crate::series::{
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-/// Figure size in CSS pixels: three panels side by side.
+/// Figure size in CSS pixels: three panels side by side, tall enough for the drawing panel to keep
+/// a useful plot above its ten-entry legend.
 const CANVAS: Canvas = Canvas {
     width_px: 1500,
-    height_px: 560,
+    height_px: 760,
     png_scale: 1.0,
     font_px: 13.0,
 };
