@@ -1,7 +1,7 @@
 //! Themes: the page colours of a figure and the colour and line pattern each series is drawn
 //! in. [`Theme::Notebook`] keeps every spec colour and pattern; [`Theme::ColourBlind`] maps the
-//! figure's distinct colours onto the Okabe–Ito palette and a cycle of line patterns;
-//! [`Theme::Dark`] lightens the colours that would be lost on its dark background.
+//! figure's distinct colours onto pairs of an Okabe–Ito colour and a line pattern, no two alike;
+//! [`Theme::Dark`] lifts every colour above a luminance floor, keeping the order of a sweep's shades.
 
 use plotters::style::RGBColor;
 
@@ -75,8 +75,9 @@ const PATTERN_CYCLE: [Pattern; 4] = [
 /// (L(#16181C) + 0.05) ≈ 6.8, above WCAG's 4.5:1 for text, so thin curves stay clear.
 const DARK_MIN_LUMINANCE: f64 = 0.35;
 /// Steps of the mix towards white tried when lightening a colour (the first that is light
-/// enough is kept): 1/32 changes a channel by at most 8 levels.
-const LIGHTEN_STEPS: u32 = 32;
+/// enough is kept): 1/256 changes a channel by at most one level, fine enough that the shades
+/// of a sweep stay apart.
+const LIGHTEN_STEPS: u32 = 256;
 
 /// How a line is stroked.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -122,8 +123,10 @@ pub(super) fn palette(theme: Theme) -> &'static Palette {
 ///
 /// Notebook: the spec's colour and dash. Colour-blind: the k-th distinct spec colour in order
 /// of first appearance across the figure becomes `OKABE_ITO[k mod 8]` and, unless the series
-/// has a dash of its own, `PATTERN_CYCLE[k mod 4]`; so one spec colour looks the same in every
-/// panel. Dark: colours darker than [`DARK_MIN_LUMINANCE`] mixed towards white until they are not.
+/// has a dash of its own, `PATTERN_CYCLE[(k + ⌊k/8⌋) mod 4]`: the patterns vary among the first
+/// eight colours too, and colour k + 8j differs from colour k in pattern, so the first 32
+/// distinct colours are 32 distinct looks; one spec colour looks the same in every panel.
+/// Dark: each colour lifted to the luminance [`dark_luminance`] gives it (see [`lighten`]).
 pub(super) fn looks(figure: &Figure) -> Vec<Vec<Look>> {
     let mut distinct: Vec<Rgb> = Vec::new();
     let mut rank = |colour: Rgb| match distinct.iter().position(|&c| c == colour) {
@@ -145,7 +148,9 @@ pub(super) fn looks(figure: &Figure) -> Vec<Vec<Look>> {
                 Look {
                     colour: Rgb::from_hex(OKABE_ITO[k % OKABE_ITO.len()]),
                     pattern: match s.style.dash {
-                        Dash::Solid => PATTERN_CYCLE[k % PATTERN_CYCLE.len()],
+                        Dash::Solid => {
+                            PATTERN_CYCLE[(k + k / OKABE_ITO.len()) % PATTERN_CYCLE.len()]
+                        }
                         dash => dash.into(),
                     },
                 }
@@ -163,16 +168,25 @@ pub(super) fn looks(figure: &Figure) -> Vec<Vec<Look>> {
         .collect()
 }
 
+/// The relative luminance a colour of luminance `l` is given on the dark background:
+/// L_min + (1 − L_min) · l with L_min = [`DARK_MIN_LUMINANCE`]. Every colour clears the floor,
+/// and the map is strictly increasing, so the dark-to-light shades of a sweep stay in order and
+/// apart instead of all landing on the floor.
+fn dark_luminance(l: f64) -> f64 {
+    DARK_MIN_LUMINANCE + (1.0 - DARK_MIN_LUMINANCE) * l
+}
+
 /// `colour` mixed towards white in steps of 1/[`LIGHTEN_STEPS`] until its relative luminance
-/// reaches [`DARK_MIN_LUMINANCE`]; unchanged when it already does.
+/// reaches [`dark_luminance`] of its own; white when even that is short of it.
 fn lighten(colour: Rgb) -> Rgb {
+    let target = dark_luminance(luminance(colour));
     (0..=LIGHTEN_STEPS)
         .map(|step| {
             let t = f64::from(step) / f64::from(LIGHTEN_STEPS);
             let mix = |c: u8| (f64::from(c) + t * (255.0 - f64::from(c))).round() as u8;
             Rgb(mix(colour.0), mix(colour.1), mix(colour.2))
         })
-        .find(|&c| luminance(c) >= DARK_MIN_LUMINANCE)
+        .find(|&c| luminance(c) >= target)
         .unwrap_or(Rgb(255, 255, 255))
 }
 
@@ -239,18 +253,37 @@ mod tests {
     }
 
     #[test]
-    fn the_dark_theme_lightens_only_dark_colours() {
+    fn colour_blind_looks_are_distinct_for_the_first_32_colours() {
+        let line = |hex| series("s", hex, 1.0, Dash::Solid, vec![(0.0, 1.0), (1.0, 2.0)]);
+        let colours = (0..32u32).map(|k| line(0x010101 * (k + 1))).collect();
+        let mut figure = figure(vec![panel(XUnit::Radians, YScale::Linear, colours)]);
+        figure.theme = Theme::ColourBlind;
+        let looks = &looks(&figure)[0];
+        for (i, a) in looks.iter().enumerate() {
+            for b in &looks[..i] {
+                assert_ne!(a, b, "colour {i}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_dark_theme_lifts_colours_above_the_floor_keeping_their_order() {
         let black = lighten(Rgb(0, 0, 0));
         assert!(luminance(black) >= DARK_MIN_LUMINANCE);
         assert!(
-            luminance(black) < DARK_MIN_LUMINANCE + 0.05,
+            luminance(black) < DARK_MIN_LUMINANCE + 0.01,
             "no lighter than needed"
         );
         assert_eq!(black.0, black.1);
-        let orange = Rgb::from_hex(0xFF9900);
-        assert_eq!(lighten(orange), orange);
+        assert_eq!(lighten(Rgb(255, 255, 255)), Rgb(255, 255, 255));
         let blue = lighten(Rgb::from_hex(0x2689D1));
         assert!(blue.2 > blue.0, "stays blue");
         assert!((luminance(Rgb(255, 255, 255)) - 1.0).abs() < 1e-12);
+        // Five shades of one hue, dark to light, stay dark to light and apart.
+        let shades = [0x0B2A40, 0x15507A, 0x2689D1, 0x6AB0E2, 0xA9D0EE].map(Rgb::from_hex);
+        let lifted = shades.map(|c| luminance(lighten(c)));
+        for pair in lifted.windows(2) {
+            assert!(pair[1] > pair[0] + 0.02, "{lifted:?}");
+        }
     }
 }
