@@ -267,6 +267,11 @@ pub fn basis() -> &'static Basis {
     BASIS.get_or_init(Basis::compute)
 }
 
+/// Whether [`basis`] has been computed in this process: it is only when a curve needs it.
+pub fn basis_is_computed() -> bool {
+    BASIS.get().is_some()
+}
+
 impl Basis {
     fn compute() -> Basis {
         let cos_theta = grid();
