@@ -261,21 +261,39 @@ pub fn figure(
     }
 }
 
-/// The bytes of one output of a figure. The PDF is converted from the figure's SVG.
+/// The bytes of one output of a figure (see [`encode_all`]).
 pub fn encode(figure: &Figure, format: Format) -> Result<Vec<u8>> {
+    Ok(encode_all(figure, &[format])?.remove(0))
+}
+
+/// The bytes of each of `formats` of a figure, in order. The PDF is converted from the figure's
+/// SVG, which is drawn once when both are asked for.
+pub fn encode_all(figure: &Figure, formats: &[Format]) -> Result<Vec<Vec<u8>>> {
     let plot_error =
         |e: plot::PlotError| Error::Numerics(format!("{}: drawing failed: {e}", figure.id));
-    match format {
-        Format::Svg => plot::svg(figure).map_err(plot_error),
-        Format::Png => plot::png(figure).map_err(plot_error),
-        Format::Pdf => {
-            let svg = plot::svg(figure).map_err(plot_error)?;
-            pdf::from_svg(&svg, &figure.title, &figure.provenance)
-                .map_err(|e| Error::Numerics(format!("{}: PDF conversion failed: {e}", figure.id)))
-        }
-        Format::Csv => Ok(figure_csv(figure)),
-        Format::Html => unreachable!("pages are built from scenes, by `pages`"),
+    let mut svg: Option<Vec<u8>> = None;
+    let mut encoded = Vec::with_capacity(formats.len());
+    for &format in formats {
+        encoded.push(match format {
+            Format::Svg | Format::Pdf => {
+                let svg = match svg {
+                    Some(ref drawn) => drawn,
+                    None => svg.insert(plot::svg(figure).map_err(plot_error)?),
+                };
+                if format == Format::Svg {
+                    svg.clone()
+                } else {
+                    pdf::from_svg(svg, &figure.title, &figure.provenance).map_err(|e| {
+                        Error::Numerics(format!("{}: PDF conversion failed: {e}", figure.id))
+                    })?
+                }
+            }
+            Format::Png => plot::png(figure).map_err(plot_error)?,
+            Format::Csv => figure_csv(figure),
+            Format::Html => unreachable!("pages are built from scenes, by `pages`"),
+        });
     }
+    Ok(encoded)
 }
 
 /// The interactive page of every scene that has sliders.
@@ -413,22 +431,22 @@ fn encode_outputs(
             .zip(feeds)
             .map(|((s, p), f)| figure(s, p, f, &evaluated))
             .collect();
-        let encoded: Vec<(String, Vec<u8>)> = figures
+        let encoded: Vec<Vec<(String, Vec<u8>)>> = figures
             .par_iter()
-            .flat_map_iter(|fig| formats.iter().map(move |&format| (fig, format)))
-            .map(|(fig, format)| {
-                let encoded = (
-                    format!("{}.{}", fig.id, format.extension()),
-                    encode(fig, format)?,
-                );
-                progress.advance(1);
-                Ok(encoded)
+            .map(|fig| {
+                let bytes = encode_all(fig, &formats)?;
+                progress.advance(formats.len() as u64);
+                Ok(formats
+                    .iter()
+                    .map(|format| format!("{}.{}", fig.id, format.extension()))
+                    .zip(bytes)
+                    .collect())
             })
             .collect::<Result<_>>()?;
         for &format in &formats {
             stats.produced[format as usize] += figures.len();
         }
-        outputs.extend(encoded);
+        outputs.extend(encoded.into_iter().flatten());
         *(if kind {
             &mut stats.drawing
         } else {
