@@ -7,7 +7,9 @@
 //! Run: `cargo bench --bench render`.
 
 use ndfplot::catalogue::CATALOGUE;
-use ndfplot::cmd::render::{self, CanvasOverride, Format, RenderOptions, RenderStats};
+use ndfplot::output::Format;
+use ndfplot::render::{self, RenderOptions, RenderStats};
+use ndfplot::source::CanvasOverride;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 

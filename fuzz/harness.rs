@@ -9,13 +9,15 @@
 //! which must either be rejected or give a finite value at every θ of [0, π/2], non-negative for
 //! an NDF and within [0, 1] for the exact, Schlick and Lazanyi Fresnel curves.
 
-use ndfplot::cmd::render::{self, CanvasOverride, Format};
 use ndfplot::curve::{Curve, FresnelModel, Model, ParamKind};
 use ndfplot::dataset::Dataset;
+use ndfplot::figure::Figure;
+use ndfplot::output::{self, Format};
 use ndfplot::plan::{Outputs, plan};
 use ndfplot::provenance::Provenance;
 use ndfplot::sample::evaluate_all;
 use ndfplot::scene::Sampling;
+use ndfplot::source::{self, CanvasOverride};
 use std::f64::consts::FRAC_PI_2;
 
 /// Most table points of a spec that is evaluated; larger valid specs are only validated.
@@ -62,7 +64,7 @@ fn spec(bytes: &[u8]) {
         return;
     };
     let sources = [("fuzz.json".to_string(), text.to_string(), None)];
-    let scenes = match render::load_scenes(&sources, CanvasOverride::default()) {
+    let scenes = match source::load_scenes(&sources, CanvasOverride::default()) {
         Ok(scenes) => scenes,
         Err(error) => {
             let message = error.to_string();
@@ -106,8 +108,8 @@ fn spec(bytes: &[u8]) {
         .iter()
         .zip(plan.table.as_ref().expect("tables were planned"))
     {
-        let figure = render::figure(scene, &provenance, feeds, &evaluated);
-        let csv = render::encode(&figure, Format::Csv).expect("CSV encoding cannot fail");
+        let figure = Figure::assemble(scene, &provenance, feeds, &evaluated);
+        let csv = output::encode(&figure, Format::Csv).expect("CSV encoding cannot fail");
         let text = String::from_utf8(csv).expect("the CSV is UTF-8");
         assert!(
             !text.contains("NaN") && !text.contains("inf"),

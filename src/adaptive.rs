@@ -13,7 +13,8 @@
 //! Phong 2048 between 0 and 0.05 rad), two probes cannot both do so. On a parabola the deviation at
 //! a third is 8/9 of the largest, so probes are held to 8/9 of the tolerance.
 
-use crate::series::{PanelKind, XUnit, YScale};
+use crate::layout;
+use crate::scene::look::{PanelKind, XUnit, YScale};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
@@ -30,15 +31,6 @@ const THIRD_TO_MAX: f64 = 8.0 / 9.0;
 /// Intervals narrower than this many pixels are not split: the polyline cannot bend visibly
 /// within them, and a jump (a discontinuity) would otherwise take the whole budget.
 const MIN_SPLIT_PX: f64 = 1e-3;
-/// Approximate horizontal space of a panel cell that is not plot area (y tick labels, y label,
-/// margins), in base font sizes; plot.rs measures it exactly when drawing, so it is taken on the
-/// small side: a wider plot area than the real one only makes the tolerance stricter.
-const NON_PLOT_WIDTH_EM: f64 = 4.0;
-/// Approximate vertical space of a panel cell that is not plot area (panel title, x tick labels, x
-/// label, margins), in base font sizes; small for the same reason.
-const NON_PLOT_HEIGHT_EM: f64 = 4.0;
-/// Height of the figure title band in base font sizes (title size 1.4 plus spacing).
-const FIGURE_TITLE_EM: f64 = 2.0;
 /// Relative growth of the automatic y span after refinement that triggers a second refinement
 /// (a peak the initial grid missed changes the pixel scale by more than this).
 const RESCALE_THRESHOLD: f64 = 0.01;
@@ -89,8 +81,8 @@ pub struct Frame {
 
 impl Frame {
     /// The frame of panel cell `(rows, cols)` of a `width_px × height_px` figure with base font
-    /// `font_px`, drawn at `scale` output pixels per CSS pixel: the cell minus [`NON_PLOT_WIDTH_EM`]
-    /// and [`NON_PLOT_HEIGHT_EM`] (and the title band when `titled`), at least one pixel.
+    /// `font_px`, drawn at `scale` output pixels per CSS pixel: the plot area
+    /// [`layout::plot_area`] estimates for it.
     #[allow(clippy::too_many_arguments)]
     pub fn of_cell(
         (width_px, height_px): (f64, f64),
@@ -102,17 +94,12 @@ impl Frame {
         (y_scale, y_range): (YScale, Option<(f64, f64)>),
         tolerance_px: f64,
     ) -> Frame {
-        let title = if titled {
-            FIGURE_TITLE_EM * font_px
-        } else {
-            0.0
-        };
-        let cell_w = width_px / cols.max(1) as f64;
-        let cell_h = (height_px - title) / rows.max(1) as f64;
+        let (width_px, height_px) =
+            layout::plot_area((width_px, height_px), (rows, cols), font_px, titled, scale);
         Frame {
             theta_range,
-            width_px: ((cell_w - NON_PLOT_WIDTH_EM * font_px) * scale).max(1.0),
-            height_px: ((cell_h - NON_PLOT_HEIGHT_EM * font_px) * scale).max(1.0),
+            width_px,
+            height_px,
             y_scale,
             y_range,
             tolerance_px,
@@ -558,7 +545,7 @@ mod tests {
 
     #[test]
     fn geometries_follow_the_panel() {
-        use crate::series::PanelKind;
+        use crate::scene::look::PanelKind;
         assert_eq!(
             Geometry::of(&PanelKind::Polar, XUnit::Degrees),
             Geometry::Polar

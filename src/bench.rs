@@ -10,7 +10,7 @@ use crate::math::quad::integrate;
 use crate::math::special::upper_gamma_scaled;
 use crate::ndf::{Abc, Family, Ndf, TorranceSparrow};
 use crate::sample::{PARALLEL_CHUNK, eval_grid_parallel};
-use crate::series::YScale;
+use crate::scene::look::YScale;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::time::{Duration, Instant};
 

@@ -9,8 +9,8 @@
 use crate::adaptive::{Frame, Geometry};
 use crate::curve::Curve;
 use crate::dataset::Dataset;
+use crate::scene::look::PanelKind;
 use crate::scene::{Sampling, Scene, ScenePanel};
-use crate::series::PanelKind;
 use std::collections::HashMap;
 
 /// One evaluation job.
@@ -112,12 +112,12 @@ impl Planner {
     /// The jobs feeding panel `p` of `scene` under `sampling`.
     fn panel(&mut self, scene: &Scene, p: usize, sampling: Sampling, png: bool) -> Vec<usize> {
         let panel = &scene.panels[p];
-        let (a, b) = panel.theta_range();
+        let (a, b) = panel.axes.theta_range();
         let mut feed = Vec::with_capacity(panel.curves.len() + panel.data.len());
         match sampling {
             // Cartesian and polar panels place (θ, v) in a 2D pixel frame; surface panels do not.
             Sampling::Adaptive { tolerance_px }
-                if !matches!(panel.kind, PanelKind::Surface { .. }) =>
+                if !matches!(panel.axes.kind, PanelKind::Surface { .. }) =>
             {
                 let frame = frame(scene, panel, png, tolerance_px);
                 // An adaptive curve depends on its panel's frame and, through the automatic y range,
@@ -185,8 +185,11 @@ fn frame(scene: &Scene, panel: &ScenePanel, png: bool, tolerance_px: f64) -> Fra
         canvas.font_px,
         !scene.title.is_empty(),
         scale,
-        (panel.theta_range(), Geometry::of(&panel.kind, panel.x_unit)),
-        (panel.y_scale, panel.y_range),
+        (
+            panel.axes.theta_range(),
+            Geometry::of(&panel.axes.kind, panel.axes.x_unit),
+        ),
+        (panel.axes.y_scale, panel.axes.y_range),
         tolerance_px,
     )
 }

@@ -1,8 +1,10 @@
 //! The Fresnel basis (two 1000 × 1000 SVDs) is computed only when a figure needs it. A test binary
 //! of its own, so that no other test in the process computes the basis first.
 
-use ndfplot::cmd::render::{self, CanvasOverride, Format, RenderOptions};
 use ndfplot::fresnel::basis::basis_is_computed;
+use ndfplot::output::Format;
+use ndfplot::render::{self, RenderOptions};
+use ndfplot::source::CanvasOverride;
 
 fn render(dir: &std::path::Path, spec: &str) {
     let path = dir.join("s.json");

@@ -4,12 +4,15 @@
 //! (formats not requested, jobs shared between panels).
 
 use ndfplot::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
-use ndfplot::cmd::render::{self, CanvasOverride, Format, RenderOptions};
+use ndfplot::figure::Figure;
 use ndfplot::ndf::{Family, Ndf};
+use ndfplot::output::Format;
 use ndfplot::plan::{Job, Outputs, plan};
 use ndfplot::provenance::Provenance;
+use ndfplot::render::{self, RenderOptions};
 use ndfplot::sample::{eval_grid_parallel, evaluate_all};
-use ndfplot::series::{Dash, PanelKind, Rgb, XUnit, YScale};
+use ndfplot::scene::look::{Dash, PanelKind, Rgb, XUnit, YScale};
+use ndfplot::source::{self, CanvasOverride};
 use std::f64::consts::FRAC_PI_2;
 use std::path::{Path, PathBuf};
 
@@ -189,8 +192,8 @@ fn temp_dir(name: &str) -> PathBuf {
 fn load(dir: &Path, text: &str) -> Vec<ndfplot::scene::Scene> {
     let path = dir.join("s.json");
     std::fs::write(&path, text).unwrap();
-    render::load_scenes(
-        &render::sources(&[path]).unwrap(),
+    source::load_scenes(
+        &source::sources(&[path]).unwrap(),
         CanvasOverride::default(),
     )
     .unwrap()
@@ -301,8 +304,8 @@ fn sampling_key_errors_name_the_problem() {
     ] {
         let path = dir.join("s.json");
         std::fs::write(&path, scene(sampling)).unwrap();
-        let error = render::load_scenes(
-            &render::sources(&[path]).unwrap(),
+        let error = source::load_scenes(
+            &source::sources(&[path]).unwrap(),
             CanvasOverride::default(),
         )
         .unwrap_err();
@@ -428,7 +431,7 @@ const FIT_SLACK_PX: f64 = 0.05;
 /// vertex per sample (clipped).
 fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
     const UNIQUE: &str = "#010203";
-    let scenes = render::load_scenes(&render::sources(&[]).unwrap(), CanvasOverride::default())
+    let scenes = source::load_scenes(&source::sources(&[]).unwrap(), CanvasOverride::default())
         .unwrap()
         .into_iter()
         .filter(|scene| scene.id == id)
@@ -440,14 +443,14 @@ fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
     };
     let planned = plan(&scenes, outputs, true);
     let evaluated = evaluate_all(&planned).unwrap();
-    let mut figure = render::figure(
+    let mut figure = Figure::assemble(
         scene,
         &Provenance::without_spec(),
         &planned.drawn.as_ref().unwrap()[0],
         &evaluated,
     );
     let panel = &mut figure.panels[p];
-    panel.legend = false;
+    panel.axes.legend = false;
     panel.series[s].style.colour = Rgb::from_hex(0x010203);
     panel.series[s].style.dash = Dash::Solid;
     let panel = &figure.panels[p];
@@ -468,7 +471,7 @@ fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
     let curve = &scene.panels[p].curves[s].curve;
     let points = &panel.series[s].points;
     let lines = polylines(&svg, UNIQUE);
-    let polar = panel.kind == PanelKind::Polar;
+    let polar = panel.axes.kind == PanelKind::Polar;
     let drawn: Vec<(f64, f64)> = match (polar, lines.as_slice()) {
         // One path through the normal: the mirror image, then the lobe itself from θ = 0.
         (true, [line]) if line.len() == 2 * points.len() - 1 => line[points.len() - 1..].to_vec(),
@@ -476,12 +479,13 @@ fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
         _ => return None,
     };
     // The panel's map from (θ, value) to SVG units, fitted to the drawn vertices.
-    let y_display = |v: f64| match panel.y_scale {
+    let y_display = |v: f64| match panel.axes.y_scale {
         YScale::Linear => v,
         YScale::Log => v.log10(),
     };
     let place: Box<dyn Fn(f64, f64) -> (f64, f64)> = if polar {
         let floor = panel
+            .axes
             .y_range
             .map_or(f64::NEG_INFINITY, |(lo, hi)| y_display(lo.min(hi)));
         let rho = move |v: f64| y_display(v).max(floor);
@@ -503,7 +507,7 @@ fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
             (c[0] + r * sin, c[1] - r * cos)
         })
     } else {
-        let x_display = move |t: f64| match panel.x_unit {
+        let x_display = move |t: f64| match panel.axes.x_unit {
             XUnit::Degrees => t.to_degrees(),
             XUnit::Slope => t.tan(),
             XUnit::Radians | XUnit::Plain => t,

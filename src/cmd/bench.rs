@@ -6,12 +6,11 @@
 
 use crate::bench::{self, Row};
 use crate::error::{Error, Result};
+use crate::figure::{Figure, Panel, Series};
 use crate::ndf::Family;
 use crate::output::{plot, write};
 use crate::provenance::Provenance;
-use crate::series::{
-    Canvas, Dash, Figure, Mark, Panel, PanelKind, Rgb, Series, Style, Theme, XUnit, YScale,
-};
+use crate::scene::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -77,15 +76,17 @@ fn series(label: String, style: Style, points: Vec<(f64, f64)>) -> Series {
 
 fn panel(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Panel {
     Panel {
-        title: title.into(),
-        x_label: x_label.into(),
-        y_label: y_label.into(),
-        x_unit: XUnit::Plain,
-        kind: PanelKind::Cartesian,
-        y_scale: YScale::Log,
-        x_range: None,
-        y_range: None,
-        legend: true,
+        axes: Axes {
+            title: title.into(),
+            x_label: x_label.into(),
+            y_label: y_label.into(),
+            x_unit: XUnit::Plain,
+            kind: PanelKind::Cartesian,
+            y_scale: YScale::Log,
+            x_range: None,
+            y_range: None,
+            legend: true,
+        },
         series,
     }
 }

@@ -10,16 +10,16 @@ pub mod fit;
 pub mod render;
 pub mod schema;
 
-use crate::cli::{CheckArgs, CoeffsArgs, Command, CompareArgs, EvalArgs, FitArgs, RenderArgs};
+use crate::cli::{CheckArgs, CoeffsArgs, Command, CompareArgs, EvalArgs, FitArgs};
 use crate::error::Result;
-use crate::{input, stdout};
+use crate::{input, source, stdout};
 use std::io::Read;
 
 /// Runs a parsed command line.
 pub fn run(command: Command) -> Result<()> {
     match command {
         Command::Eval(args) => run_eval(args),
-        Command::Render(args) => run_render(args),
+        Command::Render(args) => render::run(args),
         Command::Coeffs(args) => run_coeffs(args),
         Command::Compare(args) => run_compare(args),
         Command::Fit(args) => run_fit(args),
@@ -46,24 +46,6 @@ fn run_eval(args: EvalArgs) -> Result<()> {
 fn run_coeffs(args: CoeffsArgs) -> Result<()> {
     let curves = input::load_curves(&args.curve, "--curve", read_stdin)?;
     stdout::print(&coeffs::table(&curves)?)
-}
-
-fn run_render(args: RenderArgs) -> Result<()> {
-    let options = render::RenderOptions {
-        paths: args.paths,
-        out: args.out,
-        formats: render::Format::parse_list(&args.format)?,
-        canvas: render::CanvasOverride {
-            width: args.width,
-            height: args.height,
-            png_scale: args.png_scale,
-            font_px: args.font_px,
-        },
-    };
-    match &args.check {
-        Some(dir) => render::check(&options, dir, args.tolerance, args.quiet),
-        None => render::run_with_progress(&options, args.quiet).map(|_| ()),
-    }
 }
 
 /// Loads exactly one curve from a curve argument (inline JSON, @FILE or - for one line on stdin).
@@ -108,9 +90,9 @@ fn run_fit(args: FitArgs) -> Result<()> {
 }
 
 fn run_check(args: CheckArgs) -> Result<()> {
-    let scenes = render::load_scenes(
-        &render::sources(&args.paths)?,
-        render::CanvasOverride::default(),
+    let scenes = source::load_scenes(
+        &source::sources(&args.paths)?,
+        source::CanvasOverride::default(),
     )?;
     let audits = check::audit_scenes(&scenes)?;
     stdout::print(&check::table(&audits, args.tolerance))?;

@@ -3,7 +3,7 @@
 //! shortest round-trip form.
 
 use crate::cmd::eval::csv_field;
-use crate::series::Figure;
+use crate::figure::Figure;
 use std::fmt::Write;
 
 /// The CSV bytes of a figure: header `panel,series,curve,x,y` (and `,z` when any series has z

@@ -14,8 +14,8 @@ mod samples;
 use crate::curve::Curve;
 use crate::fresnel::{Fresnel, Ior};
 use crate::scene::interactive::Interactive;
+use crate::scene::look::{Dash, XUnit, YScale};
 use crate::scene::{Scene, SceneCurve};
-use crate::series::{Dash, XUnit, YScale};
 use rayon::prelude::*;
 use serde_json::{Value, json};
 
@@ -28,7 +28,7 @@ const STYLES: &str = include_str!("html/page.css");
 /// The page of `scene` with its `interactive` part, or `Err` naming a non-finite value.
 pub fn page(scene: &Scene, interactive: &Interactive) -> Result<Vec<u8>, String> {
     let panel = &scene.panels[0];
-    let range = panel.theta_range();
+    let range = panel.axes.theta_range();
     let curves: Vec<&SceneCurve> = interactive
         .entries
         .iter()
@@ -78,21 +78,21 @@ pub fn page(scene: &Scene, interactive: &Interactive) -> Result<Vec<u8>, String>
     let data = json!({
         "id": scene.id,
         "title": scene.title,
-        "panel_title": panel.title,
-        "x_label": panel.x_label,
-        "y_label": panel.y_label,
-        "degrees": panel.x_unit == XUnit::Degrees,
+        "panel_title": panel.axes.title,
+        "x_label": panel.axes.x_label,
+        "y_label": panel.axes.y_label,
+        "degrees": panel.axes.x_unit == XUnit::Degrees,
         "theta": [range.0, range.1],
         "levels": [samples::COARSE_LEVELS, samples::FINE_LEVELS],
         "log_step": samples::LOG_STEP,
         "log_decades": samples::LOG_DECADES,
         "precision": PRECISION,
-        "y_scale": if panel.y_scale == YScale::Log { "log" } else { "linear" },
-        "y_range": panel.y_range.map(|(a, b)| [a, b]),
+        "y_scale": if panel.axes.y_scale == YScale::Log { "log" } else { "linear" },
+        "y_range": panel.axes.y_range.map(|(a, b)| [a, b]),
         "width": scene.canvas.width_px,
         "height": scene.canvas.height_px,
         "font_px": scene.canvas.font_px,
-        "legend": panel.legend,
+        "legend": panel.axes.legend,
         "sliders": sliders,
         "styles": styles,
         "entries": entries,

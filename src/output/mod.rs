@@ -1,4 +1,8 @@
-//! Exporters: turn evaluated figures into bytes, and the one place that writes files.
+//! Exporters: pure serializers from an evaluated [`Figure`] to bytes — SVG, PNG, PDF, CSV and the
+//! interactive HTML page — and [`write`], the one place that writes files.
+//!
+//! Nothing here evaluates a curve or decides what to compute: every value written comes from the
+//! figure it is handed.
 
 pub mod csv;
 pub mod html;
@@ -6,3 +10,94 @@ pub mod pdf;
 pub mod plot;
 pub mod plot3d;
 pub mod write;
+
+use crate::error::{Error, Result};
+use crate::figure::Figure;
+use csv::figure_csv;
+
+/// An output format of `render`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Format {
+    /// Scalable vector graphics with text kept as text.
+    Svg,
+    /// Raster image with text drawn from the embedded font.
+    Png,
+    /// One-page vector PDF of the SVG, text in the embedded font; only when asked for.
+    Pdf,
+    /// The sampled points, long format (CONTRACTS.md).
+    Csv,
+    /// A self-contained interactive page, for scenes with sliders only.
+    Html,
+}
+
+impl Format {
+    /// Every format, in output order.
+    pub const ALL: [Format; 5] = [
+        Format::Svg,
+        Format::Png,
+        Format::Pdf,
+        Format::Csv,
+        Format::Html,
+    ];
+
+    /// File extension.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Format::Svg => "svg",
+            Format::Png => "png",
+            Format::Pdf => "pdf",
+            Format::Csv => "csv",
+            Format::Html => "html",
+        }
+    }
+
+    /// Parses a comma-separated list such as `svg,csv`.
+    pub fn parse_list(text: &str) -> Result<Vec<Format>> {
+        let mut formats = Vec::new();
+        for word in text.split(',').map(str::trim) {
+            let format = Format::ALL.into_iter().find(|f| f.extension() == word).ok_or_else(|| {
+                Error::Usage(format!("--format: unknown format (got \"{word}\", expected a comma list of svg, png, pdf, csv, html)"))
+            })?;
+            if !formats.contains(&format) {
+                formats.push(format);
+            }
+        }
+        formats.sort();
+        Ok(formats)
+    }
+}
+
+/// The bytes of one output of a figure (see [`encode_all`]).
+pub fn encode(figure: &Figure, format: Format) -> Result<Vec<u8>> {
+    Ok(encode_all(figure, &[format])?.remove(0))
+}
+
+/// The bytes of each of `formats` of a figure, in order. The PDF is converted from the figure's
+/// SVG, which is drawn once when both are asked for.
+pub fn encode_all(figure: &Figure, formats: &[Format]) -> Result<Vec<Vec<u8>>> {
+    let plot_error =
+        |e: plot::PlotError| Error::Numerics(format!("{}: drawing failed: {e}", figure.id));
+    let mut svg: Option<Vec<u8>> = None;
+    let mut encoded = Vec::with_capacity(formats.len());
+    for &format in formats {
+        encoded.push(match format {
+            Format::Svg | Format::Pdf => {
+                let svg = match svg {
+                    Some(ref drawn) => drawn,
+                    None => svg.insert(plot::svg(figure).map_err(plot_error)?),
+                };
+                if format == Format::Svg {
+                    svg.clone()
+                } else {
+                    pdf::from_svg(svg, &figure.title, &figure.provenance).map_err(|e| {
+                        Error::Numerics(format!("{}: PDF conversion failed: {e}", figure.id))
+                    })?
+                }
+            }
+            Format::Png => plot::png(figure).map_err(plot_error)?,
+            Format::Csv => figure_csv(figure),
+            Format::Html => unreachable!("pages are built from scenes, by `pages`"),
+        });
+    }
+    Ok(encoded)
+}

@@ -20,7 +20,7 @@ use super::reader::{Object, Reader};
 use super::{SceneCurve, ScenePanel, data, read_curve_entry, sweep};
 use crate::json::{Node, Number, Value};
 use crate::problem::{Problem, join_index, join_key, suggestion};
-use crate::series::PanelKind;
+use crate::scene::look::PanelKind;
 use std::borrow::Cow;
 
 /// Most sliders one scene may declare (the notebooks use up to four).
@@ -423,7 +423,7 @@ pub fn read(
 ) -> Option<Interactive> {
     let sliders = sliders?;
     let panels = panels?;
-    if panels.len() != 1 || panels[0].kind != PanelKind::Cartesian {
+    if panels.len() != 1 || panels[0].axes.kind != PanelKind::Cartesian {
         reader.report(
             "panels",
             format!(

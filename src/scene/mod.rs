@@ -7,6 +7,7 @@
 
 pub mod data;
 pub mod interactive;
+pub mod look;
 pub mod reader;
 pub mod sweep;
 
@@ -14,10 +15,11 @@ use crate::curve::{self, Curve, Model, ParamValue};
 use crate::dataset::Dataset;
 use crate::fresnel::Fresnel;
 use crate::json::{Node, Value};
+use crate::layout;
 use crate::ndf::Family;
 use crate::problem::{Problem, join_index, join_key, suggestion};
-use crate::series::{Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 use crate::transform::Transform;
+use look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 use reader::Reader;
 use std::f64::consts::FRAC_PI_2;
 use sweep::{MAX_CURVES_PER_SCENE, Sweep};
@@ -30,8 +32,6 @@ pub const MAX_SAMPLES_PER_CURVE: usize = 10_000_000;
 pub const MAX_POINTS_PER_SCENE: usize = 10_000_000;
 /// Default number of uniform samples per curve over the visible θ range.
 pub const DEFAULT_SAMPLES: usize = 1000;
-/// Default panel height / width: 1/φ, Mathematica's default `AspectRatio`.
-pub const DEFAULT_ASPECT_RATIO: f64 = 0.618_033_988_749_894_9;
 /// Largest figure side in CSS pixels; beyond it rasters exhaust memory for no visible gain.
 pub const MAX_SIDE_PX: f64 = 20_000.0;
 /// Largest PNG pixel count (width × height × scale²), about a 100-megapixel image.
@@ -167,38 +167,12 @@ pub struct SceneData {
 /// A validated panel.
 #[derive(Debug, Clone)]
 pub struct ScenePanel {
-    /// Panel title (may be empty).
-    pub title: String,
-    /// x axis label.
-    pub x_label: String,
-    /// y axis label.
-    pub y_label: String,
-    /// What the x axis shows: θ in a display unit, or a plain quantity.
-    pub x_unit: XUnit,
-    /// 2D, or 3D with its z axis and view.
-    pub kind: PanelKind,
-    /// y scale.
-    pub y_scale: YScale,
-    /// Given x range (radians on θ axes, within [0, π/2]); `None` = automatic.
-    pub x_range: Option<(f64, f64)>,
-    /// Given y range, or automatic.
-    pub y_range: Option<(f64, f64)>,
-    /// Whether a legend is drawn.
-    pub legend: bool,
+    /// Titles, axes, scales, ranges and legend.
+    pub axes: Axes,
     /// Curves in drawing order.
     pub curves: Vec<SceneCurve>,
     /// Data series (not functions of θ), drawn after the curves.
     pub data: Vec<SceneData>,
-}
-
-impl ScenePanel {
-    /// The θ interval the panel's curves are sampled on: the visible range, [0, π/2] by default.
-    pub fn theta_range(&self) -> (f64, f64) {
-        match self.x_unit {
-            XUnit::Plain => (0.0, FRAC_PI_2),
-            _ => self.x_range.unwrap_or((0.0, FRAC_PI_2)),
-        }
-    }
 }
 
 /// A validated scene.
@@ -318,13 +292,13 @@ pub fn theme_named(name: &str) -> Theme {
 fn check_interactive_views(reader: &mut Reader, panels: &[ScenePanel]) {
     for (i, panel) in panels.iter().enumerate() {
         let path = join_index("panels", i);
-        if panel.kind == PanelKind::Polar {
+        if panel.axes.kind == PanelKind::Polar {
             reader.report(
                 join_key(&path, "view"),
                 "interactive pages draw cartesian panels (got \"polar\", expected \"cartesian\")",
             );
         }
-        if panel.x_unit == XUnit::Slope {
+        if panel.axes.x_unit == XUnit::Slope {
             reader.report(
                 join_key(&join_key(&path, "x"), "unit"),
                 "interactive pages draw θ axes (got \"slope\", expected radians or degrees)",
@@ -445,17 +419,14 @@ fn read_canvas(
             |v| (0.05..=20.0).contains(&v),
             "0.05 to 20",
         )
-        .unwrap_or(DEFAULT_ASPECT_RATIO);
+        .unwrap_or(layout::DEFAULT_ASPECT_RATIO);
     let width = reader
         .number(object, "width", side, &side_text)
-        .unwrap_or(default_width(cols));
-    let title_band = if titled { 40.0 } else { 0.0 };
+        .unwrap_or(layout::default_width(cols));
     let height = reader
         .number(object, "height", side, &side_text)
         .unwrap_or_else(|| {
-            (rows as f64 * width / cols as f64 * aspect + title_band)
-                .round()
-                .clamp(16.0, MAX_SIDE_PX)
+            layout::default_height(rows, cols, width, aspect, titled).clamp(16.0, MAX_SIDE_PX)
         });
     let font_px = reader
         .number(
@@ -483,15 +454,6 @@ fn read_canvas(
         .map_err(|message| reader.report("png_scale", message))
         .ok()?;
     Some(canvas)
-}
-
-/// Default figure width in CSS pixels: 640 for one column, 480 per column otherwise.
-pub fn default_width(cols: usize) -> f64 {
-    if cols <= 1 {
-        640.0
-    } else {
-        480.0 * cols as f64
-    }
 }
 
 /// Rejects canvases whose PNG would exceed [`MAX_PNG_PIXELS`].
@@ -595,19 +557,21 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
         (None, None) => (String::new(), String::new()),
     };
     Some(ScenePanel {
-        title,
-        x_label: x
-            .and_then(|x| reader.string(&x, "label"))
-            .unwrap_or(default_x_label),
-        y_label: y
-            .and_then(|y| reader.string(&y, "label"))
-            .unwrap_or(default_y_label),
-        x_unit,
-        kind,
-        y_scale,
-        x_range,
-        y_range,
-        legend,
+        axes: Axes {
+            title,
+            x_label: x
+                .and_then(|x| reader.string(&x, "label"))
+                .unwrap_or(default_x_label),
+            y_label: y
+                .and_then(|y| reader.string(&y, "label"))
+                .unwrap_or(default_y_label),
+            x_unit,
+            kind,
+            y_scale,
+            x_range,
+            y_range,
+            legend,
+        },
         curves: series.curves,
         data: series.data,
     })

@@ -7,7 +7,11 @@ use std::ops::Range;
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint};
 use plotters::prelude::*;
 
-use crate::series::{AUTO_MARGIN, Mark, Panel, Series, XUnit, YScale, widen_if_flat};
+use crate::figure::{Panel, Series};
+
+use crate::scene::look::{Mark, XUnit, YScale};
+
+use crate::layout::{AUTO_MARGIN, widen_if_flat};
 
 /// Finest tick count tried to give a short linear axis two labelled ticks (any range holds
 /// two multiples of a step a tenth of its span).
@@ -52,7 +56,7 @@ impl Axis {
     /// half a bar spacing when bars are drawn). Plain axes whose x values are all whole
     /// numbers (indices) tick at whole numbers.
     pub(super) fn x(panel: &Panel, max_ticks: f64) -> Axis {
-        let unit = panel.x_unit;
+        let unit = panel.axes.x_unit;
         let data = || {
             panel
                 .series
@@ -76,6 +80,7 @@ impl Axis {
             Some(range) => range,
         };
         let given = panel
+            .axes
             .x_range
             .and_then(|(a, b)| Some((x_display(a, unit)?, x_display(b, unit)?)));
         let (lo, hi) = match given {
@@ -113,19 +118,20 @@ impl Axis {
     /// [`YScale::range`]. An automatic linear range includes 0 when bars are drawn.
     pub(super) fn y(panel: &Panel, max_ticks: f64) -> Axis {
         let bars = panel.series.iter().any(|s| s.style.mark == Mark::Bars);
-        let base = (bars && panel.y_scale == YScale::Linear).then_some(0.0);
+        let base = (bars && panel.axes.y_scale == YScale::Linear).then_some(0.0);
         let data = extent(values(panel).chain(base));
-        let range = panel.y_scale.range(panel.y_range, data);
-        Axis::values(panel.y_scale, range, max_ticks)
+        let range = panel.axes.y_scale.range(panel.axes.y_range, data);
+        Axis::values(panel.axes.y_scale, range, max_ticks)
     }
 
     /// The radius axis of a polar panel, with at most about `max_ticks` ticks, over
     /// [`YScale::radial_range`]: the centre is its low end, the rim its high end.
     pub(super) fn radius(panel: &Panel, max_ticks: f64) -> Axis {
         let range = panel
+            .axes
             .y_scale
-            .radial_range(panel.y_range, extent(values(panel)));
-        Axis::values(panel.y_scale, range, max_ticks)
+            .radial_range(panel.axes.y_range, extent(values(panel)));
+        Axis::values(panel.axes.y_scale, range, max_ticks)
     }
 
     /// An axis of values on `scale` over `(lo, hi)` (display units): decimal ticks on a
@@ -270,7 +276,7 @@ fn values(panel: &Panel) -> impl Iterator<Item = f64> + '_ {
         .series
         .iter()
         .flat_map(|s| s.points.iter())
-        .filter_map(|&(_, v)| panel.y_scale.display(v))
+        .filter_map(|&(_, v)| panel.axes.y_scale.display(v))
 }
 
 /// Minimum and maximum of `values`, `None` when empty.
@@ -337,7 +343,7 @@ pub(super) fn median_spacing(series: &Series, unit: XUnit) -> Option<f64> {
 mod tests {
     use super::*;
     use crate::output::plot::fixtures::{RED, panel, series};
-    use crate::series::Dash;
+    use crate::scene::look::Dash;
     use std::f64::consts::PI;
 
     #[test]
@@ -362,7 +368,7 @@ mod tests {
         let automatic = Axis::x(&p, 6.0);
         assert_eq!((automatic.lo, automatic.hi), (0.0, 4.0));
         assert_eq!(automatic.ticks, [0.0, 1.0, 2.0, 3.0, 4.0]);
-        p.x_range = Some((0.0, 3.0f64.atan()));
+        p.axes.x_range = Some((0.0, 3.0f64.atan()));
         let given = Axis::x(&p, 8.0);
         assert!(given.lo == 0.0 && (given.hi - 3.0).abs() < 1e-12);
         assert_eq!(given.ticks, [0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]);

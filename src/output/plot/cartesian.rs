@@ -7,11 +7,13 @@ use plotters::prelude::*;
 use super::axis::{Axis, median_spacing, x_display};
 use super::clip::visible_pieces;
 use super::legend::{Legend, Outside, Sample, Side};
-use super::style::{AXIS_LABEL_EM, Metrics, stroke};
+use super::style::{Metrics, stroke};
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
-use crate::scene::DEFAULT_ASPECT_RATIO;
-use crate::series::{Mark, Panel, Series, YScale};
+use crate::figure::{Panel, Series};
+use crate::layout::AXIS_LABEL_EM;
+use crate::layout::DEFAULT_ASPECT_RATIO;
+use crate::scene::look::{Mark, YScale};
 
 /// Bar width as a fraction of the median spacing of a series' x values.
 pub(super) const BAR_FRACTION: f64 = 0.6;
@@ -216,8 +218,8 @@ where
     let y_fmt = |v: &f64| y.label(*v);
     chart
         .configure_mesh()
-        .x_desc(panel.x_label.as_str())
-        .y_desc(panel.y_label.as_str())
+        .x_desc(panel.axes.x_label.as_str())
+        .y_desc(panel.axes.y_label.as_str())
         .x_label_formatter(&x_fmt)
         .y_label_formatter(&y_fmt)
         .label_style(m.font(1.0))
@@ -334,7 +336,9 @@ pub(super) fn visible_points(
     series
         .points
         .iter()
-        .filter_map(|&(theta, v)| x_display(theta, panel.x_unit).zip(panel.y_scale.display(v)))
+        .filter_map(|&(theta, v)| {
+            x_display(theta, panel.axes.x_unit).zip(panel.axes.y_scale.display(v))
+        })
         .filter(|&(vx, vy)| (x.lo..=x.hi).contains(&vx) && (y.lo..=y.hi).contains(&vy))
         .collect()
 }
@@ -347,16 +351,18 @@ pub(super) fn visible_bars(
     x: &Axis,
     y: &Axis,
 ) -> Vec<[(f64, f64); 2]> {
-    let width = median_spacing(series, panel.x_unit)
+    let width = median_spacing(series, panel.axes.x_unit)
         .map_or(LONE_BAR_FRACTION * (x.hi - x.lo), |gap| BAR_FRACTION * gap);
-    let base = match panel.y_scale {
+    let base = match panel.axes.y_scale {
         YScale::Linear => 0.0f64.clamp(y.lo, y.hi),
         YScale::Log => y.lo,
     };
     series
         .points
         .iter()
-        .filter_map(|&(theta, v)| x_display(theta, panel.x_unit).zip(panel.y_scale.display(v)))
+        .filter_map(|&(theta, v)| {
+            x_display(theta, panel.axes.x_unit).zip(panel.axes.y_scale.display(v))
+        })
         .filter_map(|(centre, top)| {
             let (x0, x1) = (
                 (centre - width / 2.0).max(x.lo),
@@ -372,7 +378,7 @@ pub(super) fn visible_bars(
 mod tests {
     use super::*;
     use crate::output::plot::fixtures::{RED, marked, panel, series};
-    use crate::series::{Dash, XUnit};
+    use crate::scene::look::{Dash, XUnit};
 
     #[test]
     fn plain_axes_pad_the_data_and_tick_whole_indices() {

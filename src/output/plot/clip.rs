@@ -2,7 +2,7 @@
 //! axes box (Liang–Barsky), in display coordinates.
 
 use super::axis::{Axis, x_display};
-use crate::series::{Panel, Series};
+use crate::figure::{Panel, Series};
 
 /// The drawable parts of `series` in display coordinates: broken at undrawable points
 /// (non-finite, or ≤ 0 on a log axis) and clipped to the axes box.
@@ -15,7 +15,7 @@ pub(super) fn visible_pieces(
     let points = series
         .points
         .iter()
-        .map(|&(theta, v)| x_display(theta, panel.x_unit).zip(panel.y_scale.display(v)));
+        .map(|&(theta, v)| x_display(theta, panel.axes.x_unit).zip(panel.axes.y_scale.display(v)));
     pieces(points, [x.lo, x.hi, y.lo, y.hi])
 }
 
@@ -119,7 +119,7 @@ pub(super) fn clip(a: (f64, f64), b: (f64, f64), [x0, x1, y0, y1]: [f64; 4]) -> 
 mod tests {
     use super::*;
     use crate::output::plot::fixtures::{RED, panel, series};
-    use crate::series::{Dash, XUnit, YScale};
+    use crate::scene::look::{Dash, XUnit, YScale};
 
     #[test]
     fn curves_break_at_undrawable_points_and_clip_to_the_axes() {
@@ -133,7 +133,7 @@ mod tests {
         ];
         let s = series("s", RED, 1.0, Dash::Solid, points);
         let mut p = panel(XUnit::Radians, YScale::Log, vec![s.clone()]);
-        p.y_range = Some((0.5, 10.0));
+        p.axes.y_range = Some((0.5, 10.0));
         let (x, y) = (Axis::x(&p, 8.0), Axis::y(&p, 8.0));
         let pieces = visible_pieces(&s, &p, &x, &y);
         assert_eq!(pieces.len(), 3);

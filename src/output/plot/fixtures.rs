@@ -4,10 +4,9 @@
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
+use crate::figure::{Figure, Panel, Series};
 use crate::provenance::Provenance;
-use crate::series::{
-    Canvas, Dash, Figure, Mark, Panel, PanelKind, Rgb, Series, Style, Theme, XUnit, YScale,
-};
+use crate::scene::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 
 /// The spec text the test figures claim to come from.
 pub(super) const SPEC: &[u8] = br#"{"id": "sample"}"#;
@@ -66,15 +65,17 @@ fn beckmann(alpha_b: f64) -> Vec<(f64, f64)> {
 
 pub(super) fn panel(x_unit: XUnit, y_scale: YScale, series: Vec<Series>) -> Panel {
     Panel {
-        title: String::new(),
-        x_label: "θ".to_owned(),
-        y_label: "D(θ)".to_owned(),
-        x_unit,
-        kind: PanelKind::Cartesian,
-        y_scale,
-        x_range: None,
-        y_range: None,
-        legend: true,
+        axes: Axes {
+            title: String::new(),
+            x_label: "θ".to_owned(),
+            y_label: "D(θ)".to_owned(),
+            x_unit,
+            kind: PanelKind::Cartesian,
+            y_scale,
+            x_range: None,
+            y_range: None,
+            legend: true,
+        },
         series,
     }
 }
@@ -107,7 +108,7 @@ pub(super) fn sample() -> Figure {
             series("α_b = 0.8", BLUE, 1.0, Dash::Solid, beckmann(0.8)),
         ],
     );
-    log.title = "Beckmann".to_owned();
+    log.axes.title = "Beckmann".to_owned();
     let schlick = |f0: f64| sampled(move |theta| f0 + (1.0 - f0) * (1.0 - theta.cos()).powi(5));
     let mut fresnel = panel(
         XUnit::Degrees,
@@ -117,7 +118,7 @@ pub(super) fn sample() -> Figure {
             series("F₀ = 0.5", RED, 1.0, Dash::Dotted, schlick(0.5)),
         ],
     );
-    fresnel.y_label = "F".to_owned();
+    fresnel.axes.y_label = "F".to_owned();
     figure(vec![log, fresnel])
 }
 
@@ -213,9 +214,9 @@ pub(super) fn fresnel_sample() -> Figure {
             ),
         ],
     );
-    spectrum.title = "Spectrum".to_owned();
-    spectrum.x_label = "Number of basis elements".to_owned();
-    spectrum.y_label = "Cumulative singular values".to_owned();
+    spectrum.axes.title = "Spectrum".to_owned();
+    spectrum.axes.x_label = "Number of basis elements".to_owned();
+    spectrum.axes.y_label = "Cumulative singular values".to_owned();
 
     let dielectric = manifold_edge(0.0);
     let conductor = manifold_edge(1.0);
@@ -231,11 +232,11 @@ pub(super) fn fresnel_sample() -> Figure {
             series("g = 1", BLACK, 1.0, Dash::Solid, xy(&conductor)),
         ],
     );
-    scatter.title = "Gulbrandsen parametrization".to_owned();
-    scatter.x_label = "c₀".to_owned();
-    scatter.y_label = "c₂".to_owned();
-    scatter.x_range = Some((0.0, 1.0));
-    scatter.y_range = Some((-0.35, 0.35));
+    scatter.axes.title = "Gulbrandsen parametrization".to_owned();
+    scatter.axes.x_label = "c₀".to_owned();
+    scatter.axes.y_label = "c₂".to_owned();
+    scatter.axes.x_range = Some((0.0, 1.0));
+    scatter.axes.y_range = Some((-0.35, 0.35));
 
     let grid = manifold_grid(20);
     let mut surface = panel(
@@ -259,12 +260,12 @@ pub(super) fn fresnel_sample() -> Figure {
             ),
         ],
     );
-    surface.kind = surface_kind(Some((-1.0, 1.0)));
-    surface.title = "Coefficient manifold".to_owned();
-    surface.x_label = "c₀".to_owned();
-    surface.y_label = "c₂".to_owned();
-    surface.x_range = Some((0.0, 1.0));
-    surface.y_range = Some((-0.4, 0.4));
+    surface.axes.kind = surface_kind(Some((-1.0, 1.0)));
+    surface.axes.title = "Coefficient manifold".to_owned();
+    surface.axes.x_label = "c₀".to_owned();
+    surface.axes.y_label = "c₂".to_owned();
+    surface.axes.x_range = Some((0.0, 1.0));
+    surface.axes.y_range = Some((-0.4, 0.4));
 
     let mut figure = figure(vec![spectrum, scatter, surface]);
     figure.title = "Fresnel decomposition".to_owned();
@@ -298,8 +299,8 @@ pub(super) fn phong(alpha_p: f64) -> Vec<(f64, f64)> {
 pub(super) fn polar_sample() -> Figure {
     let polar = |title: &str, x_unit, y_scale, series| {
         let mut p = panel(x_unit, y_scale, series);
-        p.kind = PanelKind::Polar;
-        p.title = title.to_owned();
+        p.axes.kind = PanelKind::Polar;
+        p.axes.title = title.to_owned();
         p
     };
     let beckmann = vec![

@@ -16,7 +16,8 @@ use super::style::{MARKER_RADIUS_PX, Metrics, SURFACE_OPACITY, mesh_colour, stro
 use super::text::MIN_SHRINK;
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
-use crate::series::{Mark, Panel, Series};
+use crate::figure::{Panel, Series};
+use crate::scene::look::Mark;
 
 /// Number of heights tried for the legend box, from the top to the bottom of the plot area.
 pub(super) const LEGEND_HEIGHTS: i32 = 5;
@@ -148,7 +149,7 @@ impl<'a> Legend<'a> {
             .series
             .iter()
             .zip(looks)
-            .filter(|(s, _)| panel.legend && !s.label.is_empty())
+            .filter(|(s, _)| panel.axes.legend && !s.label.is_empty())
             .map(|(s, &look)| (s, look, sample(s)))
             .collect();
         if entries.is_empty() {

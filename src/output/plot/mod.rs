@@ -38,11 +38,13 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::plot3d::View;
-use crate::series::{Figure, Panel, PanelKind};
+use crate::figure::{Figure, Panel};
+use crate::layout::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
+use crate::scene::look::PanelKind;
 use cartesian::draw_cartesian;
 use encode::{MAX_DEVICE_PIXELS, device_size, downsample, encode_png, finish_svg};
 use polar::draw_polar;
-use style::{EM_PER_SIZE, FIGURE_TITLE_EM, Metrics, PANEL_TITLE_EM, ensure_font};
+use style::{EM_PER_SIZE, Metrics, ensure_font};
 use surface::draw_surface;
 use text::{LINE_GAP_EM, fit_text, text_size};
 use theme::Look;
@@ -237,8 +239,8 @@ fn draw_panel<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let area = titled(cell, &panel.title, PANEL_TITLE_EM, m)?;
-    match &panel.kind {
+    let area = titled(cell, &panel.axes.title, PANEL_TITLE_EM, m)?;
+    match &panel.axes.kind {
         PanelKind::Cartesian => draw_cartesian(&area, panel, looks, m),
         PanelKind::Polar => draw_polar(&area, panel, looks, m),
         PanelKind::Surface {
@@ -271,13 +273,14 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::figure::Series;
     use crate::output::plot::fixtures::{
         BLACK, BLUE, ORANGE, RED, SPEC, STEEL, decode, figure, fresnel_sample, in_3d,
         manifold_edge, manifold_grid, marked, panel, polylines_in, sample, sampled, series,
         surface_kind, xy, zs,
     };
     use crate::provenance::Provenance;
-    use crate::series::{Dash, Mark, PanelKind, Series, Theme, XUnit, YScale};
+    use crate::scene::look::{Dash, Mark, PanelKind, Theme, XUnit, YScale};
     use std::f64::consts::PI;
 
     #[test]
@@ -390,8 +393,8 @@ mod tests {
         let nan = series("nan", RED, 1.0, Dash::Dotted, sampled(|_| f64::NAN));
         let empty = series("", RED, 1.0, Dash::Solid, Vec::new());
         let mut clipped = panel(XUnit::Degrees, YScale::Linear, vec![flat.clone()]);
-        clipped.y_range = Some((0.5, 0.1));
-        clipped.x_range = Some((0.2, 0.2));
+        clipped.axes.y_range = Some((0.5, 0.1));
+        clipped.axes.x_range = Some((0.2, 0.2));
         let figures = [
             figure(vec![panel(
                 XUnit::Degrees,
@@ -545,7 +548,7 @@ mod tests {
         let grid = manifold_grid(5);
         let surface = |series: Vec<Series>| {
             let mut p = panel(XUnit::Plain, YScale::Linear, series);
-            p.kind = surface_kind(None);
+            p.axes.kind = surface_kind(None);
             figure(vec![p])
         };
         let flat: Vec<f64> = vec![0.5; grid.len()];
@@ -627,7 +630,7 @@ mod tests {
             YScale::Linear,
             vec![series("no z", STEEL, 1.0, Dash::Solid, xy(&grid))],
         );
-        p.kind = surface_kind(None);
+        p.axes.kind = surface_kind(None);
         let missing = figure(vec![p.clone()]);
         assert!(matches!(svg(&missing), Err(PlotError::Series { label, .. }) if label == "no z"));
         assert!(matches!(png(&missing), Err(PlotError::Series { .. })));
@@ -680,7 +683,7 @@ mod tests {
         let cartesian = || panel(XUnit::Radians, YScale::Linear, sweep(10));
         let polar = || {
             let mut p = cartesian();
-            p.kind = PanelKind::Polar;
+            p.axes.kind = PanelKind::Polar;
             p
         };
         let layouts = [
@@ -700,7 +703,7 @@ mod tests {
             fig.title.clear();
             fig.canvas.font_px = 14.0;
             for p in &mut fig.panels {
-                p.title = "α_b = 0.2 … 0.92".to_owned();
+                p.axes.title = "α_b = 0.2 … 0.92".to_owned();
             }
             (fig.rows, fig.cols) = (rows, cols);
             (fig.canvas.width_px, fig.canvas.height_px) = (width, height);
@@ -763,9 +766,9 @@ mod tests {
         let dir = std::env::temp_dir();
         let fresnel = fresnel_sample();
         let mut automatic = fresnel.panels[2].clone();
-        automatic.kind = surface_kind(None);
-        (automatic.x_range, automatic.y_range) = (None, None);
-        automatic.title = "Automatic ranges".to_owned();
+        automatic.axes.kind = surface_kind(None);
+        (automatic.axes.x_range, automatic.axes.y_range) = (None, None);
+        automatic.axes.title = "Automatic ranges".to_owned();
         let mut manifold = figure(vec![fresnel.panels[2].clone(), automatic]);
         (manifold.canvas.width_px, manifold.canvas.height_px) = (900, 400);
         for (name, figure) in [

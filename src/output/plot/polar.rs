@@ -19,11 +19,13 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::axis::Axis;
 use super::clip::pieces;
 use super::legend::{Covered, Legend, Outside, Sample, Setting, Side};
-use super::style::{AXIS_LABEL_EM, Metrics, stroke};
+use super::style::{Metrics, stroke};
 use super::text::{anchor_towards, text_box, text_size};
 use super::theme::Look;
 use super::{PlotError, draw_err};
-use crate::series::{Mark, Panel, XUnit, YScale};
+use crate::figure::Panel;
+use crate::layout::AXIS_LABEL_EM;
+use crate::scene::look::{Mark, XUnit, YScale};
 
 /// Angle steps tried for spokes and labels, in degrees, finest first.
 const ANGLE_STEPS_DEG: [f64; 4] = [15.0, 30.0, 45.0, 90.0];
@@ -62,10 +64,10 @@ where
     let text = |s: &str, font: &TextStyle| text_size(area, s, font);
     let gap = f64::from(m.px(0.4));
     let (_, tick_h) = text("0", &tick_font)?;
-    let label_h = if panel.y_label.is_empty() {
+    let label_h = if panel.axes.y_label.is_empty() {
         0.0
     } else {
-        text(&panel.y_label, &label_font)?.1 + gap
+        text(&panel.axes.y_label, &label_font)?.1 + gap
     };
     let (width, height) = area.dim_in_pixel();
     let (width, height) = (f64::from(width), f64::from(height));
@@ -121,7 +123,7 @@ where
         for candidate in ANGLE_STEPS_DEG {
             let mut widest = 0.0f64;
             for phi in angle_ticks(b, candidate) {
-                widest = widest.max(text(&angle_label(phi, panel.x_unit), &tick_font)?.0);
+                widest = widest.max(text(&angle_label(phi, panel.axes.x_unit), &tick_font)?.0);
             }
             if first.r * candidate.to_radians() >= widest + ANGLE_CLEARANCE_EM * m.unit {
                 step = candidate;
@@ -133,7 +135,7 @@ where
     let angles = angle_ticks(b, step);
     let mut side = 0.0f64;
     for &phi in &angles {
-        side = side.max(text(&angle_label(phi, panel.x_unit), &tick_font)?.0);
+        side = side.max(text(&angle_label(phi, panel.axes.x_unit), &tick_font)?.0);
     }
     if let Some(&rim) = radius.ticks.last() {
         side = side.max(text(&radius.label(rim), &tick_font)?.0 / 2.0);
@@ -174,7 +176,7 @@ where
     // Series: each visible piece and its mirror image, one path when they meet at the normal.
     for (series, look) in panel.series.iter().zip(looks) {
         let mark = series.style.mark;
-        let radial = |v: f64| radial_value(v, panel.y_scale, radius.lo);
+        let radial = |v: f64| radial_value(v, panel.axes.y_scale, radius.lo);
         if matches!(mark, Mark::Line | Mark::LinePoints) {
             let style = m.curve_style(look.colour, series.style.width);
             let points = series
@@ -248,7 +250,7 @@ where
             sector.centre.0 + reach * out.0,
             sector.centre.1 + reach * out.1 - if out.1.abs() < 1e-9 { gap } else { 0.0 },
         );
-        let label = angle_label(phi, panel.x_unit);
+        let label = angle_label(phi, panel.axes.x_unit);
         draw_label(area, &label, &tick_font.pos(pos), at)?;
         covered.add(&text_box(at, text(&label, &tick_font)?, corner));
     }
@@ -273,13 +275,13 @@ where
             covered.add(&text_box(at, size, corner));
         }
     }
-    if !panel.y_label.is_empty() {
+    if !panel.axes.y_label.is_empty() {
         let at = (
             sector.centre.0,
             sector.centre.1 + 2.0 * gap + tick_h + label_h / 2.0,
         );
         let centred = label_font.pos(Pos::new(HPos::Center, VPos::Center));
-        draw_label(area, &panel.y_label, &centred, at)?;
+        draw_label(area, &panel.axes.y_label, &centred, at)?;
     }
 
     let Some(legend) = legend else {
@@ -346,7 +348,7 @@ impl Sector {
 /// The θ range shown: `Panel::x_range` within [0, π/2], ends in either order; [0, π/2] when
 /// not given or empty.
 fn theta_range(panel: &Panel) -> (f64, f64) {
-    match panel.x_range {
+    match panel.axes.x_range {
         Some((p, q)) => {
             let (a, b) = (p.min(q).max(0.0), p.max(q).min(FRAC_PI_2));
             if b > a { (a, b) } else { (0.0, FRAC_PI_2) }
@@ -412,11 +414,12 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::figure::{Figure, Series};
     use crate::output::plot::fixtures::{
         BLUE, RED, figure, marked, panel, polar_sample, sampled, series,
     };
     use crate::output::plot::{png, svg};
-    use crate::series::{Dash, Figure, PanelKind, Series, Theme};
+    use crate::scene::look::{Dash, PanelKind, Theme};
 
     #[test]
     fn angle_labels_read_in_degrees_or_fractions_of_pi() {
@@ -450,9 +453,9 @@ mod tests {
     /// A one-panel polar figure of `series`.
     fn polar(series: Vec<Series>, y_scale: YScale, y_range: Option<(f64, f64)>) -> Figure {
         let mut p = panel(XUnit::Degrees, y_scale, series);
-        p.kind = PanelKind::Polar;
-        p.y_range = y_range;
-        p.legend = false;
+        p.axes.kind = PanelKind::Polar;
+        p.axes.y_range = y_range;
+        p.axes.legend = false;
         figure(vec![p])
     }
 
@@ -532,7 +535,7 @@ mod tests {
         );
         let zeros = series("zeros", BLUE, 1.0, Dash::Solid, sampled(|_| 0.0));
         let mut narrow = polar(vec![dots.clone()], YScale::Linear, None);
-        narrow.panels[0].x_range = Some((0.2, 0.6));
+        narrow.panels[0].axes.x_range = Some((0.2, 0.6));
         for figure in [
             polar(vec![zeros.clone()], YScale::Log, None),
             polar(vec![zeros, dots], YScale::Linear, Some((2.0, 3.0))),
@@ -551,7 +554,7 @@ mod tests {
         let dir = std::env::temp_dir();
         let mut sector = polar_sample();
         for p in &mut sector.panels {
-            p.x_range = Some((0.0, 50f64.to_radians()));
+            p.axes.x_range = Some((0.0, 50f64.to_radians()));
             p.series[0].style.mark = Mark::LinePoints;
         }
         sector.panels[1].series[1].style.mark = Mark::Points;

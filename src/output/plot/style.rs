@@ -9,7 +9,7 @@ use plotters::style::{FontFamily, FontStyle, register_font};
 
 use super::theme::{Palette, Pattern};
 use super::{PlotError, draw_err};
-use crate::series::{Mark, Rgb};
+use crate::scene::look::{Mark, Rgb};
 
 /// Name under which the embedded face is registered; the SVG names it first.
 pub(super) const FONT_NAME: &str = "DejaVu Sans";
@@ -34,11 +34,6 @@ pub(super) const MARKER_RADIUS_PX: f64 = 3.0;
 pub(super) const SURFACE_OPACITY: f64 = 0.8;
 /// Brightness of a surface's mesh lines relative to its colour.
 pub(super) const MESH_DARKEN: f64 = 0.7;
-
-/// Font sizes relative to `Canvas::font_px`.
-pub(super) const AXIS_LABEL_EM: f64 = 1.1;
-pub(super) const PANEL_TITLE_EM: f64 = 1.2;
-pub(super) const FIGURE_TITLE_EM: f64 = 1.4;
 
 /// Registers the embedded face once per process; later calls return the first outcome.
 pub(super) fn ensure_font() -> Result<(), PlotError> {

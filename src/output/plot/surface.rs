@@ -8,12 +8,14 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axis::{Axis, x_display};
 use super::legend::{Covered, Legend, Sample};
-use super::style::{AXIS_LABEL_EM, Metrics, SURFACE_OPACITY, mesh_colour, stroke};
+use super::style::{Metrics, SURFACE_OPACITY, mesh_colour, stroke};
 use super::text::{anchor_towards, text_box, text_size};
 use super::theme::Look;
 use super::{PlotError, draw_err};
+use crate::figure::{Panel, Series};
+use crate::layout::AXIS_LABEL_EM;
 use crate::output::plot3d::{self, P3, Projector, View};
-use crate::series::{Mark, Panel, Rgb, Series};
+use crate::scene::look::{Mark, Rgb};
 
 /// Free space between neighbouring tick labels along a 3D edge, in base text sizes.
 pub(super) const TICK_CLEARANCE_EM: f64 = 0.8;
@@ -142,7 +144,7 @@ where
                 .iter()
                 .zip(zs.iter())
                 .map(|(&(x, y), &z)| {
-                    let shown = x_display(x, panel.x_unit).zip(panel.y_scale.display(y));
+                    let shown = x_display(x, panel.axes.x_unit).zip(panel.axes.y_scale.display(y));
                     match shown {
                         Some((x, y)) if z.is_finite() => {
                             let v = [x, y, z];
@@ -210,7 +212,11 @@ where
 
     // Labelled edges: ticks and their labels point away from the box, the axis label beyond.
     let centre = projector.px([0.0; 3]);
-    let titles = [panel.x_label.as_str(), panel.y_label.as_str(), z_label];
+    let titles = [
+        panel.axes.x_label.as_str(),
+        panel.axes.y_label.as_str(),
+        z_label,
+    ];
     for (i, edge) in edges.iter().enumerate() {
         area.draw(&PathElement::new(
             [px(edge.from), px(edge.to)],

@@ -5,7 +5,9 @@
 
 use plotters::style::RGBColor;
 
-use crate::series::{Dash, Figure, Rgb, Series, Theme};
+use crate::figure::{Figure, Series};
+
+use crate::scene::look::{Dash, Rgb, Theme};
 
 /// The colours of everything that is not a series.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -208,7 +210,7 @@ fn luminance(Rgb(r, g, b): Rgb) -> f64 {
 mod tests {
     use super::*;
     use crate::output::plot::fixtures::{BLACK, BLUE, RED, figure, panel, sample, series};
-    use crate::series::{XUnit, YScale};
+    use crate::scene::look::{XUnit, YScale};
 
     #[test]
     fn the_notebook_theme_keeps_spec_colours_and_dashes() {

@@ -1,0 +1,210 @@
+//! The library entry point of a render: spec sources → scenes → plan → evaluated jobs → figures
+//! → encoded outputs → files. `ndfplot render`, `render --check`, the tests, the benches and the
+//! fuzzer all call it.
+//!
+//! Every spec is read and validated before anything is evaluated or written, so a bad spec
+//! writes no file at all; then the plan is evaluated in parallel and each output is written
+//! atomically through [`crate::output::write`].
+
+use crate::check_outputs;
+use crate::error::{Error, Result};
+use crate::figure::Figure;
+use crate::output::{Format, encode_all, html, write};
+use crate::plan::{Outputs, plan};
+use crate::progress::Progress;
+use crate::provenance::Provenance;
+use crate::sample::evaluate_all;
+use crate::scene::Scene;
+use crate::source::{CanvasOverride, load_scenes, sources};
+use rayon::prelude::*;
+use std::path::{Path, PathBuf};
+
+/// What to render and where.
+#[derive(Debug, Clone)]
+pub struct RenderOptions {
+    /// Spec files or folders; empty for the built-in catalogue.
+    pub paths: Vec<PathBuf>,
+    /// Output folder.
+    pub out: PathBuf,
+    /// Formats to produce.
+    pub formats: Vec<Format>,
+    /// Canvas overrides.
+    pub canvas: CanvasOverride,
+}
+
+/// The interactive page of every scene that has sliders.
+fn pages(scenes: &[Scene]) -> Result<Vec<(String, Vec<u8>)>> {
+    scenes
+        .iter()
+        .filter_map(|s| s.interactive.as_ref().map(|i| (s, i)))
+        .map(|(scene, interactive)| {
+            Ok((
+                format!("{}.html", scene.id),
+                html::page(scene, interactive).map_err(Error::Numerics)?,
+            ))
+        })
+        .collect()
+}
+
+/// Renders the scenes of `options` into its output folder; returns the files written.
+pub fn run(options: &RenderOptions) -> Result<Vec<PathBuf>> {
+    run_with_stats(options).map(|(written, _)| written)
+}
+
+/// Where a render run spent its time and work.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RenderStats {
+    /// Reading, planning and evaluating (wall time).
+    pub evaluation: std::time::Duration,
+    /// Drawing SVG, PNG and PDF, rasterization, PNG compression and PDF conversion included
+    /// (wall time).
+    pub drawing: std::time::Duration,
+    /// Formatting CSV and writing every file (wall time).
+    pub encoding: std::time::Duration,
+    /// Curve evaluations over all jobs.
+    pub evaluations: usize,
+    /// Outputs produced per format, in [`Format::ALL`] order without HTML: SVG, PNG, PDF, CSV.
+    pub produced: [usize; 4],
+}
+
+/// [`run`], also returning where the time went.
+pub fn run_with_stats(options: &RenderOptions) -> Result<(Vec<PathBuf>, RenderStats)> {
+    run_with_progress(options, true)
+}
+
+/// [`run_with_stats`] with a progress bar on stderr unless `quiet` (see [`Progress`]).
+pub fn run_with_progress(
+    options: &RenderOptions,
+    quiet: bool,
+) -> Result<(Vec<PathBuf>, RenderStats)> {
+    let (outputs, mut stats) = encode_outputs(options, false, quiet)?;
+    let stage = std::time::Instant::now();
+    let written = write_outputs(&options.out, &outputs)?;
+    stats.encoding += stage.elapsed();
+    Ok((written, stats))
+}
+
+/// `render --check DIR`: re-renders the CSVs of `options` (writing nothing) and compares them with
+/// DIR's at a relative `tolerance`; prints every difference, and fails (exit 1) on any. The tables
+/// are planned as a run with `options.formats` plans them (adaptive tables depend on whether PNG
+/// is drawn), but only CSV is encoded.
+pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -> Result<()> {
+    let mut options = options.clone();
+    if !options.formats.contains(&Format::Csv) {
+        options.formats.push(Format::Csv);
+    }
+    let (outputs, _) = encode_outputs(&options, true, quiet)?;
+    let (report, ok) = check_outputs::compare(dir, &outputs, tolerance)?;
+    crate::stdout::print(&report)?;
+    if ok {
+        Ok(())
+    } else {
+        Err(Error::CheckFailed(format!(
+            "error: render --check: the CSVs differ from {}",
+            dir.display()
+        )))
+    }
+}
+
+/// Output files as (file name, bytes).
+type Files = Vec<(String, Vec<u8>)>;
+
+/// Every output of `options` as (file name, bytes), sorted by name, without writing anything; only
+/// the CSVs when `tables_only`.
+fn encode_outputs(
+    options: &RenderOptions,
+    tables_only: bool,
+    quiet: bool,
+) -> Result<(Files, RenderStats)> {
+    let start = std::time::Instant::now();
+    let sources = sources(&options.paths)?;
+    let scenes = load_scenes(&sources, options.canvas)?;
+    let provenance: Vec<Provenance> = sources
+        .iter()
+        .map(|(_, text, _)| Provenance::of_spec(text.as_bytes()))
+        .collect();
+    let has = |f: Format| options.formats.contains(&f);
+    let outputs = Outputs {
+        drawn: !tables_only && (has(Format::Svg) || has(Format::Png) || has(Format::Pdf)),
+        table: has(Format::Csv),
+    };
+    let plan = plan(&scenes, outputs, has(Format::Png));
+    let encoded_formats = if tables_only {
+        1
+    } else {
+        options
+            .formats
+            .iter()
+            .filter(|&&f| f != Format::Html)
+            .count()
+    };
+    let progress = Progress::new(
+        (plan.jobs.len() + scenes.len() * encoded_formats) as u64,
+        quiet,
+    );
+    progress.stage("evaluating");
+    let evaluated = evaluate_all(&plan)?;
+    progress.advance(plan.jobs.len() as u64);
+    progress.stage("encoding");
+    let mut stats = RenderStats {
+        evaluation: start.elapsed(),
+        evaluations: evaluated.iter().map(|e| e.evaluations).sum(),
+        ..RenderStats::default()
+    };
+    let mut outputs: Vec<(String, Vec<u8>)> = Vec::new();
+    for (kind, feeds) in [(true, &plan.drawn), (false, &plan.table)] {
+        let Some(feeds) = feeds else { continue };
+        let stage = std::time::Instant::now();
+        let formats: Vec<Format> = options
+            .formats
+            .iter()
+            .copied()
+            .filter(|&f| f != Format::Html && (f != Format::Csv) == kind)
+            .collect();
+        let figures: Vec<Figure> = scenes
+            .iter()
+            .zip(&provenance)
+            .zip(feeds)
+            .map(|((s, p), f)| Figure::assemble(s, p, f, &evaluated))
+            .collect();
+        let encoded: Vec<Vec<(String, Vec<u8>)>> = figures
+            .par_iter()
+            .map(|fig| {
+                let bytes = encode_all(fig, &formats)?;
+                progress.advance(formats.len() as u64);
+                Ok(formats
+                    .iter()
+                    .map(|format| format!("{}.{}", fig.id, format.extension()))
+                    .zip(bytes)
+                    .collect())
+            })
+            .collect::<Result<_>>()?;
+        for &format in &formats {
+            stats.produced[format as usize] += figures.len();
+        }
+        outputs.extend(encoded.into_iter().flatten());
+        *(if kind {
+            &mut stats.drawing
+        } else {
+            &mut stats.encoding
+        }) += stage.elapsed();
+    }
+    let stage = std::time::Instant::now();
+    if has(Format::Html) && !tables_only {
+        outputs.extend(pages(&scenes)?);
+    }
+    outputs.sort_by(|a, b| a.0.cmp(&b.0));
+    stats.encoding += stage.elapsed();
+    Ok((outputs, stats))
+}
+
+fn write_outputs(dir: &Path, outputs: &[(String, Vec<u8>)]) -> Result<Vec<PathBuf>> {
+    write::ensure_dir(dir)?;
+    let mut written = Vec::with_capacity(outputs.len());
+    for (name, bytes) in outputs {
+        write::remove_stale(dir, name)?;
+        write::write_atomic(dir, name, bytes)?;
+        written.push(dir.join(name));
+    }
+    Ok(written)
+}
