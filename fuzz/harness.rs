@@ -97,8 +97,8 @@ fn spec(bytes: &[u8]) {
         Outputs {
             drawn: true,
             table: true,
+            page: false,
         },
-        false,
     );
     let Ok(evaluated) = evaluate_all(&plan) else {
         return;

@@ -13,6 +13,7 @@ pub mod cmd;
 pub mod curve;
 pub mod dataset;
 pub mod domain;
+pub mod dyadic;
 pub mod error;
 pub mod figure;
 pub mod fit;

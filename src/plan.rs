@@ -9,6 +9,7 @@
 use crate::adaptive::{Frame, Geometry};
 use crate::curve::Curve;
 use crate::dataset::Dataset;
+use crate::scene::interactive::Interactive;
 use crate::scene::look::PanelKind;
 use crate::scene::{Sampling, Scene, ScenePanel};
 use std::collections::HashMap;
@@ -32,6 +33,14 @@ pub enum Job {
         /// Index into [`Plan::frames`].
         frame: usize,
     },
+    /// A curve sampled on the dyadic grid of an interactive page over an interval
+    /// ([`crate::dyadic`]).
+    Dyadic {
+        /// The curve.
+        curve: Curve,
+        /// θ interval in radians.
+        theta_range: (f64, f64),
+    },
     /// A dataset computed once.
     Data(Dataset),
 }
@@ -47,6 +56,8 @@ pub struct Outputs {
     pub drawn: bool,
     /// Tables (CSV).
     pub table: bool,
+    /// Interactive pages (HTML).
+    pub page: bool,
 }
 
 /// The jobs, plus for each requested output kind the job feeding each scene, panel and series.
@@ -60,11 +71,15 @@ pub struct Plan {
     pub drawn: Option<Feeds>,
     /// Feeds of the tables, `None` when no table is written.
     pub table: Option<Feeds>,
+    /// Per scene, the jobs feeding its interactive page, every curve of every slider position in
+    /// order (`Interactive::curves`); `None` for a scene without a page, or when no page is made.
+    pub pages: Option<Vec<Option<Vec<usize>>>>,
 }
 
-/// Plans the evaluation of `scenes` for `outputs`, sharing identical jobs. `png` is whether
-/// PNG is drawn: adaptive tolerances are then judged at the raster's pixel size.
-pub fn plan(scenes: &[Scene], outputs: Outputs, png: bool) -> Plan {
+/// Plans the evaluation of `scenes` for `outputs`, sharing identical jobs. Adaptive tolerances
+/// are judged at the finer of the SVG's and the PNG's pixel sizes whichever formats are asked
+/// for, so the requested formats never change a value written.
+pub fn plan(scenes: &[Scene], outputs: Outputs) -> Plan {
     let mut planner = Planner {
         jobs: Vec::new(),
         frames: Vec::new(),
@@ -76,18 +91,25 @@ pub fn plan(scenes: &[Scene], outputs: Outputs, png: bool) -> Plan {
             .map(|scene| {
                 let sampling = pick(scene.sampling);
                 (0..scene.panels.len())
-                    .map(|p| planner.panel(scene, p, sampling, png))
+                    .map(|p| planner.panel(scene, p, sampling))
                     .collect()
             })
             .collect()
     };
     let drawn = outputs.drawn.then(|| feeds_for(Sampling::for_drawing));
     let table = outputs.table.then(|| feeds_for(Sampling::for_table));
+    let pages = outputs.page.then(|| {
+        scenes
+            .iter()
+            .map(|scene| Some(planner.page(scene, scene.interactive.as_ref()?)))
+            .collect()
+    });
     Plan {
         jobs: planner.jobs,
         frames: planner.frames,
         drawn,
         table,
+        pages,
     }
 }
 
@@ -110,7 +132,7 @@ impl Planner {
     }
 
     /// The jobs feeding panel `p` of `scene` under `sampling`.
-    fn panel(&mut self, scene: &Scene, p: usize, sampling: Sampling, png: bool) -> Vec<usize> {
+    fn panel(&mut self, scene: &Scene, p: usize, sampling: Sampling) -> Vec<usize> {
         let panel = &scene.panels[p];
         let (a, b) = panel.axes.theta_range();
         let mut feed = Vec::with_capacity(panel.curves.len() + panel.data.len());
@@ -119,7 +141,7 @@ impl Planner {
             Sampling::Adaptive { tolerance_px }
                 if !matches!(panel.axes.kind, PanelKind::Surface { .. }) =>
             {
-                let frame = frame(scene, panel, png, tolerance_px);
+                let frame = frame(scene, panel, tolerance_px);
                 // An adaptive curve depends on its panel's frame and, through the automatic y range,
                 // on every other curve of the panel.
                 let neighbours: Vec<String> = panel
@@ -145,12 +167,7 @@ impl Planner {
             }
             // Surface panels draw curves as 3D lines: no 2D pixel frame, so the table's grid.
             Sampling::Adaptive { .. } | Sampling::Default => {
-                return self.panel(
-                    scene,
-                    p,
-                    Sampling::Uniform(crate::scene::DEFAULT_SAMPLES),
-                    png,
-                );
+                return self.panel(scene, p, Sampling::Uniform(crate::scene::DEFAULT_SAMPLES));
             }
             Sampling::Uniform(samples) => {
                 for shown in &panel.curves {
@@ -173,12 +190,30 @@ impl Planner {
         }
         feed
     }
+
+    /// The jobs feeding the interactive page of `scene`: every curve of every slider position,
+    /// on the dyadic grid over the first panel's θ range.
+    fn page(&mut self, scene: &Scene, interactive: &Interactive) -> Vec<usize> {
+        let theta_range = scene.panels[0].axes.theta_range();
+        let (a, b) = theta_range;
+        interactive
+            .curves()
+            .map(|shown| {
+                let key = format!("dyadic {} {a:?} {b:?}", shown.curve.canonical_json());
+                self.intern(key, |_| Job::Dyadic {
+                    curve: shown.curve.clone(),
+                    theta_range,
+                })
+            })
+            .collect()
+    }
 }
 
-/// The pixel frame of `panel` in `scene` (see [`Frame::of_cell`]).
-fn frame(scene: &Scene, panel: &ScenePanel, png: bool, tolerance_px: f64) -> Frame {
+/// The pixel frame of `panel` in `scene` (see [`Frame::of_cell`]), at the PNG's pixel size or
+/// the SVG's, whichever is finer.
+fn frame(scene: &Scene, panel: &ScenePanel, tolerance_px: f64) -> Frame {
     let canvas = &scene.canvas;
-    let scale = if png { canvas.png_scale.max(1.0) } else { 1.0 };
+    let scale = canvas.png_scale.max(1.0);
     Frame::of_cell(
         (f64::from(canvas.width_px), f64::from(canvas.height_px)),
         (scene.rows, scene.cols),

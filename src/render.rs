@@ -13,7 +13,7 @@ use crate::output::{Format, encode_all, html, write};
 use crate::plan::{Outputs, plan};
 use crate::progress::Progress;
 use crate::provenance::Provenance;
-use crate::sample::evaluate_all;
+use crate::sample::{Evaluated, evaluate_all};
 use crate::scene::Scene;
 use crate::source::{CanvasOverride, load_scenes, sources};
 use rayon::prelude::*;
@@ -32,16 +32,23 @@ pub struct RenderOptions {
     pub canvas: CanvasOverride,
 }
 
-/// The interactive page of every scene that has sliders.
-fn pages(scenes: &[Scene]) -> Result<Vec<(String, Vec<u8>)>> {
+/// The interactive page of every scene that has sliders, from its planned jobs `feeds`.
+fn pages(
+    scenes: &[Scene],
+    feeds: &[Option<Vec<usize>>],
+    evaluated: &[Evaluated],
+) -> Vec<(String, Vec<u8>)> {
     scenes
         .iter()
-        .filter_map(|s| s.interactive.as_ref().map(|i| (s, i)))
-        .map(|(scene, interactive)| {
-            Ok((
-                format!("{}.html", scene.id),
-                html::page(scene, interactive).map_err(Error::Numerics)?,
-            ))
+        .zip(feeds)
+        .filter_map(|(scene, feed)| {
+            let page = html::page(
+                scene,
+                scene.interactive.as_ref()?,
+                feed.as_ref()?,
+                evaluated,
+            );
+            Some((format!("{}.html", scene.id), page))
         })
         .collect()
 }
@@ -85,9 +92,8 @@ pub fn run_with_progress(
 }
 
 /// `render --check DIR`: re-renders the CSVs of `options` (writing nothing) and compares them with
-/// DIR's at a relative `tolerance`; prints every difference, and fails (exit 1) on any. The tables
-/// are planned as a run with `options.formats` plans them (adaptive tables depend on whether PNG
-/// is drawn), but only CSV is encoded.
+/// DIR's at a relative `tolerance`; prints every difference, and fails (exit 1) on any. Only CSV
+/// is encoded.
 pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -> Result<()> {
     let mut options = options.clone();
     if !options.formats.contains(&Format::Csv) {
@@ -127,8 +133,9 @@ fn encode_outputs(
     let outputs = Outputs {
         drawn: !tables_only && (has(Format::Svg) || has(Format::Png) || has(Format::Pdf)),
         table: has(Format::Csv),
+        page: !tables_only && has(Format::Html),
     };
-    let plan = plan(&scenes, outputs, has(Format::Png));
+    let plan = plan(&scenes, outputs);
     let encoded_formats = if tables_only {
         1
     } else {
@@ -190,8 +197,8 @@ fn encode_outputs(
         }) += stage.elapsed();
     }
     let stage = std::time::Instant::now();
-    if has(Format::Html) && !tables_only {
-        outputs.extend(pages(&scenes)?);
+    if let Some(feeds) = &plan.pages {
+        outputs.extend(pages(&scenes, feeds, &evaluated));
     }
     outputs.sort_by(|a, b| a.0.cmp(&b.0));
     stats.encoding += stage.elapsed();

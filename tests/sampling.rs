@@ -208,8 +208,8 @@ fn default_sampling_draws_adaptively_and_tabulates_uniformly() {
         Outputs {
             drawn: true,
             table: true,
+            page: false,
         },
-        false,
     );
     let drawn = plan.drawn.as_ref().unwrap();
     let table = plan.table.as_ref().unwrap();
@@ -246,8 +246,9 @@ fn polar_panels_are_drawn_adaptively_in_the_disc() {
     let outputs = Outputs {
         drawn: true,
         table: false,
+        page: false,
     };
-    let p = plan(&scenes, outputs, true);
+    let p = plan(&scenes, outputs);
     let job = p.drawn.as_ref().unwrap()[0][0][0];
     assert!(matches!(p.jobs[job], Job::Adaptive { frame: 0, .. }));
     assert_eq!(p.frames[0].geometry, adaptive::Geometry::Polar);
@@ -262,8 +263,8 @@ fn explicit_sampling_applies_to_tables_too() {
         Outputs {
             drawn: true,
             table: true,
+            page: false,
         },
-        false,
     );
     assert_eq!(p.drawn, p.table);
     assert!(
@@ -280,8 +281,8 @@ fn explicit_sampling_applies_to_tables_too() {
         Outputs {
             drawn: true,
             table: true,
+            page: false,
         },
-        false,
     );
     assert_eq!(p.drawn, p.table);
     assert!(p.jobs.iter().all(|j| matches!(j, Job::Adaptive { .. })));
@@ -350,13 +351,39 @@ fn a_run_produces_only_the_requested_formats_and_needed_jobs() {
             &scenes,
             Outputs {
                 drawn: false,
-                table: true
+                table: true,
+                page: false,
             },
-            false
         )
         .drawn
         .is_none()
     );
+}
+
+#[test]
+fn the_requested_formats_never_change_a_value_written() {
+    let dir = temp_dir("same-values");
+    let spec = dir.join("s.json");
+    // Adaptive tables: their points depend on the pixel frame, which must not depend on whether
+    // PNG is drawn.
+    std::fs::write(&spec, scene(r#""sampling":{"adaptive":{}},"#)).unwrap();
+    let run = |name: &str, formats: Vec<Format>| {
+        let out = dir.join(name);
+        render::run(&RenderOptions {
+            paths: vec![spec.clone()],
+            out: out.clone(),
+            formats,
+            canvas: CanvasOverride::default(),
+        })
+        .unwrap();
+        out
+    };
+    let all = run("all", vec![Format::Svg, Format::Png, Format::Csv]);
+    let csv = run("csv", vec![Format::Csv]);
+    let svg = run("svg", vec![Format::Svg]);
+    let read = |dir: &Path, name: &str| std::fs::read(dir.join(name)).unwrap();
+    assert_eq!(read(&all, "s.csv"), read(&csv, "s.csv"));
+    assert_eq!(read(&all, "s.svg"), read(&svg, "s.svg"));
 }
 
 /// The vertices of each `<polyline>` of `svg` stroked in `hex`, in SVG units.
@@ -440,8 +467,9 @@ fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
     let outputs = Outputs {
         drawn: true,
         table: false,
+        page: false,
     };
-    let planned = plan(&scenes, outputs, true);
+    let planned = plan(&scenes, outputs);
     let evaluated = evaluate_all(&planned).unwrap();
     let mut figure = Figure::assemble(
         scene,

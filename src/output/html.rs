@@ -2,9 +2,9 @@
 //! declared parameter, the plot redrawn as a slider moves, a legend, axis labels and a linear/log
 //! toggle for y.
 //!
-//! The page draws only values computed here with `Curve::eval` (no formula exists in its script):
-//! every curve of every frame is sampled adaptively and encoded compactly ([`samples`]), then
-//! embedded with the script (`html/page.js`), the styles (`html/page.css`) and the template
+//! The page draws only values the pipeline sampled with `Curve::eval` (no formula exists in its
+//! script): every curve of every frame arrives as the dyadic samples of its plan job
+//! ([`crate::dyadic`]), is encoded compactly ([`samples`]), then embedded with the script (`html/page.js`), the styles (`html/page.css`) and the template
 //! (`html/page.html`) — no network, fonts or libraries are needed, and the file opens from disk.
 //! For Belcour reconstructions each frame also carries its coefficients c₀ … c₃ (and η, κ when
 //! the material is given by Gulbrandsen's r, g) for the page to print. Bytes are deterministic.
@@ -12,11 +12,12 @@
 mod samples;
 
 use crate::curve::Curve;
+use crate::dyadic;
 use crate::fresnel::{Fresnel, Ior};
+use crate::sample::Evaluated;
 use crate::scene::interactive::Interactive;
 use crate::scene::look::{Dash, XUnit, YScale};
 use crate::scene::{Scene, SceneCurve};
-use rayon::prelude::*;
 use serde_json::{Value, json};
 
 pub use samples::PRECISION;
@@ -25,23 +26,23 @@ const TEMPLATE: &str = include_str!("html/page.html");
 const SCRIPT: &str = include_str!("html/page.js");
 const STYLES: &str = include_str!("html/page.css");
 
-/// The page of `scene` with its `interactive` part, or `Err` naming a non-finite value.
-pub fn page(scene: &Scene, interactive: &Interactive) -> Result<Vec<u8>, String> {
+/// The page of `scene` with its `interactive` part, from the dyadic samples `evaluated[job]` of
+/// each job of `feed`, one per curve of `interactive.curves()`, in that order.
+pub fn page(
+    scene: &Scene,
+    interactive: &Interactive,
+    feed: &[usize],
+    evaluated: &[Evaluated],
+) -> Vec<u8> {
     let panel = &scene.panels[0];
     let range = panel.axes.theta_range();
-    let curves: Vec<&SceneCurve> = interactive
-        .entries
-        .iter()
-        .flat_map(|e| e.frames.iter().flatten())
-        .collect();
-    let encoded: Vec<String> = curves
-        .par_iter()
-        .map(|c| {
-            let samples = samples::sample(&|theta| c.curve.eval(theta), range)
-                .map_err(|e| format!("{}: {}: {e}", scene.id, c.curve.canonical_json()))?;
-            Ok(samples::base64(&samples::encode(&samples)))
-        })
-        .collect::<Result<_, String>>()?;
+    let encoded = feed.iter().map(|&job| {
+        let samples = evaluated[job]
+            .dyadic
+            .as_ref()
+            .expect("a page's jobs are dyadic");
+        samples::base64(&samples::encode(samples))
+    });
     let mut encoded = encoded.into_iter();
     let mut styles: Vec<Value> = Vec::new();
     let entries: Vec<Value> = interactive
@@ -83,9 +84,9 @@ pub fn page(scene: &Scene, interactive: &Interactive) -> Result<Vec<u8>, String>
         "y_label": panel.axes.y_label,
         "degrees": panel.axes.x_unit == XUnit::Degrees,
         "theta": [range.0, range.1],
-        "levels": [samples::COARSE_LEVELS, samples::FINE_LEVELS],
+        "levels": [dyadic::COARSE_LEVELS, dyadic::FINE_LEVELS],
         "log_step": samples::LOG_STEP,
-        "log_decades": samples::LOG_DECADES,
+        "log_decades": dyadic::LOG_DECADES,
         "precision": PRECISION,
         "y_scale": if panel.axes.y_scale == YScale::Log { "log" } else { "linear" },
         "y_range": panel.axes.y_range.map(|(a, b)| [a, b]),
@@ -104,13 +105,13 @@ pub fn page(scene: &Scene, interactive: &Interactive) -> Result<Vec<u8>, String>
     } else {
         scene.title.as_str()
     };
-    Ok(fill(&[
+    fill(&[
         ("TITLE", &escape_html(title)),
         ("STYLES", STYLES),
         ("DATA", &data),
         ("SCRIPT", SCRIPT),
     ])
-    .into_bytes())
+    .into_bytes()
 }
 
 /// The template with each `{{NAME}}` marker (each present once, in the given order) replaced; the

@@ -77,6 +77,14 @@ pub struct Interactive {
     pub entries: Vec<Entry>,
 }
 
+impl Interactive {
+    /// Every curve of every slider position: entries in order, each entry's positions in
+    /// order, each position's curves in order (the order the page lists them in).
+    pub fn curves(&self) -> impl Iterator<Item = &SceneCurve> {
+        self.entries.iter().flat_map(|e| e.frames.iter().flatten())
+    }
+}
+
 /// Reads the scene's `interactive` key: `None` when absent or invalid (reported).
 pub fn read_sliders(reader: &mut Reader, scene: &Object) -> Option<Vec<Slider>> {
     let node = scene.get("interactive")?;
