@@ -14,7 +14,7 @@
 //! a third is 8/9 of the largest, so probes are held to 8/9 of the tolerance.
 
 use crate::layout;
-use crate::scene::look::{PanelKind, XUnit, YScale};
+use crate::look::{PanelKind, XUnit, YScale};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
@@ -545,7 +545,7 @@ mod tests {
 
     #[test]
     fn geometries_follow_the_panel() {
-        use crate::scene::look::PanelKind;
+        use crate::look::PanelKind;
         assert_eq!(
             Geometry::of(&PanelKind::Polar, XUnit::Degrees),
             Geometry::Polar

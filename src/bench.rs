@@ -6,11 +6,11 @@
 //! [`Row`]s into a CSV and a figure). Timings are never part of the catalogue or of `render --check`.
 
 use crate::adaptive::{self, Frame, PixelMap};
+use crate::look::YScale;
 use crate::math::quad::integrate;
 use crate::math::special::upper_gamma_scaled;
 use crate::ndf::{Abc, Family, Ndf, TorranceSparrow};
 use crate::sample::{PARALLEL_CHUNK, eval_grid_parallel};
-use crate::scene::look::YScale;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::time::{Duration, Instant};
 

@@ -3,10 +3,10 @@
 //! Exporters (SVG, PNG, PDF, CSV) turn a [`Figure`] into bytes and never decide what to compute;
 //! [`Figure::assemble`] is the one place that joins a scene's description with its evaluated jobs.
 
+use crate::look::{Axes, Canvas, Style, Theme, XUnit};
 use crate::provenance::Provenance;
 use crate::sample::Evaluated;
 use crate::scene::Scene;
-use crate::scene::look::{Axes, Canvas, Style, Theme, XUnit};
 use std::sync::Arc;
 
 /// One drawn series: a polyline of (θ, value) points with its style and legend label.

@@ -7,7 +7,7 @@
 //! what the drawing measures with real text metrics: a larger plot area would only make the
 //! sampling tolerance stricter. It computes geometry only; it evaluates and draws nothing.
 
-use crate::scene::look::YScale;
+use crate::look::YScale;
 
 /// Default panel height / width: 1/φ, Mathematica's default `AspectRatio`.
 pub const DEFAULT_ASPECT_RATIO: f64 = 0.618_033_988_749_894_9;

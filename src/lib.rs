@@ -22,6 +22,7 @@ pub mod grid;
 pub mod input;
 pub mod json;
 pub mod layout;
+pub mod look;
 pub mod math;
 pub mod metrics;
 pub mod ndf;

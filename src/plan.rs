@@ -9,8 +9,8 @@
 use crate::adaptive::{Frame, Geometry};
 use crate::curve::Curve;
 use crate::dataset::Dataset;
+use crate::look::PanelKind;
 use crate::scene::interactive::Interactive;
-use crate::scene::look::PanelKind;
 use crate::scene::{Sampling, Scene, ScenePanel};
 use std::collections::HashMap;
 

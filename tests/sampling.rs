@@ -5,13 +5,13 @@
 
 use ndfplot::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
 use ndfplot::figure::Figure;
+use ndfplot::look::{Dash, PanelKind, Rgb, XUnit, YScale};
 use ndfplot::ndf::{Family, Ndf};
 use ndfplot::output::Format;
 use ndfplot::plan::{Job, Outputs, plan};
 use ndfplot::provenance::Provenance;
 use ndfplot::render::{self, RenderOptions};
 use ndfplot::sample::{eval_grid_parallel, evaluate_all};
-use ndfplot::scene::look::{Dash, PanelKind, Rgb, XUnit, YScale};
 use ndfplot::source::{self, CanvasOverride};
 use std::f64::consts::FRAC_PI_2;
 use std::path::{Path, PathBuf};

@@ -7,10 +7,10 @@
 use crate::bench::{self, Row};
 use crate::error::{Error, Result};
 use crate::figure::{Figure, Panel, Series};
+use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 use crate::ndf::Family;
 use crate::output::{plot, write};
 use crate::provenance::Provenance;
-use crate::scene::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 

@@ -14,9 +14,9 @@ mod samples;
 use crate::curve::Curve;
 use crate::dyadic;
 use crate::fresnel::{Fresnel, Ior};
+use crate::look::{Dash, XUnit, YScale};
 use crate::sample::Evaluated;
 use crate::scene::interactive::Interactive;
-use crate::scene::look::{Dash, XUnit, YScale};
 use crate::scene::{Scene, SceneCurve};
 use serde_json::{Value, json};
 

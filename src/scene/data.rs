@@ -14,7 +14,7 @@ use super::{SceneData, read_style};
 use crate::curve::{ParamKind, pretty};
 use crate::dataset::{Coefficient, Dataset, SpectrumQuantity};
 use crate::json::{Node, Value};
-use crate::scene::look::Rgb;
+use crate::look::Rgb;
 
 /// Most points one data series may have; a 1000 × 1000 coefficient grid is already far beyond
 /// what a figure can show.

@@ -19,8 +19,8 @@
 use super::reader::{Object, Reader};
 use super::{SceneCurve, ScenePanel, data, read_curve_entry, sweep};
 use crate::json::{Node, Number, Value};
+use crate::look::PanelKind;
 use crate::problem::{Problem, join_index, join_key, suggestion};
-use crate::scene::look::PanelKind;
 use std::borrow::Cow;
 
 /// Most sliders one scene may declare (the notebooks use up to four).

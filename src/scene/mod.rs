@@ -7,7 +7,6 @@
 
 pub mod data;
 pub mod interactive;
-pub mod look;
 pub mod reader;
 pub mod sweep;
 
@@ -16,10 +15,10 @@ use crate::dataset::Dataset;
 use crate::fresnel::Fresnel;
 use crate::json::{Node, Value};
 use crate::layout;
+use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 use crate::ndf::Family;
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::transform::Transform;
-use look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 use reader::Reader;
 use std::f64::consts::FRAC_PI_2;
 use sweep::{MAX_CURVES_PER_SCENE, Sweep};

@@ -9,7 +9,7 @@ use plotters::prelude::*;
 
 use crate::figure::{Panel, Series};
 
-use crate::scene::look::{Mark, XUnit, YScale};
+use crate::look::{Mark, XUnit, YScale};
 
 use crate::layout::{AUTO_MARGIN, widen_if_flat};
 
@@ -342,8 +342,8 @@ pub(super) fn median_spacing(series: &Series, unit: XUnit) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::look::Dash;
     use crate::output::plot::fixtures::{RED, panel, series};
-    use crate::scene::look::Dash;
     use std::f64::consts::PI;
 
     #[test]

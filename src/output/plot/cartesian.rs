@@ -13,7 +13,7 @@ use super::{PlotError, draw_err, outline};
 use crate::figure::{Panel, Series};
 use crate::layout::AXIS_LABEL_EM;
 use crate::layout::DEFAULT_ASPECT_RATIO;
-use crate::scene::look::{Mark, YScale};
+use crate::look::{Mark, YScale};
 
 /// Bar width as a fraction of the median spacing of a series' x values.
 pub(super) const BAR_FRACTION: f64 = 0.6;
@@ -377,8 +377,8 @@ pub(super) fn visible_bars(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::look::{Dash, XUnit};
     use crate::output::plot::fixtures::{RED, marked, panel, series};
-    use crate::scene::look::{Dash, XUnit};
 
     #[test]
     fn plain_axes_pad_the_data_and_tick_whole_indices() {

@@ -118,8 +118,8 @@ pub(super) fn clip(a: (f64, f64), b: (f64, f64), [x0, x1, y0, y1]: [f64; 4]) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::look::{Dash, XUnit, YScale};
     use crate::output::plot::fixtures::{RED, panel, series};
-    use crate::scene::look::{Dash, XUnit, YScale};
 
     #[test]
     fn curves_break_at_undrawable_points_and_clip_to_the_axes() {

@@ -4,8 +4,8 @@
 
 use super::PlotError;
 use super::style::{EM_PER_SIZE, FONT_NAME};
+use crate::look::Canvas;
 use crate::provenance::Provenance;
-use crate::scene::look::Canvas;
 
 /// Largest raster accepted: 2²⁶ pixels (64 Mpx, a 192 MB RGB buffer).
 pub(super) const MAX_DEVICE_PIXELS: u64 = 1 << 26;

@@ -5,8 +5,8 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
 use crate::figure::{Figure, Panel, Series};
+use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 use crate::provenance::Provenance;
-use crate::scene::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 
 /// The spec text the test figures claim to come from.
 pub(super) const SPEC: &[u8] = br#"{"id": "sample"}"#;

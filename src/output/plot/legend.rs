@@ -17,7 +17,7 @@ use super::text::MIN_SHRINK;
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
 use crate::figure::{Panel, Series};
-use crate::scene::look::Mark;
+use crate::look::Mark;
 
 /// Number of heights tried for the legend box, from the top to the bottom of the plot area.
 pub(super) const LEGEND_HEIGHTS: i32 = 5;

@@ -40,7 +40,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::plot3d::View;
 use crate::figure::{Figure, Panel};
 use crate::layout::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
-use crate::scene::look::PanelKind;
+use crate::look::PanelKind;
 use cartesian::draw_cartesian;
 use encode::{MAX_DEVICE_PIXELS, device_size, downsample, encode_png, finish_svg};
 use polar::draw_polar;
@@ -274,13 +274,13 @@ where
 mod tests {
     use super::*;
     use crate::figure::Series;
+    use crate::look::{Dash, Mark, PanelKind, Theme, XUnit, YScale};
     use crate::output::plot::fixtures::{
         BLACK, BLUE, ORANGE, RED, SPEC, STEEL, decode, figure, fresnel_sample, in_3d,
         manifold_edge, manifold_grid, marked, panel, polylines_in, sample, sampled, series,
         surface_kind, xy, zs,
     };
     use crate::provenance::Provenance;
-    use crate::scene::look::{Dash, Mark, PanelKind, Theme, XUnit, YScale};
     use std::f64::consts::PI;
 
     #[test]

@@ -25,7 +25,7 @@ use super::theme::Look;
 use super::{PlotError, draw_err};
 use crate::figure::Panel;
 use crate::layout::AXIS_LABEL_EM;
-use crate::scene::look::{Mark, XUnit, YScale};
+use crate::look::{Mark, XUnit, YScale};
 
 /// Angle steps tried for spokes and labels, in degrees, finest first.
 const ANGLE_STEPS_DEG: [f64; 4] = [15.0, 30.0, 45.0, 90.0];
@@ -415,11 +415,11 @@ where
 mod tests {
     use super::*;
     use crate::figure::{Figure, Series};
+    use crate::look::{Dash, PanelKind, Theme};
     use crate::output::plot::fixtures::{
         BLUE, RED, figure, marked, panel, polar_sample, sampled, series,
     };
     use crate::output::plot::{png, svg};
-    use crate::scene::look::{Dash, PanelKind, Theme};
 
     #[test]
     fn angle_labels_read_in_degrees_or_fractions_of_pi() {

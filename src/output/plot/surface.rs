@@ -14,8 +14,8 @@ use super::theme::Look;
 use super::{PlotError, draw_err};
 use crate::figure::{Panel, Series};
 use crate::layout::AXIS_LABEL_EM;
+use crate::look::{Mark, Rgb};
 use crate::output::plot3d::{self, P3, Projector, View};
-use crate::scene::look::{Mark, Rgb};
 
 /// Free space between neighbouring tick labels along a 3D edge, in base text sizes.
 pub(super) const TICK_CLEARANCE_EM: f64 = 0.8;

@@ -7,7 +7,7 @@ use plotters::style::RGBColor;
 
 use crate::figure::{Figure, Series};
 
-use crate::scene::look::{Dash, Rgb, Theme};
+use crate::look::{Dash, Rgb, Theme};
 
 /// The colours of everything that is not a series.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -209,8 +209,8 @@ fn luminance(Rgb(r, g, b): Rgb) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::look::{XUnit, YScale};
     use crate::output::plot::fixtures::{BLACK, BLUE, RED, figure, panel, sample, series};
-    use crate::scene::look::{XUnit, YScale};
 
     #[test]
     fn the_notebook_theme_keeps_spec_colours_and_dashes() {
