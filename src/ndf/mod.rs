@@ -8,6 +8,7 @@
 pub mod abc;
 pub mod batch;
 pub mod beckmann;
+pub mod gtr;
 pub mod phong;
 pub mod sgd;
 pub mod torrance_sparrow;
