@@ -163,7 +163,7 @@ pub fn figure(rows: &[Row]) -> Figure {
             )
         })
         .collect();
-    let methods = ["eval_1_thread", "batch_1_thread", "batch_all_threads"];
+    let methods = ["eval_1_thread", "eval_all_threads"];
     let throughput = methods
         .iter()
         .enumerate()
@@ -245,7 +245,7 @@ mod tests {
             row("drawing", curve, "uniform", 1024.0, 0.1),
             row("drawing", curve, "adaptive", 0.25, 0.2),
             row("normalization", "abc", "stable", 1.0, 1e-16),
-            row("throughput", "beckmann", "batch_1_thread", 1.0, 1e-15),
+            row("throughput", "beckmann", "eval_all_threads", 2.0, 0.0),
         ];
         let dir = std::env::temp_dir().join(format!("ndfplot-bench-out-{}", std::process::id()));
         let written = write_outputs(&dir, &rows).unwrap();

@@ -14,7 +14,6 @@
 //! - Stable form: D = exp(−a₂ log1p(2 a₁ sin²(θ/2)) − ln N), so that U^{−a₂} (e.g. (1e6)^{−1e4}) never
 //!   under- or overflows by itself.
 
-use super::batch;
 use crate::domain::{DomainError, check};
 use crate::math::special::{exprel, phi};
 use std::f64::consts::PI;
@@ -64,23 +63,6 @@ impl Abc {
     pub fn eval(&self, theta: f64) -> f64 {
         let one_minus_cos_theta = 2.0 * (0.5 * theta).sin().powi(2);
         (self.ln_peak - self.alpha_abc2 * (self.alpha_abc1 * one_minus_cos_theta).ln_1p()).exp()
-    }
-
-    /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), the log-space form of
-    /// [`eval`](Self::eval) on the batch path (see [`batch`]), with 1 − cos θ = sin²θ/(1 + cos θ), which
-    /// does not cancel either.
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        let (ln_peak, a1, a2) = (self.ln_peak, self.alpha_abc1, self.alpha_abc2);
-        batch::fill_grid(
-            theta0,
-            dtheta,
-            out,
-            #[inline(always)]
-            |_, sin_theta, cos_theta| {
-                let one_minus_cos_theta = sin_theta * sin_theta / (1.0 + cos_theta);
-                batch::exp(ln_peak - a2 * batch::ln_1p(a1 * one_minus_cos_theta))
-            },
-        );
     }
 
     /// N = 2π ∫₀^{π/2} (1 + a₁ (1 − cos θ))^{−a₂} sin θ cos θ dθ.

@@ -13,7 +13,6 @@
 //!   ln D = −ln(π α_b²) − tan²θ/α_b² + 2 log1p(tan²θ), using 1/cos⁴θ = (1 + tan²θ)²: no factor overflows or
 //!   underflows on its own, and the result is 0, never NaN, at grazing.
 
-use super::batch;
 use crate::domain::{DomainError, check};
 use std::f64::consts::PI;
 
@@ -53,28 +52,6 @@ impl Beckmann {
         let tan_theta = theta.tan();
         let tan2_theta = tan_theta * tan_theta;
         (self.ln_peak - (tan_theta / self.alpha_b).powi(2) + 2.0 * tan2_theta.ln_1p()).exp()
-    }
-
-    /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), on the batch path (see [`batch`]) as
-    /// D = exp(ln D(0) − (tan θ/α_b)²) · (1 + tan²θ)². Unlike the log-space form of [`eval`](Self::eval)
-    /// this needs no logarithm; it loses nothing in the domain: exp(…) falls below the normal range
-    /// (where [`batch::exp`] returns 0) only where tan²θ/α_b² > 688, and (1 + tan²θ)² ≤ 7.5e64
-    /// brings D back above 1e-280 only for tan θ > 1e7, where tan²θ/α_b² ≥ 1e6 (α_b ≤ 1e4) and D
-    /// is 0 anyway.
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        let (ln_peak, inv_alpha_b) = (self.ln_peak, 1.0 / self.alpha_b);
-        batch::fill_grid(
-            theta0,
-            dtheta,
-            out,
-            #[inline(always)]
-            |_, sin_theta, cos_theta| {
-                let tan_theta = sin_theta / cos_theta;
-                let one_plus_tan2 = 1.0 + tan_theta * tan_theta;
-                let slope = tan_theta * inv_alpha_b;
-                batch::exp(ln_peak - slope * slope) * one_plus_tan2 * one_plus_tan2
-            },
-        );
     }
 
     /// N = π: the projected-area integral of exp(−tan²θ/α_b²)/(α_b² cos⁴θ), independent of α_b.

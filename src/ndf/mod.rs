@@ -2,11 +2,9 @@
 //!
 //! Every NDF is normalized over projected area: 2π ∫₀^{π/2} D(θ) sin θ cos θ dθ = 1.
 //! Constructors validate their parameters and compute normalization constants once;
-//! `eval` is pure f64 code with no allocation; `eval_grid` is its vectorized batch form on uniform
-//! grids ([`batch`]).
+//! `eval` is pure f64 code with no allocation, the one evaluation path of every output.
 
 pub mod abc;
-pub mod batch;
 pub mod beckmann;
 pub mod phong;
 pub mod sgd;
@@ -158,20 +156,6 @@ impl Ndf {
             Ndf::TrowbridgeReitz(d) => d.eval(theta),
             Ndf::Abc(d) => d.eval(theta),
             Ndf::Sgd(d) => d.eval(theta),
-        }
-    }
-
-    /// D(θ_i) for θ_i = θ₀ + iΔθ into `out[i]`, every θ_i within [0, π/2]: the vectorized batch path
-    /// ([`batch`]), equal to [`eval`](Self::eval) within the families' accuracy bounds plus the effect
-    /// of moving θ by an ulp.
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        match self {
-            Ndf::Phong(d) => d.eval_grid(theta0, dtheta, out),
-            Ndf::Beckmann(d) => d.eval_grid(theta0, dtheta, out),
-            Ndf::TorranceSparrow(d) => d.eval_grid(theta0, dtheta, out),
-            Ndf::TrowbridgeReitz(d) => d.eval_grid(theta0, dtheta, out),
-            Ndf::Abc(d) => d.eval_grid(theta0, dtheta, out),
-            Ndf::Sgd(d) => d.eval_grid(theta0, dtheta, out),
         }
     }
 

@@ -12,7 +12,6 @@
 //!   Every finite α_p ≥ 0 is accepted: the exponent is never NaN (α_p · 0 = 0 at θ = 0) and (α_p + 2)/(2π)
 //!   ≤ 2.9e307 is finite.
 
-use super::batch;
 use crate::domain::{DomainError, check};
 use std::f64::consts::PI;
 
@@ -42,24 +41,6 @@ impl Phong {
     pub fn eval(&self, theta: f64) -> f64 {
         let tan2_theta = theta.tan().powi(2);
         (self.ln_inv_normalization - 0.5 * self.alpha_p * tan2_theta.ln_1p()).exp()
-    }
-
-    /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), the log-space form of
-    /// [`eval`](Self::eval) on the batch path's sin, cos, exp and log1p (see [`batch`]).
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        let (ln_inv_normalization, half_alpha_p) = (self.ln_inv_normalization, 0.5 * self.alpha_p);
-        batch::fill_grid(
-            theta0,
-            dtheta,
-            out,
-            #[inline(always)]
-            |_, sin_theta, cos_theta| {
-                let tan_theta = sin_theta / cos_theta;
-                batch::exp(
-                    ln_inv_normalization - half_alpha_p * batch::ln_1p(tan_theta * tan_theta),
-                )
-            },
-        );
     }
 
     /// N = 2π/(α_p + 2), the projected-area integral of the unnormalized lobe cos^{α_p} θ.

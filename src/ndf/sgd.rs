@@ -14,7 +14,6 @@
 //!   alone under- and overflow for large a₁; (a₁² + x)^{−a₂} = a₁^{−2a₂} (1 + x/a₁²)^{−a₂} via log1p;
 //!   1/cos⁴θ = (1 + x)² via log1p. Then ln D = ln D(0) − x/a₁ − a₂ log1p(x/a₁²) + 2 log1p(x).
 
-use super::batch;
 use crate::domain::{DomainError, check};
 use crate::math::special::upper_gamma_scaled;
 use std::f64::consts::PI;
@@ -71,27 +70,6 @@ impl Sgd {
         (self.ln_peak - tan2_theta / self.alpha_sgd1 - self.alpha_sgd2 * x_over_a1_squared.ln_1p()
             + 2.0 * tan2_theta.ln_1p())
         .exp()
-    }
-
-    /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), the log-space form of
-    /// [`eval`](Self::eval) on the batch path (see [`batch`]).
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        let (ln_peak, a2, inv_a1) = (self.ln_peak, self.alpha_sgd2, 1.0 / self.alpha_sgd1);
-        batch::fill_grid(
-            theta0,
-            dtheta,
-            out,
-            #[inline(always)]
-            |_, sin_theta, cos_theta| {
-                let tan_theta = sin_theta / cos_theta;
-                let tan2_theta = tan_theta * tan_theta;
-                let x_over_a1 = tan_theta * inv_a1;
-                batch::exp(
-                    ln_peak - tan2_theta * inv_a1 - a2 * batch::ln_1p(x_over_a1 * x_over_a1)
-                        + 2.0 * batch::ln_1p(tan2_theta),
-                )
-            },
-        );
     }
 
     /// N = 1: p₂₂ is a probability density in x = tan²θ, which makes D normalized as it stands.

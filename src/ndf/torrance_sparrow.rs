@@ -13,7 +13,6 @@
 //! - Stable form: D = exp(ln(1/N) − (θ/α)²) in one exponential, so that exp(−(θ/α)²) cannot underflow while
 //!   D itself is still representable (1/N reaches 3e299).
 
-use super::batch;
 use crate::domain::{DomainError, check};
 use errorfunctions::{ComplexErrorFunctions, RealErrorFunctions};
 use num_complex::Complex;
@@ -56,22 +55,6 @@ impl TorranceSparrow {
     #[inline]
     pub fn eval(&self, theta: f64) -> f64 {
         (self.ln_peak - (theta / self.alpha_ts).powi(2)).exp()
-    }
-
-    /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), the form of [`eval`](Self::eval)
-    /// with the batch path's exp (see [`batch`]).
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        let (ln_peak, inv_alpha_ts) = (self.ln_peak, 1.0 / self.alpha_ts);
-        batch::fill_grid(
-            theta0,
-            dtheta,
-            out,
-            #[inline(always)]
-            |theta, _, _| {
-                let x = theta * inv_alpha_ts;
-                batch::exp(ln_peak - x * x)
-            },
-        );
     }
 
     /// N(α_ts) = 2π ∫₀^{π/2} exp(−θ²/α_ts²) sin θ cos θ dθ.

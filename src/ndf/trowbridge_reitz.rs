@@ -10,7 +10,6 @@
 //!   which cancels for small α near θ = 0; D = (α/q)²/π rather than α²/(π q²) so that α⁴ never underflows
 //!   (q = α² at θ = 0).
 
-use super::batch;
 use crate::domain::{DomainError, check};
 use std::f64::consts::FRAC_1_PI;
 use std::f64::consts::PI;
@@ -51,22 +50,6 @@ impl TrowbridgeReitz {
         let (sin_theta, cos_theta) = theta.sin_cos();
         let q = sin_theta * sin_theta + self.alpha2 * cos_theta * cos_theta;
         (self.alpha_tr / q).powi(2) * FRAC_1_PI
-    }
-
-    /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), by the same stable form as
-    /// [`eval`](Self::eval) on the batch path's sin and cos (see [`batch`]).
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        let (alpha_tr, alpha2) = (self.alpha_tr, self.alpha2);
-        batch::fill_grid(
-            theta0,
-            dtheta,
-            out,
-            #[inline(always)]
-            |_, sin_theta, cos_theta| {
-                let q = sin_theta * sin_theta + alpha2 * cos_theta * cos_theta;
-                (alpha_tr / q).powi(2) * FRAC_1_PI
-            },
-        );
     }
 
     /// N = π: the projected-area integral of α²/(sin²θ + α² cos²θ)², independent of α.
