@@ -409,19 +409,16 @@ pub fn normalization(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
     rows
 }
 
-/// The throughput cases: one curve per family at the notebook's parameters.
+/// The throughput cases: one curve per family at its example parameters (the numpy peer's).
 pub fn throughput_cases() -> Vec<Ndf> {
-    [
-        (Family::Phong, vec![32.0]),
-        (Family::Beckmann, vec![0.3]),
-        (Family::TorranceSparrow, vec![0.3097]),
-        (Family::TrowbridgeReitz, vec![0.3]),
-        (Family::Abc, vec![23.5, 1.75]),
-        (Family::Sgd, vec![0.5, 1.5]),
-    ]
-    .into_iter()
-    .map(|(family, params)| family.build(&params).expect("in the domain"))
-    .collect()
+    Family::ALL
+        .into_iter()
+        .map(|family| {
+            family
+                .build(family.example())
+                .expect("examples lie in the domain")
+        })
+        .collect()
 }
 
 /// D(θ_i) at θ_i = iΔθ into `out[i - first]`: the `eval` every output uses, point by point.

@@ -167,7 +167,11 @@ fn eval_help() -> String {
             family.domain()
         ));
     }
-    text.push_str("  (ggx is an alias of trowbridge_reitz)\n");
+    for family in crate::ndf::Family::ALL {
+        for alias in family.aliases() {
+            text.push_str(&format!("  ({alias} is an alias of {})\n", family.name()));
+        }
+    }
     text.push_str(FRESNEL_HELP);
     text.push_str(
         "\nOutput: CSV with header theta,value (one curve) or theta,<curve JSON>... (several);\n\

@@ -101,12 +101,17 @@ fn short(case: &str) -> String {
     format!("{family} {}", values.join(" "))
 }
 
-/// A family's name short enough for an axis label of six.
-fn short_family(family: Family) -> &'static str {
-    match family {
-        Family::TorranceSparrow => "TS",
-        Family::TrowbridgeReitz => "TR",
-        other => other.name(),
+/// A family's name short enough for an axis label of all families: a name of several words by their
+/// initials (`torrance_sparrow` → `TS`).
+fn short_family(family: Family) -> String {
+    let name = family.name();
+    if name.contains('_') {
+        name.split('_')
+            .filter_map(|word| word.chars().next())
+            .collect::<String>()
+            .to_uppercase()
+    } else {
+        name.to_string()
     }
 }
 
