@@ -167,7 +167,11 @@ fn eval_help() -> String {
             family.domain()
         ));
     }
-    text.push_str("  (ggx is an alias of trowbridge_reitz)\n");
+    for family in crate::ndf::Family::ALL {
+        for alias in family.aliases() {
+            text.push_str(&format!("  ({alias} is an alias of {})\n", family.name()));
+        }
+    }
     text.push_str(FRESNEL_HELP);
     text.push_str(
         "\nOutput: CSV with header theta,value (one curve) or theta,<curve JSON>... (several);\n\
@@ -277,9 +281,9 @@ pub struct CheckArgs {
     normalization  Torrance-Sparrow (Dawson/Faddeeva vs quadrature), ABC (stable vs closed form vs\n                 \
     quadrature): relative error against MATH.md's 15-digit values; SGD's e^a1 Gamma(1 - a2, a1)\n                 \
     (series and continued fraction vs quadrature) against mpmath\n  \
-    throughput     D values written per second on a 2^20-point grid (two 2^18-point tasks per thread\n                 \
-    if that is more): eval on one thread, the batch path on one thread and on all threads\n                 \
-    (error: largest relative difference from eval)\n\n\
+    throughput     D values written per second by eval (the path of every output) on a 2^20-point\n                 \
+    grid (two 2^16-point tasks per thread if that is more), on one thread and on all threads\n                 \
+    (error: largest relative difference from the one-thread values)\n\n\
     Times are medians of 5 batches of at least 50 ms; machines shared with other work give noisy numbers.\n\n\
     Example:\n  \
     ndfplot bench -o plots/bench"

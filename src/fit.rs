@@ -2,17 +2,17 @@
 //! `peak` equates the values at the normal, D(0) — the notebook's manual method; `max` equates the maxima
 //! over θ; `l2` minimizes `l2_projected` (CONTRACTS.md, MATH.md "Parameter equivalences and fits").
 //!
-//! The free parameter is searched within the family's domain, on a log scale for positive parameters
-//! (ln x) and a linear one for real ones (SGD's a₂). Peak and max fits bracket the root of a log-like
+//! The free parameter is searched within the domain its family states ([`Param`]), on a log scale for
+//! parameters bounded below by 0 or more (ln x) and a linear one for the others (SGD's a₂). Peak and max fits bracket the root of a log-like
 //! mismatch by geometric expansion and solve it with Brent's method ([`crate::math::roots`]); L2 fits
 //! bracket the minimum by a downhill walk and refine it by golden-section search
 //! ([`crate::metrics::golden_section_max`]). Results are cached per process. No I/O.
 
 use crate::curve::Curve;
-use crate::domain::DomainError;
+use crate::domain::{DomainError, Param};
 use crate::math::roots::{RootError, brent, expand_bracket_log};
 use crate::metrics::{self, MetricError, golden_section_max, lobe_width, maximum};
-use crate::ndf::{Family, abc, beckmann, sgd, torrance_sparrow, trowbridge_reitz};
+use crate::ndf::Family;
 use crate::problem::suggestion;
 use std::collections::HashMap;
 use std::fmt;
@@ -141,46 +141,44 @@ pub struct Fit {
     pub residual: f64,
 }
 
-/// The search interval of a free parameter: [lo, hi] as the family's constructor accepts it, searched in
+/// The search interval of a free parameter: [lo, hi] within its family's stated domain, searched in
 /// u = ln x (`log`) or u = x.
 #[derive(Debug, Clone, Copy)]
 struct SearchDomain {
+    param: &'static Param,
     lo: f64,
     hi: f64,
     log: bool,
 }
 
 impl SearchDomain {
-    /// The domain of parameter `index` of `family`, from the bounds its module documents.
+    /// The domain of parameter `index` of `family`. A log search starts at the smallest normal double
+    /// when the domain reaches down to 0 (Phong's α_p ≥ 0, whose 0 is checked exactly; ABC's a > 0).
     fn of(family: Family, index: usize) -> SearchDomain {
-        let log = |lo: f64, hi: f64| SearchDomain { lo, hi, log: true };
-        match (family, index) {
-            // α_p ≥ 0 and finite; 0 is checked exactly, the log search starts at the smallest normal.
-            (Family::Phong, _) => log(0.0, f64::MAX),
-            (Family::Beckmann, _) => log(beckmann::ALPHA_B_MIN, beckmann::ALPHA_B_MAX),
-            (Family::TorranceSparrow, _) => log(
-                torrance_sparrow::ALPHA_TS_MIN,
-                torrance_sparrow::ALPHA_TS_MAX,
-            ),
-            (Family::TrowbridgeReitz, _) => log(
-                trowbridge_reitz::ALPHA_TR_MIN,
-                trowbridge_reitz::ALPHA_TR_MAX,
-            ),
-            // a₁, a₂ ∈ (0, 1e100]: the smallest normal double is the smallest value searched.
-            (Family::Abc, _) => log(f64::MIN_POSITIVE, abc::ALPHA_ABC_MAX),
-            (Family::Sgd, 0) => log(sgd::ALPHA_SGD1_MIN, sgd::ALPHA_SGD1_MAX),
-            (Family::Sgd, _) => SearchDomain {
-                lo: -sgd::ALPHA_SGD2_ABS_MAX,
-                hi: sgd::ALPHA_SGD2_ABS_MAX,
-                log: false,
-            },
+        let param = &family.params()[index];
+        let log = param.min.value >= 0.0;
+        let lo = if log {
+            param.min.value.max(f64::MIN_POSITIVE)
+        } else {
+            param.min.value
+        };
+        SearchDomain {
+            param,
+            lo,
+            hi: param.max.value,
+            log,
         }
     }
 
-    /// The searched u interval (for a log domain starting at 0, from the smallest normal double).
+    /// Whether the domain holds 0, which a log search cannot reach (Phong's uniform α_p = 0).
+    fn holds_zero(self) -> bool {
+        self.log && self.param.contains(0.0)
+    }
+
+    /// The searched u interval.
     fn u_bounds(self) -> (f64, f64) {
         if self.log {
-            (self.lo.max(f64::MIN_POSITIVE).ln(), self.hi.ln())
+            (self.lo.ln(), self.hi.ln())
         } else {
             (self.lo, self.hi)
         }
@@ -189,7 +187,7 @@ impl SearchDomain {
     /// x of u, clamped into the searched interval.
     fn x(self, u: f64) -> f64 {
         if self.log {
-            u.exp().clamp(self.lo.max(f64::MIN_POSITIVE), self.hi)
+            u.exp().clamp(self.lo, self.hi)
         } else {
             u.clamp(self.lo, self.hi)
         }
@@ -200,8 +198,9 @@ impl SearchDomain {
         if self.log { x.ln() } else { x }
     }
 
-    fn describe(self, key: &str) -> String {
-        format!("{key} in [{:?}, {:?}]", self.lo, self.hi)
+    /// The parameter and its domain: `alpha_ts in [1e-150, 1e150]`.
+    fn describe(self) -> String {
+        format!("{} {}", self.param.name, self.param.interval())
     }
 }
 
@@ -425,7 +424,7 @@ fn solve_match(problem: &FitProblem, by: By) -> Result<f64, FitError> {
         matched_value(&problem.curve_at_u(u), by).map_or(f64::NAN, |p| mismatch(p, target))
     };
     // A lower bound of 0 (Phong's uniform α_p = 0) lies outside the log search: try it exactly.
-    if domain.lo == 0.0 {
+    if domain.holds_zero() {
         let at_zero = problem.curve(0.0).expect("0 is in the domain");
         if matched_value(&at_zero, by).map_err(|e| numerics(e.to_string()))? == target {
             return Ok(0.0);
@@ -450,7 +449,7 @@ fn solve_match(problem: &FitProblem, by: By) -> Result<f64, FitError> {
                 problem.family.name(),
                 p_lo.min(p_hi),
                 p_lo.max(p_hi),
-                domain.describe(key)
+                domain.describe()
             ),
         )
     };
@@ -527,7 +526,7 @@ fn minimize_l2(problem: &FitProblem) -> Result<f64, FitError> {
                 "{} cannot reach the target: l2_projected keeps decreasing towards the family's limit (got {key} = {:?}, expected a minimum inside {})",
                 problem.family.name(),
                 domain.x(u),
-                domain.describe(key)
+                domain.describe()
             ),
         ));
     }

@@ -228,23 +228,3 @@ fn check_finite(job: &Job, evaluated: Evaluated) -> Result<Evaluated> {
         None => Ok(evaluated),
     }
 }
-
-/// Points per parallel task of [`eval_grid_parallel`]: 2¹⁸, the smallest grid whose blocks are
-/// [`crate::ndf::batch::BLOCK`] long. A task's libm `sin_cos` calls (its rotation table, `BLOCK + 1`,
-/// and one seed per block; ~22 ns each) then cost ~0.09 ns a point; 2¹⁶-point tasks spent twice
-/// that, half of Trowbridge–Reitz's own ~0.3 ns a point.
-pub const PARALLEL_CHUNK: usize = 1 << 18;
-
-/// [`Ndf::eval_grid`] on all rayon threads: `out[i]` = D(θ₀ + iΔθ), tasks of [`PARALLEL_CHUNK`]
-/// points, so the result does not depend on the thread count.
-pub fn eval_grid_parallel(ndf: &Ndf, theta0: f64, dtheta: f64, out: &mut [f64]) {
-    out.par_chunks_mut(PARALLEL_CHUNK)
-        .enumerate()
-        .for_each(|(task, chunk)| {
-            ndf.eval_grid(
-                theta0 + (task * PARALLEL_CHUNK) as f64 * dtheta,
-                dtheta,
-                chunk,
-            );
-        });
-}

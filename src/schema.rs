@@ -4,8 +4,9 @@
 //! to a table without a schema here makes generation panic, which the tests catch.
 //!
 //! The schema describes shapes, types and names (with `additionalProperties: false` wherever the
-//! validator rejects unknown keys); value domains that depend on other values (parameter domains,
-//! sweep sizes, canvas pixels) are the validator's alone. The root validates a scene file; a curve
+//! validator rejects unknown keys), and the numeric bounds of a plain curve's NDF parameters, read
+//! from the domain each family states ([`crate::domain::Param`]); value domains that depend on other
+//! values (Fresnel parameters, sweep sizes, canvas pixels) are the validator's alone. The root validates a scene file; a curve
 //! file of `eval`, `compare` and `fit` validates against `#/$defs/curve`.
 
 use crate::curve::{
@@ -159,11 +160,34 @@ fn extra_key(key: &str) -> Value {
     }
 }
 
-/// A parameter of a plain curve: a single number or flag.
-fn plain_param(spec: &ParamSpec) -> Value {
-    match spec.kind {
-        ParamKind::Number => json!({ "type": "number" }),
-        ParamKind::Flag => json!({ "type": "boolean" }),
+/// A parameter of a plain curve: a single number or flag; an NDF parameter's number within its
+/// family's domain (`minimum`/`exclusiveMinimum`, `maximum`/`exclusiveMaximum`; none on a side open
+/// to every finite value), described with the reasons for its bounds.
+fn plain_param(model: Model, spec: &ParamSpec) -> Value {
+    let domain = match model {
+        Model::Ndf(family) => family.params().iter().find(|p| p.name == spec.name),
+        Model::Fresnel(_) => None,
+    };
+    match (spec.kind, domain) {
+        (ParamKind::Number, Some(param)) => {
+            let mut schema = json!({ "type": "number", "description": param.expected() });
+            for (bound, inclusive_key, exclusive_key) in [
+                (param.min, "minimum", "exclusiveMinimum"),
+                (param.max, "maximum", "exclusiveMaximum"),
+            ] {
+                if !bound.is_open() {
+                    let key = if bound.inclusive {
+                        inclusive_key
+                    } else {
+                        exclusive_key
+                    };
+                    schema[key] = json!(bound.value);
+                }
+            }
+            schema
+        }
+        (ParamKind::Number, None) => json!({ "type": "number" }),
+        (ParamKind::Flag, _) => json!({ "type": "boolean" }),
     }
 }
 
@@ -357,7 +381,10 @@ pub fn schema() -> Value {
     for model in models() {
         for (i, params) in model.signatures().iter().enumerate() {
             let name = signature_def("curve", model, i);
-            def(&name, signature(model, params, &[], plain_param));
+            def(
+                &name,
+                signature(model, params, &[], |spec| plain_param(model, spec)),
+            );
             curves.push(reference(&name));
             let name = signature_def("scene_curve", model, i);
             def(

@@ -1,6 +1,6 @@
 //! Invariants of the six NDFs over log grids of their whole accepted domains, bounds included:
 //! every value finite and ≥ 0 on [0, π/2], and 2π ∫₀^{π/2} D sin θ cos θ dθ = 1 within NORMALIZATION_TOL by
-//! adaptive quadrature; constructors accept exactly their documented domain.
+//! adaptive quadrature; constructors accept exactly the domain their family states.
 
 use ndfplot::math::quad::{QuadError, integrate};
 use ndfplot::math::tolerance::{NORMALIZATION_TOL, QUAD_REL_TOL};
@@ -14,6 +14,12 @@ const BREAK_RATIO: f64 = 4.0;
 /// Closest approach of the grazing breakpoints to π/2, 4⁻²⁴ ≈ 3.6e-15 rad: ~16 doubles from π/2, below the
 /// narrowest grazing lobe accepted (~1e-4 rad) by eleven orders of magnitude.
 const GRAZING_BREAK_MIN: f64 = 3.552713678800501e-15;
+
+/// The stated bounds (min, max) of parameter `index` of `family`.
+fn bounds(family: Family, index: usize) -> (f64, f64) {
+    let param = &family.params()[index];
+    (param.min.value, param.max.value)
+}
 
 /// `n` values spaced evenly in log10 between `lo` and `hi` (both included).
 fn log_grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
@@ -93,8 +99,9 @@ fn assert_all(family: &str, ndfs: impl IntoIterator<Item = Ndf>) {
 
 #[test]
 fn phong_over_its_domain() {
-    let mut grid = vec![0.0, 1.0, 2.0, f64::MAX];
-    grid.extend(log_grid(1e-6, 1e308, 63));
+    let (min, max) = bounds(Family::Phong, 0);
+    let mut grid = vec![min, 1.0, 2.0, max];
+    grid.extend(log_grid(1e-6, max, 63));
     assert_all(
         "phong",
         grid.into_iter().map(|a| Ndf::Phong(Phong::new(a).unwrap())),
@@ -103,7 +110,8 @@ fn phong_over_its_domain() {
 
 #[test]
 fn beckmann_over_its_domain() {
-    let mut grid = log_grid(1e-150, 1e4, 78);
+    let (min, max) = bounds(Family::Beckmann, 0);
+    let mut grid = log_grid(min, max, 78);
     grid.extend([0.001, 0.01, std::f64::consts::FRAC_1_SQRT_2, 1.0, 7.0]);
     assert_all(
         "beckmann",
@@ -114,7 +122,8 @@ fn beckmann_over_its_domain() {
 
 #[test]
 fn torrance_sparrow_over_its_domain() {
-    let mut grid = log_grid(1e-150, 1e150, 101);
+    let (min, max) = bounds(Family::TorranceSparrow, 0);
+    let mut grid = log_grid(min, max, 101);
     grid.extend([1e-3, 0.2027, 26.6, 30.0, 1e3]);
     assert_all(
         "torrance_sparrow",
@@ -125,7 +134,8 @@ fn torrance_sparrow_over_its_domain() {
 
 #[test]
 fn trowbridge_reitz_over_its_domain() {
-    let mut grid = log_grid(1e-150, 1e4, 78);
+    let (min, max) = bounds(Family::TrowbridgeReitz, 0);
+    let mut grid = log_grid(min, max, 78);
     grid.extend([0.01, 1.0, 7.0]);
     assert_all(
         "trowbridge_reitz",
@@ -136,9 +146,10 @@ fn trowbridge_reitz_over_its_domain() {
 
 #[test]
 fn abc_over_its_domain() {
-    let mut a1_grid = log_grid(1e-300, 1e100, 41);
+    // Both lower bounds are an excluded 0: the grids start at 1e-300.
+    let mut a1_grid = log_grid(1e-300, bounds(Family::Abc, 0).1, 41);
     a1_grid.extend([f64::MIN_POSITIVE, 1e-6, 1.718281828459045, 1e6]);
-    let mut a2_grid = log_grid(1e-300, 1e100, 21);
+    let mut a2_grid = log_grid(1e-300, bounds(Family::Abc, 1).1, 21);
     a2_grid.extend([
         1e-3,
         0.5,
@@ -163,8 +174,12 @@ fn abc_over_its_domain() {
 
 #[test]
 fn sgd_over_its_domain() {
-    let a1_grid = log_grid(1e-6, 1e6, 25);
-    let mut a2_grid: Vec<f64> = (0..=40).map(|i| -10.0 + 0.5 * i as f64).collect();
+    let (a1_min, a1_max) = bounds(Family::Sgd, 0);
+    let a1_grid = log_grid(a1_min, a1_max, 25);
+    let (a2_min, a2_max) = bounds(Family::Sgd, 1);
+    let mut a2_grid: Vec<f64> = (0..=40)
+        .map(|i| a2_min + (a2_max - a2_min) * i as f64 / 40.0)
+        .collect();
     a2_grid.extend([1.0 - 1e-9, 1.0 + 1e-9, 2.0 - 1e-9, 2.0 + 1e-9]);
     let pairs = a1_grid
         .iter()
@@ -175,88 +190,53 @@ fn sgd_over_its_domain() {
     );
 }
 
-/// Parameter lists a constructor must accept.
-type Accepted = Vec<Vec<f64>>;
-/// Parameter lists a constructor must reject.
-type Rejected = Vec<Vec<f64>>;
+/// The next double after `v` towards +∞ (`outward` = 1) or −∞ (−1); `v` finite.
+fn step(v: f64, outward: f64) -> f64 {
+    if v == 0.0 {
+        return outward * f64::from_bits(1);
+    }
+    let away_from_zero = (v > 0.0) == (outward > 0.0);
+    f64::from_bits(if away_from_zero {
+        v.to_bits() + 1
+    } else {
+        v.to_bits() - 1
+    })
+}
 
+/// Every family accepts each closed bound it includes and the next double inside one it
+/// excludes, and rejects the next double beyond (or the excluded bound), NaN and ±∞ with the
+/// stated expectation; the other parameters sit at their example values.
 #[test]
-fn constructors_accept_their_bounds_and_reject_beyond() {
-    let next_up = |v: f64| f64::from_bits(v.to_bits() + 1);
-    let next_down = |v: f64| f64::from_bits(v.to_bits() - 1);
-    let cases: [(Family, Accepted, Rejected); 6] = [
-        (
-            Family::Phong,
-            vec![vec![0.0], vec![f64::MAX]],
-            vec![vec![-f64::MIN_POSITIVE], vec![f64::INFINITY]],
-        ),
-        (
-            Family::Beckmann,
-            vec![vec![1e-150], vec![1e4]],
-            vec![
-                vec![next_down(1e-150)],
-                vec![next_up(1e4)],
-                vec![0.0],
-                vec![-0.3],
-            ],
-        ),
-        (
-            Family::TorranceSparrow,
-            vec![vec![1e-150], vec![1e150]],
-            vec![vec![next_down(1e-150)], vec![next_up(1e150)], vec![0.0]],
-        ),
-        (
-            Family::TrowbridgeReitz,
-            vec![vec![1e-150], vec![1e4]],
-            vec![vec![next_down(1e-150)], vec![next_up(1e4)], vec![0.0]],
-        ),
-        (
-            Family::Abc,
-            vec![vec![5e-324, 5e-324], vec![1e100, 1e100]],
-            vec![
-                vec![0.0, 1.0],
-                vec![1.0, 0.0],
-                vec![next_up(1e100), 1.0],
-                vec![1.0, next_up(1e100)],
-            ],
-        ),
-        (
-            Family::Sgd,
-            vec![vec![1e-6, -10.0], vec![1e6, 10.0], vec![0.5, 0.0]],
-            vec![
-                vec![next_down(1e-6), 0.0],
-                vec![next_up(1e6), 0.0],
-                vec![1.0, -10.5],
-                vec![1.0, 10.5],
-            ],
-        ),
-    ];
-    for (family, accepted, rejected) in cases {
-        for params in accepted {
-            assert!(
-                family.build(&params).is_ok(),
-                "{family:?} {params:?} should be accepted"
-            );
-        }
-        let mut rejected = rejected;
-        for i in 0..family.param_names().len() {
-            for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
-                let mut params = vec![1.0; family.param_names().len()];
-                params[i] = bad;
-                rejected.push(params);
+fn constructors_accept_exactly_the_stated_domains() {
+    for family in Family::ALL {
+        for (i, param) in family.params().iter().enumerate() {
+            let with = |v: f64| {
+                let mut params = family.example().to_vec();
+                params[i] = v;
+                family.build(&params)
+            };
+            for (bound, outward) in [(param.min, -1.0), (param.max, 1.0)] {
+                if bound.is_open() {
+                    assert!(with(bound.value).is_ok(), "{family:?} {}", param.name);
+                    continue;
+                }
+                let (inside, outside) = if bound.inclusive {
+                    (bound.value, step(bound.value, outward))
+                } else {
+                    (step(bound.value, -outward), bound.value)
+                };
+                assert!(
+                    with(inside).is_ok(),
+                    "{family:?} {} = {inside:e}",
+                    param.name
+                );
+                let err = with(outside).unwrap_err();
+                assert_eq!(err.param, param.name);
+                assert_eq!(err.expected, param.expected());
             }
-        }
-        for params in rejected {
-            let err = family
-                .build(&params)
-                .expect_err(&format!("{family:?} {params:?} should be rejected"));
-            assert!(family.param_names().contains(&err.param), "{err}");
-            assert!(
-                family.domain().contains(err.param),
-                "{} does not name {}",
-                family.domain(),
-                err.param
-            );
+            for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                assert_eq!(with(bad).unwrap_err().param, param.name);
+            }
         }
     }
 }

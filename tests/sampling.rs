@@ -1,134 +1,19 @@
-//! Sampling: the batch path (`Ndf::eval_grid`) against the accurate `eval` over every family's domain,
-//! adaptive sampling of drawn curves (within tolerance, few samples, also as drawn in projected, slope
+//! Sampling: adaptive sampling of drawn curves (within tolerance, few samples, also as drawn in projected, slope
 //! and polar panels), the spec's `sampling` key, and the plan skipping what a run does not need
 //! (formats not requested, jobs shared between panels).
 
 use ndfplot::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
 use ndfplot::figure::Figure;
 use ndfplot::look::{Dash, PanelKind, Rgb, XUnit, YScale};
-use ndfplot::ndf::{Family, Ndf};
+use ndfplot::ndf::Family;
 use ndfplot::output::Format;
 use ndfplot::plan::{Job, Outputs, plan};
 use ndfplot::provenance::Provenance;
 use ndfplot::render::{self, RenderOptions};
-use ndfplot::sample::{eval_grid_parallel, evaluate_all};
+use ndfplot::sample::evaluate_all;
 use ndfplot::source::{self, CanvasOverride};
 use std::f64::consts::FRAC_PI_2;
 use std::path::{Path, PathBuf};
-
-/// Accuracy bound of Trowbridge–Reitz, relative (the reference tests' bound).
-const TR_TOL: f64 = 1e-13;
-/// Accuracy bound of the other families, relative.
-const OTHER_TOL: f64 = 1e-12;
-/// Below this |D| errors are absolute (MATH.md's convention).
-const TINY: f64 = 1e-280;
-/// Relative step of the finite difference that estimates d ln D/d ln θ.
-const DIFF_STEP: f64 = 1e-6;
-/// The batch path's abscissa is θ₀ + iΔθ to within this many ulp of θ (two roundings: seed and step).
-const THETA_ULPS: f64 = 4.0;
-
-fn log_grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    let (l, h) = (lo.log10(), hi.log10());
-    (0..n)
-        .map(|i| {
-            10f64
-                .powf(l + (h - l) * i as f64 / (n - 1) as f64)
-                .clamp(lo, hi)
-        })
-        .collect()
-}
-
-/// Parameter points spanning each family's accepted domain on log grids, bounds included.
-fn domain(family: Family) -> Vec<Vec<f64>> {
-    let one = |lo: f64, hi: f64, n: usize| {
-        log_grid(lo, hi, n)
-            .into_iter()
-            .map(|v| vec![v])
-            .collect::<Vec<_>>()
-    };
-    match family {
-        Family::Phong => [vec![vec![0.0]], one(1e-6, 1e8, 15)].concat(),
-        Family::Beckmann | Family::TrowbridgeReitz => one(1e-150, 1e4, 31),
-        Family::TorranceSparrow => one(1e-150, 1e150, 31),
-        Family::Abc => {
-            let a = log_grid(1e-100, 1e100, 9);
-            a.iter()
-                .flat_map(|&a1| [0.01, 0.5, 1.0, 1.75, 2.0, 10.0, 1e3].map(|a2| vec![a1, a2]))
-                .collect()
-        }
-        Family::Sgd => {
-            let a = log_grid(1e-6, 1e6, 9);
-            a.iter()
-                .flat_map(|&a1| [-10.0, -1.0, 0.0, 0.5, 1.0, 1.5, 10.0].map(|a2| vec![a1, a2]))
-                .collect()
-        }
-    }
-}
-
-/// Largest violation (≤ 1 passes) of |batch − eval| ≤ tol·max(|eval|, TINY) + the change of D under a
-/// THETA_ULPS-ulp move of θ, over a grid of `n` points on [θ₀, θ₁].
-fn batch_violation(ndf: &Ndf, (theta0, theta1): (f64, f64), n: usize, tol: f64) -> (f64, f64) {
-    let dtheta = (theta1 - theta0) / (n - 1) as f64;
-    let mut out = vec![0.0; n];
-    eval_grid_parallel(ndf, theta0, dtheta, &mut out);
-    let mut worst = (0.0, 0.0);
-    for (i, &got) in out.iter().enumerate() {
-        let theta = theta0 + i as f64 * dtheta;
-        let want = ndf.eval(theta);
-        let (up, down) = (
-            ndf.eval((theta * (1.0 + DIFF_STEP)).min(FRAC_PI_2)),
-            ndf.eval(theta * (1.0 - DIFF_STEP)),
-        );
-        let moved = (up - down).abs() / (2.0 * DIFF_STEP) * THETA_ULPS * f64::EPSILON;
-        let allowed = tol * want.abs().max(TINY) + moved;
-        let violation = (got - want).abs() / allowed;
-        assert!(
-            got.is_finite() && got >= 0.0,
-            "{ndf:?} at θ = {theta}: {got}"
-        );
-        if violation > worst.0 {
-            worst = (violation, theta);
-        }
-    }
-    worst
-}
-
-#[test]
-fn batch_path_equals_eval_over_every_domain() {
-    for family in Family::ALL {
-        let tol = if family == Family::TrowbridgeReitz {
-            TR_TOL
-        } else {
-            OTHER_TOL
-        };
-        for params in domain(family) {
-            let ndf = family.build(&params).unwrap();
-            for range in [(0.0, FRAC_PI_2), (0.0, 0.01), (1.5, FRAC_PI_2)] {
-                let (violation, theta) = batch_violation(&ndf, range, 2001, tol);
-                assert!(
-                    violation <= 1.0,
-                    "{ndf:?} over {range:?}: {violation}× the bound at θ = {theta}"
-                );
-            }
-        }
-    }
-}
-
-#[test]
-fn batch_path_is_independent_of_the_split_into_tasks() {
-    let ndf = Family::Beckmann.build(&[0.3]).unwrap();
-    let n = 3 * ndfplot::sample::PARALLEL_CHUNK + 5;
-    let dtheta = FRAC_PI_2 / (n - 1) as f64;
-    let mut parallel = vec![0.0; n];
-    eval_grid_parallel(&ndf, 0.0, dtheta, &mut parallel);
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(1)
-        .build()
-        .unwrap();
-    let mut single = vec![0.0; n];
-    pool.install(|| eval_grid_parallel(&ndf, 0.0, dtheta, &mut single));
-    assert_eq!(parallel, single);
-}
 
 fn frame() -> Frame {
     Frame {

@@ -102,12 +102,17 @@ fn short(case: &str) -> String {
     format!("{family} {}", values.join(" "))
 }
 
-/// A family's name short enough for an axis label of six.
-fn short_family(family: Family) -> &'static str {
-    match family {
-        Family::TorranceSparrow => "TS",
-        Family::TrowbridgeReitz => "TR",
-        other => other.name(),
+/// A family's name short enough for an axis label of all families: a name of several words by their
+/// initials (`torrance_sparrow` → `TS`).
+fn short_family(family: Family) -> String {
+    let name = family.name();
+    if name.contains('_') {
+        name.split('_')
+            .filter_map(|word| word.chars().next())
+            .collect::<String>()
+            .to_uppercase()
+    } else {
+        name.to_string()
     }
 }
 
@@ -164,7 +169,7 @@ pub fn figure(rows: &[Row]) -> Figure {
             )
         })
         .collect();
-    let methods = ["eval_1_thread", "batch_1_thread", "batch_all_threads"];
+    let methods = ["eval_1_thread", "eval_all_threads"];
     let throughput = methods
         .iter()
         .enumerate()
@@ -246,7 +251,7 @@ mod tests {
             row("drawing", curve, "uniform", 1024.0, 0.1),
             row("drawing", curve, "adaptive", 0.25, 0.2),
             row("normalization", "abc", "stable", 1.0, 1e-16),
-            row("throughput", "beckmann", "batch_1_thread", 1.0, 1e-15),
+            row("throughput", "beckmann", "eval_all_threads", 2.0, 0.0),
         ];
         let dir = std::env::temp_dir().join(format!("ndfplot-bench-out-{}", std::process::id()));
         let written = write_outputs(&dir, &rows).unwrap();

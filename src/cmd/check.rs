@@ -171,7 +171,7 @@ pub fn verdict(audits: &[Audit], tolerance: f64) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ndf::Phong;
+    use crate::ndf::{Distribution, Phong};
 
     #[test]
     fn an_unnormalized_lobe_fails_the_check_with_exit_1() {

@@ -2,7 +2,8 @@
 //! a₁ = `alpha_abc1` (roughness) and a₂ = `alpha_abc2` (shape: ≈ 1.75 mimics Trowbridge–Reitz, a₂ → ∞ Phong).
 //!
 //! - Domain: 0 < a₁ ≤ 1e100, 0 < a₂ ≤ 1e100. Every positive a₁ works (a₁ → 0 is uniform); the caps keep
-//!   e^{(2 − a₂) ln(1 + a₁)} ≤ 1e200 and D(0) = 1/N ≲ a₁ a₂/(2π) finite.
+//!   e^{(2 − a₂) ln(1 + a₁)} ≤ 1e200 and D(0) = 1/N ≲ a₁ a₂/(2π) finite. Stated once, with these reasons,
+//!   in [`Abc::PARAMS`](super::Distribution::PARAMS).
 //! - Normalization (MATH.md), with U = 1 + a₁, L = ln U = log1p(a₁) and c = (2 − a₂) L:
 //!   N = 2π ∫₀¹ (1 + a₁ (1 − μ))^{−a₂} μ dμ = (2π L/a₁²) [U exprel((1 − a₂) L) − exprel((2 − a₂) L)],
 //!   exact through the removable singularities a₂ = 1 and 2 (exprel(0) = 1, no ε dodge). The bracket cancels
@@ -14,16 +15,34 @@
 //! - Stable form: D = exp(−a₂ log1p(2 a₁ sin²(θ/2)) − ln N), so that U^{−a₂} (e.g. (1e6)^{−1e4}) never
 //!   under- or overflows by itself.
 
-use super::batch;
-use crate::domain::{DomainError, check};
+use super::Distribution;
+use crate::domain::{Bound, DomainError, Param};
 use crate::math::special::{exprel, phi};
 use std::f64::consts::PI;
 
-/// Largest accepted a₁ and a₂: with L = ln(1 + a₁) ≤ 230.3, exprel((2 − a₂) L) ≤ e^{460.6} and every
+/// The cap of a₁ and a₂: with L = ln(1 + a₁) ≤ 230.3, exprel((2 − a₂) L) ≤ e^{460.6} and every
 /// intermediate of the normalization stays finite.
-pub const ALPHA_ABC_MAX: f64 = 1e100;
-/// What [`Abc::new`] accepts, as shown in `--help`.
-pub const DOMAIN: &str = "0 < alpha_abc1 ≤ 1e100, 0 < alpha_abc2 ≤ 1e100";
+const ALPHA_ABC_MAX: f64 = 1e100;
+
+/// a₁'s domain (module header).
+const ALPHA_ABC1: Param = Param {
+    name: "alpha_abc1",
+    min: Bound::exclusive(
+        0.0,
+        "a₁ = 0 makes N's ln(1 + a₁)/a₁ 0/0, and a₁ < 0 a lobe rising towards grazing",
+    ),
+    max: Bound::inclusive(
+        ALPHA_ABC_MAX,
+        "N's exprel((2 − a₂) ln(1 + a₁)) nears overflow",
+    ),
+};
+
+/// a₂'s domain (module header).
+const ALPHA_ABC2: Param = Param {
+    name: "alpha_abc2",
+    min: Bound::exclusive(0.0, "a₂ ≤ 0 is no lobe: u is constant or rises towards grazing"),
+    max: Bound::inclusive(ALPHA_ABC_MAX, "D(0) = 1/N ≲ a₁ a₂/(2π) nears overflow"),
+};
 
 /// Largest L = ln(1 + a₁) summed as a series: there the closed form's bracket cancels by at most
 /// 1/(1 − e^{−1}) ≈ 1.6, and the series needs ≲ 20 terms (L^m φ_{m+2} ≤ e²/(m + 2)!).
@@ -46,10 +65,8 @@ impl Abc {
     /// An ABC lobe with `alpha_abc1` = a₁ ∈ (0, 1e100] and `alpha_abc2` = a₂ ∈ (0, 1e100]; rejects NaN, ±∞ and
     /// values outside.
     pub fn new(alpha_abc1: f64, alpha_abc2: f64) -> Result<Self, DomainError> {
-        let in_domain = |v: f64| v > 0.0 && v <= ALPHA_ABC_MAX;
-        let expected = "in (0, 1e100]";
-        check("alpha_abc1", alpha_abc1, in_domain, expected)?;
-        check("alpha_abc2", alpha_abc2, in_domain, expected)?;
+        ALPHA_ABC1.check(alpha_abc1)?;
+        ALPHA_ABC2.check(alpha_abc2)?;
         let normalization = normalization(alpha_abc1, alpha_abc2);
         Ok(Abc {
             alpha_abc1,
@@ -59,29 +76,6 @@ impl Abc {
         })
     }
 
-    /// D(θ) = (1 + a₁ (1 − cos θ))^{−a₂}/N for θ ∈ [0, π/2], normalized over projected area.
-    #[inline]
-    pub fn eval(&self, theta: f64) -> f64 {
-        let one_minus_cos_theta = 2.0 * (0.5 * theta).sin().powi(2);
-        (self.ln_peak - self.alpha_abc2 * (self.alpha_abc1 * one_minus_cos_theta).ln_1p()).exp()
-    }
-
-    /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), the log-space form of
-    /// [`eval`](Self::eval) on the batch path (see [`batch`]), with 1 − cos θ = sin²θ/(1 + cos θ), which
-    /// does not cancel either.
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        let (ln_peak, a1, a2) = (self.ln_peak, self.alpha_abc1, self.alpha_abc2);
-        batch::fill_grid(
-            theta0,
-            dtheta,
-            out,
-            #[inline(always)]
-            |_, sin_theta, cos_theta| {
-                let one_minus_cos_theta = sin_theta * sin_theta / (1.0 + cos_theta);
-                batch::exp(ln_peak - a2 * batch::ln_1p(a1 * one_minus_cos_theta))
-            },
-        );
-    }
 
     /// N = 2π ∫₀^{π/2} (1 + a₁ (1 − cos θ))^{−a₂} sin θ cos θ dθ.
     pub fn normalization(&self) -> f64 {
@@ -96,6 +90,29 @@ impl Abc {
     /// The shape parameter a₂.
     pub fn alpha_abc2(&self) -> f64 {
         self.alpha_abc2
+    }
+}
+
+impl Distribution for Abc {
+    const NAME: &'static str = "abc";
+    const PARAMS: &'static [Param] = &[ALPHA_ABC1, ALPHA_ABC2];
+    const COLOUR: u32 = 0x6C70C4;
+    /// The notebook's match of Trowbridge–Reitz α_tr = 0.3 (MATH.md).
+    const EXAMPLE: &'static [f64] = &[23.5, 1.75];
+
+    fn from_params(params: &[f64]) -> Result<Self, DomainError> {
+        Abc::new(params[0], params[1])
+    }
+
+    /// D(θ) = (1 + a₁ (1 − cos θ))^{−a₂}/N for θ ∈ [0, π/2], normalized over projected area.
+    #[inline]
+    fn eval(&self, theta: f64) -> f64 {
+        let one_minus_cos_theta = 2.0 * (0.5 * theta).sin().powi(2);
+        (self.ln_peak - self.alpha_abc2 * (self.alpha_abc1 * one_minus_cos_theta).ln_1p()).exp()
+    }
+
+    fn params(&self) -> Vec<f64> {
+        vec![self.alpha_abc1, self.alpha_abc2]
     }
 }
 

@@ -4,7 +4,8 @@
 //! - Domain: 1e-150 ≤ α_b ≤ 1e4. Below, α_b² leaves the normal double range and D(0) = 1/(π α_b²) heads for
 //!   overflow (at α_b ≈ 4e-155). Above, the super-rough lobe sits within ~1/α_b rad of grazing, where the
 //!   double spacing of θ near π/2 (2.2e-16) resolves it only to ~α_b · 2e-16: 1e4 keeps that ≤ 2e-12, so D
-//!   stays verifiably normalized.
+//!   stays verifiably normalized. Stated once, with these reasons, in
+//!   [`Beckmann::PARAMS`](super::Distribution::PARAMS).
 //! - Normalization: the unnormalized lobe exp(−tan²θ/α_b²)/(α_b² cos⁴θ) integrates to N = π over projected
 //!   area, for every α_b.
 //! - θ → 0: D → 1/(π α_b²), with curvature 2 − 1/α_b² in tan²θ (a dip at 0 for α_b > 1/√2). θ → π/2: the
@@ -13,16 +14,17 @@
 //!   ln D = −ln(π α_b²) − tan²θ/α_b² + 2 log1p(tan²θ), using 1/cos⁴θ = (1 + tan²θ)²: no factor overflows or
 //!   underflows on its own, and the result is 0, never NaN, at grazing.
 
-use super::batch;
-use crate::domain::{DomainError, check};
+use super::Distribution;
+use crate::domain::{Bound, DomainError, Param};
 use std::f64::consts::PI;
 
-/// Smallest accepted α_b: α_b² = 1e-300 is still a normal double, D(0) = 1/(π α_b²) ≈ 3e299 is finite.
-pub const ALPHA_B_MIN: f64 = 1e-150;
-/// Largest accepted α_b: the grazing lobe, ~1/α_b = 1e-4 rad wide, is resolved by θ to ~2e-12.
-pub const ALPHA_B_MAX: f64 = 1e4;
-/// What [`Beckmann::new`] accepts, as shown in `--help`.
-pub const DOMAIN: &str = "1e-150 ≤ alpha_b ≤ 1e4";
+/// α_b's domain. At 1e-150, α_b² = 1e-300 is still a normal double and D(0) = 1/(π α_b²) ≈ 3e299 is
+/// finite; at 1e4 the grazing lobe, ~1/α_b = 1e-4 rad wide, is resolved by θ to ~2e-12.
+const ALPHA_B: Param = Param {
+    name: "alpha_b",
+    min: Bound::inclusive(1e-150, "D(0) = 1/(π alpha_b²) overflows"),
+    max: Bound::inclusive(1e4, "the lobe is unresolvably close to grazing"),
+};
 
 /// A validated Beckmann lobe with its log-normalization precomputed.
 #[derive(Debug, Clone, PartialEq)]
@@ -35,47 +37,13 @@ pub struct Beckmann {
 impl Beckmann {
     /// A Beckmann lobe of RMS slope `alpha_b` ∈ [1e-150, 1e4]; rejects NaN, ±∞ and values outside.
     pub fn new(alpha_b: f64) -> Result<Self, DomainError> {
-        check(
-            "alpha_b",
-            alpha_b,
-            |v| (ALPHA_B_MIN..=ALPHA_B_MAX).contains(&v),
-            "in [1e-150, 1e4] (smaller: D(0) = 1/(π alpha_b²) overflows; larger: the lobe is unresolvably close to grazing)",
-        )?;
+        ALPHA_B.check(alpha_b)?;
         Ok(Beckmann {
             alpha_b,
             ln_peak: -PI.ln() - 2.0 * alpha_b.ln(),
         })
     }
 
-    /// D(θ) = exp(−tan²θ/α_b²)/(π α_b² cos⁴θ) for θ ∈ [0, π/2], normalized over projected area.
-    #[inline]
-    pub fn eval(&self, theta: f64) -> f64 {
-        let tan_theta = theta.tan();
-        let tan2_theta = tan_theta * tan_theta;
-        (self.ln_peak - (tan_theta / self.alpha_b).powi(2) + 2.0 * tan2_theta.ln_1p()).exp()
-    }
-
-    /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), on the batch path (see [`batch`]) as
-    /// D = exp(ln D(0) − (tan θ/α_b)²) · (1 + tan²θ)². Unlike the log-space form of [`eval`](Self::eval)
-    /// this needs no logarithm; it loses nothing in the domain: exp(…) falls below the normal range
-    /// (where [`batch::exp`] returns 0) only where tan²θ/α_b² > 688, and (1 + tan²θ)² ≤ 7.5e64
-    /// brings D back above 1e-280 only for tan θ > 1e7, where tan²θ/α_b² ≥ 1e6 (α_b ≤ 1e4) and D
-    /// is 0 anyway.
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        let (ln_peak, inv_alpha_b) = (self.ln_peak, 1.0 / self.alpha_b);
-        batch::fill_grid(
-            theta0,
-            dtheta,
-            out,
-            #[inline(always)]
-            |_, sin_theta, cos_theta| {
-                let tan_theta = sin_theta / cos_theta;
-                let one_plus_tan2 = 1.0 + tan_theta * tan_theta;
-                let slope = tan_theta * inv_alpha_b;
-                batch::exp(ln_peak - slope * slope) * one_plus_tan2 * one_plus_tan2
-            },
-        );
-    }
 
     /// N = π: the projected-area integral of exp(−tan²θ/α_b²)/(α_b² cos⁴θ), independent of α_b.
     pub fn normalization(&self) -> f64 {
@@ -85,5 +53,28 @@ impl Beckmann {
     /// The RMS microfacet slope α_b.
     pub fn alpha_b(&self) -> f64 {
         self.alpha_b
+    }
+}
+
+impl Distribution for Beckmann {
+    const NAME: &'static str = "beckmann";
+    const PARAMS: &'static [Param] = &[ALPHA_B];
+    const COLOUR: u32 = 0x2689D1;
+    const EXAMPLE: &'static [f64] = &[0.3];
+
+    fn from_params(params: &[f64]) -> Result<Self, DomainError> {
+        Beckmann::new(params[0])
+    }
+
+    /// D(θ) = exp(−tan²θ/α_b²)/(π α_b² cos⁴θ) for θ ∈ [0, π/2], normalized over projected area.
+    #[inline]
+    fn eval(&self, theta: f64) -> f64 {
+        let tan_theta = theta.tan();
+        let tan2_theta = tan_theta * tan_theta;
+        (self.ln_peak - (tan_theta / self.alpha_b).powi(2) + 2.0 * tan2_theta.ln_1p()).exp()
+    }
+
+    fn params(&self) -> Vec<f64> {
+        vec![self.alpha_b]
     }
 }

@@ -149,6 +149,7 @@ mod tests {
     use crate::math::tolerance::{
         ABS_FLOOR, NORMALIZATION_TOL, QUAD_REL_TOL, REL_TOL_NDF, REL_TOL_TROWBRIDGE_REITZ,
     };
+    use crate::ndf::Distribution;
     use crate::ndf::TrowbridgeReitz;
     use std::f64::consts::FRAC_PI_2;
 

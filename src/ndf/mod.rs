@@ -1,202 +1,260 @@
-//! The six microfacet normal distribution functions of MATH.md, each a validated type.
+//! The microfacet normal distribution functions of MATH.md: the [`Distribution`] trait each family
+//! file implements, and the one registry ([`families!`]) from which [`Family`], [`Ndf`], name lookup
+//! and dispatch are generated.
 //!
 //! Every NDF is normalized over projected area: 2π ∫₀^{π/2} D(θ) sin θ cos θ dθ = 1.
-//! Constructors validate their parameters and compute normalization constants once;
-//! `eval` is pure f64 code with no allocation; `eval_grid` is its vectorized batch form on uniform
-//! grids ([`batch`]).
+//! Constructors validate their parameters against the domains their family states ([`Param`]) and
+//! compute normalization constants once; `eval` is pure f64 code with no allocation, the one
+//! evaluation path of every output. Adding a family: one file implementing [`Distribution`], one
+//! registry line below, one reference-data file, one README row.
 
-pub mod abc;
-pub mod batch;
-pub mod beckmann;
+use crate::domain::{DomainError, Param};
+use std::fmt;
+
+/// An NDF family, as one file implements it: its names, its parameters with their domains, its
+/// colour, a validating constructor and D(θ).
+pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
+    /// The canonical name in curve JSON (`"ndf": "<name>"`).
+    const NAME: &'static str;
+    /// Other accepted names (`ggx` for Trowbridge–Reitz).
+    const ALIASES: &'static [&'static str] = &[];
+    /// The parameters in MATH.md's order, each with its domain and the reason for each bound: the only
+    /// statement of the bounds, which the constructor checks and everything else reads.
+    const PARAMS: &'static [Param];
+    /// The notebook's Solarized-based colour, as 0xRRGGBB.
+    const COLOUR: u32;
+    /// A representative parameter set in [`PARAMS`](Self::PARAMS) order, the one the numpy peer times:
+    /// `ndfplot bench` and `cargo bench --bench eval` measure it.
+    const EXAMPLE: &'static [f64];
+
+    /// The validated NDF of `params` (in [`PARAMS`](Self::PARAMS) order, as many), or the error naming
+    /// the first value outside its domain.
+    fn from_params(params: &[f64]) -> Result<Self, DomainError>;
+
+    /// D(θ) for θ ∈ [0, π/2], normalized over projected area.
+    fn eval(&self, theta: f64) -> f64;
+
+    /// The parameter values in [`PARAMS`](Self::PARAMS) order.
+    fn params(&self) -> Vec<f64>;
+}
+
+/// The registry: `Variant => module::Type` per family, in MATH.md's order. Declares the modules and
+/// generates [`Family`] (the family without values), [`Ndf`] (a validated NDF of any family) and
+/// their dispatch, each arm a static call of the family's [`Distribution`] implementation.
+macro_rules! families {
+    ($($variant:ident => $module:ident::$ty:ident,)+) => {
+        $(pub mod $module;)+
+        $(pub use $module::$ty;)+
+
+        /// An NDF family; its data lives in the family's [`Distribution`] implementation.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum Family {
+            $(#[doc = concat!("See [`", stringify!($ty), "`].")] $variant,)+
+        }
+
+        /// A validated NDF of any family.
+        #[derive(Debug, Clone, PartialEq)]
+        pub enum Ndf {
+            $(#[doc = concat!("See [`", stringify!($ty), "`].")] $variant($ty),)+
+        }
+
+        /// The number of families.
+        const FAMILY_COUNT: usize = [$(stringify!($variant)),+].len();
+        /// The number of accepted names, canonical names and aliases.
+        const NAME_COUNT: usize = FAMILY_COUNT $(+ <$ty as Distribution>::ALIASES.len())+;
+
+        impl Family {
+            /// Every family, in MATH.md's order.
+            pub const ALL: [Family; FAMILY_COUNT] = [$(Family::$variant),+];
+
+            /// Accepted names, canonical names first then aliases (for "did you mean" suggestions).
+            pub const NAMES: [&'static str; NAME_COUNT] = {
+                let mut names = [""; NAME_COUNT];
+                let mut i = 0;
+                $(
+                    names[i] = <$ty as Distribution>::NAME;
+                    i += 1;
+                )+
+                $(
+                    let aliases = <$ty as Distribution>::ALIASES;
+                    let mut k = 0;
+                    while k < aliases.len() {
+                        names[i] = aliases[k];
+                        i += 1;
+                        k += 1;
+                    }
+                )+
+                names
+            };
+
+            /// The canonical name used in curve JSON (`"ndf": "<name>"`).
+            pub fn name(self) -> &'static str {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::NAME,)+
+                }
+            }
+
+            /// Other accepted names.
+            pub fn aliases(self) -> &'static [&'static str] {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::ALIASES,)+
+                }
+            }
+
+            /// The parameters in MATH.md's order, with their domains.
+            pub fn params(self) -> &'static [Param] {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::PARAMS,)+
+                }
+            }
+
+            /// The notebook's Solarized-based colour for the family, as 0xRRGGBB.
+            pub fn colour(self) -> u32 {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::COLOUR,)+
+                }
+            }
+
+            /// A representative parameter set (see [`Distribution::EXAMPLE`]).
+            pub fn example(self) -> &'static [f64] {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::EXAMPLE,)+
+                }
+            }
+
+            /// Builds a validated NDF of this family from its parameters, given in `params()` order.
+            ///
+            /// `params.len()` must equal `params().len()`.
+            pub fn build(self, params: &[f64]) -> Result<Ndf, DomainError> {
+                Ok(match self {
+                    $(Family::$variant => Ndf::$variant(<$ty as Distribution>::from_params(params)?),)+
+                })
+            }
+        }
+
+        impl Ndf {
+            /// D(θ) for θ ∈ [0, π/2], normalized over projected area.
+            #[inline]
+            pub fn eval(&self, theta: f64) -> f64 {
+                match self {
+                    $(Ndf::$variant(d) => d.eval(theta),)+
+                }
+            }
+
+            /// The family of this NDF.
+            pub fn family(&self) -> Family {
+                match self {
+                    $(Ndf::$variant(_) => Family::$variant,)+
+                }
+            }
+
+            /// The parameter values in `family().params()` order.
+            pub fn params(&self) -> Vec<f64> {
+                match self {
+                    $(Ndf::$variant(d) => d.params(),)+
+                }
+            }
+        }
+    };
+}
+
+/// Generalized Trowbridge–Reitz: the formula and its tests, not yet in the registry below.
 pub mod gtr;
-pub mod phong;
-pub mod sgd;
-pub mod torrance_sparrow;
-pub mod trowbridge_reitz;
 
-pub use abc::Abc;
-pub use beckmann::Beckmann;
-pub use phong::Phong;
-pub use sgd::Sgd;
-pub use torrance_sparrow::TorranceSparrow;
-pub use trowbridge_reitz::TrowbridgeReitz;
-
-/// An NDF family: its canonical name, parameter names (in MATH.md's order) and notebook colour.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Family {
-    /// Phong, `alpha_p`.
-    Phong,
-    /// Beckmann, `alpha_b`.
-    Beckmann,
-    /// Torrance–Sparrow (Gaussian in angle), `alpha_ts`.
-    TorranceSparrow,
-    /// Trowbridge–Reitz / GGX, `alpha_tr`.
-    TrowbridgeReitz,
-    /// ABC (Low et al. 2012), `alpha_abc1`, `alpha_abc2`.
-    Abc,
-    /// Shifted Gamma Distribution (Bagher et al. 2012), `alpha_sgd1`, `alpha_sgd2`.
-    Sgd,
+families! {
+    Phong => phong::Phong,
+    Beckmann => beckmann::Beckmann,
+    TorranceSparrow => torrance_sparrow::TorranceSparrow,
+    TrowbridgeReitz => trowbridge_reitz::TrowbridgeReitz,
+    Abc => abc::Abc,
+    Sgd => sgd::Sgd,
 }
 
 impl Family {
-    /// Every family, in MATH.md's order.
-    pub const ALL: [Family; 6] = [
-        Family::Phong,
-        Family::Beckmann,
-        Family::TorranceSparrow,
-        Family::TrowbridgeReitz,
-        Family::Abc,
-        Family::Sgd,
-    ];
-
-    /// The canonical name used in curve JSON (`"ndf": "<name>"`).
-    pub fn name(self) -> &'static str {
-        match self {
-            Family::Phong => "phong",
-            Family::Beckmann => "beckmann",
-            Family::TorranceSparrow => "torrance_sparrow",
-            Family::TrowbridgeReitz => "trowbridge_reitz",
-            Family::Abc => "abc",
-            Family::Sgd => "sgd",
-        }
-    }
-
     /// Looks a family up by canonical name or alias (`ggx` → Trowbridge–Reitz).
     pub fn from_name(name: &str) -> Option<Family> {
-        match name {
-            "ggx" => Some(Family::TrowbridgeReitz),
-            _ => Family::ALL.into_iter().find(|f| f.name() == name),
-        }
+        Family::ALL
+            .into_iter()
+            .find(|f| f.name() == name || f.aliases().contains(&name))
     }
-
-    /// Accepted names, canonical names first then aliases (for "did you mean" suggestions).
-    pub const NAMES: [&'static str; 7] = [
-        "phong",
-        "beckmann",
-        "torrance_sparrow",
-        "trowbridge_reitz",
-        "abc",
-        "sgd",
-        "ggx",
-    ];
 
     /// Parameter names in MATH.md's order.
-    pub fn param_names(self) -> &'static [&'static str] {
-        match self {
-            Family::Phong => &["alpha_p"],
-            Family::Beckmann => &["alpha_b"],
-            Family::TorranceSparrow => &["alpha_ts"],
-            Family::TrowbridgeReitz => &["alpha_tr"],
-            Family::Abc => &["alpha_abc1", "alpha_abc2"],
-            Family::Sgd => &["alpha_sgd1", "alpha_sgd2"],
-        }
+    pub fn param_names(self) -> Vec<&'static str> {
+        self.params().iter().map(|p| p.name).collect()
     }
 
-    /// The notebook's Solarized-based colour for the family, as 0xRRGGBB.
-    pub fn colour(self) -> u32 {
-        match self {
-            Family::Phong => 0xDB2E2E,
-            Family::Beckmann => 0x2689D1,
-            Family::TorranceSparrow => 0xFF9900,
-            Family::TrowbridgeReitz => 0x849900,
-            Family::Abc => 0x6C70C4,
-            Family::Sgd => 0xB58800,
+    /// The parameter domains in one line (for `--help`): `alpha_b in [1e-150, 1e4]`, parameters with
+    /// the same domain sharing it (`alpha_abc1, alpha_abc2 in (0, 1e100]`).
+    pub fn domain(self) -> String {
+        let mut groups: Vec<(Vec<&str>, String)> = Vec::new();
+        for param in self.params() {
+            let interval = param.interval();
+            match groups.last_mut() {
+                Some((names, last)) if *last == interval => names.push(param.name),
+                _ => groups.push((vec![param.name], interval)),
+            }
         }
-    }
-
-    /// A one-line statement of the parameter domain the family's constructor accepts (for `--help`).
-    pub fn domain(self) -> &'static str {
-        match self {
-            Family::Phong => phong::DOMAIN,
-            Family::Beckmann => beckmann::DOMAIN,
-            Family::TorranceSparrow => torrance_sparrow::DOMAIN,
-            Family::TrowbridgeReitz => trowbridge_reitz::DOMAIN,
-            Family::Abc => abc::DOMAIN,
-            Family::Sgd => sgd::DOMAIN,
-        }
-    }
-
-    /// Builds a validated NDF of this family from its parameters, given in `param_names()` order.
-    ///
-    /// `params.len()` must equal `param_names().len()`.
-    pub fn build(self, params: &[f64]) -> Result<Ndf, crate::domain::DomainError> {
-        Ok(match self {
-            Family::Phong => Ndf::Phong(Phong::new(params[0])?),
-            Family::Beckmann => Ndf::Beckmann(Beckmann::new(params[0])?),
-            Family::TorranceSparrow => Ndf::TorranceSparrow(TorranceSparrow::new(params[0])?),
-            Family::TrowbridgeReitz => Ndf::TrowbridgeReitz(TrowbridgeReitz::new(params[0])?),
-            Family::Abc => Ndf::Abc(Abc::new(params[0], params[1])?),
-            Family::Sgd => Ndf::Sgd(Sgd::new(params[0], params[1])?),
-        })
+        groups
+            .iter()
+            .map(|(names, interval)| format!("{} {interval}", names.join(", ")))
+            .collect::<Vec<_>>()
+            .join(", ")
     }
 }
 
-/// A validated NDF of any family.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Ndf {
-    /// See [`Phong`].
-    Phong(Phong),
-    /// See [`Beckmann`].
-    Beckmann(Beckmann),
-    /// See [`TorranceSparrow`].
-    TorranceSparrow(TorranceSparrow),
-    /// See [`TrowbridgeReitz`].
-    TrowbridgeReitz(TrowbridgeReitz),
-    /// See [`Abc`].
-    Abc(Abc),
-    /// See [`Sgd`].
-    Sgd(Sgd),
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-impl Ndf {
-    /// D(θ) for θ ∈ [0, π/2], normalized over projected area.
-    #[inline]
-    pub fn eval(&self, theta: f64) -> f64 {
-        match self {
-            Ndf::Phong(d) => d.eval(theta),
-            Ndf::Beckmann(d) => d.eval(theta),
-            Ndf::TorranceSparrow(d) => d.eval(theta),
-            Ndf::TrowbridgeReitz(d) => d.eval(theta),
-            Ndf::Abc(d) => d.eval(theta),
-            Ndf::Sgd(d) => d.eval(theta),
+    #[test]
+    fn names_list_canonical_names_then_aliases() {
+        assert_eq!(
+            Family::NAMES,
+            [
+                "phong",
+                "beckmann",
+                "torrance_sparrow",
+                "trowbridge_reitz",
+                "abc",
+                "sgd",
+                "ggx"
+            ]
+        );
+        assert_eq!(Family::from_name("ggx"), Some(Family::TrowbridgeReitz));
+        for family in Family::ALL {
+            assert_eq!(Family::from_name(family.name()), Some(family));
+            assert_eq!(
+                family.build(family.example()).unwrap().params(),
+                family.example()
+            );
         }
     }
 
-    /// D(θ_i) for θ_i = θ₀ + iΔθ into `out[i]`, every θ_i within [0, π/2]: the vectorized batch path
-    /// ([`batch`]), equal to [`eval`](Self::eval) within the families' accuracy bounds plus the effect
-    /// of moving θ by an ulp.
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        match self {
-            Ndf::Phong(d) => d.eval_grid(theta0, dtheta, out),
-            Ndf::Beckmann(d) => d.eval_grid(theta0, dtheta, out),
-            Ndf::TorranceSparrow(d) => d.eval_grid(theta0, dtheta, out),
-            Ndf::TrowbridgeReitz(d) => d.eval_grid(theta0, dtheta, out),
-            Ndf::Abc(d) => d.eval_grid(theta0, dtheta, out),
-            Ndf::Sgd(d) => d.eval_grid(theta0, dtheta, out),
-        }
-    }
-
-    /// The family of this NDF.
-    pub fn family(&self) -> Family {
-        match self {
-            Ndf::Phong(_) => Family::Phong,
-            Ndf::Beckmann(_) => Family::Beckmann,
-            Ndf::TorranceSparrow(_) => Family::TorranceSparrow,
-            Ndf::TrowbridgeReitz(_) => Family::TrowbridgeReitz,
-            Ndf::Abc(_) => Family::Abc,
-            Ndf::Sgd(_) => Family::Sgd,
-        }
-    }
-
-    /// The parameter values in `family().param_names()` order.
-    pub fn params(&self) -> Vec<f64> {
-        match self {
-            Ndf::Phong(d) => vec![d.alpha_p()],
-            Ndf::Beckmann(d) => vec![d.alpha_b()],
-            Ndf::TorranceSparrow(d) => vec![d.alpha_ts()],
-            Ndf::TrowbridgeReitz(d) => vec![d.alpha_tr()],
-            Ndf::Abc(d) => vec![d.alpha_abc1(), d.alpha_abc2()],
-            Ndf::Sgd(d) => vec![d.alpha_sgd1(), d.alpha_sgd2()],
+    /// README's table of curves states each family's domain as the registry does.
+    #[test]
+    fn readme_rows_state_the_registry_domains() {
+        let readme = include_str!("../../README.md");
+        for family in Family::ALL {
+            let mut domain = family.domain();
+            for param in family.params() {
+                domain = domain.replace(param.name, &format!("`{}`", param.name));
+            }
+            let prefix = format!("| `ndf: {}`", family.name());
+            let row = readme
+                .lines()
+                .find(|l| l.starts_with(&prefix))
+                .unwrap_or_else(|| panic!("README has no row {prefix}"));
+            let cells: Vec<&str> = row.split(" | ").collect();
+            assert!(
+                cells[1].starts_with(&domain),
+                "README row {row:?} should state {domain:?}"
+            );
+            for alias in family.aliases() {
+                assert!(
+                    cells[0].contains(&format!("`{alias}`")),
+                    "{row:?} lacks alias {alias}"
+                );
+            }
         }
     }
 }

@@ -5,6 +5,7 @@
 //! - Domain: 1e-6 ≤ a₁ ≤ 1e6, −10 ≤ a₂ ≤ 10 (a₂ = 0 and the notebook's 0 … 1.5 included). Γ(s, a₁) with
 //!   s = 1 − a₂ ∈ [−9, 11] is computed to ~1e-15 there (checked against mpmath), D(0) ≲ a₁^{−a₂−1} ≤ 1e66
 //!   stays finite, and the grazing lobe of large a₁ (tan θ ~ √a₁ ≤ 1e3) is resolved by θ in double precision.
+//!   Stated once, with these reasons, in [`Sgd::PARAMS`](super::Distribution::PARAMS).
 //! - Normalization: ∫₀^∞ p₂₂(x) dx = 1 exactly (substitute t = (a₁² + x)/a₁: the integral is
 //!   a₁^{a₂−1} a₁^{1−a₂} Γ(1 − a₂, a₁)/Γ(1 − a₂, a₁)), and the projected-area integral of p₂₂(tan²θ)/(π cos⁴θ)
 //!   is that same integral (dx = 2 tan θ/cos²θ dθ), so N = 1 and D = p₂₂/(π cos⁴θ) as written.
@@ -14,19 +15,30 @@
 //!   alone under- and overflow for large a₁; (a₁² + x)^{−a₂} = a₁^{−2a₂} (1 + x/a₁²)^{−a₂} via log1p;
 //!   1/cos⁴θ = (1 + x)² via log1p. Then ln D = ln D(0) − x/a₁ − a₂ log1p(x/a₁²) + 2 log1p(x).
 
-use super::batch;
-use crate::domain::{DomainError, check};
+use super::Distribution;
+use crate::domain::{Bound, DomainError, Param};
 use crate::math::special::upper_gamma_scaled;
 use std::f64::consts::PI;
 
-/// Smallest accepted a₁ (see the module header for the reasons of all four bounds).
-pub const ALPHA_SGD1_MIN: f64 = 1e-6;
-/// Largest accepted a₁.
-pub const ALPHA_SGD1_MAX: f64 = 1e6;
-/// Largest |a₂| accepted.
-pub const ALPHA_SGD2_ABS_MAX: f64 = 10.0;
-/// What [`Sgd::new`] accepts, as shown in `--help`.
-pub const DOMAIN: &str = "1e-6 ≤ alpha_sgd1 ≤ 1e6, −10 ≤ alpha_sgd2 ≤ 10";
+/// a₁'s domain (module header).
+const ALPHA_SGD1: Param = Param {
+    name: "alpha_sgd1",
+    min: Bound::inclusive(1e-6, "D(0) ≲ a₁^(−a₂−1) passes 1e66"),
+    max: Bound::inclusive(
+        1e6,
+        "the grazing lobe (tan θ ~ √a₁) is unresolved by θ in double precision",
+    ),
+};
+
+/// The reason for both bounds of a₂.
+const ALPHA_SGD2_REASON: &str = "Γ(1 − a₂, a₁) is verified to ~1e-15 for 1 − a₂ in [−9, 11] only";
+
+/// a₂'s domain (module header).
+const ALPHA_SGD2: Param = Param {
+    name: "alpha_sgd2",
+    min: Bound::inclusive(-10.0, ALPHA_SGD2_REASON),
+    max: Bound::inclusive(10.0, ALPHA_SGD2_REASON),
+};
 
 /// A validated SGD lobe with its log-normalization precomputed.
 #[derive(Debug, Clone, PartialEq)]
@@ -41,18 +53,8 @@ impl Sgd {
     /// An SGD lobe with `alpha_sgd1` = a₁ ∈ [1e-6, 1e6] and `alpha_sgd2` = a₂ ∈ [−10, 10]; rejects NaN, ±∞
     /// and values outside.
     pub fn new(alpha_sgd1: f64, alpha_sgd2: f64) -> Result<Self, DomainError> {
-        check(
-            "alpha_sgd1",
-            alpha_sgd1,
-            |v| (ALPHA_SGD1_MIN..=ALPHA_SGD1_MAX).contains(&v),
-            "in [1e-6, 1e6]",
-        )?;
-        check(
-            "alpha_sgd2",
-            alpha_sgd2,
-            |v| v.abs() <= ALPHA_SGD2_ABS_MAX,
-            "in [-10, 10]",
-        )?;
+        ALPHA_SGD1.check(alpha_sgd1)?;
+        ALPHA_SGD2.check(alpha_sgd2)?;
         let scaled_gamma = upper_gamma_scaled(1.0 - alpha_sgd2, alpha_sgd1);
         let ln_peak = -(alpha_sgd2 + 1.0) * alpha_sgd1.ln() - scaled_gamma.ln() - PI.ln();
         Ok(Sgd {
@@ -62,37 +64,6 @@ impl Sgd {
         })
     }
 
-    /// D(θ) = p₂₂(tan²θ)/(π cos⁴θ) for θ ∈ [0, π/2], normalized over projected area.
-    #[inline]
-    pub fn eval(&self, theta: f64) -> f64 {
-        let tan_theta = theta.tan();
-        let tan2_theta = tan_theta * tan_theta;
-        let x_over_a1_squared = (tan_theta / self.alpha_sgd1).powi(2);
-        (self.ln_peak - tan2_theta / self.alpha_sgd1 - self.alpha_sgd2 * x_over_a1_squared.ln_1p()
-            + 2.0 * tan2_theta.ln_1p())
-        .exp()
-    }
-
-    /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), the log-space form of
-    /// [`eval`](Self::eval) on the batch path (see [`batch`]).
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        let (ln_peak, a2, inv_a1) = (self.ln_peak, self.alpha_sgd2, 1.0 / self.alpha_sgd1);
-        batch::fill_grid(
-            theta0,
-            dtheta,
-            out,
-            #[inline(always)]
-            |_, sin_theta, cos_theta| {
-                let tan_theta = sin_theta / cos_theta;
-                let tan2_theta = tan_theta * tan_theta;
-                let x_over_a1 = tan_theta * inv_a1;
-                batch::exp(
-                    ln_peak - tan2_theta * inv_a1 - a2 * batch::ln_1p(x_over_a1 * x_over_a1)
-                        + 2.0 * batch::ln_1p(tan2_theta),
-                )
-            },
-        );
-    }
 
     /// N = 1: p₂₂ is a probability density in x = tan²θ, which makes D normalized as it stands.
     pub fn normalization(&self) -> f64 {
@@ -107,5 +78,32 @@ impl Sgd {
     /// The parameter a₂.
     pub fn alpha_sgd2(&self) -> f64 {
         self.alpha_sgd2
+    }
+}
+
+impl Distribution for Sgd {
+    const NAME: &'static str = "sgd";
+    const PARAMS: &'static [Param] = &[ALPHA_SGD1, ALPHA_SGD2];
+    const COLOUR: u32 = 0xB58800;
+    /// One of the notebook's sgd-grid curves, as the numpy peer times it.
+    const EXAMPLE: &'static [f64] = &[0.2, 0.5];
+
+    fn from_params(params: &[f64]) -> Result<Self, DomainError> {
+        Sgd::new(params[0], params[1])
+    }
+
+    /// D(θ) = p₂₂(tan²θ)/(π cos⁴θ) for θ ∈ [0, π/2], normalized over projected area.
+    #[inline]
+    fn eval(&self, theta: f64) -> f64 {
+        let tan_theta = theta.tan();
+        let tan2_theta = tan_theta * tan_theta;
+        let x_over_a1_squared = (tan_theta / self.alpha_sgd1).powi(2);
+        (self.ln_peak - tan2_theta / self.alpha_sgd1 - self.alpha_sgd2 * x_over_a1_squared.ln_1p()
+            + 2.0 * tan2_theta.ln_1p())
+        .exp()
+    }
+
+    fn params(&self) -> Vec<f64> {
+        vec![self.alpha_sgd1, self.alpha_sgd2]
     }
 }

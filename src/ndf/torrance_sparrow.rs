@@ -3,7 +3,8 @@
 //!
 //! - Domain: 1e-150 ≤ α_ts ≤ 1e150. Below, N ≈ π α_ts² leaves the normal double range and D(0) = 1/N heads for
 //!   overflow; above, Dawson's F(α_ts) ≈ 1/(2 α_ts) would approach the subnormal range. (Past α_ts ≈ 1e8 the
-//!   lobe is uniform, D = 1/π, to double precision.)
+//!   lobe is uniform, D = 1/π, to double precision.) Stated once, with these reasons, in
+//!   [`TorranceSparrow::PARAMS`](super::Distribution::PARAMS).
 //! - Normalization: N(α) = 2π ∫₀^{π/2} exp(−θ²/α²) sin θ cos θ dθ
 //!   = π α [F(α) + (√π/2) e^{−π²/(4α²)} Im w(α + iπ/(2α))], with F Dawson's integral and w the Faddeeva
 //!   function: the first term is the integral over [0, ∞), the second removes (π/2, ∞). Both terms are
@@ -13,18 +14,22 @@
 //! - Stable form: D = exp(ln(1/N) − (θ/α)²) in one exponential, so that exp(−(θ/α)²) cannot underflow while
 //!   D itself is still representable (1/N reaches 3e299).
 
-use super::batch;
-use crate::domain::{DomainError, check};
+use super::Distribution;
+use crate::domain::{Bound, DomainError, Param};
 use errorfunctions::{ComplexErrorFunctions, RealErrorFunctions};
 use num_complex::Complex;
 use std::f64::consts::{FRAC_PI_2, PI};
 
-/// Smallest accepted α_ts: N ≈ π α_ts² ≈ 3e-300 stays a normal double and D(0) = 1/N is finite.
-pub const ALPHA_TS_MIN: f64 = 1e-150;
-/// Largest accepted α_ts: F(α_ts) ≈ 1/(2 α_ts) ≥ 5e-151 stays a normal double.
-pub const ALPHA_TS_MAX: f64 = 1e150;
-/// What [`TorranceSparrow::new`] accepts, as shown in `--help`.
-pub const DOMAIN: &str = "1e-150 ≤ alpha_ts ≤ 1e150";
+/// α_ts's domain. At 1e-150, N ≈ π α_ts² ≈ 3e-300 stays a normal double and D(0) = 1/N is finite;
+/// at 1e150, F(α_ts) ≈ 1/(2 α_ts) ≥ 5e-151 stays a normal double.
+const ALPHA_TS: Param = Param {
+    name: "alpha_ts",
+    min: Bound::inclusive(1e-150, "D(0) ≈ 1/(π alpha_ts²) overflows"),
+    max: Bound::inclusive(
+        1e150,
+        "Dawson's F(alpha_ts) ≈ 1/(2 alpha_ts) in N nears the subnormal range",
+    ),
+};
 
 /// A validated Torrance–Sparrow lobe with its log-normalization precomputed.
 #[derive(Debug, Clone, PartialEq)]
@@ -38,12 +43,7 @@ pub struct TorranceSparrow {
 impl TorranceSparrow {
     /// A Gaussian-in-angle lobe of width `alpha_ts` ∈ [1e-150, 1e150]; rejects NaN, ±∞ and values outside.
     pub fn new(alpha_ts: f64) -> Result<Self, DomainError> {
-        check(
-            "alpha_ts",
-            alpha_ts,
-            |v| (ALPHA_TS_MIN..=ALPHA_TS_MAX).contains(&v),
-            "in [1e-150, 1e150] (smaller: D(0) ≈ 1/(π alpha_ts²) overflows)",
-        )?;
+        ALPHA_TS.check(alpha_ts)?;
         let normalization = normalization(alpha_ts);
         Ok(TorranceSparrow {
             alpha_ts,
@@ -52,27 +52,6 @@ impl TorranceSparrow {
         })
     }
 
-    /// D(θ) = exp(−(θ/α_ts)²)/N(α_ts) for θ ∈ [0, π/2], normalized over projected area.
-    #[inline]
-    pub fn eval(&self, theta: f64) -> f64 {
-        (self.ln_peak - (theta / self.alpha_ts).powi(2)).exp()
-    }
-
-    /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), the form of [`eval`](Self::eval)
-    /// with the batch path's exp (see [`batch`]).
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        let (ln_peak, inv_alpha_ts) = (self.ln_peak, 1.0 / self.alpha_ts);
-        batch::fill_grid(
-            theta0,
-            dtheta,
-            out,
-            #[inline(always)]
-            |theta, _, _| {
-                let x = theta * inv_alpha_ts;
-                batch::exp(ln_peak - x * x)
-            },
-        );
-    }
 
     /// N(α_ts) = 2π ∫₀^{π/2} exp(−θ²/α_ts²) sin θ cos θ dθ.
     pub fn normalization(&self) -> f64 {
@@ -82,6 +61,28 @@ impl TorranceSparrow {
     /// The angular width α_ts (radians).
     pub fn alpha_ts(&self) -> f64 {
         self.alpha_ts
+    }
+}
+
+impl Distribution for TorranceSparrow {
+    const NAME: &'static str = "torrance_sparrow";
+    const PARAMS: &'static [Param] = &[ALPHA_TS];
+    const COLOUR: u32 = 0xFF9900;
+    /// The notebook's peak match of Phong at α_b = 0.3 (MATH.md).
+    const EXAMPLE: &'static [f64] = &[0.3097];
+
+    fn from_params(params: &[f64]) -> Result<Self, DomainError> {
+        TorranceSparrow::new(params[0])
+    }
+
+    /// D(θ) = exp(−(θ/α_ts)²)/N(α_ts) for θ ∈ [0, π/2], normalized over projected area.
+    #[inline]
+    fn eval(&self, theta: f64) -> f64 {
+        (self.ln_peak - (theta / self.alpha_ts).powi(2)).exp()
+    }
+
+    fn params(&self) -> Vec<f64> {
+        vec![self.alpha_ts]
     }
 }
 

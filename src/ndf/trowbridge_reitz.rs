@@ -3,24 +3,26 @@
 //!
 //! - Domain: 1e-150 ≤ α_tr ≤ 1e4. Below, α_tr² leaves the normal double range and D(0) = 1/(π α_tr²) heads for
 //!   overflow. Above, the super-rough lobe sits within ~1/α_tr rad of grazing, where θ's double spacing
-//!   (2.2e-16) resolves it only to ~α_tr · 2e-16 (≤ 2e-12 at 1e4).
+//!   (2.2e-16) resolves it only to ~α_tr · 2e-16 (≤ 2e-12 at 1e4). Stated once, with these reasons, in
+//!   [`TrowbridgeReitz::PARAMS`](super::Distribution::PARAMS).
 //! - Normalization: the unnormalized α²/(sin²θ + α² cos²θ)² integrates to N = π over projected area.
 //! - θ → 0: D → 1/(π α²). θ → π/2: D → α²/π (not 0: the lobe has heavy tails); α = 1 is uniform, 1/π.
 //! - Stable form: sin²θ + α² cos²θ, a sum of non-negative terms, instead of the notebook's cos²θ (α² − 1) + 1,
 //!   which cancels for small α near θ = 0; D = (α/q)²/π rather than α²/(π q²) so that α⁴ never underflows
 //!   (q = α² at θ = 0).
 
-use super::batch;
-use crate::domain::{DomainError, check};
+use super::Distribution;
+use crate::domain::{Bound, DomainError, Param};
 use std::f64::consts::FRAC_1_PI;
 use std::f64::consts::PI;
 
-/// Smallest accepted α_tr: α_tr² = 1e-300 is still a normal double, D(0) = 1/(π α_tr²) ≈ 3e299 is finite.
-pub const ALPHA_TR_MIN: f64 = 1e-150;
-/// Largest accepted α_tr: the grazing lobe, ~1/α_tr = 1e-4 rad wide, is resolved by θ to ~2e-12.
-pub const ALPHA_TR_MAX: f64 = 1e4;
-/// What [`TrowbridgeReitz::new`] accepts, as shown in `--help`.
-pub const DOMAIN: &str = "1e-150 ≤ alpha_tr ≤ 1e4";
+/// α_tr's domain. At 1e-150, α_tr² = 1e-300 is still a normal double and D(0) = 1/(π α_tr²) ≈ 3e299
+/// is finite; at 1e4 the grazing lobe, ~1/α_tr = 1e-4 rad wide, is resolved by θ to ~2e-12.
+const ALPHA_TR: Param = Param {
+    name: "alpha_tr",
+    min: Bound::inclusive(1e-150, "D(0) = 1/(π alpha_tr²) overflows"),
+    max: Bound::inclusive(1e4, "the lobe is unresolvably close to grazing"),
+};
 
 /// A validated Trowbridge–Reitz lobe.
 #[derive(Debug, Clone, PartialEq)]
@@ -33,41 +35,13 @@ pub struct TrowbridgeReitz {
 impl TrowbridgeReitz {
     /// A Trowbridge–Reitz lobe of roughness `alpha_tr` ∈ [1e-150, 1e4]; rejects NaN, ±∞ and values outside.
     pub fn new(alpha_tr: f64) -> Result<Self, DomainError> {
-        check(
-            "alpha_tr",
-            alpha_tr,
-            |v| (ALPHA_TR_MIN..=ALPHA_TR_MAX).contains(&v),
-            "in [1e-150, 1e4] (smaller: D(0) = 1/(π alpha_tr²) overflows; larger: the lobe is unresolvably close to grazing)",
-        )?;
+        ALPHA_TR.check(alpha_tr)?;
         Ok(TrowbridgeReitz {
             alpha_tr,
             alpha2: alpha_tr * alpha_tr,
         })
     }
 
-    /// D(θ) = α²/(π (sin²θ + α² cos²θ)²) for θ ∈ [0, π/2], normalized over projected area.
-    #[inline]
-    pub fn eval(&self, theta: f64) -> f64 {
-        let (sin_theta, cos_theta) = theta.sin_cos();
-        let q = sin_theta * sin_theta + self.alpha2 * cos_theta * cos_theta;
-        (self.alpha_tr / q).powi(2) * FRAC_1_PI
-    }
-
-    /// D at θ_i = θ₀ + iΔθ into `out[i]` (all θ_i within [0, π/2]), by the same stable form as
-    /// [`eval`](Self::eval) on the batch path's sin and cos (see [`batch`]).
-    pub fn eval_grid(&self, theta0: f64, dtheta: f64, out: &mut [f64]) {
-        let (alpha_tr, alpha2) = (self.alpha_tr, self.alpha2);
-        batch::fill_grid(
-            theta0,
-            dtheta,
-            out,
-            #[inline(always)]
-            |_, sin_theta, cos_theta| {
-                let q = sin_theta * sin_theta + alpha2 * cos_theta * cos_theta;
-                (alpha_tr / q).powi(2) * FRAC_1_PI
-            },
-        );
-    }
 
     /// N = π: the projected-area integral of α²/(sin²θ + α² cos²θ)², independent of α.
     pub fn normalization(&self) -> f64 {
@@ -77,5 +51,29 @@ impl TrowbridgeReitz {
     /// The roughness α_tr.
     pub fn alpha_tr(&self) -> f64 {
         self.alpha_tr
+    }
+}
+
+impl Distribution for TrowbridgeReitz {
+    const NAME: &'static str = "trowbridge_reitz";
+    const ALIASES: &'static [&'static str] = &["ggx"];
+    const PARAMS: &'static [Param] = &[ALPHA_TR];
+    const COLOUR: u32 = 0x849900;
+    const EXAMPLE: &'static [f64] = &[0.3];
+
+    fn from_params(params: &[f64]) -> Result<Self, DomainError> {
+        TrowbridgeReitz::new(params[0])
+    }
+
+    /// D(θ) = α²/(π (sin²θ + α² cos²θ)²) for θ ∈ [0, π/2], normalized over projected area.
+    #[inline]
+    fn eval(&self, theta: f64) -> f64 {
+        let (sin_theta, cos_theta) = theta.sin_cos();
+        let q = sin_theta * sin_theta + self.alpha2 * cos_theta * cos_theta;
+        (self.alpha_tr / q).powi(2) * FRAC_1_PI
+    }
+
+    fn params(&self) -> Vec<f64> {
+        vec![self.alpha_tr]
     }
 }
