@@ -8,6 +8,7 @@
 use crate::adaptive::{self, Frame, PixelMap};
 use crate::math::quad::integrate;
 use crate::math::special::upper_gamma_scaled;
+use crate::math::tolerance::floored_relative_difference;
 use crate::ndf::{Abc, Family, Ndf, TorranceSparrow};
 use crate::sample::{PARALLEL_CHUNK, eval_grid_parallel};
 use crate::series::YScale;
@@ -437,7 +438,7 @@ pub fn throughput(clock: &dyn Clock, settings: &Settings, cases: &[Ndf]) -> Vec<
                 let error = out
                     .iter()
                     .zip(&reference)
-                    .map(|(a, b)| relative(*a, *b))
+                    .map(|(a, b)| floored_relative_difference(*a, *b))
                     .fold(0.0, f64::max);
                 rows.push(Row {
                     section: "throughput",
@@ -463,19 +464,6 @@ pub fn throughput(clock: &dyn Clock, settings: &Settings, cases: &[Ndf]) -> Vec<
     }
     rows
 }
-
-/// |a − b| / max(|a|, |b|), absolute below 1e-280 (MATH.md's convention), 0 when both are 0.
-fn relative(a: f64, b: f64) -> f64 {
-    let scale = a.abs().max(b.abs());
-    if scale == 0.0 {
-        0.0
-    } else {
-        (a - b).abs() / scale.max(TINY)
-    }
-}
-
-/// Below this magnitude errors are absolute (MATH.md).
-const TINY: f64 = 1e-280;
 
 /// Every section in order.
 pub fn run(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {

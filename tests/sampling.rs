@@ -5,6 +5,7 @@
 
 use ndfplot::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
 use ndfplot::cmd::render::{self, CanvasOverride, Format, RenderOptions};
+use ndfplot::math::tolerance::ABS_FLOOR;
 use ndfplot::ndf::{Family, Ndf};
 use ndfplot::plan::{Job, Outputs, plan};
 use ndfplot::provenance::Provenance;
@@ -17,8 +18,6 @@ use std::path::{Path, PathBuf};
 const TR_TOL: f64 = 1e-13;
 /// Accuracy bound of the other families, relative.
 const OTHER_TOL: f64 = 1e-12;
-/// Below this |D| errors are absolute (MATH.md's convention).
-const TINY: f64 = 1e-280;
 /// Relative step of the finite difference that estimates d ln D/d ln θ.
 const DIFF_STEP: f64 = 1e-6;
 /// The batch path's abscissa is θ₀ + iΔθ to within this many ulp of θ (two roundings: seed and step).
@@ -62,7 +61,7 @@ fn domain(family: Family) -> Vec<Vec<f64>> {
     }
 }
 
-/// Largest violation (≤ 1 passes) of |batch − eval| ≤ tol·max(|eval|, TINY) + the change of D under a
+/// Largest violation (≤ 1 passes) of |batch − eval| ≤ tol·max(|eval|, ABS_FLOOR) + the change of D under a
 /// THETA_ULPS-ulp move of θ, over a grid of `n` points on [θ₀, θ₁].
 fn batch_violation(ndf: &Ndf, (theta0, theta1): (f64, f64), n: usize, tol: f64) -> (f64, f64) {
     let dtheta = (theta1 - theta0) / (n - 1) as f64;
@@ -77,7 +76,7 @@ fn batch_violation(ndf: &Ndf, (theta0, theta1): (f64, f64), n: usize, tol: f64) 
             ndf.eval(theta * (1.0 - DIFF_STEP)),
         );
         let moved = (up - down).abs() / (2.0 * DIFF_STEP) * THETA_ULPS * f64::EPSILON;
-        let allowed = tol * want.abs().max(TINY) + moved;
+        let allowed = tol * want.abs().max(ABS_FLOOR) + moved;
         let violation = (got - want).abs() / allowed;
         assert!(
             got.is_finite() && got >= 0.0,
