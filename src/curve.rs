@@ -1,14 +1,15 @@
 //! The curve format shared by `eval`, `compare`, `fit` and scenes: a JSON object naming a model
 //! (`"ndf": <family>` or `"fresnel": <model>`) and its parameters by the notebooks' names.
 //!
-//! This module owns the key rules (unknown, missing, duplicate and exclusive keys, with "did you
-//! mean" suggestions), the construction of validated curves, their canonical JSON and their
-//! legend labels. It does not expand sweeps: scenes resolve the keys here, expand each parameter's
-//! values themselves, then call [`Resolved::build`] per combination.
+//! This module owns the key rules (which keys a curve accepts, missing and exclusive keys; unknown
+//! and duplicate keys are reported through [`crate::keys`]), the construction of validated curves,
+//! their canonical JSON and their legend labels. It does not expand sweeps: scenes resolve the keys
+//! here, expand each parameter's values themselves, then call [`Resolved::build`] per combination.
 
 use crate::domain::DomainError;
 use crate::fresnel::{Fresnel, Ior, SchlickF0};
 use crate::json::{Node, Value};
+use crate::keys::{self, Accepted};
 use crate::ndf::{Family, Ndf};
 use crate::problem::{Problem, join_key, suggestion};
 use crate::transform::Transform;
@@ -427,69 +428,56 @@ pub fn resolve<'a>(
             format!("expected a curve object (got {got})"),
         )]);
     };
-    let mut problems = Vec::new();
-    for (i, (key, value)) in members.iter().enumerate() {
-        if members[..i].iter().any(|(k, _)| k == key) {
-            problems.push(Problem::new(join_key(path, key), duplicate_key(value)));
-        }
-    }
+    let mut model_problems = Vec::new();
     let model_keys: Vec<&(String, Node)> = members
         .iter()
         .filter(|(k, _)| k == "ndf" || k == "fresnel")
         .collect();
     let model = match model_keys.as_slice() {
         [] => {
-            problems.push(Problem::new(
+            model_problems.push(Problem::new(
                 path,
                 format!("missing key \"ndf\" or \"fresnel\" naming the curve's model (got {node}, expected {{\"ndf\": <family>, …}} or {{\"fresnel\": <model>, …}})"),
             ));
             None
         }
-        [(key, name_node)] => model_from_node(key, name_node, path, &mut problems),
+        [(key, name_node)] => model_from_node(key, name_node, path, &mut model_problems),
         [(first, _), (second, _), ..] if first != second => {
-            problems.push(Problem::new(
+            model_problems.push(Problem::new(
                 path,
                 format!("a curve has either \"ndf\" or \"fresnel\", not both (got {node})"),
             ));
             None
         }
-        [(key, name_node), ..] => model_from_node(key, name_node, path, &mut problems),
+        [(key, name_node), ..] => model_from_node(key, name_node, path, &mut model_problems),
     };
     let Some(model) = model else {
+        // Without a model the accepted keys are unknown; only duplicates can be told.
+        let mut problems = keys::check(members, path, None);
+        problems.extend(model_problems);
         return Err(problems);
     };
     let signatures = model.signatures();
-    let given: Vec<&(String, Node)> = members
-        .iter()
-        .filter(|(k, _)| k != model.key() && !extra_keys.contains(&k.as_str()))
-        .collect();
     let all_keys: Vec<&str> = signatures
         .iter()
         .flatten()
         .map(|p| p.name)
         .chain(extra_keys.iter().copied())
         .collect();
-    for (key, node) in &given {
-        if !signatures.iter().flatten().any(|p| p.name == key) {
-            let expected = if all_keys.is_empty() {
-                "no parameters".to_string()
-            } else {
-                all_keys.join(", ")
-            };
-            problems.push(Problem::new(
-                join_key(path, key),
-                format!(
-                    "unknown key for {} \"{}\" (got {node}, expected one of: {expected}){}",
-                    model.key(),
-                    model.name(),
-                    suggestion(key, all_keys.iter().copied())
-                ),
-            ));
-        }
-    }
+    let object = format!("{} \"{}\"", model.key(), model.name());
+    let accepted = Accepted {
+        object: Some(&object),
+        listed: &all_keys,
+        unlisted: &[model.key()],
+    };
+    let mut problems = keys::check(members, path, Some(&accepted));
     if !problems.is_empty() {
         return Err(problems);
     }
+    let given: Vec<&(String, Node)> = members
+        .iter()
+        .filter(|(k, _)| k != model.key() && !extra_keys.contains(&k.as_str()))
+        .collect();
     let Some(signature) = signatures
         .iter()
         .position(|sig| given.iter().all(|(k, _)| sig.iter().any(|p| p.name == k)))
@@ -576,19 +564,12 @@ pub const TRANSFORM_KEY: &str = "transform";
 pub const TRANSFORM_KEYS: &[&str] = &[TRANSFORM_KEY, "curve"];
 
 fn parse_transformed(members: &[(String, Node)], path: &str) -> Result<Curve, Vec<Problem>> {
-    let mut problems = Vec::new();
-    for (key, node) in members {
-        if !TRANSFORM_KEYS.contains(&key.as_str()) {
-            problems.push(Problem::new(
-                join_key(path, key),
-                format!(
-                    "unknown key for a transformed curve (got {node}, expected one of: {}){}",
-                    TRANSFORM_KEYS.join(", "),
-                    suggestion(key, TRANSFORM_KEYS.iter().copied())
-                ),
-            ));
-        }
-    }
+    let accepted = Accepted {
+        object: Some("a transformed curve"),
+        listed: TRANSFORM_KEYS,
+        unlisted: &[],
+    };
+    let mut problems = keys::check(members, path, Some(&accepted));
     let names: Vec<&str> = Transform::NAMES.iter().map(|(n, _)| *n).collect();
     let transform = members
         .iter()
@@ -648,11 +629,6 @@ pub fn transformed(transform: Transform, curve: Curve, path: &str) -> Result<Cur
         transform,
         curve: Box::new(curve),
     })
-}
-
-/// The message for a key given twice; `value` is the repeated key's value.
-pub fn duplicate_key(value: &Node) -> String {
-    format!("duplicate key (got a second value {value}, expected each key once)")
 }
 
 /// What a value of `kind` is, for messages.
@@ -777,22 +753,13 @@ pub fn difference_parts<'a>(
             format!("expected a curve object (got {node})"),
         )]);
     };
-    let mut problems = Vec::new();
     let allowed: Vec<&str> = DIFFERENCE_KEYS.iter().chain(extra_keys).copied().collect();
-    for (i, (key, value)) in members.iter().enumerate() {
-        if members[..i].iter().any(|(k, _)| k == key) {
-            problems.push(Problem::new(join_key(path, key), duplicate_key(value)));
-        } else if !allowed.contains(&key.as_str()) {
-            problems.push(Problem::new(
-                join_key(path, key),
-                format!(
-                    "unknown key for a difference (got {value}, expected one of: {}){}",
-                    allowed.join(", "),
-                    suggestion(key, allowed.iter().copied())
-                ),
-            ));
-        }
-    }
+    let accepted = Accepted {
+        object: Some("a difference"),
+        listed: &allowed,
+        unlisted: &[],
+    };
+    let mut problems = keys::check(members, path, Some(&accepted));
     let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, n)| n);
     let names: Vec<&str> = DiffOp::ALL.iter().map(|op| op.name()).collect();
     let op_node = get(DIFFERENCE_KEY).expect("is_difference() was checked");

@@ -19,6 +19,7 @@ pub mod fresnel;
 pub mod grid;
 pub mod input;
 pub mod json;
+pub mod keys;
 pub mod math;
 pub mod metrics;
 pub mod ndf;
