@@ -13,6 +13,7 @@ use crate::keys::{self, Accepted};
 use crate::ndf::{Family, Ndf};
 use crate::problem::{Problem, join_key, suggestion};
 use crate::transform::Transform;
+use serde::ser::{Serialize, SerializeMap, Serializer};
 
 /// A validated curve: an NDF D(θ) or a Fresnel reflectance F(θ).
 #[derive(Debug, Clone, PartialEq)]
@@ -81,30 +82,36 @@ impl Curve {
 
     /// Canonical curve JSON (CONTRACTS.md): compact, model key first, parameters in MATH.md's
     /// order, numbers in shortest round-trip form, aliases replaced by canonical names. A
-    /// difference is `{"difference":"minus"|"ratio","a":{…},"b":{…}}`.
+    /// difference is `{"difference":"minus"|"ratio","a":{…},"b":{…}}`, a transformed curve
+    /// `{"transform":"projected"|"slope","curve":{…}}`.
     pub fn canonical_json(&self) -> String {
-        if let Curve::Difference { op, a, b } = self {
-            return format!(
-                "{{\"{DIFFERENCE_KEY}\":\"{}\",\"a\":{},\"b\":{}}}",
-                op.name(),
-                a.canonical_json(),
-                b.canonical_json()
-            );
+        crate::json::to_string(self)
+    }
+}
+
+impl Serialize for Curve {
+    /// The members of canonical curve JSON, in order (see [`Curve::canonical_json`]).
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(None)?;
+        match self {
+            Curve::Difference { op, a, b } => {
+                map.serialize_entry(DIFFERENCE_KEY, op.name())?;
+                map.serialize_entry("a", a)?;
+                map.serialize_entry("b", b)?;
+            }
+            Curve::Transformed { transform, curve } => {
+                map.serialize_entry(TRANSFORM_KEY, transform.name())?;
+                map.serialize_entry("curve", curve)?;
+            }
+            Curve::Ndf(_) | Curve::Fresnel(_) => {
+                let model = self.model();
+                map.serialize_entry(model.key(), model.name())?;
+                for (name, value) in self.params() {
+                    map.serialize_entry(name, &value)?;
+                }
+            }
         }
-        if let Curve::Transformed { transform, curve } = self {
-            return format!(
-                "{{\"{TRANSFORM_KEY}\":\"{}\",\"curve\":{}}}",
-                transform.name(),
-                curve.canonical_json()
-            );
-        }
-        let model = self.model();
-        let mut out = format!("{{\"{}\":\"{}\"", model.key(), model.name());
-        for (name, value) in self.params() {
-            out.push_str(&format!(",\"{name}\":{value}"));
-        }
-        out.push('}');
-        out
+        map.end()
     }
 }
 
@@ -161,12 +168,12 @@ impl ParamValue {
     }
 }
 
-impl std::fmt::Display for ParamValue {
-    /// Numbers in shortest round-trip form (`{:?}`), flags as `true`/`false`.
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            ParamValue::Number(v) => write!(f, "{v:?}"),
-            ParamValue::Flag(b) => write!(f, "{b}"),
+impl Serialize for ParamValue {
+    /// A number as a JSON number, a flag as `true`/`false`.
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        match *self {
+            ParamValue::Number(v) => serializer.serialize_f64(v),
+            ParamValue::Flag(b) => serializer.serialize_bool(b),
         }
     }
 }
