@@ -9,7 +9,9 @@ use crate::adaptive::{self, Frame, PixelMap};
 use crate::look::YScale;
 use crate::math::quad::integrate;
 use crate::math::special::upper_gamma_scaled;
+use crate::math::tolerance::floored_relative_difference;
 use crate::ndf::{Abc, Family, Ndf, TorranceSparrow};
+use crate::output::csv::Table;
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::time::{Duration, Instant};
@@ -446,7 +448,7 @@ pub fn throughput(clock: &dyn Clock, settings: &Settings, cases: &[Ndf]) -> Vec<
                 let error = out
                     .iter()
                     .zip(&reference)
-                    .map(|(a, b)| relative(*a, *b))
+                    .map(|(a, b)| floored_relative_difference(*a, *b))
                     .fold(0.0, f64::max);
                 rows.push(Row {
                     section: "throughput",
@@ -470,19 +472,6 @@ pub fn throughput(clock: &dyn Clock, settings: &Settings, cases: &[Ndf]) -> Vec<
     rows
 }
 
-/// |a − b| / max(|a|, |b|), absolute below 1e-280 (MATH.md's convention), 0 when both are 0.
-fn relative(a: f64, b: f64) -> f64 {
-    let scale = a.abs().max(b.abs());
-    if scale == 0.0 {
-        0.0
-    } else {
-        (a - b).abs() / scale.max(TINY)
-    }
-}
-
-/// Below this magnitude errors are absolute (MATH.md).
-const TINY: f64 = 1e-280;
-
 /// Every section in order.
 pub fn run(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
     let mut rows = drawing(clock, settings, &drawing_cases());
@@ -492,17 +481,23 @@ pub fn run(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
 }
 
 /// The rows as CSV: `section,case,method,setting,samples,seconds,error`, numbers in shortest
-/// round-trip form (CONTRACTS.md), the case CSV-quoted.
+/// round-trip form (CONTRACTS.md), fields quoted where they need it.
 pub fn csv(rows: &[Row]) -> String {
-    let mut text = String::from("section,case,method,setting,samples,seconds,error\n");
+    let header = [
+        "section", "case", "method", "setting", "samples", "seconds", "error",
+    ];
+    let mut table = Table::new(header, 128 * rows.len());
     for r in rows {
-        let case = format!("\"{}\"", r.case.replace('"', "\"\""));
-        text.push_str(&format!(
-            "{},{case},{},{:?},{},{:?},{:?}\n",
-            r.section, r.method, r.setting, r.samples, r.seconds, r.error
-        ));
+        table.text(r.section);
+        table.text(&r.case);
+        table.text(&r.method);
+        table.number(r.setting);
+        table.count(r.samples);
+        table.number(r.seconds);
+        table.number(r.error);
+        table.end_row();
     }
-    text
+    table.into_string()
 }
 
 #[cfg(test)]
@@ -551,7 +546,7 @@ mod tests {
             assert_eq!(row.error, 0.0, "{row:?}");
         }
         let text = csv(&rows);
-        assert!(text.starts_with("section,case,method,setting,samples,seconds,error\nthroughput,\"phong\",eval_1_thread,1.0,1000,0.0,0.0\n"), "{text}");
+        assert!(text.starts_with("section,case,method,setting,samples,seconds,error\nthroughput,phong,eval_1_thread,1.0,1000,0.0,0.0\n"), "{text}");
     }
 
     #[test]

@@ -5,20 +5,12 @@
 //! may not). This module reads the folder and never writes anything.
 
 use crate::error::{Error, Result};
+use crate::math::tolerance::relative_difference;
 use std::collections::BTreeMap;
 use std::path::Path;
 
 /// Default `--tolerance`: the cross-machine agreement CONTRACTS.md promises for figure CSVs.
 pub const DEFAULT_TOLERANCE: f64 = 1e-12;
-
-/// The relative difference of two numbers: 0 when equal, else |a − b| / max(|a|, |b|).
-pub fn relative_difference(a: f64, b: f64) -> f64 {
-    if a == b {
-        0.0
-    } else {
-        (a - b).abs() / a.abs().max(b.abs())
-    }
-}
 
 /// One series of a figure CSV: its `curve` column and its numeric columns (`x`, `y`, and `z`
 /// when present), row by row.
@@ -306,12 +298,5 @@ mod tests {
         );
         let lines = diff(CSV, &CSV.replace("3.0", "x"), 1e-12);
         assert!(lines[0].contains("stored x"), "{lines:?}");
-    }
-
-    #[test]
-    fn relative_difference_is_symmetric_and_zero_when_equal() {
-        assert_eq!(relative_difference(0.0, 0.0), 0.0);
-        assert_eq!(relative_difference(1.0, 0.0), 1.0);
-        assert_eq!(relative_difference(2.0, 1.0), relative_difference(1.0, 2.0));
     }
 }

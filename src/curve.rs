@@ -1,17 +1,19 @@
 //! The curve format shared by `eval`, `compare`, `fit` and scenes: a JSON object naming a model
 //! (`"ndf": <family>` or `"fresnel": <model>`) and its parameters by the notebooks' names.
 //!
-//! This module owns the key rules (unknown, missing, duplicate and exclusive keys, with "did you
-//! mean" suggestions), the construction of validated curves, their canonical JSON and their
-//! legend labels. It does not expand sweeps: scenes resolve the keys here, expand each parameter's
-//! values themselves, then call [`Resolved::build`] per combination.
+//! This module owns the key rules (which keys a curve accepts, missing and exclusive keys; unknown
+//! and duplicate keys are reported through [`crate::keys`]), the construction of validated curves,
+//! their canonical JSON and their legend labels. It does not expand sweeps: scenes resolve the keys
+//! here, expand each parameter's values themselves, then call [`Resolved::build`] per combination.
 
 use crate::domain::DomainError;
 use crate::fresnel::{Fresnel, Ior, SchlickF0};
 use crate::json::{Node, Value};
+use crate::keys::{self, Accepted};
 use crate::ndf::{Family, Ndf};
 use crate::problem::{Problem, join_key, suggestion};
 use crate::transform::Transform;
+use serde::ser::{Serialize, SerializeMap, Serializer};
 
 /// A validated curve: an NDF D(θ) or a Fresnel reflectance F(θ).
 #[derive(Debug, Clone, PartialEq)]
@@ -80,30 +82,36 @@ impl Curve {
 
     /// Canonical curve JSON (CONTRACTS.md): compact, model key first, parameters in MATH.md's
     /// order, numbers in shortest round-trip form, aliases replaced by canonical names. A
-    /// difference is `{"difference":"minus"|"ratio","a":{…},"b":{…}}`.
+    /// difference is `{"difference":"minus"|"ratio","a":{…},"b":{…}}`, a transformed curve
+    /// `{"transform":"projected"|"slope","curve":{…}}`.
     pub fn canonical_json(&self) -> String {
-        if let Curve::Difference { op, a, b } = self {
-            return format!(
-                "{{\"{DIFFERENCE_KEY}\":\"{}\",\"a\":{},\"b\":{}}}",
-                op.name(),
-                a.canonical_json(),
-                b.canonical_json()
-            );
+        crate::json::to_string(self)
+    }
+}
+
+impl Serialize for Curve {
+    /// The members of canonical curve JSON, in order (see [`Curve::canonical_json`]).
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(None)?;
+        match self {
+            Curve::Difference { op, a, b } => {
+                map.serialize_entry(DIFFERENCE_KEY, op.name())?;
+                map.serialize_entry("a", a)?;
+                map.serialize_entry("b", b)?;
+            }
+            Curve::Transformed { transform, curve } => {
+                map.serialize_entry(TRANSFORM_KEY, transform.name())?;
+                map.serialize_entry("curve", curve)?;
+            }
+            Curve::Ndf(_) | Curve::Fresnel(_) => {
+                let model = self.model();
+                map.serialize_entry(model.key(), model.name())?;
+                for (name, value) in self.params() {
+                    map.serialize_entry(name, &value)?;
+                }
+            }
         }
-        if let Curve::Transformed { transform, curve } = self {
-            return format!(
-                "{{\"{TRANSFORM_KEY}\":\"{}\",\"curve\":{}}}",
-                transform.name(),
-                curve.canonical_json()
-            );
-        }
-        let model = self.model();
-        let mut out = format!("{{\"{}\":\"{}\"", model.key(), model.name());
-        for (name, value) in self.params() {
-            out.push_str(&format!(",\"{name}\":{value}"));
-        }
-        out.push('}');
-        out
+        map.end()
     }
 }
 
@@ -160,12 +168,12 @@ impl ParamValue {
     }
 }
 
-impl std::fmt::Display for ParamValue {
-    /// Numbers in shortest round-trip form (`{:?}`), flags as `true`/`false`.
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            ParamValue::Number(v) => write!(f, "{v:?}"),
-            ParamValue::Flag(b) => write!(f, "{b}"),
+impl Serialize for ParamValue {
+    /// A number as a JSON number, a flag as `true`/`false`.
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        match *self {
+            ParamValue::Number(v) => serializer.serialize_f64(v),
+            ParamValue::Flag(b) => serializer.serialize_bool(b),
         }
     }
 }
@@ -427,69 +435,56 @@ pub fn resolve<'a>(
             format!("expected a curve object (got {got})"),
         )]);
     };
-    let mut problems = Vec::new();
-    for (i, (key, value)) in members.iter().enumerate() {
-        if members[..i].iter().any(|(k, _)| k == key) {
-            problems.push(Problem::new(join_key(path, key), duplicate_key(value)));
-        }
-    }
+    let mut model_problems = Vec::new();
     let model_keys: Vec<&(String, Node)> = members
         .iter()
         .filter(|(k, _)| k == "ndf" || k == "fresnel")
         .collect();
     let model = match model_keys.as_slice() {
         [] => {
-            problems.push(Problem::new(
+            model_problems.push(Problem::new(
                 path,
                 format!("missing key \"ndf\" or \"fresnel\" naming the curve's model (got {node}, expected {{\"ndf\": <family>, …}} or {{\"fresnel\": <model>, …}})"),
             ));
             None
         }
-        [(key, name_node)] => model_from_node(key, name_node, path, &mut problems),
+        [(key, name_node)] => model_from_node(key, name_node, path, &mut model_problems),
         [(first, _), (second, _), ..] if first != second => {
-            problems.push(Problem::new(
+            model_problems.push(Problem::new(
                 path,
                 format!("a curve has either \"ndf\" or \"fresnel\", not both (got {node})"),
             ));
             None
         }
-        [(key, name_node), ..] => model_from_node(key, name_node, path, &mut problems),
+        [(key, name_node), ..] => model_from_node(key, name_node, path, &mut model_problems),
     };
     let Some(model) = model else {
+        // Without a model the accepted keys are unknown; only duplicates can be told.
+        let mut problems = keys::check(members, path, None);
+        problems.extend(model_problems);
         return Err(problems);
     };
     let signatures = model.signatures();
-    let given: Vec<&(String, Node)> = members
-        .iter()
-        .filter(|(k, _)| k != model.key() && !extra_keys.contains(&k.as_str()))
-        .collect();
     let all_keys: Vec<&str> = signatures
         .iter()
         .flatten()
         .map(|p| p.name)
         .chain(extra_keys.iter().copied())
         .collect();
-    for (key, node) in &given {
-        if !signatures.iter().flatten().any(|p| p.name == key) {
-            let expected = if all_keys.is_empty() {
-                "no parameters".to_string()
-            } else {
-                all_keys.join(", ")
-            };
-            problems.push(Problem::new(
-                join_key(path, key),
-                format!(
-                    "unknown key for {} \"{}\" (got {node}, expected one of: {expected}){}",
-                    model.key(),
-                    model.name(),
-                    suggestion(key, all_keys.iter().copied())
-                ),
-            ));
-        }
-    }
+    let object = format!("{} \"{}\"", model.key(), model.name());
+    let accepted = Accepted {
+        object: Some(&object),
+        listed: &all_keys,
+        unlisted: &[model.key()],
+    };
+    let mut problems = keys::check(members, path, Some(&accepted));
     if !problems.is_empty() {
         return Err(problems);
     }
+    let given: Vec<&(String, Node)> = members
+        .iter()
+        .filter(|(k, _)| k != model.key() && !extra_keys.contains(&k.as_str()))
+        .collect();
     let Some(signature) = signatures
         .iter()
         .position(|sig| given.iter().all(|(k, _)| sig.iter().any(|p| p.name == k)))
@@ -576,19 +571,12 @@ pub const TRANSFORM_KEY: &str = "transform";
 pub const TRANSFORM_KEYS: &[&str] = &[TRANSFORM_KEY, "curve"];
 
 fn parse_transformed(members: &[(String, Node)], path: &str) -> Result<Curve, Vec<Problem>> {
-    let mut problems = Vec::new();
-    for (key, node) in members {
-        if !TRANSFORM_KEYS.contains(&key.as_str()) {
-            problems.push(Problem::new(
-                join_key(path, key),
-                format!(
-                    "unknown key for a transformed curve (got {node}, expected one of: {}){}",
-                    TRANSFORM_KEYS.join(", "),
-                    suggestion(key, TRANSFORM_KEYS.iter().copied())
-                ),
-            ));
-        }
-    }
+    let accepted = Accepted {
+        object: Some("a transformed curve"),
+        listed: TRANSFORM_KEYS,
+        unlisted: &[],
+    };
+    let mut problems = keys::check(members, path, Some(&accepted));
     let names: Vec<&str> = Transform::NAMES.iter().map(|(n, _)| *n).collect();
     let transform = members
         .iter()
@@ -648,11 +636,6 @@ pub fn transformed(transform: Transform, curve: Curve, path: &str) -> Result<Cur
         transform,
         curve: Box::new(curve),
     })
-}
-
-/// The message for a key given twice; `value` is the repeated key's value.
-pub fn duplicate_key(value: &Node) -> String {
-    format!("duplicate key (got a second value {value}, expected each key once)")
 }
 
 /// What a value of `kind` is, for messages.
@@ -777,22 +760,13 @@ pub fn difference_parts<'a>(
             format!("expected a curve object (got {node})"),
         )]);
     };
-    let mut problems = Vec::new();
     let allowed: Vec<&str> = DIFFERENCE_KEYS.iter().chain(extra_keys).copied().collect();
-    for (i, (key, value)) in members.iter().enumerate() {
-        if members[..i].iter().any(|(k, _)| k == key) {
-            problems.push(Problem::new(join_key(path, key), duplicate_key(value)));
-        } else if !allowed.contains(&key.as_str()) {
-            problems.push(Problem::new(
-                join_key(path, key),
-                format!(
-                    "unknown key for a difference (got {value}, expected one of: {}){}",
-                    allowed.join(", "),
-                    suggestion(key, allowed.iter().copied())
-                ),
-            ));
-        }
-    }
+    let accepted = Accepted {
+        object: Some("a difference"),
+        listed: &allowed,
+        unlisted: &[],
+    };
+    let mut problems = keys::check(members, path, Some(&accepted));
     let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, n)| n);
     let names: Vec<&str> = DiffOp::ALL.iter().map(|op| op.name()).collect();
     let op_node = get(DIFFERENCE_KEY).expect("is_difference() was checked");

@@ -4,6 +4,7 @@
 //! A dataset is validated data (like a curve) and evaluates to points; it never draws or writes.
 
 use crate::fresnel::{basis, gulbrandsen};
+use serde::ser::{Serialize, SerializeMap, Serializer};
 
 /// Which number of the spectrum a spectrum series shows (MATH.md, basis step 6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -137,56 +138,11 @@ pub struct DataPoints {
     pub grid: Option<(usize, usize)>,
 }
 
-fn json_list(values: &[f64]) -> String {
-    let items: Vec<String> = values.iter().map(|v| format!("{v:?}")).collect();
-    format!("[{}]", items.join(","))
-}
-
 impl Dataset {
-    /// A canonical one-line JSON name, used as the CSV `curve` column.
+    /// A canonical one-line JSON name, used as the CSV `curve` column: `{"data":<kind>,…}` with
+    /// the dataset's keys in the spec format's order, numbers in shortest round-trip form.
     pub fn canonical_json(&self) -> String {
-        match self {
-            Dataset::Spectrum { quantity, count } => {
-                format!(
-                    "{{\"data\":\"spectrum\",\"quantity\":\"{}\",\"count\":{count}}}",
-                    quantity.name()
-                )
-            }
-            Dataset::Gulbrandsen {
-                x,
-                y,
-                z,
-                r,
-                g,
-                g_remap,
-            } => {
-                let z = z.map_or(String::new(), |z| format!(",\"z\":\"{}\"", z.name()));
-                format!(
-                    "{{\"data\":\"gulbrandsen\",\"x\":\"{}\",\"y\":\"{}\"{z},\"r\":{},\"g\":{},\"g_remap\":{g_remap}}}",
-                    x.name(),
-                    y.name(),
-                    json_list(r),
-                    json_list(g)
-                )
-            }
-            Dataset::Table { x, y } => format!(
-                "{{\"data\":\"table\",\"x\":{},\"y\":{}}}",
-                json_list(x),
-                json_list(y)
-            ),
-            Dataset::Csv {
-                path,
-                x_column,
-                y_column,
-                degrees,
-                ..
-            } => format!(
-                "{{\"data\":\"csv\",\"path\":{},\"x\":{},\"y\":{},\"degrees\":{degrees}}}",
-                crate::json::quote(path),
-                crate::json::quote(x_column),
-                crate::json::quote(y_column)
-            ),
-        }
+        crate::json::to_string(self)
     }
 
     /// Whether the dataset's x is θ in radians (so it shares axes with curves).
@@ -254,5 +210,57 @@ impl Dataset {
                 grid: None,
             },
         }
+    }
+}
+
+impl Serialize for Dataset {
+    /// The members of the canonical JSON (see [`Dataset::canonical_json`]); a CSV series is named
+    /// by its file and columns, not its values.
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(None)?;
+        match self {
+            Dataset::Spectrum { quantity, count } => {
+                map.serialize_entry("data", "spectrum")?;
+                map.serialize_entry("quantity", quantity.name())?;
+                map.serialize_entry("count", count)?;
+            }
+            Dataset::Gulbrandsen {
+                x,
+                y,
+                z,
+                r,
+                g,
+                g_remap,
+            } => {
+                map.serialize_entry("data", "gulbrandsen")?;
+                map.serialize_entry("x", x.name())?;
+                map.serialize_entry("y", y.name())?;
+                if let Some(z) = z {
+                    map.serialize_entry("z", z.name())?;
+                }
+                map.serialize_entry("r", r)?;
+                map.serialize_entry("g", g)?;
+                map.serialize_entry("g_remap", g_remap)?;
+            }
+            Dataset::Table { x, y } => {
+                map.serialize_entry("data", "table")?;
+                map.serialize_entry("x", x)?;
+                map.serialize_entry("y", y)?;
+            }
+            Dataset::Csv {
+                path,
+                x_column,
+                y_column,
+                degrees,
+                ..
+            } => {
+                map.serialize_entry("data", "csv")?;
+                map.serialize_entry("path", path)?;
+                map.serialize_entry("x", x_column)?;
+                map.serialize_entry("y", y_column)?;
+                map.serialize_entry("degrees", degrees)?;
+            }
+        }
+        map.end()
     }
 }

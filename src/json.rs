@@ -1,11 +1,17 @@
-//! A small RFC 8259 JSON reader that keeps what spec validation needs and serde_json drops:
-//! the position of every value (for `line:column` in messages), duplicate object keys (an error
-//! in ndfplot's formats), key order, and the literal text of every number (the Range rule counts
-//! the decimals written in the JSON literal).
+//! JSON in and out.
 //!
-//! It only parses; it never decides what a document means (that is `curve` and `scene`).
+//! In: a small RFC 8259 reader that keeps what spec validation needs and serde_json drops: the
+//! position of every value (for `line:column` in messages), duplicate object keys (an error in
+//! ndfplot's formats), key order, and the literal text of every number (the Range rule counts the
+//! decimals written in the JSON literal).
+//!
+//! Out: [`to_string`], the one way ndfplot writes JSON: serde_json, with every number in the
+//! shortest round-trip form of CONTRACTS.md.
+//!
+//! It never decides what a document means (that is `curve` and `scene`).
 
-use std::fmt;
+use serde::Serialize;
+use std::{fmt, io};
 
 /// Deepest nesting accepted; deeper documents are rejected instead of exhausting the stack.
 pub const MAX_DEPTH: usize = 128;
@@ -95,7 +101,7 @@ fn write_compact(value: &Value, out: &mut String) {
         Value::Null => out.push_str("null"),
         Value::Bool(b) => out.push_str(if *b { "true" } else { "false" }),
         Value::Number(n) => out.push_str(&n.literal),
-        Value::String(s) => out.push_str(&quote(s)),
+        Value::String(s) => out.push_str(&to_string(s)),
         Value::Array(items) => {
             out.push('[');
             for (i, item) in items.iter().enumerate() {
@@ -112,7 +118,7 @@ fn write_compact(value: &Value, out: &mut String) {
                 if i > 0 {
                     out.push(',');
                 }
-                out.push_str(&quote(key));
+                out.push_str(&to_string(key));
                 out.push(':');
                 write_compact(&item.value, out);
             }
@@ -121,23 +127,29 @@ fn write_compact(value: &Value, out: &mut String) {
     }
 }
 
-/// `s` as a JSON string literal (quotes, backslashes and control characters escaped).
-pub fn quote(s: &str) -> String {
-    let mut out = String::with_capacity(s.len() + 2);
-    out.push('"');
-    for ch in s.chars() {
-        match ch {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            '\n' => out.push_str("\\n"),
-            '\r' => out.push_str("\\r"),
-            '\t' => out.push_str("\\t"),
-            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
-            c => out.push(c),
-        }
+/// Compact JSON text of `value` (serde_json), with every f64 in shortest round-trip form, as
+/// Rust's `{:?}` prints it (`1.0`, `0.1`, `1e-7`, `1e16`, `1000000000000000.0`): the number form
+/// of CONTRACTS.md, which serde_json's own float formatting does not follow (it prints `1e15` for
+/// 1000000000000000.0). serde_json writes a non-finite f64 as `null`; ndfplot prints only finite
+/// numbers, so callers check before.
+pub fn to_string<T: Serialize + ?Sized>(value: &T) -> String {
+    let mut out = Vec::with_capacity(64);
+    value
+        .serialize(&mut serde_json::Serializer::with_formatter(
+            &mut out,
+            RoundTripFloats,
+        ))
+        .expect("ndfplot's values serialize to JSON in memory");
+    String::from_utf8(out).expect("serde_json writes UTF-8")
+}
+
+/// serde_json's compact formatting, floats as `{:?}`.
+struct RoundTripFloats;
+
+impl serde_json::ser::Formatter for RoundTripFloats {
+    fn write_f64<W: ?Sized + io::Write>(&mut self, writer: &mut W, value: f64) -> io::Result<()> {
+        write!(writer, "{value:?}")
     }
-    out.push('"');
-    out
 }
 
 /// A syntax error with its 1-based position.
@@ -501,6 +513,25 @@ mod tests {
         let text = "[".repeat(100_000);
         let err = parse(&text).unwrap_err();
         assert!(err.message.contains("nesting"), "{err}");
+    }
+
+    #[test]
+    fn writes_numbers_in_shortest_round_trip_form() {
+        let numbers = [
+            1.0,
+            0.1,
+            1e-300,
+            1e-7,
+            1e-5,
+            1e15,
+            1e16,
+            123456789012345680.0,
+            6.123233995736766e-17,
+            -0.0,
+        ];
+        let expected: Vec<String> = numbers.iter().map(|v| format!("{v:?}")).collect();
+        assert_eq!(to_string(&numbers), format!("[{}]", expected.join(",")));
+        assert_eq!(to_string("a\"b\\c\n"), r#""a\"b\\c\n""#);
     }
 
     #[test]

@@ -21,6 +21,7 @@ pub mod fresnel;
 pub mod grid;
 pub mod input;
 pub mod json;
+pub mod keys;
 pub mod layout;
 pub mod look;
 pub mod math;

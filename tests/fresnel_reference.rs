@@ -6,11 +6,10 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use ndfplot::fresnel::{Fresnel, Ior, SchlickF0, basis};
+use ndfplot::math::tolerance::floored_relative_difference;
 
 /// Fresnel curves, relative (reference/README.md: achievable 1e-15 … 1e-13 with the stable forms).
 const CURVE_REL_TOL: f64 = 1e-13;
-/// Below this |reference| the comparison is absolute (reference/README.md).
-const ABSOLUTE_BELOW: f64 = 1e-280;
 /// The basis b₀…b₃, the coefficients c₀…c₃, `l2` and the normalized spectrum, absolute: a different
 /// SVD routine moves them by ~2e-14 (reference/README.md), given training rows rounded like numpy's
 /// (the row with 1 − F₀ = 2e-5 amplifies each ulp of F 5e4-fold). Measured: b₂ 9.0e-15, b₃ 1.1e-14.
@@ -58,15 +57,6 @@ fn curve(json: &str) -> Fresnel {
     }
 }
 
-fn error(value: f64, reference: f64) -> f64 {
-    let abs = (value - reference).abs();
-    if reference.abs() > ABSOLUTE_BELOW {
-        abs / reference.abs()
-    } else {
-        abs
-    }
-}
-
 #[test]
 fn visible_curves_match_mpmath() {
     let rows = reference("fresnel_visible.csv");
@@ -75,7 +65,7 @@ fn visible_curves_match_mpmath() {
     for row in &rows {
         let (theta, expected) = (number(row, 2), number(row, 3));
         let value = curve(&row[1]).eval(theta);
-        let err = error(value, expected);
+        let err = floored_relative_difference(value, expected);
         assert!(
             err <= CURVE_REL_TOL,
             "{}: θ = {theta}: {value} vs {expected} (error {err:e})",

@@ -3,6 +3,7 @@
 use crate::curve::Curve;
 use crate::error::{Error, Result};
 use crate::fresnel::{Fresnel, Ior, basis};
+use crate::output::csv::Table;
 
 /// The material (complex index) behind a curve that names one: `belcour` or `exact`.
 fn material(curve: &Curve) -> Option<Ior> {
@@ -16,7 +17,7 @@ fn material(curve: &Curve) -> Option<Ior> {
 /// (the notebook's `fresnel2coeffs`) and the `l2_grid` error of the reconstruction against the
 /// exact Fresnel, numbers in shortest round-trip form (zeros unsigned).
 pub fn table(curves: &[Curve]) -> Result<String> {
-    let mut out = String::from("c0,c1,c2,c3,l2\n");
+    let mut table = Table::new(["c0", "c1", "c2", "c3", "l2"], 128 * curves.len());
     for curve in curves {
         let ior = material(curve).ok_or_else(|| {
             Error::Usage(format!(
@@ -28,8 +29,11 @@ pub fn table(curves: &[Curve]) -> Result<String> {
         let c = basis::coeffs(eta, kappa);
         let l2 = c.l2_grid(eta, kappa);
         // `+ 0.0` turns a −0.0 from the 2×2 solve into 0.0: the coefficient is zero, not signed.
-        let [c0, c1, c2, c3] = [c.c0, c.c1, c.c2, c.c3].map(|v| v + 0.0);
-        out.push_str(&format!("{c0:?},{c1:?},{c2:?},{c3:?},{l2:?}\n"));
+        for v in [c.c0, c.c1, c.c2, c.c3].map(|v| v + 0.0) {
+            table.number(v);
+        }
+        table.number(l2);
+        table.end_row();
     }
-    Ok(out)
+    Ok(table.into_string())
 }

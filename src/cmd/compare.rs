@@ -8,6 +8,8 @@ use crate::error::{Error, Result};
 use crate::metrics::sampled::{Operand, compare_operands};
 use crate::metrics::{Comparison, Metric};
 use crate::problem::{Problem, Problems, suggestion};
+use serde::Serialize;
+use serde_json::value::RawValue;
 
 /// A `--max-error <metric>=<x>` bound.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -107,23 +109,43 @@ pub fn table(a: &str, b: &str, c: &Comparison) -> String {
     out
 }
 
-/// One JSON object: `a` and `b` (canonical JSON of each side), each metric by name, `max_abs_theta`,
-/// `max_rel_theta`, `a_peak`, `a_peak_theta`, `b_peak`, `b_peak_theta`; numbers in round-trip form.
+/// The members of `compare --format json`, in order.
+#[derive(Serialize)]
+struct Report<'a> {
+    a: &'a RawValue,
+    b: &'a RawValue,
+    max_abs: f64,
+    max_abs_theta: f64,
+    max_rel: f64,
+    max_rel_theta: f64,
+    l2_projected: f64,
+    l2_grid: f64,
+    a_peak: f64,
+    a_peak_theta: f64,
+    b_peak: f64,
+    b_peak_theta: f64,
+}
+
+/// One JSON object and a newline: `a` and `b` (each side's canonical JSON, given as JSON text),
+/// each metric by name, `max_abs_theta`, `max_rel_theta`, `a_peak`, `a_peak_theta`, `b_peak`,
+/// `b_peak_theta`; numbers in round-trip form.
 pub fn json(a: &str, b: &str, c: &Comparison) -> String {
-    format!(
-        "{{\"a\":{a},\"b\":{b},\"max_abs\":{:?},\"max_abs_theta\":{:?},\"max_rel\":{:?},\"max_rel_theta\":{:?},\
-         \"l2_projected\":{:?},\"l2_grid\":{:?},\"a_peak\":{:?},\"a_peak_theta\":{:?},\"b_peak\":{:?},\"b_peak_theta\":{:?}}}\n",
-        c.max_abs,
-        c.max_abs_theta,
-        c.max_rel,
-        c.max_rel_theta,
-        c.l2_projected,
-        c.l2_grid,
-        c.a_peak.value,
-        c.a_peak.theta,
-        c.b_peak.value,
-        c.b_peak.theta
-    )
+    let raw = |text| serde_json::from_str::<&RawValue>(text).expect("canonical JSON is JSON");
+    let report = Report {
+        a: raw(a),
+        b: raw(b),
+        max_abs: c.max_abs,
+        max_abs_theta: c.max_abs_theta,
+        max_rel: c.max_rel,
+        max_rel_theta: c.max_rel_theta,
+        l2_projected: c.l2_projected,
+        l2_grid: c.l2_grid,
+        a_peak: c.a_peak.value,
+        a_peak_theta: c.a_peak.theta,
+        b_peak: c.b_peak.value,
+        b_peak_theta: c.b_peak.theta,
+    };
+    crate::json::to_string(&report) + "\n"
 }
 
 /// `Err(CheckFailed)` (exit 1) listing every exceeded bound, one line each.

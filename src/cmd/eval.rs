@@ -3,6 +3,7 @@
 use crate::curve::Curve;
 use crate::error::{Error, Result};
 use crate::grid::linspace;
+use crate::output::csv::Table;
 use std::f64::consts::FRAC_PI_2;
 
 /// Largest θ count of a `start:stop:count` list (CONTRACTS.md).
@@ -73,31 +74,19 @@ pub fn parse_theta_list(text: &str, degrees: bool) -> Result<Vec<f64>> {
         .collect()
 }
 
-/// Quotes a CSV field when it holds a comma, quote or line break (RFC 4180).
-pub fn csv_field(text: &str) -> String {
-    if text.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text.to_string()
-    }
-}
-
 /// The CSV table: `theta,value` for one curve, else `theta,<canonical curve JSON>…`; one row per θ
 /// in input order, numbers in shortest round-trip form.
 pub fn table(curves: &[Curve], thetas: &[f64]) -> Result<String> {
-    let mut out = String::with_capacity(thetas.len() * 24 * (curves.len() + 1));
-    out.push_str("theta");
-    if let [_] = curves {
-        out.push_str(",value");
+    let header: Vec<String> = if let [_] = curves {
+        vec!["theta".into(), "value".into()]
     } else {
-        for curve in curves {
-            out.push(',');
-            out.push_str(&csv_field(&curve.canonical_json()));
-        }
-    }
-    out.push('\n');
+        std::iter::once("theta".to_string())
+            .chain(curves.iter().map(Curve::canonical_json))
+            .collect()
+    };
+    let mut table = Table::new(header, thetas.len() * 24 * (curves.len() + 1));
     for &theta in thetas {
-        out.push_str(&format!("{theta:?}"));
+        table.number(theta);
         for curve in curves {
             let value = curve.eval(theta);
             if !value.is_finite() {
@@ -106,11 +95,11 @@ pub fn table(curves: &[Curve], thetas: &[f64]) -> Result<String> {
                     curve.canonical_json()
                 )));
             }
-            out.push_str(&format!(",{value:?}"));
+            table.number(value);
         }
-        out.push('\n');
+        table.end_row();
     }
-    Ok(out)
+    Ok(table.into_string())
 }
 
 #[cfg(test)]
@@ -145,11 +134,18 @@ mod tests {
     }
 
     #[test]
-    fn csv_quoting() {
+    fn several_curves_are_named_by_their_quoted_canonical_json() {
+        let curves: Vec<Curve> = [
+            r#"{"ndf":"phong","alpha_p":1}"#,
+            r#"{"fresnel":"schlick","f0":0.04}"#,
+        ]
+        .iter()
+        .map(|text| crate::curve::parse(&crate::json::parse(text).unwrap(), "").unwrap())
+        .collect();
         assert_eq!(
-            csv_field(r#"{"ndf":"phong","alpha_p":1.0}"#),
-            r#""{""ndf"":""phong"",""alpha_p"":1.0}""#
+            table(&curves, &[0.0]).unwrap(),
+            "theta,\"{\"\"ndf\"\":\"\"phong\"\",\"\"alpha_p\"\":1.0}\",\"{\"\"fresnel\"\":\"\"schlick\"\",\"\"f0\"\":0.04}\"\n\
+             0.0,0.477464829275686,0.04\n"
         );
-        assert_eq!(csv_field("value"), "value");
     }
 }

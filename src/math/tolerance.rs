@@ -1,4 +1,7 @@
-//! The accuracy targets of ndfplot's numerical code, in one place, each with the reason for its value.
+//! The accuracy targets of ndfplot's numerical code, in one place, each with the reason for its value,
+//! and the two ways a value is measured against another ([`relative_difference`], and
+//! [`floored_relative_difference`] for reference values that may underflow). Every comparison in the
+//! crate, its benchmarks and its tests goes through these; nothing here does I/O.
 //!
 //! The NDF and special-function tests compare against 50-digit mpmath values computed from the exact
 //! doubles of their inputs (`tests/data/reference/`, `tests/data/ndf_extreme.csv`).
@@ -16,6 +19,30 @@ pub const REL_TOL_NDF: f64 = 1e-12;
 /// normal double (2.2e-308) where relative precision is lost to gradual underflow.
 pub const ABS_FLOOR: f64 = 1e-280;
 
+/// |a − b| / max(|a|, |b|): symmetric, scale-free, at most 2 for finite values of opposite signs;
+/// 0 when a == b (both 0 included, so two vanishing curves agree). This is `compare`'s `max_rel`
+/// (CONTRACTS.md) and `render --check`'s measure.
+#[inline]
+pub fn relative_difference(a: f64, b: f64) -> f64 {
+    if a == b {
+        0.0
+    } else {
+        (a - b).abs() / a.abs().max(b.abs())
+    }
+}
+
+/// [`relative_difference`] where max(|a|, |b|) > [`ABS_FLOOR`], and the absolute difference |a − b|
+/// at or below it, where relative precision is lost to gradual underflow (MATH.md's convention for
+/// reference values and measured errors).
+#[inline]
+pub fn floored_relative_difference(a: f64, b: f64) -> f64 {
+    if a.abs().max(b.abs()) > ABS_FLOOR {
+        relative_difference(a, b)
+    } else {
+        (a - b).abs()
+    }
+}
+
 /// Allowed deviation of 2π ∫₀^{π/2} D sin θ cos θ dθ from 1: near grazing the double spacing of θ
 /// (2.2e-16) limits how finely a lobe of width w is sampled to ~2.2e-16 / w relative, ≈ 2e-12 for the
 /// narrowest grazing lobes accepted (w ≈ 1e-4); 1e-10 leaves room for the quadrature's own error.
@@ -28,3 +55,25 @@ pub const QUAD_REL_TOL: f64 = 1e-12;
 /// Relative error allowed for the special functions of [`crate::math::special`] against mpmath: their
 /// series, recurrences and continued fractions each lose a few ulps, ~1e-15 in practice.
 pub const REL_TOL_SPECIAL: f64 = 1e-14;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn relative_difference_is_symmetric_and_zero_when_equal() {
+        assert_eq!(relative_difference(0.0, 0.0), 0.0);
+        assert_eq!(relative_difference(1.0, 0.0), 1.0);
+        assert_eq!(relative_difference(-1.0, 1.0), 2.0);
+        assert_eq!(relative_difference(2.0, 1.0), 0.5);
+        assert_eq!(relative_difference(1.0, 2.0), 0.5);
+    }
+
+    #[test]
+    fn below_the_floor_the_difference_is_absolute() {
+        assert_eq!(floored_relative_difference(2e-300, 1e-300), 1e-300);
+        assert_eq!(floored_relative_difference(0.0, 0.0), 0.0);
+        assert_eq!(floored_relative_difference(2.0, 1.0), 0.5);
+        assert_eq!(floored_relative_difference(2e-280, 0.0), 1.0);
+    }
+}

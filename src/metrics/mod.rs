@@ -305,15 +305,8 @@ pub fn l2_grid(a: &Curve, b: &Curve) -> Result<f64, MetricError> {
     Ok(sum.sqrt())
 }
 
-/// max(|a|, |b|)-relative difference |a − b| / max(|a|, |b|), 0 where both are 0.
-pub fn relative_difference(a: f64, b: f64) -> f64 {
-    let scale = a.abs().max(b.abs());
-    if scale == 0.0 {
-        0.0
-    } else {
-        (a - b).abs() / scale
-    }
-}
+/// The pointwise difference behind `max_rel`: |a − b| / max(|a|, |b|), 0 where both are 0.
+pub use crate::math::tolerance::relative_difference;
 
 /// The metrics of `ndfplot compare` (CONTRACTS.md).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -4,6 +4,7 @@
 //! key becomes a [`Problem`] and the read returns `None`, so one pass reports everything.
 
 use crate::json::{Node, Value};
+use crate::keys::{self, Accepted};
 use crate::problem::{Problem, join_key, suggestion};
 
 /// Collects the problems found while reading one document.
@@ -52,7 +53,7 @@ impl Reader {
     }
 
     /// Reads `node` as an object whose keys must all be in `allowed`; unknown keys (with a
-    /// "did you mean") and duplicates are reported, the object is still returned.
+    /// "did you mean") and duplicates are reported ([`keys::check`]), the object is still returned.
     pub fn object<'a>(
         &mut self,
         node: &'a Node,
@@ -63,20 +64,13 @@ impl Reader {
             self.report(path, format!("expected an object (got {node})"));
             return None;
         };
-        for (i, (key, value)) in members.iter().enumerate() {
-            if members[..i].iter().any(|(k, _)| k == key) {
-                self.report(join_key(path, key), crate::curve::duplicate_key(value));
-            } else if !allowed.contains(&key.as_str()) {
-                self.report(
-                    join_key(path, key),
-                    format!(
-                        "unknown key (got {value}, expected one of: {}){}",
-                        allowed.join(", "),
-                        suggestion(key, allowed.iter().copied())
-                    ),
-                );
-            }
-        }
+        let accepted = Accepted {
+            object: None,
+            listed: allowed,
+            unlisted: &[],
+        };
+        self.problems
+            .extend(keys::check(members, path, Some(&accepted)));
         Some(Object { members, path })
     }
 
