@@ -1,8 +1,9 @@
 //! ndfplot: plot and compare microfacet NDFs and Fresnel reflectance, exactly and fast.
 //!
-//! Data flows one way: curve/scene JSON → validated model (`curve`, `scene`) → sampling plan
-//! (`plan`) → evaluated series (`sample`, `series`) → output (`output`). The maths (`ndf`,
-//! `fresnel`, `math`) is pure f64 code with no I/O.
+//! Data flows one way: spec sources (`source`) → validated scenes (`scene`, `curve`, `look`) →
+//! sampling plan (`plan`) → evaluated jobs (`sample`, `adaptive`, `dyadic`) → the figure
+//! (`figure`), placed by `layout` → bytes and files (`output`); `render` runs the whole chain.
+//! The maths (`ndf`, `fresnel`, `math`) is pure f64 code with no I/O.
 
 pub mod adaptive;
 pub mod bench;
