@@ -3,7 +3,7 @@
 //!
 //! Owns the angle recurrence ([`fill_grid`]) and branch-free `exp` and `log1p` ([`exp`], [`ln_1p`]).
 //! It must not replace `eval`: the single-point forms stay the accurate reference, and
-//! `tests/sampling.rs` checks this path against them over every family's domain.
+//! `tests/cli/sampling.rs` checks this path against them over every family's domain.
 //!
 //! - Angles: θ_i = θ₀ + i Δθ in blocks of ≈ √n points (at most [`BLOCK`]; see [`block_len`]). Each
 //!   block seeds sin and cos from libm at its first point θ_s and at θ_e, the next block's first point

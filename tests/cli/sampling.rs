@@ -3,37 +3,22 @@
 //! and polar panels), the spec's `sampling` key, and the plan skipping what a run does not need
 //! (formats not requested, jobs shared between panels).
 
+use crate::common::{log_grid, ndf_tol, scratch};
 use ndfplot::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
 use ndfplot::cmd::render::{self, CanvasOverride, Format, RenderOptions};
+use ndfplot::math::tolerance::ABS_FLOOR;
 use ndfplot::ndf::{Family, Ndf};
 use ndfplot::plan::{Job, Outputs, plan};
 use ndfplot::provenance::Provenance;
 use ndfplot::sample::{eval_grid_parallel, evaluate_all};
 use ndfplot::series::{Dash, PanelKind, Rgb, XUnit, YScale};
 use std::f64::consts::FRAC_PI_2;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-/// Accuracy bound of Trowbridge–Reitz, relative (the reference tests' bound).
-const TR_TOL: f64 = 1e-13;
-/// Accuracy bound of the other families, relative.
-const OTHER_TOL: f64 = 1e-12;
-/// Below this |D| errors are absolute (MATH.md's convention).
-const TINY: f64 = 1e-280;
 /// Relative step of the finite difference that estimates d ln D/d ln θ.
 const DIFF_STEP: f64 = 1e-6;
 /// The batch path's abscissa is θ₀ + iΔθ to within this many ulp of θ (two roundings: seed and step).
 const THETA_ULPS: f64 = 4.0;
-
-fn log_grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    let (l, h) = (lo.log10(), hi.log10());
-    (0..n)
-        .map(|i| {
-            10f64
-                .powf(l + (h - l) * i as f64 / (n - 1) as f64)
-                .clamp(lo, hi)
-        })
-        .collect()
-}
 
 /// Parameter points spanning each family's accepted domain on log grids, bounds included.
 fn domain(family: Family) -> Vec<Vec<f64>> {
@@ -62,7 +47,7 @@ fn domain(family: Family) -> Vec<Vec<f64>> {
     }
 }
 
-/// Largest violation (≤ 1 passes) of |batch − eval| ≤ tol·max(|eval|, TINY) + the change of D under a
+/// Largest violation (≤ 1 passes) of |batch − eval| ≤ tol·max(|eval|, ABS_FLOOR) + the change of D under a
 /// THETA_ULPS-ulp move of θ, over a grid of `n` points on [θ₀, θ₁].
 fn batch_violation(ndf: &Ndf, (theta0, theta1): (f64, f64), n: usize, tol: f64) -> (f64, f64) {
     let dtheta = (theta1 - theta0) / (n - 1) as f64;
@@ -77,7 +62,7 @@ fn batch_violation(ndf: &Ndf, (theta0, theta1): (f64, f64), n: usize, tol: f64) 
             ndf.eval(theta * (1.0 - DIFF_STEP)),
         );
         let moved = (up - down).abs() / (2.0 * DIFF_STEP) * THETA_ULPS * f64::EPSILON;
-        let allowed = tol * want.abs().max(TINY) + moved;
+        let allowed = tol * want.abs().max(ABS_FLOOR) + moved;
         let violation = (got - want).abs() / allowed;
         assert!(
             got.is_finite() && got >= 0.0,
@@ -93,11 +78,7 @@ fn batch_violation(ndf: &Ndf, (theta0, theta1): (f64, f64), n: usize, tol: f64) 
 #[test]
 fn batch_path_equals_eval_over_every_domain() {
     for family in Family::ALL {
-        let tol = if family == Family::TrowbridgeReitz {
-            TR_TOL
-        } else {
-            OTHER_TOL
-        };
+        let tol = ndf_tol(family);
         for params in domain(family) {
             let ndf = family.build(&params).unwrap();
             for range in [(0.0, FRAC_PI_2), (0.0, 0.01), (1.5, FRAC_PI_2)] {
@@ -180,12 +161,6 @@ fn scene(sampling: &str) -> String {
     )
 }
 
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("ndfplot-sampling-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
 fn load(dir: &Path, text: &str) -> Vec<ndfplot::scene::Scene> {
     let path = dir.join("s.json");
     std::fs::write(&path, text).unwrap();
@@ -198,7 +173,7 @@ fn load(dir: &Path, text: &str) -> Vec<ndfplot::scene::Scene> {
 
 #[test]
 fn default_sampling_draws_adaptively_and_tabulates_uniformly() {
-    let dir = temp_dir("default");
+    let dir = scratch("sampling-default");
     let scenes = load(&dir, &scene(""));
     let plan = plan(
         &scenes,
@@ -235,7 +210,7 @@ fn default_sampling_draws_adaptively_and_tabulates_uniformly() {
 
 #[test]
 fn polar_panels_are_drawn_adaptively_in_the_disc() {
-    let dir = temp_dir("polar");
+    let dir = scratch("sampling-polar");
     let scenes = load(
         &dir,
         r#"{"id":"s","panels":[{"view":"polar","curves":[{"ndf":"phong","alpha_p":48}]}]}"#,
@@ -252,7 +227,7 @@ fn polar_panels_are_drawn_adaptively_in_the_disc() {
 
 #[test]
 fn explicit_sampling_applies_to_tables_too() {
-    let dir = temp_dir("explicit");
+    let dir = scratch("sampling-explicit");
     let uniform = load(&dir, &scene(r#""sampling":{"uniform":50},"#));
     let p = plan(
         &uniform,
@@ -287,7 +262,7 @@ fn explicit_sampling_applies_to_tables_too() {
 
 #[test]
 fn sampling_key_errors_name_the_problem() {
-    let dir = temp_dir("errors");
+    let dir = scratch("sampling-errors");
     for (sampling, needle) in [
         (
             r#""sampling":{"uniform":50,"adaptive":{}},"#,
@@ -312,7 +287,7 @@ fn sampling_key_errors_name_the_problem() {
 
 #[test]
 fn a_run_produces_only_the_requested_formats_and_needed_jobs() {
-    let dir = temp_dir("formats");
+    let dir = scratch("sampling-formats");
     let spec = dir.join("s.json");
     std::fs::write(&spec, scene("")).unwrap();
     let options = |formats: Vec<Format>| RenderOptions {
