@@ -416,7 +416,7 @@ mod tests {
         BLUE, RED, figure, marked, panel, polar_sample, sampled, series,
     };
     use crate::output::plot::{png, svg};
-    use crate::series::{Dash, Figure, PanelKind, Series, Theme};
+    use crate::series::{Dash, Figure, PanelKind, Series};
 
     #[test]
     fn angle_labels_read_in_degrees_or_fractions_of_pi() {
@@ -541,31 +541,6 @@ mod tests {
         ] {
             svg(&figure).unwrap();
             png(&figure).unwrap();
-        }
-    }
-
-    /// Writes the polar sample figure to the temporary directory to look at.
-    #[test]
-    #[ignore]
-    fn write_polar_figures() {
-        let dir = std::env::temp_dir();
-        let mut sector = polar_sample();
-        for p in &mut sector.panels {
-            p.x_range = Some((0.0, 50f64.to_radians()));
-            p.series[0].style.mark = Mark::LinePoints;
-        }
-        sector.panels[1].series[1].style.mark = Mark::Points;
-        let themed = [Theme::Notebook, Theme::ColourBlind, Theme::Dark].map(|theme| Figure {
-            theme,
-            ..polar_sample()
-        });
-        for (name, figure) in themed
-            .into_iter()
-            .map(|f| (format!("ndfplot-polar-{:?}", f.theme), f))
-            .chain([("ndfplot-polar-sector".to_owned(), sector)])
-        {
-            std::fs::write(dir.join(format!("{name}.svg")), svg(&figure).unwrap()).unwrap();
-            std::fs::write(dir.join(format!("{name}.png")), png(&figure).unwrap()).unwrap();
         }
     }
 }
