@@ -197,7 +197,7 @@ macro_rules! family_tests {
         }
 
         #[test]
-        #[ignore = "full domain, 10⁵ points: cargo test --release --test stress -- --ignored"]
+        #[ignore = "full domain, 10⁵ points: cargo test --release --test numerics stress -- --ignored"]
         fn $full() {
             run($family, 1, 1);
         }
