@@ -1,5 +1,5 @@
 //! What the fuzzer checks, shared by the fuzz target (`fuzz_targets/spec.rs`) and the corpus replay
-//! test (`tests/robustness.rs`).
+//! test (`tests/cli/robustness.rs`).
 //!
 //! The first byte picks the mode. Even: the rest is a scene spec, parsed, validated and, when it
 //! is small enough to keep the fuzzer fast, evaluated into its figure CSV, exactly as `render`

@@ -1,5 +1,5 @@
 //! libFuzzer entry point: every input goes through [`harness::run`], shared with the corpus replay
-//! in `tests/robustness.rs`.
+//! in `tests/cli/robustness.rs`.
 
 #![no_main]
 

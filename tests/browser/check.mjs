@@ -1,6 +1,6 @@
 // Opens an interactive ndfplot page from disk in Debian's Chromium (no server, network off),
 // moves its first slider with the mouse and the keyboard, and prints what the page draws before
-// and after as JSON on stdout; tests/browser.rs compares the drawn values with `ndfplot eval`.
+// and after as JSON on stdout; tests/cli/browser.rs compares the drawn values with `ndfplot eval`.
 //
 // Usage: node check.mjs <page.html> <screenshot.png>
 import { chromium } from "playwright-core";

@@ -415,7 +415,7 @@ where
 mod tests {
     use super::*;
     use crate::figure::{Figure, Series};
-    use crate::look::{Dash, PanelKind, Theme};
+    use crate::look::{Dash, PanelKind};
     use crate::output::plot::fixtures::{
         BLUE, RED, figure, marked, panel, polar_sample, sampled, series,
     };
@@ -544,31 +544,6 @@ mod tests {
         ] {
             svg(&figure).unwrap();
             png(&figure).unwrap();
-        }
-    }
-
-    /// Writes the polar sample figure to the temporary directory to look at.
-    #[test]
-    #[ignore]
-    fn write_polar_figures() {
-        let dir = std::env::temp_dir();
-        let mut sector = polar_sample();
-        for p in &mut sector.panels {
-            p.axes.x_range = Some((0.0, 50f64.to_radians()));
-            p.series[0].style.mark = Mark::LinePoints;
-        }
-        sector.panels[1].series[1].style.mark = Mark::Points;
-        let themed = [Theme::Notebook, Theme::ColourBlind, Theme::Dark].map(|theme| Figure {
-            theme,
-            ..polar_sample()
-        });
-        for (name, figure) in themed
-            .into_iter()
-            .map(|f| (format!("ndfplot-polar-{:?}", f.theme), f))
-            .chain([("ndfplot-polar-sector".to_owned(), sector)])
-        {
-            std::fs::write(dir.join(format!("{name}.svg")), svg(&figure).unwrap()).unwrap();
-            std::fs::write(dir.join(format!("{name}.png")), png(&figure).unwrap()).unwrap();
         }
     }
 }

@@ -5,12 +5,11 @@
 use ndfplot::curve::Curve;
 use ndfplot::input::parse_json;
 use ndfplot::math::quad::{QuadError, integrate};
+use ndfplot::math::tolerance::QUAD_REL_TOL;
 use ndfplot::metrics::lobe_width;
 use ndfplot::scene;
 use std::f64::consts::{FRAC_PI_2, PI};
 
-/// Relative accuracy asked of each quadrature piece.
-const PIECE_TOL: f64 = 1e-12;
 /// Accepted relative deviation of a view's total mass from 1/(2π).
 const MASS_TOL: f64 = 1e-9;
 
@@ -59,7 +58,7 @@ fn piecewise(f: impl Fn(f64) -> f64, width: f64) -> f64 {
     breaks.dedup();
     breaks
         .windows(2)
-        .map(|w| match integrate(&f, w[0], w[1], PIECE_TOL) {
+        .map(|w| match integrate(&f, w[0], w[1], QUAD_REL_TOL) {
             Ok(value) => value,
             Err(QuadError::NotConverged { estimate, error }) if error < 1e-15 => estimate,
             Err(e) => panic!("[{}, {}]: {e:?}", w[0], w[1]),

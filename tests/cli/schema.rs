@@ -2,6 +2,7 @@
 //! property set equals the validator's, the committed `schema/ndfplot.schema.json` is current, every
 //! config validates against it, and misspelt keys and names fail it as they fail the validator.
 
+use crate::common::{ndfplot, root};
 use ndfplot::curve::{DIFFERENCE_KEYS, TRANSFORM_KEYS};
 use ndfplot::scene::interactive::{INTERACTIVE_KEYS, PARAM_KEYS, SLIDER_KEY};
 use ndfplot::scene::sweep::{FIT_KEY, FIT_KEYS, FROM_BECKMANN_KEY, SWEEP_KEYS};
@@ -9,11 +10,6 @@ use ndfplot::scene::{self as scene, data};
 use ndfplot::schema::{self, data_def, model_names, models, signature_def};
 use serde_json::{Value, json};
 use std::collections::BTreeSet;
-use std::path::Path;
-
-fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
 
 fn def<'a>(schema: &'a Value, name: &str) -> &'a Value {
     schema["$defs"]
@@ -192,10 +188,7 @@ fn every_key_table_equals_the_schema_properties() {
 
 #[test]
 fn the_committed_schema_is_the_generated_one() {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ndfplot"))
-        .arg("schema")
-        .output()
-        .unwrap();
+    let out = ndfplot(&["schema"]);
     assert_eq!(out.status.code(), Some(0));
     let committed = std::fs::read_to_string(root().join(schema::COMMITTED_PATH)).unwrap();
     assert!(

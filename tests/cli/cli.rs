@@ -1,70 +1,21 @@
 //! The real `ndfplot` binary on fixtures: happy paths, the output contracts of CONTRACTS.md, and
 //! every kind of bad input (exit 2, nothing on stdout, one line per problem on stderr).
 
-use std::path::{Path, PathBuf};
+use crate::common::{files_in, ndfplot, ndfplot_stdin, render_into, root, scratch, text};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
-
-fn ndfplot(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ndfplot"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn ndfplot_stdin(args: &[&str], stdin: &str) -> Output {
-    use std::io::Write;
-    let mut child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary runs");
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(stdin.as_bytes())
-        .unwrap();
-    child.wait_with_output().unwrap()
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8(output.stdout.clone()).unwrap()
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8(output.stderr.clone()).unwrap()
-}
 
 /// Asserts exit 2, empty stdout, and that every stderr line is an `error:` line and one of them
 /// contains `needle`.
 fn assert_input_error(output: &Output, needle: &str) {
-    let err = stderr(output);
+    let err = text(&output.stderr);
     assert_eq!(output.status.code(), Some(2), "stderr: {err}");
-    assert!(output.stdout.is_empty(), "stdout: {}", stdout(output));
+    assert!(output.stdout.is_empty(), "stdout: {}", text(&output.stdout));
     assert!(
         err.lines().all(|l| l.starts_with("error: ")),
         "stderr: {err}"
     );
     assert!(err.contains(needle), "expected {needle:?} in: {err}");
-}
-
-/// A fresh, empty folder under the target directory.
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn files_in(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().into_string().unwrap())
-        .collect();
-    names.sort();
-    names
 }
 
 #[test]
@@ -76,8 +27,8 @@ fn eval_prints_theta_value_csv_in_round_trip_form() {
         "--theta",
         "0,0.5,1.5707963267948966",
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    let text = stdout(&out);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let text = text(&out.stdout);
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines[0], "theta,value");
     let pi_inv = std::f64::consts::FRAC_1_PI;
@@ -103,8 +54,8 @@ fn eval_linspace_degrees_and_several_curves() {
         "0:90:3",
         "--degrees",
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    let text = stdout(&out);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let text = text(&out.stdout);
     let mut rows = text.lines();
     assert_eq!(
         rows.next().unwrap(),
@@ -142,14 +93,14 @@ fn eval_reads_curves_from_a_file_and_from_json_lines_on_stdin() {
         "--theta",
         "0.3",
     ]);
-    assert_eq!(stdout(&from_file), stdout(&inline));
+    assert_eq!(text(&from_file.stdout), text(&inline.stdout));
     let lines = "{\"ndf\":\"beckmann\",\"alpha_b\":0.5}\n\n{\"ndf\":\"phong\",\"alpha_p\":2}\n";
     let out = ndfplot_stdin(&["eval", "--curve", "-", "--theta", "0.3"], lines);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert!(
-        stdout(&out).starts_with("theta,\"{\"\"ndf\"\":\"\"beckmann\"\""),
+        text(&out.stdout).starts_with("theta,\"{\"\"ndf\"\":\"\"beckmann\"\""),
         "{}",
-        stdout(&out)
+        text(&out.stdout)
     );
     let bad = ndfplot_stdin(
         &["eval", "--curve", "-", "--theta", "0.3"],
@@ -173,7 +124,7 @@ fn eval_values_match_the_library() {
         "",
     )
     .unwrap();
-    for line in stdout(&out).lines().skip(1) {
+    for line in text(&out.stdout).lines().skip(1) {
         let (theta, value) = line.split_once(',').unwrap();
         let (theta, value): (f64, f64) = (theta.parse().unwrap(), value.parse().unwrap());
         assert_eq!(value.to_bits(), curve.eval(theta).to_bits(), "θ = {theta}");
@@ -260,9 +211,9 @@ fn eval_reports_every_bad_curve_at_once() {
     ]);
     assert_input_error(&out, "--curve[0]: alpha_q: unknown key");
     assert!(
-        stderr(&out).contains("--curve[1]: alpha_tr: out of domain"),
+        text(&out.stderr).contains("--curve[1]: alpha_tr: out of domain"),
         "{}",
-        stderr(&out)
+        text(&out.stderr)
     );
 }
 
@@ -282,8 +233,8 @@ fn eval_into_a_closed_pipe_is_not_an_error() {
         .unwrap();
     drop(child.stdout.take());
     let out = child.wait_with_output().unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    assert!(out.stderr.is_empty(), "{}", stderr(&out));
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(out.stderr.is_empty(), "{}", text(&out.stderr));
 }
 
 const SPEC: &str = r#"{
@@ -309,7 +260,7 @@ fn render_writes_svg_png_csv_and_csv_values_equal_eval() {
         "-o",
         out_dir.to_str().unwrap(),
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(
         files_in(&out_dir),
         ["two-panels.csv", "two-panels.png", "two-panels.svg"]
@@ -346,7 +297,7 @@ fn render_writes_svg_png_csv_and_csv_values_equal_eval() {
     // Every value equals `eval` for the same curve and θ.
     for row in rows.iter().step_by(37) {
         let eval = ndfplot(&["eval", "--curve", &row[2], "--theta", &row[3]]);
-        let value = stdout(&eval)
+        let value = text(&eval.stdout)
             .lines()
             .nth(1)
             .unwrap()
@@ -421,7 +372,7 @@ fn render_formats_and_canvas_flags() {
         "--png-scale",
         "1.5",
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(files_in(&out_dir), ["two-panels.png"]);
     let png = std::fs::read(out_dir.join("two-panels.png")).unwrap();
     let width = u32::from_be_bytes(png[16..20].try_into().unwrap());
@@ -508,21 +459,12 @@ fn assert_provenance(dir: &Path, id: &str, hash: &str) {
     }
 }
 
-/// Runs `render SPECS… -o out --format formats` and asserts that it succeeds.
-fn render_into(specs: &[&Path], out: &Path, formats: &str) {
-    let mut args: Vec<&str> = vec!["render"];
-    args.extend(specs.iter().map(|p| p.to_str().unwrap()));
-    args.extend(["-o", out.to_str().unwrap(), "--format", formats]);
-    let output = ndfplot(&args);
-    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
-}
-
 #[test]
 fn render_pdf_is_a_vector_page_in_the_embedded_face() {
     let dir = scratch("render-pdf");
     let spec = dir.join("spec.json");
     std::fs::write(&spec, SPEC).unwrap();
-    let configs = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs");
+    let configs = root().join("configs");
     let polar = configs.join("beckmann-vs-phong-polar.json");
     let surface = configs.join("gulbrandsen-manifold.json");
     let out_dir = dir.join("out");
@@ -566,8 +508,7 @@ fn render_records_the_version_and_spec_hash_in_drawn_outputs_only() {
     // Bytes as read: the hash is of the file, trailing spaces and all.
     let text = format!("{SPEC}  \n");
     std::fs::write(&spec, &text).unwrap();
-    let interactive =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/tr-vs-phong-interactive.json");
+    let interactive = root().join("configs/tr-vs-phong-interactive.json");
     let out_dir = dir.join("out");
     render_into(&[&spec, &interactive], &out_dir, "svg,png,pdf,csv,html");
     let id = "tr-vs-phong-interactive";
@@ -594,9 +535,9 @@ fn render_without_arguments_renders_the_catalogue_into_plots() {
         .current_dir(&dir)
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let files = files_in(&dir.join("plots"));
-    let configs_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs");
+    let configs_dir = root().join("configs");
     let configs = files_in(&configs_dir);
     for config in configs.iter().filter(|c| c.ends_with(".json")) {
         let id = config.trim_end_matches(".json");
@@ -675,9 +616,9 @@ fn render_bad_specs_exit_2_name_file_path_and_value_and_write_nothing() {
             "panels[0].curves[0].alpha_p: out of domain",
         ),
     ];
-    for (text, needle) in cases {
+    for (spec_text, needle) in cases {
         let spec = dir.join("bad.json");
-        std::fs::write(&spec, text).unwrap();
+        std::fs::write(&spec, spec_text).unwrap();
         let out_dir = dir.join("out");
         let out = ndfplot(&[
             "render",
@@ -686,8 +627,12 @@ fn render_bad_specs_exit_2_name_file_path_and_value_and_write_nothing() {
             out_dir.to_str().unwrap(),
         ]);
         assert_input_error(&out, needle);
-        assert!(stderr(&out).contains("bad.json"), "{}", stderr(&out));
-        assert!(!out_dir.exists(), "{text}: output written");
+        assert!(
+            text(&out.stderr).contains("bad.json"),
+            "{}",
+            text(&out.stderr)
+        );
+        assert!(!out_dir.exists(), "{spec_text}: output written");
     }
 }
 
@@ -717,7 +662,7 @@ fn render_reports_all_problems_of_all_files_and_duplicate_ids() {
         out_dir.to_str().unwrap(),
     ]);
     assert_input_error(&out, "b.json: id: duplicate id (got \"same\"");
-    let err = stderr(&out);
+    let err = text(&out.stderr);
     assert!(
         err.contains("c.json: panels[0].curves[0].alpha_p: out of domain"),
         "{err}"
@@ -738,7 +683,12 @@ fn eval_fresnel_curves_and_their_bad_input() {
         "--theta",
         "0",
     ]);
-    assert_eq!(stdout(&out), "theta,value\n0.0,0.04\n", "{}", stderr(&out));
+    assert_eq!(
+        text(&out.stdout),
+        "theta,value\n0.0,0.04\n",
+        "{}",
+        text(&out.stderr)
+    );
     let out = ndfplot(&[
         "eval",
         "--curve",
@@ -748,7 +698,7 @@ fn eval_fresnel_curves_and_their_bad_input() {
         "--theta",
         "0",
     ]);
-    assert!(stdout(&out).starts_with(r#"theta,"{""fresnel"":""schlick"",""r"":0.5,""g"":0.5,""g_remap"":false}","{""fresnel"":""lazanyi_term""}""#), "{}", stdout(&out));
+    assert!(text(&out.stdout).starts_with(r#"theta,"{""fresnel"":""schlick"",""r"":0.5,""g"":0.5,""g_remap"":false}","{""fresnel"":""lazanyi_term""}""#), "{}", text(&out.stdout));
     for (curve, needle) in [
         (
             r#"{"fresnel":"exact","r":1.0,"g":0.5}"#,
@@ -808,10 +758,10 @@ fn coeffs_prints_the_decomposition_of_materials() {
         r#"{"fresnel":"belcour","eta":1.0,"kappa":0.0}"#,
     ]);
     assert_eq!(
-        stdout(&out),
+        text(&out.stdout),
         "c0,c1,c2,c3,l2\n0.0,0.0,0.0,0.0,0.0\n",
         "{}",
-        stderr(&out)
+        text(&out.stderr)
     );
     assert_input_error(
         &ndfplot(&["coeffs", "--curve", r#"{"ndf":"phong","alpha_p":1}"#]),
@@ -830,14 +780,14 @@ fn fit_prints_the_curve_for_eval_and_the_residual_on_stderr() {
         "--fix",
         "alpha_abc2=1.75",
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    let line = stdout(&out);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let line = text(&out.stdout);
     assert!(
         line.starts_with(r#"{"ndf":"abc","alpha_abc1":23.444"#)
             && line.ends_with(",\"alpha_abc2\":1.75}\n"),
         "{line}"
     );
-    let residual = stderr(&out);
+    let residual = text(&out.stderr);
     assert!(
         residual.starts_with("residual=") && residual.trim_end().ends_with(" (d0_rel)"),
         "{residual}"
@@ -851,7 +801,7 @@ fn fit_prints_the_curve_for_eval_and_the_residual_on_stderr() {
         "0",
     ]);
     let value = |o: &Output| {
-        stdout(o)
+        text(&o.stdout)
             .lines()
             .nth(1)
             .unwrap()
@@ -874,9 +824,9 @@ fn fit_prints_the_curve_for_eval_and_the_residual_on_stderr() {
         "l2",
     ]);
     assert!(
-        stderr(&l2).ends_with(" (l2_projected)\n") && stdout(&l2) != line,
+        text(&l2.stderr).ends_with(" (l2_projected)\n") && text(&l2.stdout) != line,
         "{}",
-        stderr(&l2)
+        text(&l2.stderr)
     );
 }
 
@@ -930,7 +880,7 @@ fn compare_table_json_and_max_error_gate() {
         r#"{"ndf":"abc","alpha_abc1":23.5,"alpha_abc2":1.75}"#,
     );
     let table = ndfplot(&["compare", "--a", a, "--b", b]);
-    assert_eq!(table.status.code(), Some(0), "{}", stderr(&table));
+    assert_eq!(table.status.code(), Some(0), "{}", text(&table.stderr));
     for name in [
         "max_abs",
         "max_rel",
@@ -940,13 +890,13 @@ fn compare_table_json_and_max_error_gate() {
         "b_peak",
     ] {
         assert!(
-            stdout(&table).lines().any(|l| l.starts_with(name)),
+            text(&table.stdout).lines().any(|l| l.starts_with(name)),
             "{name}: {}",
-            stdout(&table)
+            text(&table.stdout)
         );
     }
     let json = ndfplot(&["compare", "--a", a, "--b", b, "--format", "json"]);
-    let value: serde_json::Value = serde_json::from_str(&stdout(&json)).unwrap();
+    let value: serde_json::Value = serde_json::from_str(&text(&json.stdout)).unwrap();
     assert_eq!(value["a"]["ndf"], "trowbridge_reitz");
     assert_eq!(value["a_peak_theta"], 0.0);
     let max_rel = value["max_rel"].as_f64().unwrap();
@@ -963,7 +913,7 @@ fn compare_table_json_and_max_error_gate() {
         "--max-error",
         &format!("max_rel={}", max_rel * 1.01),
     ]);
-    assert_eq!(pass.status.code(), Some(0), "{}", stderr(&pass));
+    assert_eq!(pass.status.code(), Some(0), "{}", text(&pass.stderr));
     let fail = ndfplot(&[
         "compare",
         "--a",
@@ -977,11 +927,11 @@ fn compare_table_json_and_max_error_gate() {
     ]);
     assert_eq!(fail.status.code(), Some(1));
     assert!(
-        !fail.stdout.is_empty() && stderr(&fail).starts_with("compare: max_rel = "),
+        !fail.stdout.is_empty() && text(&fail.stderr).starts_with("compare: max_rel = "),
         "{}",
-        stderr(&fail)
+        text(&fail.stderr)
     );
-    assert_eq!(stderr(&fail).lines().count(), 1);
+    assert_eq!(text(&fail.stderr).lines().count(), 1);
     assert_input_error(
         &ndfplot(&["compare", "--a", a, "--b", b, "--max-error", "max_rel="]),
         "error: --max-error: max_rel: not a number",
@@ -1000,32 +950,35 @@ fn compare_table_json_and_max_error_gate() {
         "--format",
         "json",
     ]);
-    assert_eq!(same.status.code(), Some(0), "{}", stderr(&same));
+    assert_eq!(same.status.code(), Some(0), "{}", text(&same.stderr));
 }
 
 #[test]
 fn check_passes_on_the_catalogue_and_fails_beyond_the_tolerance() {
     let out = ndfplot(&["check"]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    let text = stdout(&out);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let table = text(&out.stdout);
     assert!(
-        text.lines()
+        table
+            .lines()
             .skip(1)
             .all(|l| l.starts_with("ok ") || l.starts_with("- ")),
-        "{text}"
+        "{table}"
     );
     assert!(
-        text.contains("hemispherical_average") && text.contains("abc-vs-tr"),
-        "{text}"
+        table.contains("hemispherical_average") && table.contains("abc-vs-tr"),
+        "{table}"
     );
     // No quadrature lands every integral on exactly 1.0: a zero tolerance fails (exit 1) with the table printed.
     let strict = ndfplot(&["check", "--tolerance", "0"]);
-    assert_eq!(strict.status.code(), Some(1), "{}", stderr(&strict));
+    assert_eq!(strict.status.code(), Some(1), "{}", text(&strict.stderr));
     assert!(
-        stdout(&strict).contains("\nFAIL ")
-            && stderr(&strict).lines().any(|l| l.starts_with("check: ")),
+        text(&strict.stdout).contains("\nFAIL ")
+            && text(&strict.stderr)
+                .lines()
+                .any(|l| l.starts_with("check: ")),
         "{}",
-        stderr(&strict)
+        text(&strict.stderr)
     );
 }
 
@@ -1050,7 +1003,7 @@ fn scene_fits_and_differences_render_with_fitted_values_in_the_csv() {
         "--format",
         "csv,svg",
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let csv = std::fs::read_to_string(dir.join("fits.csv")).unwrap();
     assert!(
         csv.contains(r#""{""ndf"":""abc"",""alpha_abc1"":11.58186251432451"#),
@@ -1084,9 +1037,10 @@ fn scene_fits_and_differences_render_with_fitted_values_in_the_csv() {
         "panels[0].curves[0].alpha_ts: fit to α_p = 0: alpha_ts: torrance_sparrow cannot reach",
     );
     assert!(
-        stderr(&bad).contains("panels[0].curves[1]: a and b pair element-wise (got 2 and 3 curves"),
+        text(&bad.stderr)
+            .contains("panels[0].curves[1]: a and b pair element-wise (got 2 and 3 curves"),
         "{}",
-        stderr(&bad)
+        text(&bad.stderr)
     );
 }
 
@@ -1096,10 +1050,10 @@ fn eval_accepts_difference_series() {
         r#"{"difference":"minus","a":{"ndf":"phong","alpha_p":0},"b":{"ndf":"phong","alpha_p":0}}"#;
     let out = ndfplot(&["eval", "--curve", minus, "--theta", "0,1"]);
     assert_eq!(
-        stdout(&out),
+        text(&out.stdout),
         "theta,value\n0.0,0.0\n1.0,0.0\n",
         "{}",
-        stderr(&out)
+        text(&out.stderr)
     );
     let ratio = r#"{"difference":"ratio","a":{"ndf":"phong","alpha_p":1},"b":{"ndf":"beckmann","alpha_b":0.01}}"#;
     let out = ndfplot(&["eval", "--curve", ratio, "--theta", "0,1.5"]);
@@ -1107,7 +1061,7 @@ fn eval_accepts_difference_series() {
         out.status.code(),
         Some(2),
         "ratio over a vanishing denominator is an error: {}",
-        stdout(&out)
+        text(&out.stdout)
     );
 }
 
@@ -1117,9 +1071,9 @@ fn compare_takes_a_csv_series_as_either_side() {
     let dir = scratch("compare-csv");
     let curve = r#"{"ndf":"ggx","alpha_tr":0.3}"#;
     let eval = ndfplot(&["eval", "--curve", curve, "--theta", "0:90:91", "--degrees"]);
-    assert_eq!(eval.status.code(), Some(0), "{}", stderr(&eval));
+    assert_eq!(eval.status.code(), Some(0), "{}", text(&eval.stderr));
     let mut table = String::from("deg,D\n");
-    for line in stdout(&eval).lines().skip(1) {
+    for line in text(&eval.stdout).lines().skip(1) {
         let (theta, value) = line.split_once(',').unwrap();
         let degrees = theta.parse::<f64>().unwrap().to_degrees();
         table.push_str(&format!(
@@ -1134,8 +1088,8 @@ fn compare_takes_a_csv_series_as_either_side() {
     let at_file = format!("@{}", dir.join("series.json").display());
     for (a, b) in [(at_file.as_str(), curve), (curve, at_file.as_str())] {
         let out = ndfplot(&["compare", "--a", a, "--b", b, "--format", "json"]);
-        assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-        let value: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+        let value: serde_json::Value = serde_json::from_str(&text(&out.stdout)).unwrap();
         let max_rel = value["max_rel"].as_f64().unwrap();
         assert!((max_rel - 0.02 / 1.02).abs() < 1e-12, "{value}");
         assert_eq!(value["max_abs_theta"], 0.0, "{value}");
@@ -1143,11 +1097,11 @@ fn compare_takes_a_csv_series_as_either_side() {
         assert_eq!(value[side]["path"], "renderer.csv", "{value}");
     }
     let same = ndfplot(&["compare", "--a", &at_file, "--b", &at_file]);
-    assert_eq!(same.status.code(), Some(0), "{}", stderr(&same));
+    assert_eq!(same.status.code(), Some(0), "{}", text(&same.stderr));
     assert!(
-        stdout(&same).contains("\nmax_abs       0.0 "),
+        text(&same.stdout).contains("\nmax_abs       0.0 "),
         "{}",
-        stdout(&same)
+        text(&same.stdout)
     );
     let gate = ndfplot(&[
         "compare",
@@ -1158,7 +1112,7 @@ fn compare_takes_a_csv_series_as_either_side() {
         "--max-error",
         "max_rel=0.01",
     ]);
-    assert_eq!(gate.status.code(), Some(1), "{}", stderr(&gate));
+    assert_eq!(gate.status.code(), Some(1), "{}", text(&gate.stderr));
 
     let missing = dir.join("nowhere.csv");
     let missing = format!(r#"{{"data": "csv", "path": "{}"}}"#, missing.display());

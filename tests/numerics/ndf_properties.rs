@@ -2,6 +2,7 @@
 //! every value finite and ≥ 0 on [0, π/2], and 2π ∫₀^{π/2} D sin θ cos θ dθ = 1 within NORMALIZATION_TOL by
 //! adaptive quadrature; constructors accept exactly the domain their family states.
 
+use crate::common::log_grid;
 use ndfplot::math::quad::{QuadError, integrate};
 use ndfplot::math::tolerance::{NORMALIZATION_TOL, QUAD_REL_TOL};
 use ndfplot::ndf::{Abc, Beckmann, Family, Ndf, Phong, Sgd, TorranceSparrow, TrowbridgeReitz};
@@ -19,18 +20,6 @@ const GRAZING_BREAK_MIN: f64 = 3.552713678800501e-15;
 fn bounds(family: Family, index: usize) -> (f64, f64) {
     let param = &family.params()[index];
     (param.min.value, param.max.value)
-}
-
-/// `n` values spaced evenly in log10 between `lo` and `hi` (both included).
-fn log_grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    let (l, h) = (lo.log10(), hi.log10());
-    (0..n)
-        .map(|i| {
-            10f64
-                .powf(l + (h - l) * i as f64 / (n - 1) as f64)
-                .clamp(lo, hi)
-        })
-        .collect()
 }
 
 /// θ values probing [0, π/2]: 0, decades from 1e-300, a uniform grid, grazing approaches and π/2 itself.

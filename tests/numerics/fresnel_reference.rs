@@ -2,9 +2,9 @@
 //! and Schlick curves from mpmath at 50 digits, and the Belcour–Bati–Barla basis, coefficients and
 //! spectrum from numpy float64 following the notebook's procedure.
 
-use std::path::PathBuf;
 use std::time::Instant;
 
+use crate::common::{csv_records, number};
 use ndfplot::fresnel::{Fresnel, Ior, SchlickF0, basis};
 use ndfplot::math::tolerance::floored_relative_difference;
 
@@ -18,27 +18,6 @@ const BELCOUR_ABS_TOL: f64 = 1e-12;
 const SINGULAR_VALUE_TOL: f64 = 1e-12;
 /// Node reproduction of the interpolated tabulated curves (CONTRACTS.md `ndfplot eval`).
 const NODE_TOL: f64 = 1e-13;
-
-fn reference(name: &str) -> Vec<csv::StringRecord> {
-    let path: PathBuf = [
-        env!("CARGO_MANIFEST_DIR"),
-        "tests",
-        "data",
-        "reference",
-        name,
-    ]
-    .iter()
-    .collect();
-    let mut reader =
-        csv::Reader::from_path(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    reader.records().map(|r| r.expect("a CSV record")).collect()
-}
-
-fn number(record: &csv::StringRecord, column: usize) -> f64 {
-    record[column]
-        .parse()
-        .unwrap_or_else(|e| panic!("{record:?}[{column}]: {e}"))
-}
 
 /// Maps a reference `curve_json` onto the Fresnel model.
 fn curve(json: &str) -> Fresnel {
@@ -59,7 +38,7 @@ fn curve(json: &str) -> Fresnel {
 
 #[test]
 fn visible_curves_match_mpmath() {
-    let rows = reference("fresnel_visible.csv");
+    let rows = csv_records("tests/data/reference/fresnel_visible.csv");
     assert_eq!(rows.len(), 144);
     let mut worst = (0.0, String::new());
     for row in &rows {
@@ -89,7 +68,7 @@ fn basis_matches_numpy_at_every_node() {
         "basis (two partial SVDs of 1000 × 1000): {:?}",
         start.elapsed()
     );
-    let rows = reference("belcour_basis.csv");
+    let rows = csv_records("tests/data/reference/belcour_basis.csv");
     assert_eq!(rows.len(), basis::GRID_SIZE);
     let mut worst = [0.0_f64; 4];
     for (i, row) in rows.iter().enumerate() {
@@ -119,7 +98,7 @@ fn tabulated_curves_reproduce_their_nodes() {
     };
     let nodes = coefficients.reconstruction();
     let mut worst = 0.0_f64;
-    for row in reference("belcour_basis.csv") {
+    for row in csv_records("tests/data/reference/belcour_basis.csv") {
         let i = number(&row, 0) as usize;
         // The reference θ (numpy's arccos) and Rust's own acos of the node.
         for theta in [number(&row, 2), basis.cos_theta()[i].acos()] {
@@ -147,7 +126,7 @@ fn tabulated_curves_reproduce_their_nodes() {
 #[test]
 fn coefficients_and_l2_match_numpy() {
     let mut worst = [0.0_f64; 5];
-    for row in reference("belcour_materials.csv") {
+    for row in csv_records("tests/data/reference/belcour_materials.csv") {
         let (eta, kappa) = (number(&row, 1), number(&row, 2));
         let coefficients = basis::coeffs(eta, kappa);
         let l2 = coefficients.l2_grid(eta, kappa);
@@ -177,7 +156,7 @@ fn spectrum_matches_numpy() {
     let start = Instant::now();
     let spectrum = basis::spectrum();
     println!("spectrum (one 100 × 1000 SVD): {:?}", start.elapsed());
-    let rows = reference("fresnel_spectrum.csv");
+    let rows = csv_records("tests/data/reference/fresnel_spectrum.csv");
     assert_eq!(rows.len(), spectrum.singular_values.len());
     let s0 = spectrum.singular_values[0];
     let mut worst = [0.0_f64; 3];

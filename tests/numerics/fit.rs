@@ -3,6 +3,7 @@
 //! checked independently (the matched quantity equal, the L2 distance locally minimal); every kind of bad
 //! fit input; difference series.
 
+use crate::common::{csv_records, number};
 use ndfplot::curve::{self, Curve, DiffOp};
 use ndfplot::fit::{By, FitError, Subject, fit};
 use ndfplot::metrics::{self, lobe_width, maximum};
@@ -29,15 +30,9 @@ fn phong_of_beckmann(alpha_b: f64) -> Curve {
 
 #[test]
 fn peak_fits_match_the_mpmath_reference() {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/reference/peak_fits.csv"
-    );
-    let mut reader = csv::Reader::from_path(path).unwrap();
     let mut worst: f64 = 0.0;
     let mut rows = 0;
-    for record in reader.records() {
-        let record = record.unwrap();
+    for record in csv_records("tests/data/reference/peak_fits.csv") {
         let target = parse(&record[0]);
         let family = Family::from_name(&record[1]).unwrap();
         let fixed: Vec<(String, f64)> = record[2]
@@ -48,7 +43,7 @@ fn peak_fits_match_the_mpmath_reference() {
                 (k.to_string(), v.parse().unwrap())
             })
             .collect();
-        let expected: f64 = record[4].parse().unwrap();
+        let expected = number(&record, 4);
         let got = fit(&target, family, &fixed, By::Peak).unwrap();
         assert_eq!(got.key, &record[3]);
         let rel = (got.value / expected - 1.0).abs();

@@ -4,6 +4,7 @@
 
 use std::f64::consts::FRAC_PI_2;
 
+use crate::common::log_grid;
 use ndfplot::fresnel::{Coefficients, Fresnel, Ior, SchlickF0, approx, gulbrandsen};
 
 /// F(0) against ((η − 1)² + κ²)/((η + 1)² + κ²), relative: the exact form at c = 1 takes a complex
@@ -12,14 +13,6 @@ const NORMAL_INCIDENCE_REL_TOL: f64 = 1e-14;
 /// Gulbrandsen round trip, absolute on r and g over r ∈ [1e-3, 0.99]: g = (n_max − η)/(n_max − n_min)
 /// divides η's rounding by n_max − n_min ≥ 2√r ≈ 0.06, and κ² cancels as g → 0.
 const ROUND_TRIP_TOL: f64 = 1e-10;
-
-/// `count` values spread logarithmically over [low, high].
-fn log_grid(low: f64, high: f64, count: usize) -> Vec<f64> {
-    let (ln_low, ln_high) = (low.ln(), high.ln());
-    (0..count)
-        .map(|i| (ln_low + (ln_high - ln_low) * i as f64 / (count - 1) as f64).exp())
-        .collect()
-}
 
 /// θ over [0, π/2] with both ends exact, dense near each end.
 fn theta_grid() -> Vec<f64> {

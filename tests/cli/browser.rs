@@ -3,8 +3,10 @@
 //! Debian's Chromium (driven by playwright-core, tests/browser/check.mjs) opens it from disk with
 //! the network off, a slider is moved, and the values the page then draws must equal `ndfplot
 //! eval` at the new slider position to the stated precision. The browser part is skipped, saying
-//! so, only when /usr/bin/chromium or node is missing; `.ci/run` installs both and the node project.
+//! so, only when /usr/bin/chromium, node or the node project's playwright-core is missing; `.ci/run`
+//! installs all three.
 
+use crate::common::{files_in, ndfplot, render_into, root, scratch};
 use ndfplot::output::html::PRECISION;
 use ndfplot::scene::sweep::phong_from_beckmann;
 use serde_json::Value;
@@ -13,11 +15,9 @@ use std::process::Command;
 
 const CHROMIUM: &str = "/usr/bin/chromium";
 
-fn ndfplot(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_ndfplot"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
+/// The node project that drives the browser.
+fn project() -> PathBuf {
+    root().join("tests/browser")
 }
 
 /// Why the browser cannot run here, if it cannot.
@@ -27,42 +27,28 @@ fn missing_browser() -> Option<String> {
             "{CHROMIUM} is not installed (apt-get install chromium)"
         ));
     }
-    match Command::new("node").arg("--version").output() {
-        Ok(out) if out.status.success() => None,
-        _ => Some("node is not installed".to_string()),
+    if !matches!(Command::new("node").arg("--version").output(), Ok(out) if out.status.success()) {
+        return Some("node is not installed".to_string());
     }
+    if !project().join("node_modules/playwright-core").exists() {
+        return Some(
+            "playwright-core is not installed (PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --prefix tests/browser)"
+                .to_string(),
+        );
+    }
+    None
 }
 
 /// Renders the catalogue page `id` into a scratch folder, opens it in Chromium, moves its first
 /// slider, and returns what check.mjs reported; the screenshot is left at `<tmp>/ndfplot-<id>.png`.
 fn drive(id: &str) -> Value {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let project = root.join("tests/browser");
-    assert!(
-        project.join("node_modules/playwright-core").exists(),
-        "playwright-core is not installed: run `PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --prefix tests/browser` (.ci/run does)"
-    );
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("browser-{id}"));
-    let _ = std::fs::remove_dir_all(&dir);
-    let spec = root.join(format!("configs/{id}.json"));
-    let out = ndfplot(&[
-        "render",
-        spec.to_str().unwrap(),
-        "-o",
-        dir.to_str().unwrap(),
-        "--format",
-        "html",
-    ]);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let dir = scratch(&format!("browser-{id}"));
+    let spec = root().join(format!("configs/{id}.json"));
+    render_into(&[&spec], &dir, "html");
     let page = dir.join(format!("{id}.html"));
     let screenshot: PathBuf = std::env::temp_dir().join(format!("ndfplot-{id}.png"));
     let out = Command::new("node")
-        .arg(project.join("check.mjs"))
+        .arg(project().join("check.mjs"))
         .arg(&page)
         .arg(&screenshot)
         .output()
@@ -211,24 +197,11 @@ const MAX_PAGE_BYTES: usize = 1_000_000;
 
 #[test]
 fn catalogue_pages_are_self_contained_small_and_deterministic() {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("interactive-catalogue");
+    let dir = scratch("interactive-catalogue");
     let mut runs = Vec::new();
     for run in ["a", "b"] {
         let out_dir = dir.join(run);
-        let _ = std::fs::remove_dir_all(&out_dir);
-        let out = ndfplot(&[
-            "render",
-            "-o",
-            out_dir.to_str().unwrap(),
-            "--format",
-            "html",
-        ]);
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        render_into(&[], &out_dir, "html");
         let mut pages: Vec<(String, Vec<u8>)> = std::fs::read_dir(&out_dir)
             .unwrap()
             .map(|e| e.unwrap().path())
@@ -243,13 +216,11 @@ fn catalogue_pages_are_self_contained_small_and_deterministic() {
         runs.push(pages);
     }
     let names: Vec<&str> = runs[0].iter().map(|(n, _)| n.as_str()).collect();
-    let interactive: Vec<String> =
-        std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("configs"))
-            .unwrap()
-            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-            .filter(|n| n.contains("interactive"))
-            .map(|n| n.replace(".json", ".html"))
-            .collect();
+    let interactive: Vec<String> = files_in(&root().join("configs"))
+        .into_iter()
+        .filter(|n| n.contains("interactive"))
+        .map(|n| n.replace(".json", ".html"))
+        .collect();
     assert!(
         interactive.len() >= 10 && interactive.iter().all(|n| names.contains(&n.as_str())),
         "{names:?}"
@@ -275,9 +246,7 @@ fn catalogue_pages_are_self_contained_small_and_deterministic() {
 
 #[test]
 fn bad_interactive_declarations_exit_2_naming_the_path() {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("interactive-bad");
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch("interactive-bad");
     let slider = r#"{"params": [{"name": "a", "range": [0.2, 1.0, 0.1]}]}"#;
     let beckmann = r#"{"ndf": "beckmann", "alpha_b": {"slider": "a"}}"#;
     for (interactive, curve, needle) in [

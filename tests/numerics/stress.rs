@@ -4,10 +4,11 @@
 //! singularities (ABC at a₂ = 1 and 2, SGD at s = 1 − a₂ = 0). Normalization, by piecewise adaptive
 //! quadrature, is checked at every point of the full run.
 //!
-//! The full runs are `#[ignore]`d (`cargo test --release --test stress -- --ignored`, about 2.5
+//! The full runs are `#[ignore]`d (`cargo test --release --test numerics stress -- --ignored`, about 2.5
 //! minutes on two busy cores); the default run takes every [`SLICE_STRIDE`]th point of the same
 //! grids and normalizes a regular subset of those (see [`SLICE_NORMALIZED_EVERY`]).
 
+use crate::common::log_grid;
 use ndfplot::domain::Param;
 use ndfplot::math::quad::{QuadError, integrate};
 use ndfplot::ndf::{Family, Ndf};
@@ -38,17 +39,6 @@ const MONOTONE_SLACK: f64 = 1e-13;
 /// (D(0) is smooth in a₂ with a derivative of order ln(1 + a₁) ≤ 231 relative).
 const SINGULAR_STEP: f64 = 1e-9;
 const SINGULAR_CHANGE: f64 = 1e-6;
-
-fn log_grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    let (l, h) = (lo.log10(), hi.log10());
-    (0..n)
-        .map(|i| {
-            10f64
-                .powf(l + (h - l) * i as f64 / (n - 1) as f64)
-                .clamp(lo, hi)
-        })
-        .collect()
-}
 
 /// Lowest value of a log grid over a domain bounded below by 0: far below every lobe scale.
 const LOG_FLOOR: f64 = 1e-300;
@@ -218,7 +208,7 @@ macro_rules! family_tests {
         }
 
         #[test]
-        #[ignore = "full domain, 10⁵ points: cargo test --release --test stress -- --ignored"]
+        #[ignore = "full domain, 10⁵ points: cargo test --release --test numerics stress -- --ignored"]
         fn $full() {
             run($family, 1, 1);
         }

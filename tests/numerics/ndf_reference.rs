@@ -11,9 +11,8 @@
 //! Error is `floored_relative_difference` (relative above ABS_FLOOR, absolute below), with the
 //! tolerances of `ndfplot::math::tolerance`.
 
-use ndfplot::math::tolerance::{
-    REL_TOL_NDF, REL_TOL_TROWBRIDGE_REITZ, floored_relative_difference,
-};
+use crate::common::{csv_records, ndf_tol, number};
+use ndfplot::math::tolerance::floored_relative_difference;
 use ndfplot::ndf::{Family, Ndf};
 use std::collections::BTreeMap;
 
@@ -36,24 +35,18 @@ type Worst = BTreeMap<&'static str, (f64, String)>;
 
 /// Checks every row of `path`; returns the worst error per family and the failures.
 fn check_file(path: &str) -> (Worst, Vec<String>) {
-    let mut reader = csv::Reader::from_path(path).unwrap_or_else(|e| panic!("{path}: {e}"));
     let mut curves: BTreeMap<String, Ndf> = BTreeMap::new();
     let mut worst = Worst::new();
     let mut failures = Vec::new();
-    for record in reader.records() {
-        let record = record.expect("well-formed CSV row");
+    for record in csv_records(path) {
         let (case_id, curve_json) = (&record[0], &record[1]);
-        let theta: f64 = record[2].parse().expect("theta");
-        let want: f64 = record[3].parse().expect("value");
+        let (theta, want) = (number(&record, 2), number(&record, 3));
         let ndf = curves
             .entry(curve_json.to_owned())
             .or_insert_with(|| build(curve_json));
         let got = ndf.eval(theta);
         let family = ndf.family();
-        let tol = match family {
-            Family::TrowbridgeReitz => REL_TOL_TROWBRIDGE_REITZ,
-            _ => REL_TOL_NDF,
-        };
+        let tol = ndf_tol(family);
         let err = floored_relative_difference(got, want);
         let entry = worst.entry(family.name()).or_insert((0.0, String::new()));
         if err > entry.0 || err.is_nan() {

@@ -3,48 +3,13 @@
 //! SIGKILL mid-run (only complete files under real names; the next run cleans the temporaries),
 //! `render --check`, and the generated help, completions and manual page.
 
-#[path = "../fuzz/harness.rs"]
+#[path = "../../fuzz/harness.rs"]
 mod harness;
 
+use crate::common::{files_in, ndfplot, root, scratch, text};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
-
-fn ndfplot(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ndfplot"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8(bytes.to_vec()).unwrap()
-}
-
-fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// A fresh, empty folder under the target directory.
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("robustness")
-        .join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn files_in(dir: &Path) -> Vec<String> {
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return Vec::new();
-    };
-    let mut names: Vec<String> = entries
-        .map(|e| e.unwrap().file_name().into_string().unwrap())
-        .collect();
-    names.sort();
-    names
-}
 
 fn files_with_extension(dir: &Path, extension: &str) -> Vec<PathBuf> {
     files_in(dir)
@@ -57,7 +22,7 @@ fn files_with_extension(dir: &Path, extension: &str) -> Vec<PathBuf> {
 #[test]
 fn every_malformed_spec_exits_2_naming_its_path_and_the_expected_message() {
     let corpus = root().join("tests/data/malformed");
-    let out_dir = scratch("malformed-out");
+    let out_dir = scratch("robustness-malformed-out");
     let cases = files_with_extension(&corpus, "json");
     assert!(cases.len() >= 50, "only {} cases", cases.len());
     for case in cases {
@@ -114,7 +79,7 @@ fn the_fuzz_corpus_replays_without_breaking_an_invariant() {
 #[test]
 fn fuzz_findings_exit_2_through_the_binary() {
     let corpus = root().join("fuzz/corpus/spec");
-    let dir = scratch("findings");
+    let dir = scratch("robustness-findings");
     for name in files_in(&corpus)
         .into_iter()
         .filter(|f| f.starts_with("seed-finding-"))
@@ -214,7 +179,7 @@ fn assert_complete(dir: &Path, reference: &Path) -> usize {
 
 #[test]
 fn a_render_killed_mid_run_leaves_only_complete_files_and_the_next_run_cleans_up() {
-    let dir = scratch("kill");
+    let dir = scratch("robustness-kill");
     let total = write_kill_specs(&dir);
     let specs = dir.join("specs");
     let reference = dir.join("reference");
@@ -260,7 +225,15 @@ fn a_render_killed_mid_run_leaves_only_complete_files_and_the_next_run_cleans_up
         "panel,series,curve,x,y\n0,0,",
     )
     .unwrap();
-    assert!(render_into(&specs, &out).status().unwrap().success());
+    let rerun = render_into(&specs, &out)
+        .stderr(Stdio::piped())
+        .output()
+        .unwrap();
+    assert!(
+        rerun.status.success(),
+        "{}",
+        String::from_utf8_lossy(&rerun.stderr)
+    );
     assert_eq!(
         files_in(&out).iter().filter(|f| f.starts_with('.')).count(),
         0,
@@ -275,7 +248,7 @@ const SPEC: &str = r#"{"id": "checked", "sampling": {"uniform": 50}, "panels": [
 
 /// Renders SPEC's CSV into a fresh folder; returns (spec path, output folder).
 fn rendered(name: &str) -> (PathBuf, PathBuf) {
-    let dir = scratch(name);
+    let dir = scratch(&format!("robustness-{name}"));
     let spec = dir.join("spec.json");
     std::fs::write(&spec, SPEC).unwrap();
     let plots = dir.join("plots");

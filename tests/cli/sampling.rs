@@ -2,6 +2,7 @@
 //! and polar panels), the spec's `sampling` key, and the plan skipping what a run does not need
 //! (formats not requested, jobs shared between panels).
 
+use crate::common::scratch;
 use ndfplot::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
 use ndfplot::figure::Figure;
 use ndfplot::look::{Dash, PanelKind, Rgb, XUnit, YScale};
@@ -13,7 +14,7 @@ use ndfplot::render::{self, RenderOptions};
 use ndfplot::sample::evaluate_all;
 use ndfplot::source::{self, CanvasOverride};
 use std::f64::consts::FRAC_PI_2;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 fn frame() -> Frame {
     Frame {
@@ -68,12 +69,6 @@ fn scene(sampling: &str) -> String {
     )
 }
 
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("ndfplot-sampling-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
 fn load(dir: &Path, text: &str) -> Vec<ndfplot::scene::Scene> {
     let path = dir.join("s.json");
     std::fs::write(&path, text).unwrap();
@@ -86,7 +81,7 @@ fn load(dir: &Path, text: &str) -> Vec<ndfplot::scene::Scene> {
 
 #[test]
 fn default_sampling_draws_adaptively_and_tabulates_uniformly() {
-    let dir = temp_dir("default");
+    let dir = scratch("sampling-default");
     let scenes = load(&dir, &scene(""));
     let plan = plan(
         &scenes,
@@ -123,7 +118,7 @@ fn default_sampling_draws_adaptively_and_tabulates_uniformly() {
 
 #[test]
 fn polar_panels_are_drawn_adaptively_in_the_disc() {
-    let dir = temp_dir("polar");
+    let dir = scratch("sampling-polar");
     let scenes = load(
         &dir,
         r#"{"id":"s","panels":[{"view":"polar","curves":[{"ndf":"phong","alpha_p":48}]}]}"#,
@@ -141,7 +136,7 @@ fn polar_panels_are_drawn_adaptively_in_the_disc() {
 
 #[test]
 fn explicit_sampling_applies_to_tables_too() {
-    let dir = temp_dir("explicit");
+    let dir = scratch("sampling-explicit");
     let uniform = load(&dir, &scene(r#""sampling":{"uniform":50},"#));
     let p = plan(
         &uniform,
@@ -176,7 +171,7 @@ fn explicit_sampling_applies_to_tables_too() {
 
 #[test]
 fn sampling_key_errors_name_the_problem() {
-    let dir = temp_dir("errors");
+    let dir = scratch("sampling-errors");
     for (sampling, needle) in [
         (
             r#""sampling":{"uniform":50,"adaptive":{}},"#,
@@ -201,7 +196,7 @@ fn sampling_key_errors_name_the_problem() {
 
 #[test]
 fn a_run_produces_only_the_requested_formats_and_needed_jobs() {
-    let dir = temp_dir("formats");
+    let dir = scratch("sampling-formats");
     let spec = dir.join("s.json");
     std::fs::write(&spec, scene("")).unwrap();
     let options = |formats: Vec<Format>| RenderOptions {
@@ -247,7 +242,7 @@ fn a_run_produces_only_the_requested_formats_and_needed_jobs() {
 
 #[test]
 fn the_requested_formats_never_change_a_value_written() {
-    let dir = temp_dir("same-values");
+    let dir = scratch("sampling-same-values");
     let spec = dir.join("s.json");
     // Adaptive tables: their points depend on the pixel frame, which must not depend on whether
     // PNG is drawn.
