@@ -158,6 +158,12 @@ pub struct EvalArgs {
     pub degrees: bool,
 }
 
+/// `fit --family`'s help: the registry's canonical family names.
+fn family_help() -> String {
+    let names: Vec<&str> = crate::ndf::Family::ALL.iter().map(|f| f.name()).collect();
+    format!("The NDF family to fit ({})", names.join(", "))
+}
+
 fn eval_help() -> String {
     let mut text = String::from("Curve models and parameter domains:\n");
     for family in crate::ndf::Family::ALL {
@@ -240,8 +246,7 @@ pub struct FitArgs {
     /// The target NDF: inline JSON, @FILE or - (one curve on stdin).
     #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
     pub target: String,
-    /// The NDF family to fit (phong, beckmann, torrance_sparrow, trowbridge_reitz, abc, sgd).
-    #[arg(long, value_name = "NAME")]
+    #[arg(long, value_name = "NAME", help = family_help())]
     pub family: String,
     /// Fix a parameter of the family as key=value; all but one parameter must be fixed. Repeatable.
     #[arg(long, value_name = "KEY=VALUE", allow_hyphen_values = true)]

@@ -829,15 +829,17 @@ pub fn difference(op: DiffOp, a: Curve, b: Curve, path: &str) -> Result<Curve, P
     })
 }
 
-/// The legend symbol of a parameter (`alpha_b` → `α_b`, `eta` → `η`).
+/// The legend symbol of a parameter: an NDF parameter's as its family states it (`alpha_b` → `α_b`), a
+/// Fresnel parameter's Greek letter (`eta` → `η`), any other name as it is.
 pub fn symbol(param: &str) -> &str {
+    if let Some(p) = Family::ALL
+        .iter()
+        .flat_map(|family| family.params())
+        .find(|p| p.name == param)
+    {
+        return p.symbol;
+    }
     match param {
-        "alpha_p" => "α_p",
-        "alpha_b" => "α_b",
-        "alpha_ts" => "α_ts",
-        "alpha_tr" => "α_tr",
-        "alpha_abc1" | "alpha_sgd1" => "a₁",
-        "alpha_abc2" | "alpha_sgd2" => "a₂",
         "eta" => "η",
         "kappa" => "κ",
         "f0" => "F₀",

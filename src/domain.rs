@@ -48,6 +48,8 @@ impl Bound {
 pub struct Param {
     /// Canonical parameter name as written in the curve JSON.
     pub name: &'static str,
+    /// How legends write it (`α_b`, `a₁`).
+    pub symbol: &'static str,
     /// The lower end of the domain.
     pub min: Bound,
     /// The upper end of the domain.
@@ -182,6 +184,7 @@ mod tests {
 
     const ALPHA: Param = Param {
         name: "alpha",
+        symbol: "α",
         min: Bound::exclusive(0.0, "no lobe"),
         max: Bound::inclusive(1e4, "too close to grazing"),
     };

@@ -27,6 +27,7 @@ const ALPHA_ABC_MAX: f64 = 1e100;
 /// a₁'s domain (module header).
 const ALPHA_ABC1: Param = Param {
     name: "alpha_abc1",
+    symbol: "a₁",
     min: Bound::exclusive(
         0.0,
         "a₁ = 0 makes N's ln(1 + a₁)/a₁ 0/0, and a₁ < 0 a lobe rising towards grazing",
@@ -40,6 +41,7 @@ const ALPHA_ABC1: Param = Param {
 /// a₂'s domain (module header).
 const ALPHA_ABC2: Param = Param {
     name: "alpha_abc2",
+    symbol: "a₂",
     min: Bound::exclusive(0.0, "a₂ ≤ 0 is no lobe: u is constant or rises towards grazing"),
     max: Bound::inclusive(ALPHA_ABC_MAX, "D(0) = 1/N ≲ a₁ a₂/(2π) nears overflow"),
 };
@@ -96,6 +98,7 @@ impl Abc {
 impl Distribution for Abc {
     const NAME: &'static str = "abc";
     const PARAMS: &'static [Param] = &[ALPHA_ABC1, ALPHA_ABC2];
+    const LEGEND_PREFIX: Option<&'static str> = Some("ABC");
     const COLOUR: u32 = 0x6C70C4;
     /// The notebook's match of Trowbridge–Reitz α_tr = 0.3 (MATH.md).
     const EXAMPLE: &'static [f64] = &[23.5, 1.75];

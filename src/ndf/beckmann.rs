@@ -22,6 +22,7 @@ use std::f64::consts::PI;
 /// finite; at 1e4 the grazing lobe, ~1/α_b = 1e-4 rad wide, is resolved by θ to ~2e-12.
 const ALPHA_B: Param = Param {
     name: "alpha_b",
+    symbol: "α_b",
     min: Bound::inclusive(1e-150, "D(0) = 1/(π alpha_b²) overflows"),
     max: Bound::inclusive(1e4, "the lobe is unresolvably close to grazing"),
 };

@@ -21,6 +21,9 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
     /// The parameters in MATH.md's order, each with its domain and the reason for each bound: the only
     /// statement of the bounds, which the constructor checks and everything else reads.
     const PARAMS: &'static [Param];
+    /// Written before the parameter symbols of an automatic legend label when they alone do not name
+    /// the family (ABC and SGD share a₁, a₂; GTR's α and γ are generic): `"ABC"` gives `ABC a₁ = 10`.
+    const LEGEND_PREFIX: Option<&'static str> = None;
     /// The notebook's Solarized-based colour, as 0xRRGGBB.
     const COLOUR: u32;
     /// A representative parameter set in [`PARAMS`](Self::PARAMS) order, the one the numpy peer times:
@@ -108,6 +111,13 @@ macro_rules! families {
                 }
             }
 
+            /// See [`Distribution::LEGEND_PREFIX`].
+            pub fn legend_prefix(self) -> Option<&'static str> {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::LEGEND_PREFIX,)+
+                }
+            }
+
             /// The notebook's Solarized-based colour for the family, as 0xRRGGBB.
             pub fn colour(self) -> u32 {
                 match self {
@@ -158,9 +168,6 @@ macro_rules! families {
     };
 }
 
-/// Generalized Trowbridge–Reitz: the formula and its tests, not yet in the registry below.
-pub mod gtr;
-
 families! {
     Phong => phong::Phong,
     Beckmann => beckmann::Beckmann,
@@ -168,6 +175,7 @@ families! {
     TrowbridgeReitz => trowbridge_reitz::TrowbridgeReitz,
     Abc => abc::Abc,
     Sgd => sgd::Sgd,
+    Gtr => gtr::Gtr,
 }
 
 impl Family {
@@ -217,6 +225,7 @@ mod tests {
                 "trowbridge_reitz",
                 "abc",
                 "sgd",
+                "gtr",
                 "ggx"
             ]
         );

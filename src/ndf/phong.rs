@@ -20,6 +20,7 @@ use std::f64::consts::PI;
 /// α_p's domain: every finite value ≥ 0 (module header).
 const ALPHA_P: Param = Param {
     name: "alpha_p",
+    symbol: "α_p",
     min: Bound::inclusive(0.0, "D(π/2) = cos^alpha_p(π/2)/N is infinite"),
     max: Bound::inclusive(
         f64::MAX,

@@ -23,6 +23,7 @@ use std::f64::consts::PI;
 /// a₁'s domain (module header).
 const ALPHA_SGD1: Param = Param {
     name: "alpha_sgd1",
+    symbol: "a₁",
     min: Bound::inclusive(1e-6, "D(0) ≲ a₁^(−a₂−1) passes 1e66"),
     max: Bound::inclusive(
         1e6,
@@ -36,6 +37,7 @@ const ALPHA_SGD2_REASON: &str = "Γ(1 − a₂, a₁) is verified to ~1e-15 for 
 /// a₂'s domain (module header).
 const ALPHA_SGD2: Param = Param {
     name: "alpha_sgd2",
+    symbol: "a₂",
     min: Bound::inclusive(-10.0, ALPHA_SGD2_REASON),
     max: Bound::inclusive(10.0, ALPHA_SGD2_REASON),
 };
@@ -84,6 +86,7 @@ impl Sgd {
 impl Distribution for Sgd {
     const NAME: &'static str = "sgd";
     const PARAMS: &'static [Param] = &[ALPHA_SGD1, ALPHA_SGD2];
+    const LEGEND_PREFIX: Option<&'static str> = Some("SGD");
     const COLOUR: u32 = 0xB58800;
     /// One of the notebook's sgd-grid curves, as the numpy peer times it.
     const EXAMPLE: &'static [f64] = &[0.2, 0.5];

@@ -16,7 +16,6 @@ use crate::fresnel::Fresnel;
 use crate::json::{Node, Value};
 use crate::layout;
 use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
-use crate::ndf::Family;
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::transform::Transform;
 use reader::Reader;
@@ -926,20 +925,21 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
     }
 }
 
-/// Prefixes families whose parameters share symbols (ABC and SGD both use a₁, a₂).
+/// Prefixes the family's [`legend_prefix`](Family::legend_prefix) where it has one.
 /// Belcour reconstructions also show their `l2_grid` error, to two decimals as the notebook
 /// prints it.
 fn with_family_prefix(curve: &Curve, text: &str) -> String {
     match curve.model() {
-        Model::Ndf(Family::Abc) => format!("ABC {text}"),
-        Model::Ndf(Family::Sgd) => format!("SGD {text}"),
+        Model::Ndf(family) => match family.legend_prefix() {
+            Some(prefix) => format!("{prefix} {text}"),
+            None => text.to_string(),
+        },
         Model::Fresnel(model) => {
             let l2 = belcour_l2(curve).map_or(String::new(), |l2| format!(", L2 = {l2:.2}"));
             format!("{} {text}{l2}", model.name())
                 .trim_end()
                 .to_string()
         }
-        Model::Ndf(_) => text.to_string(),
     }
 }
 

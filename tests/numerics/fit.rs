@@ -141,6 +141,37 @@ fn a_family_fitted_to_itself_returns_the_parameter() {
 }
 
 #[test]
+fn gtr_fits_either_parameter_and_meets_trowbridge_reitz_at_gamma_2() {
+    // GTR with γ fixed at 2 is Trowbridge–Reitz: its α fitted to α_tr = 0.37 is 0.37.
+    let target = ndf(Family::TrowbridgeReitz, &[0.37]);
+    for by in By::ALL {
+        let got = fit(&target, Family::Gtr, &fixed(&[("gamma_gtr", 2.0)]), by).unwrap();
+        let tol = if by == By::L2 { 1e-6 } else { 1e-13 };
+        assert!(
+            (got.value / 0.37 - 1.0).abs() <= tol,
+            "{by:?}: {}",
+            got.value
+        );
+    }
+    // γ fitted with α fixed recovers the γ of a GTR target, on both sides of Berry's γ = 1.
+    for gamma in [0.5, 1.0, 3.0] {
+        let target = ndf(Family::Gtr, &[0.3, gamma]);
+        let got = fit(
+            &target,
+            Family::Gtr,
+            &fixed(&[("alpha_gtr", 0.3)]),
+            By::Peak,
+        )
+        .unwrap();
+        assert!(
+            (got.value / gamma - 1.0).abs() <= 1e-12,
+            "γ = {gamma}: {}",
+            got.value
+        );
+    }
+}
+
+#[test]
 fn max_fits_equate_the_maxima_where_peak_fits_do_not() {
     // SGD a₁ = 1, a₂ = 0.5 peaks away from the normal (CONTRACTS.md).
     let target = ndf(Family::Sgd, &[1.0, 0.5]);

@@ -1,11 +1,11 @@
-//! Invariants of the six NDFs over log grids of their whole accepted domains, bounds included:
+//! Invariants of the seven NDFs over log grids of their whole accepted domains, bounds included:
 //! every value finite and ≥ 0 on [0, π/2], and 2π ∫₀^{π/2} D sin θ cos θ dθ = 1 within NORMALIZATION_TOL by
 //! adaptive quadrature; constructors accept exactly the domain their family states.
 
 use crate::common::log_grid;
 use ndfplot::math::quad::{QuadError, integrate};
 use ndfplot::math::tolerance::{NORMALIZATION_TOL, QUAD_REL_TOL};
-use ndfplot::ndf::{Abc, Beckmann, Family, Ndf, Phong, Sgd, TorranceSparrow, TrowbridgeReitz};
+use ndfplot::ndf::{Abc, Beckmann, Family, Gtr, Ndf, Phong, Sgd, TorranceSparrow, TrowbridgeReitz};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Geometric ratio between successive quadrature breakpoints: pieces span a factor 4 in θ (or in π/2 − θ),
@@ -177,6 +177,20 @@ fn sgd_over_its_domain() {
         "sgd",
         pairs.map(|(a1, a2)| Ndf::Sgd(Sgd::new(a1, a2).unwrap())),
     );
+}
+
+#[test]
+fn gtr_over_its_domain() {
+    let (alpha_min, alpha_max) = bounds(Family::Gtr, 0);
+    let mut alpha_grid = log_grid(alpha_min, alpha_max, 52);
+    alpha_grid.extend([0.3, 1.0 - 1e-9, 1.0, 1.0 + 1e-9]);
+    // γ's lower bound is an excluded 0: the grid starts at the smallest positive double.
+    let mut gamma_grid = log_grid(1e-6, bounds(Family::Gtr, 1).1, 17);
+    gamma_grid.extend([f64::from_bits(1), 1.0 - 1e-9, 1.0, 1.0 + 1e-9, 1.5, 2.0]);
+    let pairs = alpha_grid
+        .iter()
+        .flat_map(|&a| gamma_grid.iter().map(move |&g| (a, g)));
+    assert_all("gtr", pairs.map(|(a, g)| Ndf::Gtr(Gtr::new(a, g).unwrap())));
 }
 
 /// The next double after `v` towards +∞ (`outward` = 1) or −∞ (−1); `v` finite.

@@ -75,6 +75,11 @@ fn assert_file(path: &str) {
 }
 
 #[test]
+fn reproduces_the_gtr_reference() {
+    assert_file("tests/data/reference/gtr.csv");
+}
+
+#[test]
 fn reproduces_the_visible_reference() {
     assert_file("tests/data/reference/ndf_visible.csv");
 }

@@ -93,6 +93,7 @@ fn monotone(ndf: &Ndf) -> bool {
         Ndf::Phong(_) => true,
         Ndf::TrowbridgeReitz(d) => d.alpha_tr() <= 1.0,
         Ndf::Beckmann(d) => d.alpha_b() <= FRAC_1_SQRT_2,
+        Ndf::Gtr(d) => d.alpha_gtr() <= 1.0,
         _ => false,
     }
 }
@@ -193,11 +194,12 @@ fn continuous_across(family: Family, a1s: &[f64], at: f64) {
 }
 
 #[test]
-fn abc_and_sgd_are_continuous_across_their_removable_singularities() {
+fn abc_sgd_and_gtr_are_continuous_across_their_removable_singularities() {
     let a1s = |family: Family| axis(&family.params()[0], 2001);
     continuous_across(Family::Abc, &a1s(Family::Abc), 1.0);
     continuous_across(Family::Abc, &a1s(Family::Abc), 2.0);
     continuous_across(Family::Sgd, &a1s(Family::Sgd), 1.0);
+    continuous_across(Family::Gtr, &a1s(Family::Gtr), 1.0);
 }
 
 macro_rules! family_tests {
@@ -222,4 +224,5 @@ family_tests! {
     trowbridge_reitz_slice, trowbridge_reitz_full, Family::TrowbridgeReitz;
     abc_slice, abc_full, Family::Abc;
     sgd_slice, sgd_full, Family::Sgd;
+    gtr_slice, gtr_full, Family::Gtr;
 }

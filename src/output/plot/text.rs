@@ -126,8 +126,7 @@ mod tests {
         let (size, lines) = fit("abc def", 63.0);
         assert!(
             lines == ["abc def"]
-                && size < 9.0
-                && size >= 8.0
+                && (8.0..9.0).contains(&size)
                 && mono("abc def", size).unwrap() <= 63.0
         );
         // Twice too wide: wrapped at spaces at the full size.
