@@ -272,7 +272,7 @@ pub struct CheckArgs {
     #[arg(value_name = "SPEC.json|DIR")]
     pub paths: Vec<PathBuf>,
     /// Largest accepted |2 pi integral D sin cos dtheta - 1|.
-    #[arg(long, value_name = "X", default_value_t = crate::cmd::check::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
+    #[arg(long, value_name = "X", default_value_t = crate::audit::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
 }
 

@@ -3,9 +3,11 @@
 //! Data flows one way: spec sources (`source`) → validated scenes (`scene`, `curve`, `look`) →
 //! sampling plan (`plan`) → evaluated jobs (`sample`, `adaptive`, `dyadic`) → the figure
 //! (`figure`), placed by `layout` → bytes and files (`output`); `render` runs the whole chain.
-//! The maths (`ndf`, `fresnel`, `math`) is pure f64 code with no I/O.
+//! The maths (`ndf`, `fresnel`, `math`) is pure f64 code with no I/O; `audit` integrates the curves of
+//! scenes for `ndfplot check`.
 
 pub mod adaptive;
+pub mod audit;
 pub mod bench;
 pub mod catalogue;
 pub mod check_outputs;

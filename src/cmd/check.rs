@@ -1,127 +1,8 @@
-//! `ndfplot check`: the normalization audit of every curve in scenes (or the built-in catalogue). For an
-//! NDF, 2π ∫₀^{π/2} D sin θ cos θ dθ with its error estimate, which must be 1 within `--tolerance`; for a
-//! Fresnel curve, the hemispherical average 2 ∫₀¹ F(c) c dc, reported only. A view transform of an NDF
-//! is audited through its NDF; difference series are not audited (they are not distributions).
-//!
-//! Owns the audit table and the verdict (exit 1 on a failure); the integrals are
-//! [`crate::metrics::projected_integral`]'s.
+//! `ndfplot check`: the audit table of [`crate::audit`] on stdout and its verdict (exit 1 when an NDF's
+//! normalization is off by more than `--tolerance`).
 
-use crate::curve::Curve;
+use crate::audit::Audit;
 use crate::error::{Error, Result};
-use crate::metrics::{Estimate, MetricError, lobe_width, maximum, projected_integral};
-use crate::scene::Scene;
-use rayon::prelude::*;
-use std::collections::HashSet;
-use std::f64::consts::PI;
-
-/// Default `--tolerance`: the NDFs are normalized analytically to ~1e-13 and the audit integrates to
-/// ~1e-12 (`QUAD_REL_TOL`), so 1e-9 flags only a real normalization error.
-pub const DEFAULT_TOLERANCE: f64 = 1e-9;
-
-/// Shift added to the integrand of the audit (see [`projected_integral`]), as a fraction of the uniform
-/// NDF 1/π: pieces near grazing or beyond a narrow lobe, where D is far below it, then converge at once
-/// instead of chasing relative accuracy on values ~1e-300, while the audit's accuracy moves only from
-/// `QUAD_REL_TOL` to `QUAD_REL_TOL` · (1 + 1e-3).
-const AUDIT_SHIFT: f64 = 1e-3 / PI;
-
-/// What an audit row measures.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Quantity {
-    /// 2π ∫ D sin θ cos θ dθ of an NDF; should be 1.
-    Normalization,
-    /// 2 ∫₀¹ F(c) c dc of a Fresnel curve.
-    HemisphericalAverage,
-}
-
-impl Quantity {
-    /// The name shown in the table.
-    pub fn name(self) -> &'static str {
-        match self {
-            Quantity::Normalization => "normalization",
-            Quantity::HemisphericalAverage => "hemispherical_average",
-        }
-    }
-}
-
-/// One audited curve.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Audit {
-    /// The first scene that shows the curve.
-    pub scene: String,
-    /// The curve's canonical JSON.
-    pub curve: String,
-    /// What was integrated.
-    pub quantity: Quantity,
-    /// The integral and its error estimate.
-    pub integral: Estimate,
-}
-
-impl Audit {
-    /// |integral − 1| for a normalization, `None` for a Fresnel average.
-    pub fn deviation(&self) -> Option<f64> {
-        (self.quantity == Quantity::Normalization).then(|| (self.integral.value - 1.0).abs())
-    }
-}
-
-/// 2π ∫₀^{π/2} d(θ) sin θ cos θ dθ of an NDF-like function d, breakpoints at the width of its peak.
-pub fn normalization(d: impl Fn(f64) -> f64) -> std::result::Result<Estimate, MetricError> {
-    let peak = maximum(&d, lobe_width(d(0.0)))?;
-    projected_integral(d, lobe_width(peak.value), AUDIT_SHIFT)
-}
-
-/// The audit quantity of a curve (for a transformed view, of the NDF behind it), or `None` for a
-/// difference series.
-pub fn audit(curve: &Curve) -> Option<std::result::Result<(Quantity, Estimate), MetricError>> {
-    match curve {
-        Curve::Ndf(d) => Some(normalization(|t| d.eval(t)).map(|e| (Quantity::Normalization, e))),
-        // 2 ∫₀¹ F(c) c dc = (1/π) · 2π ∫₀^{π/2} F sin θ cos θ dθ.
-        Curve::Fresnel(f) => Some(
-            projected_integral(|t| f.eval(t), lobe_width(1.0), AUDIT_SHIFT).map(|e| {
-                (
-                    Quantity::HemisphericalAverage,
-                    Estimate {
-                        value: e.value / PI,
-                        error: e.error / PI,
-                    },
-                )
-            }),
-        ),
-        Curve::Transformed { curve, .. } => audit(curve),
-        Curve::Difference { .. } => None,
-    }
-}
-
-/// Audits every distinct curve of `scenes` (first appearance order), in parallel.
-pub fn audit_scenes(scenes: &[Scene]) -> Result<Vec<Audit>> {
-    let mut seen = HashSet::new();
-    let mut curves = Vec::new();
-    for scene in scenes {
-        for shown in scene.panels.iter().flat_map(|p| &p.curves) {
-            let json = shown.curve.canonical_json();
-            if seen.insert(json.clone()) {
-                curves.push((scene.id.clone(), json, &shown.curve));
-            }
-        }
-    }
-    let audits: Vec<Option<Audit>> = curves
-        .par_iter()
-        .map(|(scene, json, curve)| {
-            audit(curve)
-                .map(|result| {
-                    let (quantity, integral) =
-                        result.map_err(|e| Error::Numerics(format!("{scene}: {json}: {e}")))?;
-                    Ok(Audit {
-                        scene: scene.clone(),
-                        curve: json.clone(),
-                        quantity,
-                        integral,
-                    })
-                })
-                .transpose()
-        })
-        .collect::<Result<_>>()?;
-    Ok(audits.into_iter().flatten().collect())
-}
 
 /// The table: a header, then per curve its status (`ok`, `FAIL`, or `-` for a Fresnel average), the
 /// quantity, the integral, its error estimate, |integral − 1|, the scene and the curve.
@@ -171,6 +52,7 @@ pub fn verdict(audits: &[Audit], tolerance: f64) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::audit::{DEFAULT_TOLERANCE, Quantity, normalization};
     use crate::ndf::{Distribution, Phong};
 
     #[test]

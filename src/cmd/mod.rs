@@ -94,7 +94,7 @@ fn run_check(args: CheckArgs) -> Result<()> {
         &source::sources(&args.paths)?,
         source::CanvasOverride::default(),
     )?;
-    let audits = check::audit_scenes(&scenes)?;
+    let audits = crate::audit::audit_scenes(&scenes)?;
     stdout::print(&check::table(&audits, args.tolerance))?;
     check::verdict(&audits, args.tolerance)
 }
