@@ -13,29 +13,12 @@ use crate::look::{Mark, XUnit, YScale};
 
 use crate::layout::{AUTO_MARGIN, widen_if_flat};
 
-/// Finest tick count tried to give a short linear axis two labelled ticks (any range holds
-/// two multiples of a step a tenth of its span).
-pub(super) const MIN_TICKS_SEARCH: f64 = 12.0;
+use super::ticks::{self, Ticks};
+
 /// Degree steps that read naturally on an angle axis, finest first.
 pub(super) const DEGREE_STEPS: [f64; 8] = [1.0, 2.0, 5.0, 15.0, 30.0, 45.0, 90.0, 180.0];
-/// Mantissas of "nice" linear steps.
-pub(super) const NICE_MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 5.0, 10.0];
-/// Mantissas of steps between labelled decades (a step of 25 decades reads badly).
-pub(super) const DECADE_MANTISSAS: [f64; 4] = [1.0, 2.0, 5.0, 10.0];
-/// At most this many decades get light lines at 2…9 × 10ᵏ.
-pub(super) const MAX_MINOR_DECADES: f64 = 8.0;
-
-/// How tick values are written.
-#[derive(Clone, Copy)]
-pub(super) enum TickFormat {
-    /// Fixed decimals, with an optional unit suffix (`°`).
-    Fixed {
-        decimals: usize,
-        suffix: &'static str,
-    },
-    /// The value is a base-10 exponent: written `10ᵏ`.
-    Decade,
-}
+/// Mantissas of steps on an axis of whole numbers (indices): no 2.5.
+pub(super) const WHOLE_MANTISSAS: [f64; 4] = [1.0, 2.0, 5.0, 10.0];
 
 /// One axis in display units (degrees or radians on x; values or log₁₀ values on y).
 #[derive(Clone)]
@@ -44,9 +27,10 @@ pub(super) struct Axis {
     pub(super) hi: f64,
     /// Labelled ticks with bold grid lines.
     pub(super) ticks: Vec<f64>,
-    /// Unlabelled light grid lines (log axes: 2…9 × 10ᵏ).
+    /// The label of each of `ticks`.
+    pub(super) labels: Vec<String>,
+    /// Unlabelled light grid lines (log axes: 2…9 × 10ᵏ or the decades not labelled).
     pub(super) minor: Vec<f64>,
-    pub(super) format: TickFormat,
 }
 
 impl Axis {
@@ -91,26 +75,37 @@ impl Axis {
         };
         let (lo, hi) = widen_if_flat(lo, hi);
         let whole = unit == XUnit::Plain && data().all(|v| v.fract() == 0.0);
-        let (step, decimals) = match unit {
-            XUnit::Degrees => degree_step(hi - lo, max_ticks),
+        let ticks = match unit {
+            XUnit::Degrees => {
+                let most = ticks::limit(max_ticks, ticks::MAX_LINEAR_TICKS);
+                let step = DEGREE_STEPS
+                    .into_iter()
+                    .find(|&step| {
+                        (ticks::MIN_TICKS..=most).contains(&ticks::multiples(lo, hi, step).len())
+                    })
+                    .unwrap_or_else(|| ticks::nice_step(lo, hi, most, &ticks::NICE_MANTISSAS));
+                ticks::labelled(ticks::multiples(lo, hi, step), step, "°")
+            }
             XUnit::Plain if whole => {
-                let step = nice_step(hi - lo, max_ticks, &DECADE_MANTISSAS).0;
-                (step.max(1.0), 0)
+                let most = ticks::limit(max_ticks, ticks::MAX_LINEAR_TICKS);
+                let step = ticks::nice_step(lo, hi, most, &WHOLE_MANTISSAS).max(1.0);
+                ticks::labelled(ticks::multiples(lo, hi, step), step, "")
             }
             XUnit::Radians | XUnit::Plain | XUnit::Slope => {
-                nice_step(hi - lo, max_ticks, &NICE_MANTISSAS)
+                ticks::linear(lo, hi, max_ticks, &ticks::NICE_MANTISSAS, "")
             }
         };
-        let suffix = match unit {
-            XUnit::Degrees => "°",
-            XUnit::Radians | XUnit::Plain | XUnit::Slope => "",
-        };
+        Axis::from_ticks(lo, hi, ticks)
+    }
+
+    /// The axis over `[lo, hi]` with `ticks`.
+    fn from_ticks(lo: f64, hi: f64, ticks: Ticks) -> Axis {
         Axis {
             lo,
             hi,
-            ticks: multiples(lo, hi, step),
-            minor: Vec::new(),
-            format: TickFormat::Fixed { decimals, suffix },
+            ticks: ticks.major,
+            labels: ticks.labels,
+            minor: ticks.minor,
         }
     }
 
@@ -134,30 +129,14 @@ impl Axis {
         Axis::values(panel.axes.y_scale, range, max_ticks)
     }
 
-    /// An axis of values on `scale` over `(lo, hi)` (display units): decimal ticks on a
-    /// linear scale; on a log scale labelled decades, with light lines at 2…9 × 10ᵏ when every
-    /// decade is labelled and there are at most [`MAX_MINOR_DECADES`].
+    /// An axis of values on `scale` over `(lo, hi)` (display units): [`ticks::linear`] or
+    /// [`ticks::log`] ticks.
     fn values(scale: YScale, (lo, hi): (f64, f64), max_ticks: f64) -> Axis {
-        if scale == YScale::Linear {
-            return Axis::linear((lo, hi), max_ticks);
-        }
-        let step = nice_step(hi - lo, max_ticks, &DECADE_MANTISSAS).0.max(1.0);
-        let ticks = multiples(lo, hi, step);
-        let minor = if step == 1.0 && hi - lo <= MAX_MINOR_DECADES {
-            (lo.floor() as i32..hi.ceil() as i32)
-                .flat_map(|d| (2..10).map(move |m| f64::from(d) + f64::from(m).log10()))
-                .filter(|v| (lo..=hi).contains(v))
-                .collect()
-        } else {
-            Vec::new()
+        let ticks = match scale {
+            YScale::Linear => ticks::linear(lo, hi, max_ticks, &ticks::NICE_MANTISSAS, ""),
+            YScale::Log => ticks::log(lo, hi, max_ticks),
         };
-        Axis {
-            lo,
-            hi,
-            ticks,
-            minor,
-            format: TickFormat::Decade,
-        }
+        Axis::from_ticks(lo, hi, ticks)
     }
 
     /// The z axis of a surface panel: `given` or the extent of the series' z values, as a
@@ -171,54 +150,15 @@ impl Axis {
             .copied()
             .filter(|v| v.is_finite());
         let range = YScale::Linear.range(given, extent(data));
-        Axis::linear(range, max_ticks)
+        Axis::values(YScale::Linear, range, max_ticks)
     }
 
-    /// A linear axis over `(lo, hi)` with decimal ticks.
-    fn linear((lo, hi): (f64, f64), max_ticks: f64) -> Axis {
-        // A short axis still gets two labelled ticks: finer steps until it does.
-        let mut max_ticks = max_ticks;
-        let (mut step, mut decimals) = nice_step(hi - lo, max_ticks, &NICE_MANTISSAS);
-        while multiples(lo, hi, step).len() < 2 && max_ticks < MIN_TICKS_SEARCH {
-            max_ticks += 1.0;
-            (step, decimals) = nice_step(hi - lo, max_ticks, &NICE_MANTISSAS);
-        }
-        Axis {
-            lo,
-            hi,
-            ticks: multiples(lo, hi, step),
-            minor: Vec::new(),
-            format: TickFormat::Fixed {
-                decimals,
-                suffix: "",
-            },
-        }
-    }
-
-    /// The tick label of display value `v`.
+    /// The label of tick `v` (one of `ticks`); empty for any other value.
     pub(super) fn label(&self, v: f64) -> String {
-        match self.format {
-            TickFormat::Fixed { decimals, suffix } => {
-                let v = if v.abs() < 1e-12 * (self.hi - self.lo) {
-                    0.0
-                } else {
-                    v
-                };
-                format!("{v:.decimals$}{suffix}").replace('-', "−")
-            }
-            TickFormat::Decade => {
-                let exponent = v.round() as i64;
-                let digits: String = exponent
-                    .to_string()
-                    .chars()
-                    .map(|c| match c {
-                        '-' => '⁻',
-                        d => SUPERSCRIPT_DIGITS[d.to_digit(10).unwrap_or(0) as usize],
-                    })
-                    .collect();
-                format!("10{digits}")
-            }
-        }
+        self.ticks
+            .iter()
+            .position(|&t| t == v)
+            .map_or_else(String::new, |i| self.labels[i].clone())
     }
 }
 
@@ -245,9 +185,6 @@ impl Ranged for Axis {
         self.lo..self.hi
     }
 }
-
-pub(super) const SUPERSCRIPT_DIGITS: [char; 10] =
-    ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
 
 /// θ (radians) in display units, if finite.
 pub(super) fn x_display(theta: f64, unit: XUnit) -> Option<f64> {
@@ -285,41 +222,6 @@ pub(super) fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
         None => Some((v, v)),
         Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
     })
-}
-
-/// A step `mantissa × 10ⁿ` giving at most about `max_ticks` ticks over `span`, and its decimals.
-pub(super) fn nice_step(span: f64, max_ticks: f64, mantissas: &[f64]) -> (f64, usize) {
-    let raw = span / (max_ticks.floor() - 1.0).max(1.0);
-    let magnitude = 10f64.powf(raw.log10().floor());
-    let mantissa = mantissas
-        .iter()
-        .copied()
-        .find(|&m| m * magnitude >= raw * (1.0 - 1e-9))
-        .unwrap_or(10.0);
-    let step = mantissa * magnitude;
-    let decimals =
-        (-(step.log10() + 1e-9).floor()).max(0.0) as usize + usize::from(mantissa == 2.5);
-    (step, decimals)
-}
-
-/// A step from [`DEGREE_STEPS`] giving at most about `max_ticks` ticks, else a nice step.
-pub(super) fn degree_step(span: f64, max_ticks: f64) -> (f64, usize) {
-    let limit = max_ticks.floor().max(2.0);
-    DEGREE_STEPS
-        .into_iter()
-        .filter(|&step| step <= span)
-        .find(|&step| (span / step).floor() + 1.0 <= limit)
-        .map_or_else(
-            || nice_step(span, max_ticks, &NICE_MANTISSAS),
-            |step| (step, 0),
-        )
-}
-
-/// The multiples of `step` in `[lo, hi]`.
-pub(super) fn multiples(lo: f64, hi: f64, step: f64) -> Vec<f64> {
-    let first = (lo / step - 1e-9).ceil() as i64;
-    let last = (hi / step + 1e-9).floor() as i64;
-    (first..=last).map(|i| i as f64 * step).collect()
 }
 
 /// The median gap between the distinct x values of `series` (display units), if it has two.

@@ -389,11 +389,8 @@ mod tests {
         )];
         let axis = Axis::x(&panel(XUnit::Plain, YScale::Linear, bars), 12.0);
         assert!((axis.lo + 0.95).abs() < 1e-12 && (axis.hi - 19.95).abs() < 1e-12);
-        assert_eq!(
-            axis.ticks,
-            [0.0, 2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 14.0, 16.0, 18.0]
-        );
-        assert_eq!(axis.label(4.0), "4");
+        assert_eq!(axis.ticks, [0.0, 5.0, 10.0, 15.0]);
+        assert_eq!(axis.label(5.0), "5");
         let two = vec![marked(
             series("s", RED, 1.0, Dash::Solid, vec![(1.0, 1.0), (2.0, -1.0)]),
             Mark::Bars,

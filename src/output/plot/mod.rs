@@ -32,6 +32,7 @@ mod style;
 mod surface;
 mod text;
 mod theme;
+mod ticks;
 
 use plotters::coord::Shift;
 use plotters::prelude::*;

@@ -1,0 +1,306 @@
+//! Tick locators and formatters, in the manner of matplotlib's `MaxNLocator` and `LogLocator`.
+//!
+//! - Linear: the finest "nice" step (mantissa × 10ⁿ) whose multiples in the range number at most the
+//!   room allows (between [`MIN_TICKS`] and [`MAX_LINEAR_TICKS`]); labels with the fewest decimals that
+//!   write every tick exactly, one format for the whole axis.
+//! - Log (values are base-10 exponents): every decade, or every n-th decade so that the labels fit;
+//!   the decades not labelled, or 2…9 × 10ᵏ when every decade is, as minor ticks. When fewer than
+//!   [`FEW_DECADES`] decades show, 2 and 5 × 10ᵏ (or all of 2…9 × 10ᵏ, room permitting) are labelled
+//!   too, written as plain decimals (`0.5`) inside [`PLAIN_MIN`, `PLAIN_MAX`] and as `5×10⁻⁶` outside.
+
+/// Fewest labelled ticks an axis is given, however little room it has.
+pub(super) const MIN_TICKS: usize = 3;
+/// Most labelled ticks on a linear axis, however much room it has.
+pub(super) const MAX_LINEAR_TICKS: usize = 8;
+/// Most labelled ticks on a log axis.
+pub(super) const MAX_LOG_TICKS: usize = 12;
+/// Below this many decades a log axis also labels values between decades.
+pub(super) const FEW_DECADES: f64 = 3.0;
+/// At most this many decades get minor ticks at 2…9 × 10ᵏ.
+pub(super) const MAX_MINOR_DECADES: f64 = 8.0;
+/// Log-axis values in [PLAIN_MIN, PLAIN_MAX] are written as plain decimals when intermediate values
+/// are labelled.
+pub(super) const PLAIN_MIN: f64 = 1e-4;
+/// See [`PLAIN_MIN`].
+pub(super) const PLAIN_MAX: f64 = 1e5;
+/// Mantissas of "nice" linear steps.
+pub(super) const NICE_MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 5.0, 10.0];
+/// Strides between labelled decades.
+const DECADE_STRIDES: [f64; 9] = [1.0, 2.0, 3.0, 5.0, 10.0, 20.0, 25.0, 50.0, 100.0];
+/// Slack in units of the step when deciding whether a multiple lies inside a range.
+const EDGE_SLACK: f64 = 1e-9;
+
+/// Labelled ticks with their labels, and unlabelled minor ticks, in display units.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Ticks {
+    /// Labelled tick positions, ascending.
+    pub(super) major: Vec<f64>,
+    /// One label per major tick.
+    pub(super) labels: Vec<String>,
+    /// Unlabelled tick positions.
+    pub(super) minor: Vec<f64>,
+}
+
+/// How many labelled ticks `room` (the number of label-widths that fit along the axis) allows, within
+/// [[`MIN_TICKS`], `most`].
+pub(super) fn limit(room: f64, most: usize) -> usize {
+    (room.floor().max(0.0) as usize).clamp(MIN_TICKS, most)
+}
+
+/// The multiples of `step` in `[lo, hi]`.
+pub(super) fn multiples(lo: f64, hi: f64, step: f64) -> Vec<f64> {
+    let first = (lo / step - EDGE_SLACK).ceil() as i64;
+    let last = (hi / step + EDGE_SLACK).floor() as i64;
+    (first..=last).map(|i| i as f64 * step).collect()
+}
+
+/// The finest step `m × 10ⁿ` (m from `mantissas`) with [`MIN_TICKS`] to `most` multiples in
+/// `[lo, hi]`; when no step gives that many, the coarsest with at least [`MIN_TICKS`].
+pub(super) fn nice_step(lo: f64, hi: f64, most: usize, mantissas: &[f64]) -> f64 {
+    let span = hi - lo;
+    let first = (span / (most as f64 * 10.0)).log10().floor() as i32;
+    let steps: Vec<f64> = (first..=first + 4)
+        .flat_map(|e| mantissas.iter().map(move |&m| m * 10f64.powi(e)))
+        .collect();
+    let count = |step: f64| multiples(lo, hi, step).len();
+    steps
+        .iter()
+        .copied()
+        .find(|&step| (MIN_TICKS..=most).contains(&count(step)))
+        .or_else(|| steps.iter().rev().copied().find(|&s| count(s) >= MIN_TICKS))
+        .unwrap_or(span)
+}
+
+/// The fewest decimals (at most 12) that write every value of `ticks` exactly, to `1e-9` of `step`.
+pub(super) fn decimals(ticks: &[f64], step: f64) -> usize {
+    (0..12)
+        .find(|&d| {
+            let scale = 10f64.powi(d as i32);
+            ticks
+                .iter()
+                .all(|t| ((t * scale).round() / scale - t).abs() <= EDGE_SLACK * step)
+        })
+        .unwrap_or(12)
+}
+
+/// `v` with `decimals` decimals and `suffix`, a true minus sign, and no "−0".
+pub(super) fn fixed(v: f64, decimals: usize, suffix: &str) -> String {
+    let text = format!("{v:.decimals$}");
+    let negative_zero = text
+        .trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.');
+    let text = if negative_zero {
+        text.trim_start_matches('-').to_string()
+    } else {
+        text.replace('-', "−")
+    };
+    format!("{text}{suffix}")
+}
+
+/// Linear ticks over `[lo, hi]`: the finest nice step fitting `room`, labels with one number of
+/// decimals and `suffix` (`°`).
+pub(super) fn linear(lo: f64, hi: f64, room: f64, mantissas: &[f64], suffix: &str) -> Ticks {
+    let step = nice_step(lo, hi, limit(room, MAX_LINEAR_TICKS), mantissas);
+    labelled(multiples(lo, hi, step), step, suffix)
+}
+
+/// `major` labelled with the fewest decimals that write each exactly (multiples of `step`).
+pub(super) fn labelled(major: Vec<f64>, step: f64, suffix: &str) -> Ticks {
+    let d = decimals(&major, step);
+    // A value within rounding of 0 (a multiple computed as −1e-17) is written 0.
+    let labels = major
+        .iter()
+        .map(|&v| fixed(if v.abs() < EDGE_SLACK * step { 0.0 } else { v }, d, suffix))
+        .collect();
+    Ticks {
+        major,
+        labels,
+        minor: Vec::new(),
+    }
+}
+
+/// Superscript form of an integer exponent (`-3` → `⁻³`).
+fn superscript(exponent: i64) -> String {
+    const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    exponent
+        .to_string()
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            d => DIGITS[d.to_digit(10).unwrap_or(0) as usize],
+        })
+        .collect()
+}
+
+/// `m × 10ᵏ` for a mantissa m ∈ 1…9 and a decade k: `10ᵏ` when m = 1, else `m×10ᵏ`.
+fn scientific(m: u32, k: i64) -> String {
+    if m == 1 {
+        format!("10{}", superscript(k))
+    } else {
+        format!("{m}×10{}", superscript(k))
+    }
+}
+
+/// `m × 10ᵏ` as a plain decimal (`0.05`, `200`).
+fn plain(m: u32, k: i64) -> String {
+    if k >= 0 {
+        format!("{m}{}", "0".repeat(k as usize))
+    } else {
+        format!("0.{}{m}", "0".repeat((-k - 1) as usize))
+    }
+}
+
+/// Log ticks over exponents `[lo, hi]` (display units of a log axis).
+pub(super) fn log(lo: f64, hi: f64, room: f64) -> Ticks {
+    let most = limit(room, MAX_LOG_TICKS);
+    let decades = hi - lo;
+    let stride = DECADE_STRIDES
+        .into_iter()
+        .find(|&s| multiples(lo, hi, s).len() <= most)
+        .unwrap_or(decades.max(1.0));
+    let between = |mantissas: &[u32]| -> Vec<(u32, i64)> {
+        (lo.floor() as i64..=hi.ceil() as i64)
+            .flat_map(|k| mantissas.iter().map(move |&m| (m, k)))
+            .filter(|&(m, k)| {
+                let v = k as f64 + f64::from(m).log10();
+                v >= lo - EDGE_SLACK && v <= hi + EDGE_SLACK
+            })
+            .collect()
+    };
+    let at = |(m, k): (u32, i64)| k as f64 + f64::from(m).log10();
+    // Fewer than FEW_DECADES decades: label 1, 2, 5 × 10ᵏ, or every 1…9 × 10ᵏ where they fit.
+    let labelled_values: Vec<(u32, i64)> = if decades < FEW_DECADES {
+        [&[1, 2, 3, 4, 5, 6, 7, 8, 9][..], &[1, 2, 5], &[1, 3], &[1]]
+            .into_iter()
+            .map(between)
+            .find(|v| v.len() <= most && v.len() >= 2)
+            .unwrap_or_else(|| between(&[1]))
+    } else {
+        multiples(lo, hi, stride)
+            .into_iter()
+            .map(|v| (1, v.round() as i64))
+            .collect()
+    };
+    let all_plain = labelled_values.iter().all(|&(m, k)| {
+        let v = f64::from(m) * 10f64.powi(k as i32);
+        (PLAIN_MIN..=PLAIN_MAX).contains(&v)
+    });
+    let plain_labels = decades < FEW_DECADES && all_plain;
+    let labels = labelled_values
+        .iter()
+        .map(|&(m, k)| {
+            if plain_labels {
+                plain(m, k)
+            } else {
+                scientific(m, k)
+            }
+        })
+        .collect();
+    let major: Vec<f64> = labelled_values.iter().map(|&p| at(p)).collect();
+    let minor = if stride > 1.0 && decades >= FEW_DECADES {
+        multiples(lo, hi, 1.0)
+            .into_iter()
+            .filter(|v| !major.iter().any(|m| (m - v).abs() < EDGE_SLACK))
+            .collect()
+    } else if decades <= MAX_MINOR_DECADES {
+        between(&[1, 2, 3, 4, 5, 6, 7, 8, 9])
+            .into_iter()
+            .map(at)
+            .filter(|v| !major.iter().any(|m| (m - v).abs() < EDGE_SLACK))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    Ticks {
+        major,
+        labels,
+        minor,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::FRAC_PI_2;
+
+    #[test]
+    fn linear_axes_get_four_to_eight_nice_ticks_in_one_format() {
+        let t = linear(0.0, FRAC_PI_2, 10.0, &NICE_MANTISSAS, "");
+        assert_eq!(
+            t.labels,
+            ["0.0", "0.2", "0.4", "0.6", "0.8", "1.0", "1.2", "1.4"]
+        );
+        let t = linear(0.0, 100.0, 5.0, &NICE_MANTISSAS, "");
+        assert_eq!(t.labels, ["0", "25", "50", "75", "100"]);
+        let t = linear(0.45, 1.0, 8.0, &NICE_MANTISSAS, "");
+        assert_eq!(t.labels, ["0.5", "0.6", "0.7", "0.8", "0.9", "1.0"]);
+        let t = linear(-1.1, 1.1, 6.0, &NICE_MANTISSAS, "");
+        assert_eq!(t.labels, ["−1.0", "−0.5", "0.0", "0.5", "1.0"]);
+        // Little room still gives three labelled ticks; much room at most eight.
+        assert!(linear(0.0, 10.0, 1.0, &NICE_MANTISSAS, "").major.len() >= MIN_TICKS);
+        for hi in [0.3, 1.0, 7.0, 13.0, 1e-5, 3e7] {
+            for room in [2.0, 4.0, 6.0, 8.0, 20.0] {
+                let n = linear(0.0, hi, room, &NICE_MANTISSAS, "").major.len();
+                assert!(
+                    (MIN_TICKS..=MAX_LINEAR_TICKS).contains(&n),
+                    "{hi} {room}: {n}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn decimals_are_the_fewest_that_write_each_tick_exactly() {
+        assert_eq!(decimals(&[0.0, 25.0, 50.0], 25.0), 0);
+        assert_eq!(decimals(&[0.0, 0.25, 0.5], 0.25), 2);
+        assert_eq!(decimals(&[0.0, 0.5, 1.0], 0.5), 1);
+        assert_eq!(fixed(-0.0, 1, ""), "0.0");
+        assert_eq!(fixed(-2.5, 1, "°"), "−2.5°");
+    }
+
+    #[test]
+    fn log_axes_label_decades_or_every_nth_with_minor_ticks_between() {
+        let t = log(-4.0, 2.0, 8.0);
+        assert_eq!(
+            t.labels,
+            ["10⁻⁴", "10⁻³", "10⁻²", "10⁻¹", "10⁰", "10¹", "10²"]
+        );
+        assert_eq!(t.minor.len(), 6 * 8);
+        let t = log(-4.0, 2.0, 4.0);
+        assert_eq!(t.labels, ["10⁻⁴", "10⁻²", "10⁰", "10²"]);
+        assert_eq!(t.minor, [-3.0, -1.0, 1.0]);
+        let t = log(-300.0, 0.0, 6.0);
+        assert!(
+            t.major.len() >= MIN_TICKS && t.major.len() <= 6,
+            "{:?}",
+            t.labels
+        );
+    }
+
+    #[test]
+    fn log_axes_over_few_decades_label_values_between_them() {
+        let t = log(0.5f64.log10(), 0.0, 10.0);
+        assert_eq!(t.labels, ["0.5", "0.6", "0.7", "0.8", "0.9", "1"]);
+        let t = log(-2.0, 0.0, 8.0);
+        assert_eq!(t.labels, ["0.01", "0.02", "0.05", "0.1", "0.2", "0.5", "1"]);
+        let t = log(-2.0, 0.0, 6.0);
+        assert_eq!(t.labels, ["0.01", "0.03", "0.1", "0.3", "1"]);
+        let t = log(-7.0, -5.0, 8.0);
+        assert_eq!(
+            t.labels,
+            [
+                "10⁻⁷",
+                "2×10⁻⁷",
+                "5×10⁻⁷",
+                "10⁻⁶",
+                "2×10⁻⁶",
+                "5×10⁻⁶",
+                "10⁻⁵"
+            ]
+        );
+        for (lo, hi) in [(-0.1, 0.0), (-1.0, 1.0), (-2.9, 0.0)] {
+            assert!(log(lo, hi, 6.0).major.len() >= 2, "{lo} {hi}");
+        }
+    }
+}
