@@ -24,7 +24,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 /// at 1e150, F(α_ts) ≈ 1/(2 α_ts) ≥ 5e-151 stays a normal double.
 const ALPHA_TS: Param = Param {
     name: "alpha_ts",
-    symbol: "α_ts",
+    symbol: "α_{ts}",
     min: Bound::inclusive(1e-150, "D(0) ≈ 1/(π alpha_ts²) overflows"),
     max: Bound::inclusive(
         1e150,

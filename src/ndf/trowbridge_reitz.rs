@@ -20,7 +20,7 @@ use std::f64::consts::PI;
 /// is finite; at 1e4 the grazing lobe, ~1/α_tr = 1e-4 rad wide, is resolved by θ to ~2e-12.
 const ALPHA_TR: Param = Param {
     name: "alpha_tr",
-    symbol: "α_tr",
+    symbol: "α_{tr}",
     min: Bound::inclusive(1e-150, "D(0) = 1/(π alpha_tr²) overflows"),
     max: Bound::inclusive(1e4, "the lobe is unresolvably close to grazing"),
 };

@@ -312,8 +312,13 @@ fn render_writes_svg_png_csv_and_csv_values_equal_eval() {
         svg.starts_with("<svg") || svg.starts_with("<?xml"),
         "not an SVG"
     );
+    // `α_b = 0.4` is typeset: α, then b as a subscript run, then the rest.
     assert!(
-        svg.contains("Test figure") && svg.contains("α_b = 0.4"),
+        svg.contains("Test figure")
+            && svg.contains("\nα\n</text>")
+            && svg.contains("\nb\n</text>")
+            && svg.contains("\n = 0.4\n</text>")
+            && !svg.contains("α_b"),
         "labels missing from SVG"
     );
     let png = std::fs::read(out_dir.join("two-panels.png")).unwrap();
@@ -1014,8 +1019,9 @@ fn scene_fits_and_differences_render_with_fitted_values_in_the_csv() {
         r#""{""difference"":""ratio"",""a"":{""ndf"":""trowbridge_reitz"",""alpha_tr"":0.6}"#
     ));
     let svg = std::fs::read_to_string(dir.join("fits.svg")).unwrap();
+    // The fit's label names its target, `α_{tr}` typeset with tr as a subscript run.
     assert!(
-        svg.contains("a₁ = 11.5819 (peak fit to α_tr = 0.4)"),
+        svg.contains("a₁ = 11.5819 (peak fit to α\n</text>") && svg.contains("\ntr\n</text>"),
         "legend"
     );
     std::fs::write(

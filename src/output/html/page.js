@@ -13,6 +13,94 @@
   const canvas = document.getElementById("plot");
   const logToggle = document.getElementById("log-y");
 
+  // Math text as the drawn figures typeset it (src/output/plot/mathtext.rs): `_` and `^` with one
+  // character or a {…} group make a sub- or superscript, groups nest, and a backslash escapes.
+  const SCRIPT_SCALE = 0.7;
+  const SUB_DROP = 0.2;
+  const SUP_RISE = 0.38;
+  function mathRuns(text) {
+    const chars = Array.from(text);
+    const runs = [];
+    const push = (c, scale, rise) => {
+      const last = runs[runs.length - 1];
+      if (last && last.scale === scale && last.rise === rise) last.text += c;
+      else runs.push({ text: c, scale, rise });
+    };
+    const groupEnd = (open) => {
+      let depth = 0;
+      for (let i = open; i < chars.length; i++) {
+        if (chars[i] === "\\") i++;
+        else if (chars[i] === "{") depth++;
+        else if (chars[i] === "}" && --depth === 0) return i;
+      }
+      return chars.length;
+    };
+    const parse = (lo, hi, scale, rise) => {
+      let i = lo;
+      while (i < hi) {
+        const c = chars[i];
+        if (c === "\\" && i + 1 < hi) {
+          push(chars[i + 1], scale, rise);
+          i += 2;
+        } else if ((c === "_" || c === "^") && i + 1 < hi && !/\s/.test(chars[i + 1])) {
+          const shift = c === "_" ? -SUB_DROP : SUP_RISE;
+          const [s, r] = [scale * SCRIPT_SCALE, rise + shift * scale];
+          if (chars[i + 1] === "{") {
+            const end = Math.min(groupEnd(i + 1), hi);
+            parse(i + 2, end, s, r);
+            i = end + 1;
+          } else {
+            push(chars[i + 1], s, r);
+            i += 2;
+          }
+        } else {
+          push(c, scale, rise);
+          i += 1;
+        }
+      }
+    };
+    parse(0, chars.length, 1, 0);
+    return runs;
+  }
+  // The label as DOM nodes: one span per script run, sized and raised relative to the label.
+  function mathNode(text) {
+    const fragment = document.createDocumentFragment();
+    for (const run of mathRuns(text)) {
+      if (run.scale === 1 && run.rise === 0) {
+        fragment.append(document.createTextNode(run.text));
+      } else {
+        const span = document.createElement("span");
+        span.textContent = run.text;
+        span.style.fontSize = run.scale + "em";
+        span.style.verticalAlign = run.rise / run.scale + "em";
+        fragment.append(span);
+      }
+    }
+    return fragment;
+  }
+  // Draws a label on the canvas with its baseline at y, aligned by `align` ("left", "center",
+  // "right") at x, in the context's current font of `size` px.
+  function fillMath(ctx, text, x, y, align, size) {
+    const font = ctx.font;
+    const runs = mathRuns(text);
+    const widths = runs.map((run) => {
+      ctx.font = font.replace(/^[\d.]+px/, size * run.scale + "px");
+      return ctx.measureText(run.text).width;
+    });
+    const total = widths.reduce((a, b) => a + b, 0);
+    let left = align === "center" ? x - total / 2 : align === "right" ? x - total : x;
+    const [savedAlign, savedBaseline] = [ctx.textAlign, ctx.textBaseline];
+    ctx.textAlign = "left";
+    ctx.textBaseline = "alphabetic";
+    runs.forEach((run, i) => {
+      ctx.font = font.replace(/^[\d.]+px/, size * run.scale + "px");
+      ctx.fillText(run.text, left, y - run.rise * size);
+      left += widths[i];
+    });
+    ctx.font = font;
+    [ctx.textAlign, ctx.textBaseline] = [savedAlign, savedBaseline];
+  }
+
   // Grid index k to θ exactly as ndfplot computes it: lo + k·((hi − lo)/2^levels).
   const thetaOf = (k) => thetaLo + k * gridStep;
 
@@ -199,15 +287,14 @@
     ctx.strokeStyle = "#1e1e1e";
     ctx.strokeRect(box.left, box.top, box.right - box.left, box.bottom - box.top);
     // Axis labels and the panel title.
-    ctx.textAlign = "center";
-    ctx.textBaseline = "bottom";
-    ctx.fillText(data.x_label, (box.left + box.right) / 2, height - 0.3 * font);
-    if (titled) ctx.fillText(data.panel_title, (box.left + box.right) / 2, box.top - 0.5 * font);
+    // Baselines a quarter of the size above where the text's bottom was, a third below its middle.
+    const centre = (box.left + box.right) / 2;
+    fillMath(ctx, data.x_label, centre, height - 0.55 * font, "center", font);
+    if (titled) fillMath(ctx, data.panel_title, centre, box.top - 0.75 * font, "center", font);
     ctx.save();
     ctx.translate(1.2 * font, (box.top + box.bottom) / 2);
     ctx.rotate(-Math.PI / 2);
-    ctx.textBaseline = "middle";
-    ctx.fillText(data.y_label + (log ? " (log)" : ""), 0, 0);
+    fillMath(ctx, data.y_label + (log ? " (log)" : ""), 0, 0.35 * font, "center", font);
     ctx.restore();
     // Curves, clipped to the plot box; non-positive values break the line on a log axis.
     ctx.save();
@@ -251,7 +338,7 @@
         for (const [k, v] of [["x1", 1], ["y1", 5], ["x2", 29], ["y2", 5], ["stroke", s.style.colour], ["stroke-width", 1.5 * s.style.width]]) line.setAttribute(k, v);
         if (s.style.dash !== "solid") line.setAttribute("stroke-dasharray", dashes[s.style.dash].map((d) => d * s.style.width).join(" "));
         svg.append(line);
-        item.append(svg, document.createTextNode(s.label));
+        item.append(svg, mathNode(s.label));
         return item;
       })
     );
@@ -259,7 +346,7 @@
 
   function update() {
     data.sliders.forEach((s, i) => {
-      document.getElementById("value-" + i).textContent = s.label + " = " + pretty(s.values[positions[i]]);
+      document.getElementById("value-" + i).replaceChildren(mathNode(s.label + " = " + pretty(s.values[positions[i]])));
     });
     const series = currentSeries();
     draw(series, logToggle.checked);
@@ -274,13 +361,13 @@
   }
 
   function build() {
-    document.title = data.title || data.id;
-    document.getElementById("title").textContent = data.title;
+    document.title = mathRuns(data.title || data.id).map((r) => r.text).join("");
+    document.getElementById("title").replaceChildren(mathNode(data.title));
     const box = document.getElementById("sliders");
     data.sliders.forEach((s, i) => {
       const label = document.createElement("label");
       label.htmlFor = "slider-" + i;
-      label.textContent = s.label;
+      label.append(mathNode(s.label));
       const input = document.createElement("input");
       Object.assign(input, { type: "range", id: "slider-" + i, name: s.name, min: 0, max: s.values.length - 1, step: 1, value: s.start });
       input.addEventListener("input", () => {

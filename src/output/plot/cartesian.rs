@@ -3,10 +3,12 @@
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axis::{Axis, median_spacing, x_display};
 use super::clip::visible_pieces;
 use super::legend::{Legend, Outside, Sample, Side};
+use super::mathtext;
 use super::style::{Metrics, stroke};
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
@@ -218,18 +220,38 @@ where
     let y_fmt = |v: &f64| y.label(*v);
     chart
         .configure_mesh()
-        .x_desc(panel.axes.x_label.as_str())
-        .y_desc(panel.axes.y_label.as_str())
         .x_label_formatter(&x_fmt)
         .y_label_formatter(&y_fmt)
         .label_style(m.font(1.0))
-        .axis_desc_style(m.font(AXIS_LABEL_EM))
         .bold_line_style(m.line(m.palette.grid))
         .light_line_style(m.line(m.palette.minor_grid))
         .axis_style(m.line(m.palette.frame))
         .set_all_tick_mark_size(m.px(TICK_EM))
         .draw()
         .map_err(draw_err)?;
+
+    // The axis labels where plotters puts its own, typeset: the x label centred under the plot area
+    // at the foot of its label area, the y label reading upwards at the outer edge of its own.
+    let (x_px, y_px) = chart.plotting_area().get_pixel_range();
+    let (base_x, base_y) = area.get_base_pixel();
+    let (left, right) = (f64::from(x_px.start - base_x), f64::from(x_px.end - base_x));
+    let (upper, lower) = (f64::from(y_px.start - base_y), f64::from(y_px.end - base_y));
+    let desc = m.font(AXIS_LABEL_EM);
+    let x_style = desc.pos(Pos::new(HPos::Center, VPos::Bottom));
+    // In an area too small for the frame, plotters shortens the label areas; so do the labels.
+    let (_, area_h) = area.dim_in_pixel();
+    let (_, _, side) = margins(m);
+    let foot = (lower + f64::from(frame.x_area)).min(f64::from(area_h.saturating_sub(side)));
+    let x_at = ((left + right) / 2.0, foot);
+    mathtext::draw(area, &panel.axes.x_label, &x_style, x_at)?;
+    let y_style = desc
+        .transform(FontTransform::Rotate270)
+        .pos(Pos::new(HPos::Center, VPos::Top));
+    let y_at = (
+        (left - f64::from(frame.y_area)).max(f64::from(side)),
+        (upper + lower) / 2.0,
+    );
+    mathtext::draw(area, &panel.axes.y_label, &y_style, y_at)?;
 
     let plot = chart.plotting_area().strip_coord_spec();
     let (pw, ph) = plot.dim_in_pixel();

@@ -12,6 +12,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::clip::{Clipped, clip};
+use super::mathtext;
 use super::style::{MARKER_RADIUS_PX, Metrics, SURFACE_OPACITY, mesh_colour, stroke};
 use super::text::MIN_SHRINK;
 use super::theme::Look;
@@ -157,8 +158,7 @@ impl<'a> Legend<'a> {
         }
         let mut widths = Vec::with_capacity(entries.len());
         for (s, _, _) in &entries {
-            let (w, _) = area.estimate_text_size(&s.label, &font).map_err(draw_err)?;
-            widths.push(f64::from(w));
+            widths.push(mathtext::width(area, &s.label, &font)?);
         }
         Ok(Some(Legend { entries, widths }))
     }
@@ -294,8 +294,12 @@ impl<'a> Legend<'a> {
                     }
                 }
                 let text_x = (left + sample + gap).round() as i32;
-                area.draw_text(&s.label, &label_style, (text_x, cy))
-                    .map_err(draw_err)?;
+                mathtext::draw(
+                    area,
+                    &s.label,
+                    &label_style,
+                    (f64::from(text_x), f64::from(cy)),
+                )?;
             }
             left += column_width(&self.widths, rows, column, setting.scale, m.unit) + column_gap;
         }

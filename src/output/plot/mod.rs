@@ -27,6 +27,7 @@ mod encode;
 #[cfg(test)]
 mod fixtures;
 mod legend;
+mod mathtext;
 mod polar;
 mod style;
 mod surface;
@@ -47,7 +48,7 @@ use encode::{MAX_DEVICE_PIXELS, device_size, downsample, encode_png, finish_svg}
 use polar::draw_polar;
 use style::{EM_PER_SIZE, Metrics, ensure_font};
 use surface::draw_surface;
-use text::{LINE_GAP_EM, fit_text, text_size};
+use text::{LINE_GAP_EM, fit_text};
 use theme::Look;
 
 /// Why a figure could not be turned into bytes.
@@ -211,7 +212,7 @@ where
     }
     let pad = f64::from(m.px(0.5));
     let (width, _) = area.dim_in_pixel();
-    let measure = |text: &str, size: f64| Ok(text_size(area, text, &m.font(size))?.0);
+    let measure = |text: &str, size: f64| mathtext::width(area, text, &m.font(size));
     let (size, lines) = fit_text(title, size, f64::from(width) - 2.0 * pad, measure)?;
     let style = m.font(size);
     // plotters' raster text puts the baseline size/2 below a top anchor, so ascenders rise
@@ -220,8 +221,12 @@ where
     let centred = style.pos(Pos::new(HPos::Center, VPos::Top));
     for (i, line) in lines.iter().enumerate() {
         let (_, text_h) = area.estimate_text_size(line, &style).map_err(draw_err)?;
-        area.draw_text(line, &centred, (width as i32 / 2, top))
-            .map_err(draw_err)?;
+        mathtext::draw(
+            area,
+            line,
+            &centred,
+            (f64::from(width) / 2.0, f64::from(top)),
+        )?;
         top += text_h as i32;
         if i + 1 < lines.len() {
             top += m.px(LINE_GAP_EM * size) as i32;
@@ -294,12 +299,16 @@ mod tests {
             "NDF and Fresnel",
             "Beckmann",
             "θ",
-            "α_b = 0.4",
             "F₀ = 0.04",
             "10⁰",
             "90°",
         ] {
             assert!(svg.contains(&format!("\n{label}\n</text>")), "{label}");
+        }
+        // `α_b = 0.4` is typeset: α, a smaller b, then the rest, with no markup left.
+        assert!(!svg.contains("α_b"));
+        for run in ["α", "b", " = 0.4"] {
+            assert!(svg.contains(&format!("\n{run}\n</text>")), "{run}");
         }
         let families = svg.matches("font-family=").count();
         assert!(families > 10);
@@ -667,7 +676,7 @@ mod tests {
                 .map(|i| {
                     let alpha = 0.2 + 0.08 * f64::from(i);
                     let label =
-                        format!("α_p = {:.4} (α_b = {alpha:.2})", 2.0 / alpha / alpha - 2.0);
+                        format!("αp = {:.4} (αb = {alpha:.2})", 2.0 / alpha / alpha - 2.0);
                     series(
                         &label,
                         RED,
@@ -737,7 +746,7 @@ mod tests {
                 (at("x"), at("y"))
             };
             let entries = doc.descendants().filter(|n| {
-                n.has_tag_name("text") && n.text().unwrap_or_default().trim().starts_with("α_p")
+                n.has_tag_name("text") && n.text().unwrap_or_default().trim().starts_with("αp = ")
             });
             assert_eq!(entries.clone().count(), 10 * fig.panels.len());
             for entry in entries {
@@ -753,7 +762,7 @@ mod tests {
                 let (x, y) = anchor(&label);
                 assert!(
                     !inside(x, y),
-                    "{width}×{height}: {:?} under a legend",
+                    "{width}×{height}: {:?} at {x},{y} under a legend {boxes:?}",
                     label.text()
                 );
             }

@@ -19,6 +19,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::axis::Axis;
 use super::clip::pieces;
 use super::legend::{Covered, Legend, Outside, Sample, Setting, Side};
+use super::mathtext;
 use super::style::{Metrics, stroke};
 use super::text::{anchor_towards, text_box, text_size};
 use super::theme::Look;
@@ -407,8 +408,7 @@ fn draw_label<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    area.draw_text(label, style, (at.0.round() as i32, at.1.round() as i32))
-        .map_err(draw_err)
+    mathtext::draw(area, label, style, at)
 }
 
 #[cfg(test)]

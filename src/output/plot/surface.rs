@@ -8,6 +8,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axis::{Axis, x_display};
 use super::legend::{Covered, Legend, Sample};
+use super::mathtext;
 use super::style::{Metrics, SURFACE_OPACITY, mesh_colour, stroke};
 use super::text::{anchor_towards, text_box, text_size};
 use super::theme::Look;
@@ -255,12 +256,7 @@ where
             } else {
                 centred
             };
-            area.draw_text(
-                titles[i],
-                &style,
-                (at.0.round() as i32, at.1.round() as i32),
-            )
-            .map_err(draw_err)?;
+            mathtext::draw(area, titles[i], &style, at)?;
             covered.add(&text_box(at, size, (0.5, 0.5)));
         }
     }

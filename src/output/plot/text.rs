@@ -5,9 +5,10 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::{PlotError, draw_err};
+use super::{PlotError, draw_err, mathtext};
 
-/// Width and height in device pixels of `text` in `font` on `area`.
+/// Width and height in device pixels of `text` typeset in `font` on `area` ([`mathtext`]): the
+/// height is that of the text at its own size.
 pub(super) fn text_size<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     text: &str,
@@ -16,9 +17,13 @@ pub(super) fn text_size<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    area.estimate_text_size(text, font)
-        .map(|(w, h)| (f64::from(w), f64::from(h)))
-        .map_err(draw_err)
+    let (w, h) = area.estimate_text_size(text, font).map_err(draw_err)?;
+    let width = if mathtext::has_markup(text) {
+        mathtext::width(area, text, font)?
+    } else {
+        f64::from(w)
+    };
+    Ok((width, f64::from(h)))
 }
 
 /// Smallest size a title is shrunk to before it is wrapped, relative to its own: a fifth
