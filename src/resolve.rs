@@ -61,11 +61,7 @@ pub fn scene(spec: Scene<Spec>) -> std::result::Result<Scene, Vec<Problem>> {
         .into_iter()
         .map(|panel| ScenePanel {
             axes: panel.axes,
-            curves: panel
-                .curves
-                .iter()
-                .filter_map(|c| scene_curve(c).map_err(|p| push_once(&mut problems, p)).ok())
-                .collect(),
+            curves: resolve_curves(&panel.curves, &mut problems),
             data: panel
                 .data
                 .into_iter()
@@ -193,31 +189,29 @@ fn scene_data(spec: SceneData<Spec>) -> std::result::Result<SceneData, Problem> 
     })
 }
 
-/// Resolves every frame of every entry; an entry stops at its first frame with a problem, which
-/// names the sliders' values there.
+/// Resolves every frame of every entry; an entry stops at its first frame with problems, each
+/// naming the sliders' values there.
 fn resolve_interactive(spec: Interactive<Spec>) -> std::result::Result<Interactive, Vec<Problem>> {
     let mut problems = Vec::new();
     let mut entries = Vec::with_capacity(spec.entries.len());
     for entry in &spec.entries {
-        let frames: std::result::Result<Vec<Vec<SceneCurve>>, Problem> = entry
-            .frames
-            .iter()
-            .enumerate()
-            .map(|(frame, curves)| {
-                curves
-                    .iter()
-                    .map(scene_curve)
-                    .collect::<std::result::Result<_, _>>()
-                    .map_err(|p| interactive::at_frame(p, &spec.sliders, &entry.sliders, frame))
-            })
-            .collect();
-        match frames {
-            Ok(frames) => entries.push(Entry {
-                sliders: entry.sliders.clone(),
-                frames,
-            }),
-            Err(problem) => push_once(&mut problems, problem),
+        let mut frames = Vec::with_capacity(entry.frames.len());
+        for (frame, curves) in entry.frames.iter().enumerate() {
+            let mut found = Vec::new();
+            frames.push(resolve_curves(curves, &mut found));
+            if !found.is_empty() {
+                for problem in found {
+                    let problem =
+                        interactive::at_frame(problem, &spec.sliders, &entry.sliders, frame);
+                    push_once(&mut problems, problem);
+                }
+                break;
+            }
         }
+        entries.push(Entry {
+            sliders: entry.sliders.clone(),
+            frames,
+        });
     }
     if problems.is_empty() {
         Ok(Interactive {
@@ -227,6 +221,14 @@ fn resolve_interactive(spec: Interactive<Spec>) -> std::result::Result<Interacti
     } else {
         Err(problems)
     }
+}
+
+/// Resolves `specs` in order; the problems of those that fail go to `problems`.
+fn resolve_curves(specs: &[SceneCurve<Spec>], problems: &mut Vec<Problem>) -> Vec<SceneCurve> {
+    specs
+        .iter()
+        .filter_map(|c| scene_curve(c).map_err(|p| push_once(problems, p)).ok())
+        .collect()
 }
 
 /// A fit's outcome: the fitted value and the legend text of its target.
@@ -465,4 +467,61 @@ fn read_columns(
         return Err("no data rows".into());
     }
     Ok((x, y))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::json;
+
+    fn resolve(text: &str) -> std::result::Result<Scene, Vec<String>> {
+        let spec = crate::scene::parse(&json::parse(text).unwrap(), None).unwrap();
+        scene(spec).map_err(|list| {
+            list.iter()
+                .map(|p| format!("{}: {}", p.at, p.message))
+                .collect()
+        })
+    }
+
+    #[test]
+    fn a_fit_failing_at_one_slider_position_names_it() {
+        let problems = resolve(
+            r#"{"id": "s", "interactive": {"params": [{"name": "a", "range": [0, 2, 1], "start": 1}]},
+                "panels": [{"curves": [{"ndf": "torrance_sparrow",
+                    "alpha_ts": {"fit": {"target": {"ndf": "phong", "alpha_p": {"slider": "a"}}}}}]}]}"#,
+        )
+        .unwrap_err();
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        assert!(
+            problems[0].starts_with("panels[0].curves[0].alpha_ts: fit to α_p = 0: alpha_ts:")
+                && problems[0].ends_with(" (at slider a = 0.0)"),
+            "{problems:?}"
+        );
+    }
+
+    #[test]
+    fn labels_are_written_out_from_the_resolved_curves() {
+        let scene = resolve(
+            r#"{"id": "s", "panels": [{"curves": [
+                {"ndf": "abc", "alpha_abc2": 1.75, "alpha_abc1": {"fit": {"target": {"ndf": "ggx", "alpha_tr": 0.4}}}},
+                {"ndf": "abc", "alpha_abc2": 1.75, "label": "{alpha_abc1} by {alpha_abc2}",
+                 "alpha_abc1": {"fit": {"target": {"ndf": "ggx", "alpha_tr": 0.4}}}},
+                {"difference": "minus", "a": {"ndf": "ggx", "alpha_tr": [0.4, 0.6]}, "b": {"ndf": "ggx", "alpha_tr": 0.5}}]}]}"#,
+        )
+        .unwrap();
+        let labels: Vec<&str> = scene.panels[0]
+            .curves
+            .iter()
+            .map(|c| c.label.as_str())
+            .collect();
+        assert!(
+            labels[0].ends_with("a₁ = 11.5819 (peak fit to α_tr = 0.4)"),
+            "{labels:?}"
+        );
+        assert_eq!(labels[1], "11.5819 by 1.75");
+        assert_eq!(
+            labels[2..],
+            ["α_tr = 0.4 − α_tr = 0.5", "α_tr = 0.6 − α_tr = 0.5"]
+        );
+    }
 }
