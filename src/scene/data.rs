@@ -1,4 +1,4 @@
-//! Data series entries of a panel (`{"data": …}`): validation into [`Dataset`]s.
+//! Data series entries of a panel (`{"data": …}`): validation into [`DataSpec`]s.
 //!
 //! `{"data": "spectrum", "quantity": "cumulative", "count": 20}` — the singular-value spectrum;
 //! `{"data": "gulbrandsen", "x": "c0", "y": "c2", "z": "c3", "r": <sweep>, "g": <sweep>, "g_remap": false}`
