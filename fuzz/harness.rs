@@ -15,6 +15,7 @@ use ndfplot::figure::Figure;
 use ndfplot::output::{self, Format};
 use ndfplot::plan::{Outputs, plan};
 use ndfplot::provenance::Provenance;
+use ndfplot::resolve;
 use ndfplot::sample::evaluate_all;
 use ndfplot::scene::Sampling;
 use ndfplot::source::{self, CanvasOverride};
@@ -64,7 +65,7 @@ fn spec(bytes: &[u8]) {
         return;
     };
     let sources = [("fuzz.json".to_string(), text.to_string(), None)];
-    let scenes = match source::load_scenes(&sources, CanvasOverride::default()) {
+    let scenes = match resolve::scenes(source::load_scenes(&sources, CanvasOverride::default())) {
         Ok(scenes) => scenes,
         Err(error) => {
             let message = error.to_string();
@@ -169,9 +170,10 @@ fn curve(bytes: &[u8]) {
     }
     text.push('}');
     let node = ndfplot::json::parse(&text).expect("the generated curve is valid JSON");
-    let Ok(curve) = ndfplot::curve::parse(&node, "") else {
+    let Ok(spec) = ndfplot::curve::parse(&node, "") else {
         return;
     };
+    let curve = resolve::curve(&spec).expect("a curve argument has no fit to fail");
     let just_below = f64::from_bits(FRAC_PI_2.to_bits() - 1);
     let mut thetas = vec![
         0.0,

@@ -2,11 +2,15 @@
 //! (`"ndf": <family>` or `"fresnel": <model>`) and its parameters by the notebooks' names.
 //!
 //! This module owns the key rules (which keys a curve accepts, missing and exclusive keys; unknown
-//! and duplicate keys are reported through [`crate::keys`]), the construction of validated curves,
-//! their canonical JSON and their legend labels. It does not expand sweeps: scenes resolve the keys
-//! here, expand each parameter's values themselves, then call [`Resolved::build`] per combination.
+//! and duplicate keys are reported through [`crate::keys`]), the validated description of a curve
+//! ([`CurveSpec`]) and of its legend label ([`Label`]), and the canonical JSON. It computes nothing:
+//! a Belcour reconstruction's coefficients and a fitted parameter are left to [`crate::resolve`],
+//! which turns a [`CurveSpec`] into the [`Curve`] the later stages evaluate. It does not expand
+//! sweeps: scenes resolve the keys here, expand each parameter's values themselves, then call
+//! [`Resolved::build`] per combination.
 
 use crate::domain::DomainError;
+use crate::fit::By;
 use crate::fresnel::{Fresnel, Ior, SchlickF0};
 use crate::json::{Node, Value};
 use crate::keys::{self, Accepted};
@@ -92,27 +96,214 @@ impl Curve {
 impl Serialize for Curve {
     /// The members of canonical curve JSON, in order (see [`Curve::canonical_json`]).
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let mut map = serializer.serialize_map(None)?;
         match self {
-            Curve::Difference { op, a, b } => {
-                map.serialize_entry(DIFFERENCE_KEY, op.name())?;
-                map.serialize_entry("a", a)?;
-                map.serialize_entry("b", b)?;
-            }
+            Curve::Difference { op, a, b } => serialize_difference(serializer, *op, a, b),
             Curve::Transformed { transform, curve } => {
-                map.serialize_entry(TRANSFORM_KEY, transform.name())?;
-                map.serialize_entry("curve", curve)?;
+                serialize_transformed(serializer, *transform, curve)
             }
             Curve::Ndf(_) | Curve::Fresnel(_) => {
-                let model = self.model();
-                map.serialize_entry(model.key(), model.name())?;
-                for (name, value) in self.params() {
-                    map.serialize_entry(name, &value)?;
-                }
+                serialize_model(serializer, self.model(), &self.params())
+            }
+        }
+    }
+}
+
+/// `{"difference": op, "a": a, "b": b}`.
+fn serialize_difference<S: Serializer, T: Serialize>(
+    serializer: S,
+    op: DiffOp,
+    a: &T,
+    b: &T,
+) -> Result<S::Ok, S::Error> {
+    let mut map = serializer.serialize_map(None)?;
+    map.serialize_entry(DIFFERENCE_KEY, op.name())?;
+    map.serialize_entry("a", a)?;
+    map.serialize_entry("b", b)?;
+    map.end()
+}
+
+/// `{"transform": transform, "curve": curve}`.
+fn serialize_transformed<S: Serializer, T: Serialize>(
+    serializer: S,
+    transform: Transform,
+    curve: &T,
+) -> Result<S::Ok, S::Error> {
+    let mut map = serializer.serialize_map(None)?;
+    map.serialize_entry(TRANSFORM_KEY, transform.name())?;
+    map.serialize_entry("curve", curve)?;
+    map.end()
+}
+
+/// The model key and name, then each parameter.
+fn serialize_model<S: Serializer, V: Serialize>(
+    serializer: S,
+    model: Model,
+    params: &[(&'static str, V)],
+) -> Result<S::Ok, S::Error> {
+    let mut map = serializer.serialize_map(None)?;
+    map.serialize_entry(model.key(), model.name())?;
+    for (name, value) in params {
+        map.serialize_entry(name, value)?;
+    }
+    map.end()
+}
+
+/// A validated curve as a spec describes it: every key and domain checked, nothing computed.
+/// [`crate::resolve`] turns it into a [`Curve`], computing what it leaves pending.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CurveSpec {
+    /// A curve that takes no numerics to build (NDFs, exact and approximate Fresnel curves, basis
+    /// functions): evaluable as it is.
+    Ready(Curve),
+    /// The Belcour–Bati–Barla reconstruction of a material, by its index only; resolve computes
+    /// the coefficients ([`Fresnel::belcour`]).
+    Belcour(Ior),
+    /// An NDF with one parameter fitted to a target curve; resolve runs the fit.
+    Fitted(Box<Fitted>),
+    /// A difference series of two curves of the same kind (see [`Curve::Difference`]).
+    Difference {
+        /// How the two values are combined.
+        op: DiffOp,
+        /// The first operand.
+        a: Box<CurveSpec>,
+        /// The second operand.
+        b: Box<CurveSpec>,
+    },
+    /// An NDF seen through a view transform (see [`Curve::Transformed`]).
+    Transformed {
+        /// The transform.
+        transform: Transform,
+        /// The transformed NDF.
+        curve: Box<CurveSpec>,
+    },
+}
+
+impl CurveSpec {
+    /// The model the curve belongs to, as [`Curve::model`] will give it once resolved.
+    pub fn model(&self) -> Model {
+        match self {
+            CurveSpec::Ready(curve) => curve.model(),
+            CurveSpec::Belcour(_) => Model::Fresnel(FresnelModel::Belcour),
+            CurveSpec::Fitted(fitted) => Model::Ndf(fitted.family),
+            CurveSpec::Difference { a, .. } => a.model(),
+            CurveSpec::Transformed { curve, .. } => curve.model(),
+        }
+    }
+
+    /// Canonical curve JSON of the description: that of the resolved curve
+    /// ([`Curve::canonical_json`]), a fitted parameter written as its `{"fit": …}` object.
+    pub fn canonical_json(&self) -> String {
+        crate::json::to_string(self)
+    }
+}
+
+impl Serialize for CurveSpec {
+    /// The members of canonical curve JSON (see [`CurveSpec::canonical_json`]).
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        match self {
+            CurveSpec::Ready(curve) => curve.serialize(serializer),
+            CurveSpec::Belcour(ior) => serialize_model(serializer, self.model(), &ior_params(ior)),
+            CurveSpec::Fitted(fitted) => fitted.serialize(serializer),
+            CurveSpec::Difference { op, a, b } => serialize_difference(serializer, *op, a, b),
+            CurveSpec::Transformed { transform, curve } => {
+                serialize_transformed(serializer, *transform, curve)
+            }
+        }
+    }
+}
+
+/// An NDF whose parameter `free` is fitted to `target` by `by`, its other parameters fixed: one
+/// curve of a scene's `{"fit": …}` sweep.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Fitted {
+    /// The fitted curve's family.
+    pub family: Family,
+    /// Index of the fitted parameter among the family's parameters.
+    pub free: usize,
+    /// The other parameters by name with their values, in the family's order: the fit's fixed keys.
+    pub fixed: Vec<(String, f64)>,
+    /// How the fit matches the target.
+    pub by: By,
+    /// The curve to fit.
+    pub target: CurveSpec,
+    /// The target's legend label, which a fit's label and its problems name.
+    pub target_label: Label,
+    /// JSON path of the curve entry; a fit's problem is reported at the fitted key under it.
+    pub path: String,
+}
+
+impl Fitted {
+    /// The fitted parameter's name.
+    pub fn name(&self) -> &'static str {
+        self.family.param_names()[self.free]
+    }
+}
+
+impl Serialize for Fitted {
+    /// The family and its parameters, the fitted one as `{"fit": {"target": …, "by": …}}`.
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        /// `{"target": …, "by": …}`.
+        struct FitObject<'a>(&'a Fitted);
+        impl Serialize for FitObject<'_> {
+            fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+                let mut map = serializer.serialize_map(None)?;
+                map.serialize_entry("target", &self.0.target)?;
+                map.serialize_entry("by", self.0.by.name())?;
+                map.end()
+            }
+        }
+        let mut map = serializer.serialize_map(None)?;
+        map.serialize_entry("ndf", self.family.name())?;
+        let mut fixed = self.fixed.iter();
+        for (i, name) in self.family.param_names().iter().enumerate() {
+            if i == self.free {
+                let mut fit = std::collections::BTreeMap::new();
+                fit.insert("fit", FitObject(self));
+                map.serialize_entry(name, &fit)?;
+            } else if let Some((_, value)) = fixed.next() {
+                map.serialize_entry(name, value)?;
             }
         }
         map.end()
     }
+}
+
+/// A curve's legend label as the spec describes it; resolve writes it out from the resolved curve
+/// (a Belcour reconstruction's `l2_grid` error, a fitted value).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Label {
+    /// The automatic label: the family's legend prefix (an NDF's) or model name (a Fresnel
+    /// curve's), then the parts joined by ", ", then a Belcour reconstruction's `, L2 = …`.
+    Auto(Vec<Part>),
+    /// A `label` template: `{l2}` becomes a Belcour reconstruction's error, `{param}` the
+    /// parameter's value.
+    Template {
+        /// The template as written.
+        template: String,
+        /// Each parameter with its value; `None` for the fitted one.
+        values: Vec<(&'static str, Option<ParamValue>)>,
+    },
+    /// The label of a difference: `<a> − <b>` (or `/`), or a template where `{a}` and `{b}` stand
+    /// for the operands' labels.
+    Difference {
+        /// The template as written, if any.
+        template: Option<String>,
+        /// `−` or `/`.
+        sign: &'static str,
+        /// The first operand's label.
+        a: Box<Label>,
+        /// The second operand's label.
+        b: Box<Label>,
+    },
+}
+
+/// One part of an automatic label.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Part {
+    /// Text as it is, such as `α_b = 0.4`.
+    Text(String),
+    /// The fitted parameter with its value and target, such as `a₁ = 23.4442 (peak fit to α_tr = 0.3)`.
+    Fitted,
 }
 
 fn ior_params(ior: &Ior) -> Vec<(&'static str, ParamValue)> {
@@ -327,8 +518,9 @@ impl Model {
         }
     }
 
-    /// Builds the validated curve from one value per key of `signatures()[signature]`.
-    pub fn build(self, signature: usize, values: &[ParamValue]) -> Result<Curve, DomainError> {
+    /// Checks one value per key of `signatures()[signature]` and describes the curve; a Belcour
+    /// reconstruction is described by its index, its coefficients left to resolve.
+    pub fn build(self, signature: usize, values: &[ParamValue]) -> Result<CurveSpec, DomainError> {
         let n = |i: usize| values[i].number();
         let ior = |offset: usize| match (self.signatures()[signature][offset]).name {
             "eta" => Ior::eta_kappa(n(offset), n(offset + 1)),
@@ -338,22 +530,23 @@ impl Model {
                 values[offset + 2] == ParamValue::Flag(true),
             ),
         };
-        Ok(match self {
+        let fresnel = match self {
             Model::Ndf(family) => {
                 let numbers: Vec<f64> = values.iter().map(|v| v.number()).collect();
-                Curve::Ndf(family.build(&numbers)?)
+                return Ok(CurveSpec::Ready(Curve::Ndf(family.build(&numbers)?)));
             }
-            Model::Fresnel(model) => Curve::Fresnel(match model {
+            Model::Fresnel(model) => match model {
+                FresnelModel::Belcour => return Ok(CurveSpec::Belcour(ior(0)?)),
                 FresnelModel::Exact => Fresnel::Exact(ior(0)?),
                 FresnelModel::Schlick if signature == 0 => Fresnel::schlick(n(0))?,
                 FresnelModel::Schlick => Fresnel::Schlick(SchlickF0::Ior(ior(0)?)),
                 FresnelModel::Lazanyi => Fresnel::lazanyi(n(0), n(1))?,
                 FresnelModel::LazanyiTerm => Fresnel::LazanyiTerm,
-                FresnelModel::Belcour => Fresnel::belcour(ior(0)?),
                 FresnelModel::Normalized => Fresnel::Normalized(ior(0)?),
                 FresnelModel::Basis => Fresnel::basis(whole_index(n(0))?)?,
-            }),
-        })
+            },
+        };
+        Ok(CurveSpec::Ready(Curve::Fresnel(fresnel)))
     }
 
     /// Looks a model up from its key (`ndf`/`fresnel`) and name, aliases included.
@@ -400,8 +593,9 @@ pub struct Resolved<'a> {
 }
 
 impl Resolved<'_> {
-    /// Builds the curve, reporting a domain error at the path of the offending key.
-    pub fn build(&self, values: &[ParamValue], path: &str) -> Result<Curve, Problem> {
+    /// Describes the curve ([`Model::build`]), reporting a domain error at the path of the
+    /// offending key.
+    pub fn build(&self, values: &[ParamValue], path: &str) -> Result<CurveSpec, Problem> {
         self.model
             .build(self.signature, values)
             .map_err(|e| domain_problem(&e, path))
@@ -570,7 +764,7 @@ pub const TRANSFORM_KEY: &str = "transform";
 /// Keys of a transformed curve.
 pub const TRANSFORM_KEYS: &[&str] = &[TRANSFORM_KEY, "curve"];
 
-fn parse_transformed(members: &[(String, Node)], path: &str) -> Result<Curve, Vec<Problem>> {
+fn parse_transformed(members: &[(String, Node)], path: &str) -> Result<CurveSpec, Vec<Problem>> {
     let accepted = Accepted {
         object: Some("a transformed curve"),
         listed: TRANSFORM_KEYS,
@@ -621,7 +815,11 @@ fn parse_transformed(members: &[(String, Node)], path: &str) -> Result<Curve, Ve
 }
 
 /// `curve` seen through `transform`; only NDFs have view transforms.
-pub fn transformed(transform: Transform, curve: Curve, path: &str) -> Result<Curve, Problem> {
+pub fn transformed(
+    transform: Transform,
+    curve: CurveSpec,
+    path: &str,
+) -> Result<CurveSpec, Problem> {
     if curve.model().key() != "ndf" {
         return Err(Problem::new(
             path,
@@ -632,7 +830,7 @@ pub fn transformed(transform: Transform, curve: Curve, path: &str) -> Result<Cur
             ),
         ));
     }
-    Ok(Curve::Transformed {
+    Ok(CurveSpec::Transformed {
         transform,
         curve: Box::new(curve),
     })
@@ -663,8 +861,9 @@ pub fn scalar(node: &Node, kind: ParamKind, path: &str) -> Result<ParamValue, Pr
 }
 
 /// Parses one plain curve object (every parameter a single value), as `eval` takes it, or a
-/// difference `{"difference": "minus"|"ratio", "a": <curve>, "b": <curve>}` of two such curves.
-pub fn parse(node: &Node, path: &str) -> Result<Curve, Vec<Problem>> {
+/// difference `{"difference": "minus"|"ratio", "a": <curve>, "b": <curve>}` of two such curves,
+/// into its description ([`crate::resolve::curve`] makes it a [`Curve`]).
+pub fn parse(node: &Node, path: &str) -> Result<CurveSpec, Vec<Problem>> {
     if let Value::Object(members) = &node.value
         && members.iter().any(|(k, _)| k == TRANSFORM_KEY)
     {
@@ -812,7 +1011,12 @@ pub fn difference_parts<'a>(
 
 /// The difference series `op(a, b)`; a and b must be of the same kind (two NDFs or two Fresnel
 /// curves), else the problem is reported at `path`.
-pub fn difference(op: DiffOp, a: Curve, b: Curve, path: &str) -> Result<Curve, Problem> {
+pub fn difference(
+    op: DiffOp,
+    a: CurveSpec,
+    b: CurveSpec,
+    path: &str,
+) -> Result<CurveSpec, Problem> {
     let (kind_a, kind_b) = (a.model().key(), b.model().key());
     if kind_a != kind_b {
         return Err(Problem::new(
@@ -822,7 +1026,7 @@ pub fn difference(op: DiffOp, a: Curve, b: Curve, path: &str) -> Result<Curve, P
             ),
         ));
     }
-    Ok(Curve::Difference {
+    Ok(CurveSpec::Difference {
         op,
         a: Box::new(a),
         b: Box::new(b),

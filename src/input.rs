@@ -2,12 +2,11 @@
 //!
 //! Every problem of every argument is collected before failing, so one run reports them all.
 
-use crate::curve::{self, Curve};
-use crate::dataset::Dataset;
+use crate::curve::{self, CurveSpec};
 use crate::error::{Error, Result};
 use crate::json;
-use crate::metrics::sampled::{Operand, Samples};
 use crate::problem::{Problem, Problems};
+use crate::scene::data::CsvFile;
 
 /// Reads a text file, naming it in the error.
 pub fn read_file(path: &str) -> Result<String> {
@@ -26,45 +25,43 @@ pub fn parse_json(text: &str, source: &str) -> std::result::Result<json::Node, P
     })
 }
 
-/// Parses one side of a comparison, with its canonical JSON: a curve, or a `{"data": "csv", …}`
-/// series whose file resolves against `base_dir`.
-fn parse_operand(
+/// One side of `compare` as given, validated but not read: a curve, or a CSV series.
+#[derive(Debug, Clone)]
+pub enum Side {
+    /// A curve.
+    Curve(CurveSpec),
+    /// A `{"data": "csv", …}` series.
+    Csv(CsvFile),
+}
+
+/// Parses one side of a comparison: a curve, or a `{"data": "csv", …}` series whose file resolves
+/// against `base_dir`.
+fn parse_side(
     text: &str,
     source: &str,
     base_dir: &std::path::Path,
-) -> std::result::Result<(Operand, String), Problems> {
+) -> std::result::Result<Side, Problems> {
     let node = parse_json(text, source)?;
     let problems = |list| Problems {
         source: source.to_string(),
         list,
     };
     if crate::scene::data::is_data(&node) {
-        let series = crate::scene::data::parse_csv_series(&node, base_dir).map_err(problems)?;
-        let samples = match &series {
-            Dataset::Csv { x, y, .. } => Samples::new(x, y),
-            _ => None,
-        };
-        let Some(samples) = samples else {
-            return Err(problems(vec![Problem::new(
-                "data",
-                "expected θ and values",
-            )]));
-        };
-        return Ok((Operand::Samples(samples), series.canonical_json()));
+        let file = crate::scene::data::parse_csv_series(&node, base_dir).map_err(problems)?;
+        return Ok(Side::Csv(file));
     }
-    let curve = curve::parse(&node, "").map_err(problems)?;
-    let name = curve.canonical_json();
-    Ok((Operand::Curve(curve), name))
+    curve::parse(&node, "").map(Side::Curve).map_err(problems)
 }
 
 /// Loads one side of `compare` from `arg`: inline JSON, `@path` or `-` (one line on `stdin`), holding a
 /// curve or a `{"data": "csv", "path": …}` series. The CSV path resolves against the folder of an
-/// `@path` file, else against the working directory. Returns the operand and its canonical JSON.
+/// `@path` file, else against the working directory; the file is not read. Returns the source's
+/// name (as problems name it) and the side.
 pub fn load_operand(
     arg: &str,
     flag: &str,
     stdin: impl FnOnce() -> std::io::Result<String>,
-) -> Result<(Operand, String)> {
+) -> Result<(String, Side)> {
     let here = std::path::Path::new(".");
     let (text, source, base_dir) = if arg == "-" {
         let text = stdin().map_err(|e| Error::io("stdin", e))?;
@@ -75,10 +72,11 @@ pub fn load_operand(
     } else {
         (arg.to_string(), flag.to_string(), here)
     };
-    parse_operand(&text, &source, base_dir).map_err(|p| Error::Input(vec![p]))
+    let side = parse_side(&text, &source, base_dir).map_err(|p| Error::Input(vec![p]))?;
+    Ok((source, side))
 }
 
-fn parse_curve(text: &str, source: &str) -> std::result::Result<Curve, Problems> {
+fn parse_curve(text: &str, source: &str) -> std::result::Result<CurveSpec, Problems> {
     let node = parse_json(text, source)?;
     curve::parse(&node, "").map_err(|list| Problems {
         source: source.to_string(),
@@ -87,17 +85,18 @@ fn parse_curve(text: &str, source: &str) -> std::result::Result<Curve, Problems>
 }
 
 /// Loads the curves named by `--curve` arguments, in order: `{…}` inline JSON, `@path` a file
-/// holding one curve, `-` one curve per non-blank line of `stdin` (JSON Lines).
+/// holding one curve, `-` one curve per non-blank line of `stdin` (JSON Lines); validated, not
+/// resolved.
 /// `flag` is the argument name used in messages (`--curve`).
 pub fn load_curves(
     args: &[String],
     flag: &str,
     stdin: impl FnOnce() -> std::io::Result<String>,
-) -> Result<Vec<Curve>> {
+) -> Result<Vec<CurveSpec>> {
     let mut curves = Vec::new();
     let mut problems = Vec::new();
     let mut stdin = Some(stdin);
-    let mut accept = |result: std::result::Result<Curve, Problems>| match result {
+    let mut accept = |result: std::result::Result<CurveSpec, Problems>| match result {
         Ok(curve) => curves.push(curve),
         Err(p) => problems.push(p),
     };

@@ -1,6 +1,7 @@
 //! ndfplot: plot and compare microfacet NDFs and Fresnel reflectance, exactly and fast.
 //!
-//! Data flows one way: spec sources (`source`) → validated scenes (`scene`, `curve`, `look`) →
+//! Data flows one way: spec sources (`source`) → validated scene descriptions (`scene`, `curve`,
+//! `look`) → resolved scenes, fits, coefficients and data files computed and read (`resolve`) →
 //! sampling plan (`plan`) → evaluated jobs (`sample`, `adaptive`, `dyadic`) → the figure
 //! (`figure`), placed by `layout` → bytes and files (`output`); `render` runs the whole chain.
 //! The maths (`ndf`, `fresnel`, `math`) is pure f64 code with no I/O; `audit` integrates the curves of
@@ -36,6 +37,7 @@ pub mod problem;
 pub mod progress;
 pub mod provenance;
 pub mod render;
+pub mod resolve;
 pub mod sample;
 pub mod scene;
 pub mod schema;

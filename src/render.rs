@@ -1,8 +1,8 @@
-//! The library entry point of a render: spec sources → scenes → plan → evaluated jobs → figures
-//! → encoded outputs → files. `ndfplot render`, `render --check`, the tests, the benches and the
+//! The library entry point of a render: spec sources → validated scenes → resolved scenes → plan
+//! → evaluated jobs → figures → encoded outputs → files. `ndfplot render`, `render --check`, the tests, the benches and the
 //! fuzzer all call it.
 //!
-//! Every spec is read and validated before anything is evaluated or written, so a bad spec
+//! Every spec is read, validated and resolved before anything is evaluated or written, so a bad spec
 //! writes no file at all; then the plan is evaluated in parallel and each output is written
 //! atomically through [`crate::output::write`].
 
@@ -13,6 +13,7 @@ use crate::output::{Format, encode_all, html, write};
 use crate::plan::{Outputs, plan};
 use crate::progress::Progress;
 use crate::provenance::Provenance;
+use crate::resolve;
 use crate::sample::{Evaluated, evaluate_all};
 use crate::scene::Scene;
 use crate::source::{CanvasOverride, load_scenes, sources};
@@ -124,7 +125,7 @@ fn encode_outputs(
 ) -> Result<(Files, RenderStats)> {
     let start = std::time::Instant::now();
     let sources = sources(&options.paths)?;
-    let scenes = load_scenes(&sources, options.canvas)?;
+    let scenes = resolve::scenes(load_scenes(&sources, options.canvas))?;
     let provenance: Vec<Provenance> = sources
         .iter()
         .map(|(_, text, _)| Provenance::of_spec(text.as_bytes()))

@@ -1,14 +1,15 @@
 //! Where specs come from, and reading them: spec files, folders of them, or the built-in
-//! catalogue; each parsed and validated into a [`Scene`], every problem of every source reported
-//! together, duplicate ids across sources included.
+//! catalogue; each parsed and validated into a [`Scene<Spec>`], every problem of every source
+//! kept, duplicate ids across sources included.
 //!
 //! The spec stage's entry point for a run of several specs; it reads only the spec files named.
+//! [`crate::resolve::scenes`] takes what it returns.
 
 use crate::catalogue::CATALOGUE;
 use crate::error::{Error, Result};
 use crate::input::{parse_json, read_file};
-use crate::problem::{Problem, Problems};
-use crate::scene::{self, Scene};
+use crate::problem::Problem;
+use crate::scene::{self, Invalid, Scene, Spec};
 use std::path::{Path, PathBuf};
 
 /// Command-line overrides of every scene's canvas.
@@ -60,54 +61,56 @@ pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
     Ok(sources)
 }
 
-/// Parses and validates every source; all problems of all sources are reported together, and
-/// duplicate ids across sources are problems too. On success there is one scene per source, in
-/// the order of `sources`.
-pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Result<Vec<Scene>> {
-    let mut scenes = Vec::new();
-    let mut failures = Vec::new();
+/// One source as the spec stage leaves it.
+#[derive(Debug, Clone)]
+pub struct Loaded {
+    /// The source's name, as problems name it.
+    pub source: String,
+    /// Its validated scene, or its problems with the work it still describes.
+    pub scene: std::result::Result<Scene<Spec>, Invalid>,
+}
+
+/// Parses and validates every source, in the order of `sources`; a source's problems (invalid
+/// JSON, invalid spec, a canvas override out of range, an id already used by an earlier source)
+/// are kept with it. Nothing is computed and no data file is read.
+pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Vec<Loaded> {
+    let mut loaded: Vec<Loaded> = Vec::with_capacity(sources.len());
     for (name, text, base_dir) in sources {
-        let parsed = parse_json(text, name).and_then(|node| {
-            scene::parse(&node, base_dir.as_deref()).map_err(|list| Problems {
-                source: name.clone(),
-                list,
-            })
-        });
-        match parsed.and_then(|s| apply_override(s, canvas, name)) {
-            Ok(scene) => {
-                if let Some(first) = scenes
+        let invalid = |list| Invalid {
+            problems: list,
+            pending: Vec::new(),
+        };
+        let scene = parse_json(text, name)
+            .map_err(|p| invalid(p.list))
+            .and_then(|node| scene::parse(&node, base_dir.as_deref()))
+            .and_then(|s| apply_override(s, canvas).map_err(|p| invalid(vec![p])))
+            .and_then(|scene| {
+                let first = loaded
                     .iter()
-                    .position(|(_, other): &(String, Scene)| other.id == scene.id)
-                {
-                    failures.push(Problems {
-                        source: name.clone(),
-                        list: vec![Problem::new(
-                            "id",
-                            format!(
-                                "duplicate id (got \"{}\", already used by {})",
-                                scene.id, scenes[first].0
-                            ),
-                        )],
-                    });
-                } else {
-                    scenes.push((name.clone(), scene));
+                    .find(|l| l.scene.as_ref().is_ok_and(|other| other.id == scene.id));
+                match first {
+                    Some(first) => Err(invalid(vec![Problem::new(
+                        "id",
+                        format!(
+                            "duplicate id (got \"{}\", already used by {})",
+                            scene.id, first.source
+                        ),
+                    )])),
+                    None => Ok(scene),
                 }
-            }
-            Err(problems) => failures.push(problems),
-        }
+            });
+        loaded.push(Loaded {
+            source: name.clone(),
+            scene,
+        });
     }
-    if failures.is_empty() {
-        Ok(scenes.into_iter().map(|(_, s)| s).collect())
-    } else {
-        Err(Error::Input(failures))
-    }
+    loaded
 }
 
 fn apply_override(
-    mut scene: Scene,
+    mut scene: Scene<Spec>,
     over: CanvasOverride,
-    source: &str,
-) -> std::result::Result<Scene, Problems> {
+) -> std::result::Result<Scene<Spec>, Problem> {
     let canvas = &mut scene.canvas;
     let (w, h) = (f64::from(canvas.width_px), f64::from(canvas.height_px));
     let (width, height) = match (over.width, over.height) {
@@ -118,9 +121,6 @@ fn apply_override(
     canvas.height_px = height.round().max(16.0) as u32;
     canvas.png_scale = over.png_scale.unwrap_or(canvas.png_scale);
     canvas.font_px = over.font_px.unwrap_or(canvas.font_px);
-    scene::check_canvas(canvas).map_err(|message| Problems {
-        source: source.to_string(),
-        list: vec![Problem::new("", message)],
-    })?;
+    scene::check_canvas(canvas).map_err(|message| Problem::new("", message))?;
     Ok(scene)
 }

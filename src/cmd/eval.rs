@@ -140,7 +140,10 @@ mod tests {
             r#"{"fresnel":"schlick","f0":0.04}"#,
         ]
         .iter()
-        .map(|text| crate::curve::parse(&crate::json::parse(text).unwrap(), "").unwrap())
+        .map(|text| {
+            let spec = crate::curve::parse(&crate::json::parse(text).unwrap(), "").unwrap();
+            crate::resolve::curve(&spec).unwrap()
+        })
         .collect();
         assert_eq!(
             table(&curves, &[0.0]).unwrap(),

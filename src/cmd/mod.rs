@@ -11,8 +11,13 @@ pub mod render;
 pub mod schema;
 
 use crate::cli::{CheckArgs, CoeffsArgs, Command, CompareArgs, EvalArgs, FitArgs};
-use crate::error::Result;
-use crate::{input, source, stdout};
+use crate::curve::Curve;
+use crate::dataset::Dataset;
+use crate::error::{Error, Result};
+use crate::input::Side;
+use crate::metrics::sampled::{Operand, Samples};
+use crate::problem::{Problem, Problems};
+use crate::{input, resolve, source, stdout};
 use std::io::Read;
 
 /// Runs a parsed command line.
@@ -39,20 +44,60 @@ fn read_stdin() -> std::io::Result<String> {
 
 fn run_eval(args: EvalArgs) -> Result<()> {
     let thetas = eval::parse_theta_list(&args.theta, args.degrees)?;
-    let curves = input::load_curves(&args.curve, "--curve", read_stdin)?;
+    let curves = load_curves(&args.curve, "--curve")?;
     stdout::print(&eval::table(&curves, &thetas)?)
 }
 
 fn run_coeffs(args: CoeffsArgs) -> Result<()> {
-    let curves = input::load_curves(&args.curve, "--curve", read_stdin)?;
+    let curves = load_curves(&args.curve, "--curve")?;
     stdout::print(&coeffs::table(&curves)?)
 }
 
+/// The curves of a curve argument ([`input::load_curves`]), resolved.
+fn load_curves(args: &[String], flag: &str) -> Result<Vec<Curve>> {
+    input::load_curves(args, flag, read_stdin)?
+        .iter()
+        .map(|spec| resolve::curve(spec).map_err(|p| input_error(flag, p)))
+        .collect()
+}
+
+/// A problem of the argument or file `source`.
+fn input_error(source: &str, problem: Problem) -> Error {
+    Error::Input(vec![Problems {
+        source: source.to_string(),
+        list: vec![problem],
+    }])
+}
+
+/// One side of `compare` ([`input::load_operand`]), resolved (a CSV series read), with its
+/// canonical JSON.
+fn load_operand(arg: &str, flag: &str) -> Result<(Operand, String)> {
+    let (source, side) = input::load_operand(arg, flag, read_stdin)?;
+    match side {
+        Side::Curve(spec) => {
+            let curve = resolve::curve(&spec).map_err(|p| input_error(&source, p))?;
+            let name = curve.canonical_json();
+            Ok((Operand::Curve(curve), name))
+        }
+        Side::Csv(file) => {
+            let series = resolve::csv(&file).map_err(|p| input_error(&source, p))?;
+            let samples = match &series {
+                Dataset::Csv { x, y, .. } => Samples::new(x, y),
+                _ => None,
+            };
+            let samples = samples.ok_or_else(|| {
+                input_error(&source, Problem::new("data", "expected θ and values"))
+            })?;
+            Ok((Operand::Samples(samples), series.canonical_json()))
+        }
+    }
+}
+
 /// Loads exactly one curve from a curve argument (inline JSON, @FILE or - for one line on stdin).
-fn load_one_curve(arg: &str, flag: &str) -> Result<crate::curve::Curve> {
-    let mut curves = input::load_curves(&[arg.to_string()], flag, read_stdin)?;
+fn load_one_curve(arg: &str, flag: &str) -> Result<Curve> {
+    let mut curves = load_curves(&[arg.to_string()], flag)?;
     if curves.len() != 1 {
-        return Err(crate::error::Error::Usage(format!(
+        return Err(Error::Usage(format!(
             "{flag}: expected one curve (got {})",
             curves.len()
         )));
@@ -66,8 +111,8 @@ fn run_compare(args: CompareArgs) -> Result<()> {
         .iter()
         .map(|b| compare::parse_bound(b))
         .collect::<Result<_>>()?;
-    let (a, a_name) = input::load_operand(&args.a, "--a", read_stdin)?;
-    let (b, b_name) = input::load_operand(&args.b, "--b", read_stdin)?;
+    let (a, a_name) = load_operand(&args.a, "--a")?;
+    let (b, b_name) = load_operand(&args.b, "--b")?;
     let metrics = compare::metrics(&a, &b)?;
     let report = if args.format == "json" {
         compare::json(&a_name, &b_name, &metrics)
@@ -90,10 +135,10 @@ fn run_fit(args: FitArgs) -> Result<()> {
 }
 
 fn run_check(args: CheckArgs) -> Result<()> {
-    let scenes = source::load_scenes(
+    let scenes = resolve::scenes(source::load_scenes(
         &source::sources(&args.paths)?,
         source::CanvasOverride::default(),
-    )?;
+    ))?;
     let audits = crate::audit::audit_scenes(&scenes)?;
     stdout::print(&check::table(&audits, args.tolerance))?;
     check::verdict(&audits, args.tolerance)

@@ -1,20 +1,22 @@
-//! Data series entries of a panel (`{"data": …}`): validation into [`Dataset`]s.
+//! Data series entries of a panel (`{"data": …}`): validation into [`DataSpec`]s.
 //!
 //! `{"data": "spectrum", "quantity": "cumulative", "count": 20}` — the singular-value spectrum;
 //! `{"data": "gulbrandsen", "x": "c0", "y": "c2", "z": "c3", "r": <sweep>, "g": <sweep>, "g_remap": false}`
 //! — decomposition coefficients over Gulbrandsen's (r, g);
 //! `{"data": "table", "x": [...], "y": [...]}` — literal points;
 //! `{"data": "csv", "path": "renderer.csv", "x": "theta", "y": "value", "degrees": false}` — θ and
-//! values read from a CSV file next to the spec, to overlay on analytic curves.
+//! values of a CSV file next to the spec, to overlay on analytic curves; the file is named here
+//! ([`CsvFile`]) and read by [`crate::resolve`].
 //! Every entry also takes `label`, `style`, `colour` and `mark`.
 
 use super::reader::{Object, Reader};
 use super::sweep;
-use super::{SceneData, read_style};
+use super::{Pending, SceneData, Spec, read_style};
 use crate::curve::{ParamKind, pretty};
 use crate::dataset::{Coefficient, Dataset, SpectrumQuantity};
 use crate::json::{Node, Value};
 use crate::look::Rgb;
+use std::path::PathBuf;
 
 /// Most points one data series may have; a 1000 × 1000 coefficient grid is already far beyond
 /// what a figure can show.
@@ -27,6 +29,50 @@ pub const KINDS: &[&str] = &["spectrum", "gulbrandsen", "table", "csv"];
 
 /// Solarized blue, the default colour of data series.
 const DATA_COLOUR: u32 = 0x268BD2;
+
+/// A validated data series as the spec describes it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DataSpec {
+    /// A dataset given in the spec itself (spectrum, Gulbrandsen, table).
+    Ready(Dataset),
+    /// θ and values of a CSV file, read by resolve into a [`Dataset::Csv`].
+    Csv(CsvFile),
+}
+
+impl DataSpec {
+    /// Whether the series' x is θ in radians (see [`Dataset::is_theta`]).
+    pub fn is_theta(&self) -> bool {
+        match self {
+            DataSpec::Ready(dataset) => dataset.is_theta(),
+            DataSpec::Csv(_) => true,
+        }
+    }
+
+    /// Whether the series has a z coordinate (see [`Dataset::has_z`]).
+    pub fn has_z(&self) -> bool {
+        match self {
+            DataSpec::Ready(dataset) => dataset.has_z(),
+            DataSpec::Csv(_) => false,
+        }
+    }
+}
+
+/// A `{"data": "csv", …}` series: which file and columns to read. Nothing is read at validation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CsvFile {
+    /// The file as the spec names it (relative to the spec's folder).
+    pub path: String,
+    /// The file to open: `path` against the spec's folder.
+    pub file: PathBuf,
+    /// Column holding θ.
+    pub x_column: String,
+    /// Column holding the values.
+    pub y_column: String,
+    /// Whether the file's θ are in degrees.
+    pub degrees: bool,
+    /// JSON path of the entry's `path` key, where a problem reading the file is reported.
+    pub at: String,
+}
 
 /// Whether a panel entry is a data series (has a `data` key) rather than a curve.
 pub fn is_data(node: &Node) -> bool {
@@ -47,8 +93,8 @@ fn keys(own: &[&'static str]) -> Vec<&'static str> {
     COMMON_KEYS.iter().chain(own).copied().collect()
 }
 
-/// Validates a data entry at `path`; problems go to `reader`.
-pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneData> {
+/// Validates a data entry at `path`; problems go to `reader`, a CSV file to its pending work.
+pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneData<Spec>> {
     let Value::Object(members) = &node.value else {
         return None;
     };
@@ -57,10 +103,10 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
     let entry = reader.object(node, path, &keys(own_keys(kind)))?;
     let before = reader.problems.len();
     let dataset = match kind {
-        "spectrum" => read_spectrum(reader, &entry),
-        "gulbrandsen" => read_gulbrandsen(reader, &entry),
-        "csv" => read_csv(reader, &entry),
-        _ => read_table(reader, &entry),
+        "spectrum" => read_spectrum(reader, &entry).map(DataSpec::Ready),
+        "gulbrandsen" => read_gulbrandsen(reader, &entry).map(DataSpec::Ready),
+        "csv" => read_csv(reader, &entry).map(DataSpec::Csv),
+        _ => read_table(reader, &entry).map(DataSpec::Ready),
     };
     let style = read_style(reader, &entry, Rgb::from_hex(DATA_COLOUR));
     let label = reader.string(&entry, "label");
@@ -77,20 +123,20 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
 }
 
 /// Validates a `{"data": "csv", …}` series given on its own (a `compare` side) at the root path, its
-/// file resolved against `base_dir`: a [`Dataset::Csv`] holding θ (radians) and values. Other data
-/// kinds are not functions of θ and are reported.
+/// file resolved against `base_dir` but not read. Other data kinds are not functions of θ and are
+/// reported.
 pub fn parse_csv_series(
     node: &Node,
     base_dir: &std::path::Path,
-) -> Result<Dataset, Vec<crate::problem::Problem>> {
+) -> Result<CsvFile, Vec<crate::problem::Problem>> {
     let mut reader = Reader {
-        problems: Vec::new(),
         base_dir: Some(base_dir.to_path_buf()),
+        ..Reader::default()
     };
     let entry = read_entry(&mut reader, node, "");
     match entry.map(|e| e.dataset) {
-        Some(csv @ Dataset::Csv { .. }) if reader.problems.is_empty() => Ok(csv),
-        Some(other) => Err(vec![crate::problem::Problem::new(
+        Some(DataSpec::Csv(csv)) if reader.problems.is_empty() => Ok(csv),
+        Some(DataSpec::Ready(other)) => Err(vec![crate::problem::Problem::new(
             "data",
             format!(
                 "not a series of θ (got {}, expected {{\"data\": \"csv\", \"path\": …}})",
@@ -226,8 +272,9 @@ fn read_table(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
 }
 
 /// Reads `{"data": "csv", "path": "file.csv", "x": "theta", "y": "value", "degrees": false}`:
-/// two named columns of a CSV file with a header row, θ within [0, π/2] (or [0, 90] degrees).
-fn read_csv(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
+/// which two named columns of which CSV file (with a header row) to read; the file is listed in
+/// the reader's pending work and read by resolve.
+fn read_csv(reader: &mut Reader, entry: &Object) -> Option<CsvFile> {
     let path = reader.string(entry, "path");
     let x_column = reader.string(entry, "x").unwrap_or_else(|| "theta".into());
     let y_column = reader.string(entry, "y").unwrap_or_else(|| "value".into());
@@ -243,89 +290,16 @@ fn read_csv(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
         reader.report(at, format!("data files need a spec read from disk (got \"{path}\" in a built-in or inline spec)"));
         return None;
     };
-    match read_columns(&base_dir.join(&path), &x_column, &y_column) {
-        Ok((x, y)) => {
-            let to_radians = if degrees {
-                std::f64::consts::PI / 180.0
-            } else {
-                1.0
-            };
-            let x: Vec<f64> = x.into_iter().map(|v| v * to_radians).collect();
-            if let Some(bad) = x
-                .iter()
-                .find(|&&t| !(0.0..=std::f64::consts::FRAC_PI_2).contains(&t))
-            {
-                let unit = if degrees {
-                    "degrees within [0, 90]"
-                } else {
-                    "radians within [0, π/2]"
-                };
-                reader.report(
-                    at,
-                    format!(
-                        "θ out of range in \"{path}\" (got {:?}, expected {unit})",
-                        bad / to_radians
-                    ),
-                );
-                return None;
-            }
-            Some(Dataset::Csv {
-                path,
-                x_column,
-                y_column,
-                degrees,
-                x,
-                y,
-            })
-        }
-        Err(message) => {
-            reader.report(at, format!("cannot read \"{path}\": {message}"));
-            None
-        }
-    }
-}
-
-/// The columns `x_column` and `y_column` of a CSV file with a header, as finite numbers.
-fn read_columns(
-    file: &std::path::Path,
-    x_column: &str,
-    y_column: &str,
-) -> Result<(Vec<f64>, Vec<f64>), String> {
-    let mut csv = csv::Reader::from_path(file).map_err(|e| e.to_string())?;
-    let headers = csv.headers().map_err(|e| e.to_string())?.clone();
-    let column = |name: &str| {
-        headers
-            .iter()
-            .position(|h| h.trim() == name)
-            .ok_or_else(|| {
-                let names: Vec<&str> = headers.iter().collect();
-                format!(
-                    "no column \"{name}\" (expected one of: {})",
-                    names.join(", ")
-                )
-            })
+    let csv = CsvFile {
+        file: base_dir.join(&path),
+        path,
+        x_column,
+        y_column,
+        degrees,
+        at,
     };
-    let (xi, yi) = (column(x_column)?, column(y_column)?);
-    let (mut x, mut y) = (Vec::new(), Vec::new());
-    for (row, record) in csv.records().enumerate() {
-        let record = record.map_err(|e| e.to_string())?;
-        let number = |i: usize| -> Result<f64, String> {
-            let text = record.get(i).unwrap_or("").trim();
-            text.parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite())
-                .ok_or_else(|| format!("row {}: not a finite number (got \"{text}\")", row + 2))
-        };
-        x.push(number(xi)?);
-        y.push(number(yi)?);
-        if x.len() > MAX_DATA_POINTS {
-            return Err(format!("more than {MAX_DATA_POINTS} rows"));
-        }
-    }
-    if x.is_empty() {
-        return Err("no data rows".into());
-    }
-    Ok((x, y))
+    reader.pending.push(Pending::Csv(csv.clone()));
+    Some(csv)
 }
 
 fn symbol(c: Coefficient) -> &'static str {
@@ -337,7 +311,11 @@ fn symbol(c: Coefficient) -> &'static str {
     }
 }
 
-fn default_label(dataset: &Dataset) -> String {
+fn default_label(dataset: &DataSpec) -> String {
+    let dataset = match dataset {
+        DataSpec::Ready(dataset) => dataset,
+        DataSpec::Csv(csv) => return csv.path.clone(),
+    };
     match dataset {
         Dataset::Spectrum { quantity, .. } => match quantity {
             SpectrumQuantity::SingularValue => "singular values".into(),
@@ -351,27 +329,27 @@ fn default_label(dataset: &Dataset) -> String {
                 _ => format!("r × {tint} grid"),
             }
         }
-        Dataset::Table { .. } => "data".into(),
-        Dataset::Csv { path, .. } => path.clone(),
+        Dataset::Table { .. } | Dataset::Csv { .. } => "data".into(),
     }
 }
 
 /// Default (x, y) axis labels of a panel whose first series is `dataset`.
-pub fn default_labels(dataset: &Dataset) -> (String, String) {
+pub fn default_labels(dataset: &DataSpec) -> (String, String) {
+    let dataset = match dataset {
+        DataSpec::Ready(dataset) => dataset,
+        DataSpec::Csv(csv) => return (csv.x_column.clone(), csv.y_column.clone()),
+    };
     match dataset {
         Dataset::Spectrum { .. } => ("index k".into(), "singular values".into()),
         Dataset::Gulbrandsen { x, y, .. } => (symbol(*x).into(), symbol(*y).into()),
-        Dataset::Table { .. } => ("x".into(), "y".into()),
-        Dataset::Csv {
-            x_column, y_column, ..
-        } => (x_column.clone(), y_column.clone()),
+        Dataset::Table { .. } | Dataset::Csv { .. } => ("x".into(), "y".into()),
     }
 }
 
 /// Default z axis label of a surface panel whose first series is `dataset`.
-pub fn z_label(dataset: &Dataset) -> String {
+pub fn z_label(dataset: &DataSpec) -> String {
     match dataset {
-        Dataset::Gulbrandsen { z: Some(z), .. } => symbol(*z).into(),
+        DataSpec::Ready(Dataset::Gulbrandsen { z: Some(z), .. }) => symbol(*z).into(),
         _ => "z".into(),
     }
 }

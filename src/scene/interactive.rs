@@ -17,7 +17,7 @@
 //! module owns the declaration, the references and the caps; it evaluates nothing.
 
 use super::reader::{Object, Reader};
-use super::{SceneCurve, ScenePanel, data, read_curve_entry, sweep};
+use super::{SceneCurve, ScenePanel, Spec, Stage, data, read_curve_entry, sweep};
 use crate::json::{Node, Number, Value};
 use crate::look::PanelKind;
 use crate::problem::{Problem, join_index, join_key, suggestion};
@@ -59,28 +59,28 @@ pub struct Slider {
 
 /// One curve entry of the interactive panel, resolved at every combination of its sliders.
 #[derive(Debug, Clone)]
-pub struct Entry {
+pub struct Entry<S: Stage = super::Resolved> {
     /// Indices (into [`Interactive::sliders`], ascending) of the sliders the entry references;
     /// empty for a static entry.
     pub sliders: Vec<usize>,
     /// The entry's curves per combination of its sliders' positions, row-major (the last slider
     /// varying fastest); one frame for a static entry.
-    pub frames: Vec<Vec<SceneCurve>>,
+    pub frames: Vec<Vec<SceneCurve<S>>>,
 }
 
 /// The interactive part of a scene: its sliders and its one panel's entries at every position.
 #[derive(Debug, Clone)]
-pub struct Interactive {
+pub struct Interactive<S: Stage = super::Resolved> {
     /// Sliders in declaration order.
     pub sliders: Vec<Slider>,
     /// Curve entries in panel order.
-    pub entries: Vec<Entry>,
+    pub entries: Vec<Entry<S>>,
 }
 
-impl Interactive {
+impl<S: Stage> Interactive<S> {
     /// Every curve of every slider position: entries in order, each entry's positions in
     /// order, each position's curves in order (the order the page lists them in).
-    pub fn curves(&self) -> impl Iterator<Item = &SceneCurve> {
+    pub fn curves(&self) -> impl Iterator<Item = &SceneCurve<S>> {
         self.entries.iter().flat_map(|e| e.frames.iter().flatten())
     }
 }
@@ -427,8 +427,8 @@ pub fn read(
     reader: &mut Reader,
     node: &Node,
     sliders: Option<Vec<Slider>>,
-    panels: Option<&[ScenePanel]>,
-) -> Option<Interactive> {
+    panels: Option<&[ScenePanel<Spec>]>,
+) -> Option<Interactive<Spec>> {
     let sliders = sliders?;
     let panels = panels?;
     if panels.len() != 1 || panels[0].axes.kind != PanelKind::Cartesian {
@@ -530,15 +530,10 @@ fn read_entry(
     sliders: &[Slider],
     used: Vec<usize>,
     frames: usize,
-) -> Option<Entry> {
+) -> Option<Entry<Spec>> {
     let mut curves_per_frame = Vec::with_capacity(frames);
-    let mut positions: Vec<usize> = sliders.iter().map(|s| s.start).collect();
     for frame in 0..frames {
-        let mut rest = frame;
-        for &s in used.iter().rev() {
-            positions[s] = rest % sliders[s].values.len();
-            rest /= sliders[s].values.len();
-        }
+        let positions = positions(sliders, &used, frame);
         let resolved = substitute(
             item,
             path,
@@ -551,27 +546,18 @@ fn read_entry(
             },
         );
         let mut scratch = Reader {
-            problems: Vec::new(),
             base_dir: reader.base_dir.clone(),
+            ..Reader::default()
         };
         let mut curves = Vec::new();
         read_curve_entry(&mut scratch, &resolved, path, &mut curves);
+        reader.pending.append(&mut scratch.pending);
         if !scratch.problems.is_empty() {
-            let at: Vec<String> = used
-                .iter()
-                .map(|&s| {
-                    format!(
-                        "{} = {:?}",
-                        sliders[s].name, sliders[s].values[positions[s]]
-                    )
-                })
-                .collect();
-            let at = at.join(", ");
             reader.problems.extend(
                 scratch
                     .problems
                     .into_iter()
-                    .map(|p| Problem::new(p.at, format!("{} (at slider {at})", p.message))),
+                    .map(|p| at_frame(p, sliders, &used, frame)),
             );
             return None;
         }
@@ -583,6 +569,37 @@ fn read_entry(
     })
 }
 
+/// The position of every slider at frame `frame` of an entry driven by the sliders `used`:
+/// row-major over them, the last varying fastest; the other sliders at their start.
+fn positions(sliders: &[Slider], used: &[usize], frame: usize) -> Vec<usize> {
+    let mut positions: Vec<usize> = sliders.iter().map(|s| s.start).collect();
+    let mut rest = frame;
+    for &s in used.iter().rev() {
+        positions[s] = rest % sliders[s].values.len();
+        rest /= sliders[s].values.len();
+    }
+    positions
+}
+
+/// `problem`, met at frame `frame` of an entry driven by the sliders `used` (see [`Entry`]), its
+/// message ending with the sliders' values there: `… (at slider a = 0.3, b = 2.0)`.
+pub fn at_frame(problem: Problem, sliders: &[Slider], used: &[usize], frame: usize) -> Problem {
+    let positions = positions(sliders, used, frame);
+    let at: Vec<String> = used
+        .iter()
+        .map(|&s| {
+            format!(
+                "{} = {:?}",
+                sliders[s].name, sliders[s].values[positions[s]]
+            )
+        })
+        .collect();
+    Problem::new(
+        problem.at,
+        format!("{} (at slider {})", problem.message, at.join(", ")),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use crate::json;
@@ -591,7 +608,8 @@ mod tests {
         let node = json::parse(text).unwrap();
         match super::super::parse(&node, None) {
             Ok(_) => Vec::new(),
-            Err(list) => list
+            Err(invalid) => invalid
+                .problems
                 .iter()
                 .map(|p| format!("{}: {}", p.at, p.message))
                 .collect(),

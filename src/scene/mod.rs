@@ -1,5 +1,10 @@
-//! Scenes (figure specs): the JSON format and its validation into a [`Scene`] that holds only
+//! Scenes (figure specs): the JSON format and its validation into a [`Scene<Spec>`] that holds only
 //! valid curves, styles and axes. Every problem of a spec is reported with its JSON path.
+//!
+//! The spec stage reads nothing but the spec and computes nothing: fits, Belcour coefficients,
+//! `l2_grid` errors in labels and data files are described ([`CurveSpec`], [`Label`],
+//! [`data::DataSpec`]) and left to [`crate::resolve`], which makes the [`Scene<Resolved>`] (plain
+//! [`Scene`]) the later stages take.
 //!
 //! A scene is an `id`, a `title`, a grid of panels (a row by default, like Mathematica's
 //! `GraphicsRow`), canvas settings and, per panel, axes, a legend and curves. Curves use the
@@ -10,9 +15,8 @@ pub mod interactive;
 pub mod reader;
 pub mod sweep;
 
-use crate::curve::{self, Curve, Model, ParamValue};
+use crate::curve::{self, Curve, CurveSpec, Fitted, Label, Model, ParamValue, Part};
 use crate::dataset::Dataset;
-use crate::fresnel::Fresnel;
 use crate::json::{Node, Value};
 use crate::layout;
 use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
@@ -140,22 +144,54 @@ pub const DEFAULT_TOLERANCE_PX: f64 = 0.25;
 /// Smallest accepted tolerance: finer than 1/1000 px changes no pixel and only burns the budget.
 pub const MIN_TOLERANCE_PX: f64 = 1e-3;
 
+/// What a scene's series hold at a stage: [`Spec`] as the spec describes them, [`Resolved`] ready
+/// to evaluate.
+pub trait Stage: std::fmt::Debug + Clone {
+    /// A curve.
+    type Curve: std::fmt::Debug + Clone;
+    /// A curve's legend label.
+    type Label: std::fmt::Debug + Clone;
+    /// A data series.
+    type Data: std::fmt::Debug + Clone;
+}
+
+/// The spec stage's scenes ([`parse`]): every key and domain checked, the numerics and data files
+/// described but not computed or read.
+#[derive(Debug, Clone)]
+pub struct Spec;
+
+impl Stage for Spec {
+    type Curve = CurveSpec;
+    type Label = Label;
+    type Data = data::DataSpec;
+}
+
+/// Resolved scenes ([`crate::resolve`]): curves ready to evaluate, labels written out, data read.
+#[derive(Debug, Clone)]
+pub struct Resolved;
+
+impl Stage for Resolved {
+    type Curve = Curve;
+    type Label = String;
+    type Data = Dataset;
+}
+
 /// One curve as a scene shows it.
 #[derive(Debug, Clone)]
-pub struct SceneCurve {
+pub struct SceneCurve<S: Stage = Resolved> {
     /// The validated curve.
-    pub curve: Curve,
+    pub curve: S::Curve,
     /// Legend label.
-    pub label: String,
+    pub label: S::Label,
     /// Line style.
     pub style: Style,
 }
 
 /// A data series (not a function of θ) as a scene shows it.
 #[derive(Debug, Clone)]
-pub struct SceneData {
+pub struct SceneData<S: Stage = Resolved> {
     /// The validated dataset.
-    pub dataset: Dataset,
+    pub dataset: S::Data,
     /// Legend label.
     pub label: String,
     /// Line or mark style.
@@ -164,18 +200,18 @@ pub struct SceneData {
 
 /// A validated panel.
 #[derive(Debug, Clone)]
-pub struct ScenePanel {
+pub struct ScenePanel<S: Stage = Resolved> {
     /// Titles, axes, scales, ranges and legend.
     pub axes: Axes,
     /// Curves in drawing order.
-    pub curves: Vec<SceneCurve>,
+    pub curves: Vec<SceneCurve<S>>,
     /// Data series (not functions of θ), drawn after the curves.
-    pub data: Vec<SceneData>,
+    pub data: Vec<SceneData<S>>,
 }
 
 /// A validated scene.
 #[derive(Debug, Clone)]
-pub struct Scene {
+pub struct Scene<S: Stage = Resolved> {
     /// Id, matching `^[a-z0-9][a-z0-9_-]{0,63}$`; output files are `<id>.<ext>`.
     pub id: String,
     /// Figure title (may be empty).
@@ -191,9 +227,28 @@ pub struct Scene {
     /// Colours and line distinctions.
     pub theme: Theme,
     /// Panels, row-major.
-    pub panels: Vec<ScenePanel>,
+    pub panels: Vec<ScenePanel<S>>,
     /// Sliders and the curves at every position, for scenes with an `interactive` key.
-    pub interactive: Option<interactive::Interactive>,
+    pub interactive: Option<interactive::Interactive<S>>,
+}
+
+/// A spec with problems: the problems, and the fallible work (fits, data files) of the parts that
+/// passed, so that resolve can report its problems together with the spec's own.
+#[derive(Debug, Clone)]
+pub struct Invalid {
+    /// The spec's problems, in the order found.
+    pub problems: Vec<Problem>,
+    /// The fallible work the spec describes, in the order met.
+    pub pending: Vec<Pending>,
+}
+
+/// A piece of work a spec leaves to resolve that can fail.
+#[derive(Debug, Clone)]
+pub enum Pending {
+    /// A fit.
+    Fit(Box<Fitted>),
+    /// A data file to read.
+    Csv(data::CsvFile),
 }
 
 /// Whether `id` is a valid scene id: `^[a-z0-9][a-z0-9_-]{0,63}$` (CONTRACTS.md). Such an id
@@ -208,21 +263,25 @@ pub fn valid_id(id: &str) -> bool {
             .all(|&b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_' || b == b'-')
 }
 
-/// Validates a parsed scene document; every problem is returned with its JSON path. Data files
-/// named by the spec resolve against `base_dir`, the spec's folder (`None`: no data files).
-pub fn parse(node: &Node, base_dir: Option<&std::path::Path>) -> Result<Scene, Vec<Problem>> {
+/// Validates a parsed scene document into its description; every problem is returned with its
+/// JSON path. Data files named by the spec resolve against `base_dir`, the spec's folder (`None`:
+/// no data files); they are not read, nor is anything computed.
+pub fn parse(node: &Node, base_dir: Option<&std::path::Path>) -> Result<Scene<Spec>, Invalid> {
     let mut reader = Reader {
-        problems: Vec::new(),
         base_dir: base_dir.map(std::path::Path::to_path_buf),
+        ..Reader::default()
     };
     let scene = read_scene(&mut reader, node);
     match scene {
         Some(scene) if reader.problems.is_empty() => Ok(scene),
-        _ => Err(reader.problems),
+        _ => Err(Invalid {
+            problems: reader.problems,
+            pending: reader.pending,
+        }),
     }
 }
 
-fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
+fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene<Spec>> {
     let sliders = reader
         .object(node, "", SCENE_KEYS)
         .and_then(|object| interactive::read_sliders(reader, &object));
@@ -254,7 +313,6 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene> {
     let panels = read_panels(reader, &object);
     let (rows, cols) = read_layout(reader, &object, panels.as_ref().map_or(1, Vec::len));
     let canvas = read_canvas(reader, &object, rows, cols, !title.is_empty());
-    check_points(reader, sampling, panels.as_deref());
     if sliders.is_some() {
         check_interactive_views(reader, panels.as_deref().unwrap_or_default());
     }
@@ -287,7 +345,7 @@ pub fn theme_named(name: &str) -> Theme {
 }
 
 /// Reports panels an interactive page cannot draw: its pages plot y against θ on cartesian axes.
-fn check_interactive_views(reader: &mut Reader, panels: &[ScenePanel]) {
+fn check_interactive_views(reader: &mut Reader, panels: &[ScenePanel<Spec>]) {
     for (i, panel) in panels.iter().enumerate() {
         let path = join_index("panels", i);
         if panel.axes.kind == PanelKind::Polar {
@@ -302,40 +360,6 @@ fn check_interactive_views(reader: &mut Reader, panels: &[ScenePanel]) {
                 "interactive pages draw θ axes (got \"slope\", expected radians or degrees)",
             );
         }
-    }
-}
-
-/// Reports a scene whose table would exceed [`MAX_POINTS_PER_SCENE`]: curves × uniform samples
-/// plus the points of its data series.
-fn check_points(reader: &mut Reader, sampling: Option<Sampling>, panels: Option<&[ScenePanel]>) {
-    let (Some(sampling), Some(panels)) = (sampling, panels) else {
-        return;
-    };
-    let per_curve = match sampling.for_table() {
-        Sampling::Uniform(n) => n,
-        _ => 0,
-    };
-    let curves: usize = panels.iter().map(|p| p.curves.len()).sum();
-    let data: usize = panels
-        .iter()
-        .flat_map(|p| &p.data)
-        .map(|d| data_points(&d.dataset))
-        .sum();
-    let total = curves.saturating_mul(per_curve).saturating_add(data);
-    if total > MAX_POINTS_PER_SCENE {
-        reader.report(
-            "sampling",
-            format!("too many points in one scene (got {curves} curves × {per_curve} samples + {data} data points = {total}, expected at most {MAX_POINTS_PER_SCENE})"),
-        );
-    }
-}
-
-/// How many points a dataset has.
-fn data_points(dataset: &Dataset) -> usize {
-    match dataset {
-        Dataset::Spectrum { count, .. } => *count,
-        Dataset::Gulbrandsen { r, g, .. } => r.len() * g.len(),
-        Dataset::Table { x, .. } | Dataset::Csv { x, .. } => x.len(),
     }
 }
 
@@ -470,7 +494,7 @@ pub fn check_canvas(canvas: &Canvas) -> Result<(), String> {
     }
 }
 
-fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<ScenePanel>> {
+fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<ScenePanel<Spec>>> {
     let Some(node) = object.get("panels") else {
         reader.report(
             "panels",
@@ -509,7 +533,7 @@ fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<Scene
     (panels.len() == items.len()).then_some(panels)
 }
 
-fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel> {
+fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel<Spec>> {
     let panel = reader.object(node, path, PANEL_KEYS)?;
     let title = reader.string(&panel, "title").unwrap_or_default();
     let legend = reader.boolean(&panel, "legend").unwrap_or(true);
@@ -581,7 +605,7 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
 fn read_transform(
     reader: &mut Reader,
     panel: &reader::Object,
-    curves: &mut [SceneCurve],
+    curves: &mut [SceneCurve<Spec>],
 ) -> Option<Transform> {
     let transform = Transform::from_name(reader.choice(panel, "transform", PANEL_TRANSFORMS)?)?;
     let at = panel.path_of("transform");
@@ -652,7 +676,7 @@ fn read_x_range(
 
 /// Default axis labels of a panel whose first series is `first`, a curve of θ.
 fn default_curve_labels(
-    first: &SceneCurve,
+    first: &SceneCurve<Spec>,
     unit: XUnit,
     transform: Option<Transform>,
 ) -> (String, String) {
@@ -771,8 +795,8 @@ fn read_surface(
 
 /// The series of one panel: curves of θ, then data series.
 struct PanelSeries {
-    curves: Vec<SceneCurve>,
-    data: Vec<SceneData>,
+    curves: Vec<SceneCurve<Spec>>,
+    data: Vec<SceneData<Spec>>,
 }
 
 fn read_series(reader: &mut Reader, panel: &reader::Object) -> Option<PanelSeries> {
@@ -817,7 +841,7 @@ fn read_series(reader: &mut Reader, panel: &reader::Object) -> Option<PanelSerie
 }
 
 /// Expands one curve entry (possibly swept) into `out`.
-fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<SceneCurve>) {
+fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<SceneCurve<Spec>>) {
     if curve::is_difference(node) {
         return sweep::difference_entry(reader, node, path, out);
     }
@@ -847,7 +871,7 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
                 }],
                 varies: false,
             }),
-            // Fitted after the loop, once the other parameters (its fixed keys) are known.
+            // Described after the loop, once the other parameters (its fixed keys) are known.
             Some(n) if sweep::is_fit(n) && fitted.is_none() => {
                 fitted = Some((i, *n));
                 Some(Sweep {
@@ -861,17 +885,29 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
         let position = param_node.map_or(usize::MAX, |n| n.line * 1_000_000 + n.col);
         sweeps.push((position, sweep));
     }
+    // The fitted parameter (if any) and its fits, one per target curve.
+    let mut fits = Vec::new();
     if let Some((i, n)) = fitted {
         let others: Vec<&Sweep> = sweeps.iter().map(|(_, s)| s).collect();
-        let at = join_key(path, resolved.params[i].name);
-        let Some(fit) = sweep::fit(reader, resolved.model, &resolved.params, &others, i, n, &at)
-        else {
+        let Some(found) = sweep::fit(
+            reader,
+            resolved.model,
+            &resolved.params,
+            &others,
+            i,
+            n,
+            path,
+        ) else {
             return;
         };
-        sweeps[i].1 = fit;
+        fits = found;
     }
     let Some(style) = base_style else { return };
-    let count: usize = sweeps.iter().map(|(_, s)| s.values.len()).product();
+    let len = |i: usize| match fitted {
+        Some((free, _)) if free == i => fits.len(),
+        _ => sweeps[i].1.values.len(),
+    };
+    let count: usize = (0..sweeps.len()).map(len).product();
     if count > MAX_CURVES_PER_SCENE {
         reader.report(
             path,
@@ -883,39 +919,54 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
     let mut order: Vec<usize> = (0..sweeps.len()).collect();
     order.sort_by_key(|&i| sweeps[i].0);
     let any_varies = sweeps.iter().any(|(_, s)| s.varies);
+    let free = fitted.map(|(free, _)| free);
     for k in 0..count {
         let mut choice = vec![0; sweeps.len()];
         let mut rest = k;
         for &i in order.iter().rev() {
-            let n = sweeps[i].1.values.len();
-            choice[i] = rest % n;
-            rest /= n;
+            choice[i] = rest % len(i);
+            rest /= len(i);
         }
-        let values: Vec<ParamValue> = sweeps
+        let values: Vec<Option<ParamValue>> = sweeps
             .iter()
             .zip(&choice)
-            .map(|((_, s), &c)| s.values[c].value)
+            .enumerate()
+            .map(|(i, ((_, s), &c))| (free != Some(i)).then(|| s.values[c].value))
             .collect();
-        let curve = match resolved.build(&values, path) {
-            Ok(curve) => curve,
-            Err(problem) => {
-                // One report per offending value, however many combinations it appears in.
-                if !reader.problems.contains(&problem) {
-                    reader.problems.push(problem);
+        let curve = match free {
+            Some(free) => CurveSpec::Fitted(Box::new(fits[choice[free]].clone())),
+            None => {
+                let values: Vec<ParamValue> = values.iter().flatten().copied().collect();
+                match resolved.build(&values, path) {
+                    Ok(curve) => curve,
+                    Err(problem) => {
+                        // One report per offending value, however many combinations it appears in.
+                        if !reader.problems.contains(&problem) {
+                            reader.problems.push(problem);
+                        }
+                        continue;
+                    }
                 }
-                continue;
             }
         };
-        let parts: Vec<&str> = order
-            .iter()
-            .filter(|&&i| !any_varies || sweeps[i].1.varies)
-            .map(|&i| sweeps[i].1.values[choice[i]].label.as_str())
-            .filter(|l| !l.is_empty())
-            .collect();
-        let auto_label = with_family_prefix(&curve, &parts.join(", "));
         let label = match &label_template {
-            Some(template) => fill_template(template, &curve, &resolved.params, &values),
-            None => auto_label,
+            Some(template) => Label::Template {
+                template: template.clone(),
+                values: resolved.params.iter().map(|p| p.name).zip(values).collect(),
+            },
+            None => Label::Auto(
+                order
+                    .iter()
+                    .filter(|&&i| !any_varies || sweeps[i].1.varies)
+                    .filter_map(|&i| match free {
+                        Some(free) if free == i => Some(Part::Fitted),
+                        _ => {
+                            let text = &sweeps[i].1.values[choice[i]].label;
+                            (!text.is_empty()).then(|| Part::Text(text.clone()))
+                        }
+                    })
+                    .collect(),
+            ),
         };
         out.push(SceneCurve {
             curve,
@@ -923,57 +974,6 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
             style: sweep_style(style, entry.get("colour").is_some(), k, count),
         });
     }
-}
-
-/// Prefixes the family's [`legend_prefix`](Family::legend_prefix) where it has one.
-/// Belcour reconstructions also show their `l2_grid` error, to two decimals as the notebook
-/// prints it.
-fn with_family_prefix(curve: &Curve, text: &str) -> String {
-    match curve.model() {
-        Model::Ndf(family) => match family.legend_prefix() {
-            Some(prefix) => format!("{prefix} {text}"),
-            None => text.to_string(),
-        },
-        Model::Fresnel(model) => {
-            let l2 = belcour_l2(curve).map_or(String::new(), |l2| format!(", L2 = {l2:.2}"));
-            format!("{} {text}{l2}", model.name())
-                .trim_end()
-                .to_string()
-        }
-    }
-}
-
-/// The `l2_grid` error of a Belcour reconstruction against the exact Fresnel.
-fn belcour_l2(curve: &Curve) -> Option<f64> {
-    match curve {
-        Curve::Fresnel(Fresnel::Belcour(ior, coefficients)) => {
-            let (eta, kappa) = ior.complex();
-            Some(coefficients.l2_grid(eta, kappa))
-        }
-        _ => None,
-    }
-}
-
-/// Replaces `{param}` in a label template by the parameter's value (`"TS {alpha_ts}"`), and `{l2}`
-/// by a Belcour reconstruction's error (two decimals, as the notebook prints it).
-fn fill_template(
-    template: &str,
-    curve: &Curve,
-    params: &[curve::ParamSpec],
-    values: &[ParamValue],
-) -> String {
-    let mut label = template.to_string();
-    if let Some(l2) = belcour_l2(curve) {
-        label = label.replace("{l2}", &format!("{l2:.2}"));
-    }
-    for (spec, value) in params.iter().zip(values) {
-        let text = match value {
-            ParamValue::Number(v) => curve::pretty(*v),
-            ParamValue::Flag(b) => b.to_string(),
-        };
-        label = label.replace(&format!("{{{}}}", spec.name), &text);
-    }
-    label
 }
 
 /// The style of curve k of an entry's n: its shade of the family colour, unless the entry gives

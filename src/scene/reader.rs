@@ -15,6 +15,8 @@ pub struct Reader {
     /// Folder of the document, against which relative data paths resolve; `None` for documents
     /// not read from disk (the built-in catalogue, arguments).
     pub base_dir: Option<std::path::PathBuf>,
+    /// The fallible work (fits, data files) described so far, in the order met.
+    pub pending: Vec<super::Pending>,
 }
 
 /// An object's members, checked for unknown and duplicate keys.

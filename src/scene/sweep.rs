@@ -3,12 +3,13 @@
 //! Walter et al.'s equivalence α_p = 2/α_b² − 2. A parameter may also be fitted, one value per
 //! target curve (`{"fit": {"target": <curve or sweep>, "by": "peak"}}`), and a curve entry may be a
 //! difference series of two curves or matched sweeps (`{"difference": "minus", "a": …, "b": …}`).
-//! The fitting itself is [`crate::fit`]'s; this module only expands entries into values and curves.
+//! The fitting itself is [`crate::fit`]'s, run by [`crate::resolve`]; this module only expands
+//! entries into values and curve descriptions.
 
 use super::reader::{self, Reader};
-use super::{SceneCurve, default_colour, read_curve_entry, read_style};
-use crate::curve::{self, DiffOp, Model, ParamKind, ParamSpec, ParamValue, symbol};
-use crate::fit::{self, By};
+use super::{Pending, SceneCurve, Spec, default_colour, read_curve_entry, read_style};
+use crate::curve::{self, DiffOp, Fitted, Label, Model, ParamKind, ParamSpec, ParamValue, symbol};
+use crate::fit::By;
 use crate::grid;
 use crate::json::{Node, Value};
 use crate::problem::{join_index, join_key};
@@ -269,11 +270,11 @@ pub fn is_fit(node: &Node) -> bool {
     has_key(node, FIT_KEY)
 }
 
-/// Expands `{"fit": {"target": <curve or sweep>, "by": "peak"|"max"|"l2"}}` (default `peak`) for
-/// parameter `free` of a curve of `model` into one fitted value per target curve, labelled like
-/// `a₁ = 23.4442 (peak fit to α_tr = 0.3)`. The curve's other parameters, `sweeps` (the entry at
-/// `free` is ignored), are the fit's fixed keys and must each have a single value. The target is
-/// expanded like any scene curve entry.
+/// Reads `{"fit": {"target": <curve or sweep>, "by": "peak"|"max"|"l2"}}` (default `peak`), the
+/// node of parameter `free` of the curve entry at `entry_path`, a curve of `model`: one
+/// [`Fitted`] per target curve, each also listed in the reader's pending work. The curve's other
+/// parameters, `sweeps` (the entry at `free` is ignored), are the fit's fixed keys and must each
+/// have a single value. The target is expanded like any scene curve entry. Nothing is fitted here.
 pub fn fit(
     reader: &mut Reader,
     model: Model,
@@ -281,8 +282,10 @@ pub fn fit(
     sweeps: &[&Sweep],
     free: usize,
     node: &Node,
-    path: &str,
-) -> Option<Sweep> {
+    entry_path: &str,
+) -> Option<Vec<Fitted>> {
+    let at = join_key(entry_path, params[free].name);
+    let path = at.as_str();
     let Model::Ndf(family) = model else {
         reader.report(
             path,
@@ -338,37 +341,34 @@ pub fn fit(
     if reader.problems.len() > before {
         return None;
     }
-    let name = params[free].name;
-    let mut values = Vec::with_capacity(targets.len());
-    for target in &targets {
-        match fit::fit(&target.curve, family, &fixed, by) {
-            Ok(f) => values.push(SweepValue {
-                value: ParamValue::Number(f.value),
-                label: format!(
-                    "{} = {} ({} fit to {})",
-                    symbol(name),
-                    crate::curve::pretty(f.value),
-                    by.name(),
-                    target.label
-                ),
-            }),
-            Err(e) => reader.report(
-                path,
-                format!("fit to {}: {}: {}", target.label, e.key, e.message),
-            ),
-        }
-    }
-    (values.len() == targets.len()).then_some(Sweep {
-        values,
-        varies: true,
-    })
+    let fits: Vec<Fitted> = targets
+        .into_iter()
+        .map(|target| Fitted {
+            family,
+            free,
+            fixed: fixed.clone(),
+            by,
+            target: target.curve,
+            target_label: target.label,
+            path: entry_path.to_string(),
+        })
+        .collect();
+    reader
+        .pending
+        .extend(fits.iter().map(|fit| Pending::Fit(Box::new(fit.clone()))));
+    Some(fits)
 }
 
 /// Expands a difference entry `{"difference": "minus"|"ratio", "a": …, "b": …}` at `path` into
 /// `out`: a and b are curve entries (possibly swept) of the same kind, paired element-wise (equal
 /// numbers of curves, or one curve against a sweep). Labels are `<a> − <b>` or `<a> / <b>` unless
 /// the entry's `label` template says otherwise (`{a}` and `{b}` stand for the operands' labels).
-pub fn difference_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<SceneCurve>) {
+pub fn difference_entry(
+    reader: &mut Reader,
+    node: &Node,
+    path: &str,
+    out: &mut Vec<SceneCurve<Spec>>,
+) {
     let (op, a_node, b_node) = match curve::difference_parts(node, path, super::CURVE_EXTRA_KEYS) {
         Ok(parts) => parts,
         Err(problems) => {
@@ -416,13 +416,14 @@ pub fn difference_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut 
                 return;
             }
         };
-        let label = match &template {
-            Some(t) => t.replace("{a}", &x.label).replace("{b}", &y.label),
-            None => format!("{} {sign} {}", x.label, y.label),
-        };
         out.push(SceneCurve {
             curve,
-            label,
+            label: Label::Difference {
+                template: template.clone(),
+                sign,
+                a: Box::new(x.label.clone()),
+                b: Box::new(y.label.clone()),
+            },
             style: super::sweep_style(style, entry.get("colour").is_some(), k, count),
         });
     }

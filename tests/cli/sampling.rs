@@ -72,10 +72,10 @@ fn scene(sampling: &str) -> String {
 fn load(dir: &Path, text: &str) -> Vec<ndfplot::scene::Scene> {
     let path = dir.join("s.json");
     std::fs::write(&path, text).unwrap();
-    source::load_scenes(
+    ndfplot::resolve::scenes(source::load_scenes(
         &source::sources(&[path]).unwrap(),
         CanvasOverride::default(),
-    )
+    ))
     .unwrap()
 }
 
@@ -185,10 +185,10 @@ fn sampling_key_errors_name_the_problem() {
     ] {
         let path = dir.join("s.json");
         std::fs::write(&path, scene(sampling)).unwrap();
-        let error = source::load_scenes(
+        let error = ndfplot::resolve::scenes(source::load_scenes(
             &source::sources(&[path]).unwrap(),
             CanvasOverride::default(),
-        )
+        ))
         .unwrap_err();
         assert!(error.to_string().contains(needle), "{sampling}: {error}");
     }
@@ -338,11 +338,14 @@ const FIT_SLACK_PX: f64 = 0.05;
 /// vertex per sample (clipped).
 fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
     const UNIQUE: &str = "#010203";
-    let scenes = source::load_scenes(&source::sources(&[]).unwrap(), CanvasOverride::default())
-        .unwrap()
-        .into_iter()
-        .filter(|scene| scene.id == id)
-        .collect::<Vec<_>>();
+    let scenes = ndfplot::resolve::scenes(source::load_scenes(
+        &source::sources(&[]).unwrap(),
+        CanvasOverride::default(),
+    ))
+    .unwrap()
+    .into_iter()
+    .filter(|scene| scene.id == id)
+    .collect::<Vec<_>>();
     let scene = &scenes[0];
     let outputs = Outputs {
         drawn: true,

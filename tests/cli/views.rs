@@ -31,7 +31,8 @@ fn panel_curves(transform: &str) -> Vec<Curve> {
         CURVES.join(", ")
     );
     let node = parse_json(&text, "scene").unwrap();
-    let scene = scene::parse(&node, None).unwrap_or_else(|p| panic!("{p:?}"));
+    let spec = scene::parse(&node, None).unwrap_or_else(|p| panic!("{p:?}"));
+    let scene = ndfplot::resolve::scene(spec).unwrap_or_else(|p| panic!("{p:?}"));
     scene.panels[0]
         .curves
         .iter()

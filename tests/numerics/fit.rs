@@ -13,7 +13,8 @@ use ndfplot::ndf::Family;
 const PEAK_FIT_REL_TOL: f64 = 1e-7;
 
 fn parse(text: &str) -> Curve {
-    curve::parse(&ndfplot::json::parse(text).unwrap(), "").unwrap()
+    ndfplot::resolve::curve(&curve::parse(&ndfplot::json::parse(text).unwrap(), "").unwrap())
+        .unwrap()
 }
 
 fn ndf(family: Family, params: &[f64]) -> Curve {

@@ -675,8 +675,7 @@ mod tests {
             (0..n)
                 .map(|i| {
                     let alpha = 0.2 + 0.08 * f64::from(i);
-                    let label =
-                        format!("αp = {:.4} (αb = {alpha:.2})", 2.0 / alpha / alpha - 2.0);
+                    let label = format!("αp = {:.4} (αb = {alpha:.2})", 2.0 / alpha / alpha - 2.0);
                     series(
                         &label,
                         RED,
