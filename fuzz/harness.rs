@@ -9,7 +9,8 @@
 //! which must either be rejected or give a finite value at every θ of [0, π/2], non-negative for
 //! an NDF and within [0, 1] for the exact, Schlick and Lazanyi Fresnel curves.
 
-use ndfplot::curve::{Curve, FresnelModel, Model, ParamKind};
+use ndfplot::curve::{Curve, Model, ParamKind};
+use ndfplot::fresnel::FresnelModel;
 use ndfplot::dataset::Dataset;
 use ndfplot::figure::Figure;
 use ndfplot::output::{self, Format};

@@ -11,7 +11,7 @@
 
 use crate::domain::DomainError;
 use crate::fit::By;
-use crate::fresnel::{Fresnel, Ior, SchlickF0};
+use crate::fresnel::{Fresnel, FresnelModel, Ior, SchlickF0};
 use crate::json::{Node, Value};
 use crate::keys::{self, Accepted};
 use crate::ndf::{Family, Ndf};
@@ -61,7 +61,7 @@ impl Curve {
     pub fn model(&self) -> Model {
         match self {
             Curve::Ndf(d) => Model::Ndf(d.family()),
-            Curve::Fresnel(f) => Model::Fresnel(FresnelModel::of(f)),
+            Curve::Fresnel(f) => Model::Fresnel(FresnelModel::from(f)),
             Curve::Difference { a, .. } => a.model(),
             Curve::Transformed { curve, .. } => curve.model(),
         }
@@ -369,63 +369,6 @@ impl Serialize for ParamValue {
     }
 }
 
-/// The Fresnel models of the curve format.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum FresnelModel {
-    /// Exact complex-IOR Fresnel.
-    Exact,
-    /// Schlick's approximation.
-    Schlick,
-    /// Lazanyi–Schlick.
-    Lazanyi,
-    /// Lazanyi's extra term c(1 − c)⁶ normalized to max 1.
-    LazanyiTerm,
-    /// The four-term Belcour–Bati–Barla reconstruction of a material.
-    Belcour,
-    /// One Belcour–Bati–Barla basis function.
-    Basis,
-    /// The exact Fresnel normalized as the basis training curves: (F − F₀)/(1 − F₀).
-    Normalized,
-}
-
-impl FresnelModel {
-    /// Every Fresnel model.
-    pub const ALL: [FresnelModel; 7] = [
-        FresnelModel::Exact,
-        FresnelModel::Schlick,
-        FresnelModel::Lazanyi,
-        FresnelModel::LazanyiTerm,
-        FresnelModel::Belcour,
-        FresnelModel::Basis,
-        FresnelModel::Normalized,
-    ];
-
-    fn of(f: &Fresnel) -> FresnelModel {
-        match f {
-            Fresnel::Exact(_) => FresnelModel::Exact,
-            Fresnel::Schlick(_) => FresnelModel::Schlick,
-            Fresnel::Lazanyi { .. } => FresnelModel::Lazanyi,
-            Fresnel::LazanyiTerm => FresnelModel::LazanyiTerm,
-            Fresnel::Belcour(..) => FresnelModel::Belcour,
-            Fresnel::Basis(_) => FresnelModel::Basis,
-            Fresnel::Normalized(_) => FresnelModel::Normalized,
-        }
-    }
-
-    /// Canonical name in curve JSON.
-    pub fn name(self) -> &'static str {
-        match self {
-            FresnelModel::Exact => "exact",
-            FresnelModel::Schlick => "schlick",
-            FresnelModel::Lazanyi => "lazanyi",
-            FresnelModel::LazanyiTerm => "lazanyi_term",
-            FresnelModel::Belcour => "belcour",
-            FresnelModel::Basis => "basis",
-            FresnelModel::Normalized => "normalized",
-        }
-    }
-}
-
 /// A curve model: an NDF family or a Fresnel model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Model {
@@ -553,8 +496,7 @@ impl Model {
     pub fn from_key_and_name(key: &str, name: &str) -> Option<Model> {
         match key {
             "ndf" => Family::from_name(name).map(Model::Ndf),
-            _ => FresnelModel::ALL
-                .into_iter()
+            _ => FresnelModel::all()
                 .find(|m| m.name() == name)
                 .map(Model::Fresnel),
         }
@@ -564,7 +506,7 @@ impl Model {
     pub fn names(key: &str) -> Vec<&'static str> {
         match key {
             "ndf" => Family::NAMES.to_vec(),
-            _ => FresnelModel::ALL.iter().map(|m| m.name()).collect(),
+            _ => FresnelModel::all().map(FresnelModel::name).collect(),
         }
     }
 }

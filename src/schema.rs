@@ -1,6 +1,6 @@
 //! The JSON Schema (draft 2020-12) of the scene spec and curve formats, generated from the very key
 //! tables and enums the validator reads with (`scene::*_KEYS`, `Model::signatures()`,
-//! `Family::NAMES`, `FresnelModel::ALL`, …), so that schema and validator cannot drift: a key added
+//! `Family::NAMES`, `FresnelModel::all()`, …), so that schema and validator cannot drift: a key added
 //! to a table without a schema here makes generation panic, which the tests catch.
 //!
 //! The schema describes shapes, types and names (with `additionalProperties: false` wherever the
@@ -10,11 +10,12 @@
 //! file of `eval`, `compare` and `fit` validates against `#/$defs/curve`.
 
 use crate::curve::{
-    DIFFERENCE_KEY, DIFFERENCE_KEYS, DiffOp, FresnelModel, Model, ParamKind, ParamSpec,
-    TRANSFORM_KEY, TRANSFORM_KEYS,
+    DIFFERENCE_KEY, DIFFERENCE_KEYS, DiffOp, Model, ParamKind, ParamSpec, TRANSFORM_KEY,
+    TRANSFORM_KEYS,
 };
 use crate::dataset::{Coefficient, SpectrumQuantity};
 use crate::fit::By;
+use crate::fresnel::FresnelModel;
 use crate::ndf::Family;
 use crate::scene::interactive::{
     INTERACTIVE_KEYS, MAX_POSITIONS_PER_SLIDER, MAX_SLIDERS, PARAM_KEYS, SLIDER_KEY,
@@ -38,7 +39,7 @@ pub fn models() -> Vec<Model> {
     Family::ALL
         .into_iter()
         .map(Model::Ndf)
-        .chain(FresnelModel::ALL.into_iter().map(Model::Fresnel))
+        .chain(FresnelModel::all().map(Model::Fresnel))
         .collect()
 }
 

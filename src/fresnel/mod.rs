@@ -100,8 +100,15 @@ pub enum SchlickF0 {
     Ior(Ior),
 }
 
-/// A Fresnel reflectance curve F(θ).
-#[derive(Debug, Clone, PartialEq)]
+/// A Fresnel reflectance curve F(θ). Its variants, without their values, are the [`FresnelModel`]s of
+/// the curve format, named in snake case (`LazanyiTerm` is `"lazanyi_term"`).
+#[derive(Debug, Clone, PartialEq, strum::EnumDiscriminants)]
+#[strum_discriminants(
+    name(FresnelModel),
+    doc = "A Fresnel model of the curve format: a [`Fresnel`] variant without its values.",
+    derive(Hash, strum::EnumIter, strum::IntoStaticStr),
+    strum(serialize_all = "snake_case")
+)]
 pub enum Fresnel {
     /// The exact complex-index Fresnel (`exact::reflectance`).
     Exact(Ior),
@@ -124,6 +131,18 @@ pub enum Fresnel {
     /// The exact Fresnel normalized as the basis training curves are: (F − F₀)/(1 − F₀), computed
     /// as 1 − (1 − F)/(1 − F₀) without cancellation; 0 where 1 − F₀ underflows to 0.
     Normalized(Ior),
+}
+
+impl FresnelModel {
+    /// Every Fresnel model, in the order of [`Fresnel`]'s variants.
+    pub fn all() -> impl Iterator<Item = FresnelModel> {
+        <FresnelModel as strum::IntoEnumIterator>::iter()
+    }
+
+    /// Canonical name in curve JSON (`"exact"`, `"lazanyi_term"`).
+    pub fn name(self) -> &'static str {
+        self.into()
+    }
 }
 
 impl Fresnel {

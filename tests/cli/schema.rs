@@ -138,11 +138,7 @@ fn every_key_table_equals_the_schema_properties() {
         .iter()
         .map(|n| format!("ndf:{n}"))
         .collect();
-    accepted.extend(
-        ndfplot::curve::FresnelModel::ALL
-            .iter()
-            .map(|m| format!("fresnel:{}", m.name())),
-    );
+    accepted.extend(ndfplot::fresnel::FresnelModel::all().map(|m| format!("fresnel:{}", m.name())));
     assert_eq!(all_names, accepted);
 
     for &kind in data::KINDS {
