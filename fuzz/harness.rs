@@ -10,9 +10,9 @@
 //! an NDF and within [0, 1] for the exact, Schlick and Lazanyi Fresnel curves.
 
 use ndfplot::curve::{Curve, Model, ParamKind};
-use ndfplot::fresnel::FresnelModel;
 use ndfplot::dataset::Dataset;
 use ndfplot::figure::Figure;
+use ndfplot::fresnel::FresnelModel;
 use ndfplot::output::{self, Format};
 use ndfplot::plan::{Outputs, plan};
 use ndfplot::provenance::Provenance;

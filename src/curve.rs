@@ -10,7 +10,6 @@
 //! [`Resolved::build`] per combination.
 
 use crate::domain::DomainError;
-use crate::fit::By;
 use crate::fresnel::{Fresnel, FresnelModel, Ior, SchlickF0};
 use crate::json::{Node, Value};
 use crate::keys::{self, Accepted};
@@ -365,6 +364,46 @@ impl Serialize for ParamValue {
         match *self {
             ParamValue::Number(v) => serializer.serialize_f64(v),
             ParamValue::Flag(b) => serializer.serialize_bool(b),
+        }
+    }
+}
+
+/// How a fit matches its target (`"by"` of a fitted parameter, `fit --by`); [`crate::fit`] carries it out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum By {
+    /// D_fit(0) = D_target(0).
+    Peak,
+    /// max_θ D_fit = max_θ D_target.
+    Max,
+    /// Minimal `l2_projected`.
+    L2,
+}
+
+impl By {
+    /// Every method, in the order shown in messages.
+    pub const ALL: [By; 3] = [By::Peak, By::Max, By::L2];
+
+    /// The method's name (`--by`, scene `"by"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            By::Peak => "peak",
+            By::Max => "max",
+            By::L2 => "l2",
+        }
+    }
+
+    /// Looks a method up by name.
+    pub fn from_name(name: &str) -> Option<By> {
+        By::ALL.into_iter().find(|b| b.name() == name)
+    }
+
+    /// The name of the residual the fit reports (`residual=<x> (<metric>)`): the relative mismatch of
+    /// D(0) (`d0_rel`), of the maxima (`dmax_rel`), or `l2_projected`.
+    pub fn residual_name(self) -> &'static str {
+        match self {
+            By::Peak => "d0_rel",
+            By::Max => "dmax_rel",
+            By::L2 => "l2_projected",
         }
     }
 }

@@ -8,6 +8,7 @@
 //! bracket the minimum by a downhill walk and refine it by golden-section search
 //! ([`crate::metrics::golden_section_max`]). Results are cached per process. No I/O.
 
+pub use crate::curve::By;
 use crate::curve::Curve;
 use crate::domain::{DomainError, Param};
 use crate::math::roots::{RootError, brent, expand_bracket_log};
@@ -48,46 +49,6 @@ const GROWTH: f64 = 1.618_033_988_749_895;
 /// Golden-section tolerance in u for L2 fits: the minimum of a smooth L2 distance is located only to
 /// ~√(1e-12) ≈ 1e-6 relative by quadrature values accurate to `QUAD_REL_TOL`, so 1e-9 resolves all there is.
 const L2_U_TOL: f64 = 1e-9;
-
-/// How a fit matches the target.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum By {
-    /// D_fit(0) = D_target(0).
-    Peak,
-    /// max_θ D_fit = max_θ D_target.
-    Max,
-    /// Minimal `l2_projected`.
-    L2,
-}
-
-impl By {
-    /// Every method, in the order shown in messages.
-    pub const ALL: [By; 3] = [By::Peak, By::Max, By::L2];
-
-    /// The method's name (`--by`, scene `"by"`).
-    pub fn name(self) -> &'static str {
-        match self {
-            By::Peak => "peak",
-            By::Max => "max",
-            By::L2 => "l2",
-        }
-    }
-
-    /// Looks a method up by name.
-    pub fn from_name(name: &str) -> Option<By> {
-        By::ALL.into_iter().find(|b| b.name() == name)
-    }
-
-    /// The name of the residual the fit reports (`residual=<x> (<metric>)`): the relative mismatch of
-    /// D(0) (`d0_rel`), of the maxima (`dmax_rel`), or `l2_projected`.
-    pub fn residual_name(self) -> &'static str {
-        match self {
-            By::Peak => "d0_rel",
-            By::Max => "dmax_rel",
-            By::L2 => "l2_projected",
-        }
-    }
-}
 
 /// Which input a fit problem is about.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -9,12 +9,12 @@
 //! values (Fresnel parameters, sweep sizes, canvas pixels) are the validator's alone. The root validates a scene file; a curve
 //! file of `eval`, `compare` and `fit` validates against `#/$defs/curve`.
 
+use crate::curve::By;
 use crate::curve::{
     DIFFERENCE_KEY, DIFFERENCE_KEYS, DiffOp, Model, ParamKind, ParamSpec, TRANSFORM_KEY,
     TRANSFORM_KEYS,
 };
 use crate::dataset::{Coefficient, SpectrumQuantity};
-use crate::fit::By;
 use crate::fresnel::FresnelModel;
 use crate::ndf::Family;
 use crate::scene::interactive::{

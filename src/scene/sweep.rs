@@ -8,8 +8,8 @@
 
 use super::reader::{self, Reader};
 use super::{Pending, SceneCurve, Spec, default_colour, read_curve_entry, read_style};
+use crate::curve::By;
 use crate::curve::{self, DiffOp, Fitted, Label, Model, ParamKind, ParamSpec, ParamValue, symbol};
-use crate::fit::By;
 use crate::grid;
 use crate::json::{Node, Value};
 use crate::problem::{join_index, join_key};
