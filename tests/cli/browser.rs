@@ -147,7 +147,8 @@ fn moving_a_slider_redraws_values_equal_to_eval_at_the_new_position() {
     // One slider through a mapping: Beckmann α_b and Phong at α_p = 2/α_b² − 2.
     let report = drive("beckmann-vs-phong-interactive");
     let alpha_b = report["after"]["params"]["alpha_b"].as_f64().unwrap();
-    assert_eq!(report["printed"], format!("α_b = {alpha_b}"));
+    // The readout is typeset: `α_b` shows as α with a subscript b, whose text is "αb".
+    assert_eq!(report["printed"], format!("αb = {alpha_b}"));
     let alpha_p = phong_from_beckmann(alpha_b).unwrap();
     assert_eq!(
         curves(&report),
