@@ -8,11 +8,101 @@
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Rgb(pub u8, pub u8, pub u8);
 
+/// Largest relative luminance of a curve on a white page: the WCAG contrast (1 + 0.05)/(L + 0.05) is then
+/// at least 3.0 (L ≤ 0.30), with a margin for the rounding of the channels.
+pub const MAX_LUMINANCE_ON_WHITE: f64 = 0.29;
+/// CIE lightness L* of the darkest and of the lightest shade of a sweep on a white page: the lightest has
+/// [`MAX_LUMINANCE_ON_WHITE`] (L* ≈ 60.7), the darkest is still a colour rather than black.
+pub const SWEEP_LIGHTNESS: (f64, f64) = (27.0, 60.5);
+/// Mixing steps searched when a colour is given a luminance: 1/1024 moves a channel by at most a
+/// quarter level, so the channel rounding decides the result.
+const MIX_STEPS: u32 = 1024;
+
 impl Rgb {
+    /// White.
+    pub const WHITE: Rgb = Rgb(255, 255, 255);
+    /// Black.
+    pub const BLACK: Rgb = Rgb(0, 0, 0);
+
     /// Builds a colour from `0xRRGGBB`.
     pub fn from_hex(hex: u32) -> Rgb {
         Rgb((hex >> 16) as u8, (hex >> 8) as u8, hex as u8)
     }
+
+    /// WCAG 2 relative luminance: 0.2126 R + 0.7152 G + 0.0722 B of the linearised sRGB channels.
+    pub fn luminance(self) -> f64 {
+        let linear = |c: u8| {
+            let c = f64::from(c) / 255.0;
+            if c <= 0.04045 {
+                c / 12.92
+            } else {
+                ((c + 0.055) / 1.055).powf(2.4)
+            }
+        };
+        0.2126 * linear(self.0) + 0.7152 * linear(self.1) + 0.0722 * linear(self.2)
+    }
+
+    /// WCAG 2 contrast ratio with `other`: (L₁ + 0.05)/(L₂ + 0.05), the lighter over the darker.
+    pub fn contrast(self, other: Rgb) -> f64 {
+        let (a, b) = (self.luminance(), other.luminance());
+        (a.max(b) + 0.05) / (a.min(b) + 0.05)
+    }
+
+    /// This colour mixed towards `target` by `t` ∈ [0, 1], each channel rounded.
+    pub fn mix(self, target: Rgb, t: f64) -> Rgb {
+        let channel =
+            |a: u8, b: u8| (f64::from(a) + t * (f64::from(b) - f64::from(a))).round() as u8;
+        Rgb(
+            channel(self.0, target.0),
+            channel(self.1, target.1),
+            channel(self.2, target.2),
+        )
+    }
+
+    /// The colour of this hue, mixed towards black or towards white, whose luminance is the first to
+    /// reach `luminance` from this side (darkening: at most it; lightening: at least it).
+    pub fn with_luminance(self, luminance: f64) -> Rgb {
+        let own = self.luminance();
+        let darker = luminance < own;
+        let target = if darker { Rgb::BLACK } else { Rgb::WHITE };
+        (0..=MIX_STEPS)
+            .map(|step| self.mix(target, f64::from(step) / f64::from(MIX_STEPS)))
+            .find(|c| {
+                if darker {
+                    c.luminance() <= luminance
+                } else {
+                    c.luminance() >= luminance
+                }
+            })
+            .unwrap_or(target)
+    }
+}
+
+/// CIE lightness L* (0 black … 100 white) of relative luminance `y`.
+pub fn lightness(y: f64) -> f64 {
+    if y > 216.0 / 24389.0 {
+        116.0 * y.cbrt() - 16.0
+    } else {
+        y * 24389.0 / 27.0
+    }
+}
+
+/// Relative luminance of CIE lightness `l` (the inverse of [`lightness`]).
+pub fn luminance_of_lightness(l: f64) -> f64 {
+    if l > 8.0 {
+        ((l + 16.0) / 116.0).powi(3)
+    } else {
+        l * 27.0 / 24389.0
+    }
+}
+
+/// The k-th of n shades of a hue, darker (k = 0) to lighter, evenly spaced in CIE lightness over
+/// [`SWEEP_LIGHTNESS`]: the curves of one sweep keep their hue, stay apart in the legend, and each
+/// has at least 3:1 contrast on a white page ([`MAX_LUMINANCE_ON_WHITE`]).
+pub fn shade(base: Rgb, k: usize, n: usize) -> Rgb {
+    let (dark, light) = SWEEP_LIGHTNESS;
+    let l = dark + (light - dark) * k as f64 / (n - 1).max(1) as f64;
+    base.with_luminance(luminance_of_lightness(l))
 }
 
 /// Line pattern of a series.
@@ -158,5 +248,47 @@ impl Axes {
             XUnit::Plain => (0.0, std::f64::consts::FRAC_PI_2),
             _ => self.x_range.unwrap_or((0.0, std::f64::consts::FRAC_PI_2)),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ndf::Family;
+
+    #[test]
+    fn sweep_shades_have_3_to_1_contrast_on_white_and_rise_in_lightness() {
+        let bases = Family::ALL
+            .map(|f| Rgb::from_hex(f.colour()))
+            .into_iter()
+            .chain([0xD33682, 0x268BD2, 0xFFFF00, 0xFFFFFF, 0x000000].map(Rgb::from_hex));
+        for base in bases {
+            for n in 2..=12 {
+                let shades: Vec<Rgb> = (0..n).map(|k| shade(base, k, n)).collect();
+                for (k, c) in shades.iter().enumerate() {
+                    assert!(c.contrast(Rgb::WHITE) >= 3.0, "{base:?} {k}/{n}: {c:?}");
+                }
+                for pair in shades.windows(2) {
+                    let (a, b) = (
+                        lightness(pair[0].luminance()),
+                        lightness(pair[1].luminance()),
+                    );
+                    assert!(b > a + 1.0, "{base:?} n = {n}: {a} then {b}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn lightness_and_luminance_are_inverse_and_contrast_is_symmetric() {
+        for l in [0.0, 5.0, 8.0, 27.0, 60.5, 100.0] {
+            assert!(
+                (lightness(luminance_of_lightness(l)) - l).abs() < 1e-9,
+                "{l}"
+            );
+        }
+        assert!((Rgb::WHITE.contrast(Rgb::BLACK) - 21.0).abs() < 1e-9);
+        let (a, b) = (Rgb::from_hex(0x849900), Rgb::from_hex(0x2689D1));
+        assert_eq!(a.contrast(b), b.contrast(a));
     }
 }

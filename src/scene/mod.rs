@@ -19,7 +19,7 @@ use crate::curve::{self, Curve, CurveSpec, Fitted, Label, Model, ParamValue, Par
 use crate::dataset::Dataset;
 use crate::json::{Node, Value};
 use crate::layout;
-use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
+use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale, shade};
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::transform::Transform;
 use reader::Reader;
@@ -971,15 +971,15 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
         out.push(SceneCurve {
             curve,
             label,
-            style: sweep_style(style, entry.get("colour").is_some(), k, count),
+            style: sweep_style(style, k, count),
         });
     }
 }
 
-/// The style of curve k of an entry's n: its shade of the family colour, unless the entry gives
-/// its own colour or shows a single curve.
-fn sweep_style(style: Style, colour_given: bool, k: usize, n: usize) -> Style {
-    if colour_given || n <= 1 {
+/// The style of curve k of an entry's n: its shade of the entry's colour (the family's, or the one the
+/// entry gives), unless the entry shows a single curve.
+fn sweep_style(style: Style, k: usize, n: usize) -> Style {
+    if n <= 1 {
         style
     } else {
         Style {
@@ -987,23 +987,6 @@ fn sweep_style(style: Style, colour_given: bool, k: usize, n: usize) -> Style {
             ..style
         }
     }
-}
-
-/// The k-th of n shades of a colour, from darker (k = 0) to lighter, so that the curves of one
-/// sweep keep their family hue yet stay distinguishable in the legend.
-pub fn shade(base: Rgb, k: usize, n: usize) -> Rgb {
-    // t runs from −0.35 (mixed 35 % toward black) to +0.45 (45 % toward white).
-    let t = -0.35 + 0.8 * k as f64 / (n - 1).max(1) as f64;
-    let mix = |c: u8| {
-        let c = f64::from(c);
-        let v = if t < 0.0 {
-            c * (1.0 + t)
-        } else {
-            c + (255.0 - c) * t
-        };
-        v.round().clamp(0.0, 255.0) as u8
-    };
-    Rgb(mix(base.0), mix(base.1), mix(base.2))
 }
 
 fn default_colour(model: Model) -> Rgb {

@@ -424,7 +424,7 @@ pub fn difference_entry(
                 a: Box::new(x.label.clone()),
                 b: Box::new(y.label.clone()),
             },
-            style: super::sweep_style(style, entry.get("colour").is_some(), k, count),
+            style: super::sweep_style(style, k, count),
         });
     }
 }

@@ -26,6 +26,114 @@ pub(super) const LONE_BAR_FRACTION: f64 = 0.05;
 pub(super) const X_TICK_SPACING_EM: f64 = 4.0;
 pub(super) const Y_TICK_SPACING_EM: f64 = 3.0;
 
+/// What a 2D panel of a grid asks of its row and column: the tick-label areas of its frame and
+/// the height of the band below the plots its legend needs when it fits inside no plot area.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Needs {
+    /// Height of the x tick-label area, device pixels.
+    pub(super) x_area: u32,
+    /// Width of the y tick-label area, device pixels.
+    pub(super) y_area: u32,
+    /// Height of the legend band below the plot, device pixels; 0 when the legend fits inside.
+    pub(super) band: f64,
+}
+
+/// What the panels of a grid share, so that their plot areas line up: the band below every plot
+/// of the row and the least tick-label areas (the row's tallest x area, the grid's widest y area).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Shared {
+    /// The row's legend band height, device pixels (0 for none).
+    pub(super) band: f64,
+    /// Least x and y tick-label areas, device pixels.
+    pub(super) areas: (u32, u32),
+}
+
+/// What `panel`, drawn alone in `area`, needs of a grid ([`Needs`]): its legend goes into the
+/// row's band when it fits inside no plot area, and the frame is measured with that band taken.
+pub(super) fn needs<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    panel: &Panel,
+    looks: &[Look],
+    m: &Metrics,
+) -> Result<Needs, PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let legend = Legend::of_panel(area, panel, looks, |s| Sample::of(s.style.mark), m)?;
+    let (width, height) = area.dim_in_pixel();
+    let full = Frame::fit(area, (width, height), panel, m, (0, 0))?;
+    let band = match &legend {
+        Some(legend)
+            if legend
+                .inside(full.plot_f(), &covered(panel, &full, m), m)
+                .is_none() =>
+        {
+            legend
+                .below((f64::from(width), f64::from(height)), m)
+                .strip
+                .1
+        }
+        _ => 0.0,
+    };
+    let chart_h = height.saturating_sub(band.ceil() as u32).max(1);
+    let frame = Frame::fit(area, (width, chart_h), panel, m, (0, 0))?;
+    Ok(Needs {
+        x_area: frame.x_area,
+        y_area: frame.y_area,
+        band,
+    })
+}
+
+/// Draws a 2D panel of a grid: the chart above the row's band with the shared label areas, the
+/// legend inside the plot area where it fits, else centred in the band under the plot.
+pub(super) fn draw_cartesian_shared<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    panel: &Panel,
+    looks: &[Look],
+    shared: Shared,
+    m: &Metrics,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let legend = Legend::of_panel(area, panel, looks, |s| Sample::of(s.style.mark), m)?;
+    let (width, height) = area.dim_in_pixel();
+    let chart_h = height.saturating_sub(shared.band.ceil() as u32).max(1);
+    let chart_area = if shared.band > 0.0 {
+        area.split_vertically(chart_h).0
+    } else {
+        area.clone()
+    };
+    let frame = Frame::fit(&chart_area, (width, chart_h), panel, m, shared.areas)?;
+    let plot = draw_chart(&chart_area, panel, looks, &frame, m)?;
+    let Some(legend) = legend else {
+        return Ok(());
+    };
+    let (pw, ph) = plot.dim_in_pixel();
+    let covered = covered(
+        panel,
+        &Frame {
+            plot: (pw, ph),
+            ..frame.clone()
+        },
+        m,
+    );
+    if shared.band == 0.0 || legend.inside(frame.plot_f(), &covered, m).is_some() {
+        return legend.draw_over(&plot, &covered, m);
+    }
+    let dims = (f64::from(width), f64::from(height));
+    let setting = legend.below(dims, m).setting;
+    let (box_w, _) = legend.size(setting, m);
+    let inset = Legend::inset(m);
+    let (left, _) = frame.origin(m);
+    let (plot_w, _) = frame.plot_f();
+    let at = (
+        (left + (plot_w - box_w) / 2.0).clamp(inset, (dims.0 - inset - box_w).max(inset)),
+        f64::from(chart_h) + inset,
+    );
+    legend.draw(area, at, setting, m)
+}
+
 /// Draws a 2D panel: axes, each series in its mark and look, legend (inside the plot area
 /// or beside or below it, by the rule of [`super::legend`]).
 pub(super) fn draw_cartesian<DB: DrawingBackend>(
@@ -39,7 +147,7 @@ where
 {
     let legend = Legend::of_panel(area, panel, looks, |s| Sample::of(s.style.mark), m)?;
     let (width, height) = area.dim_in_pixel();
-    let full = Frame::fit(area, (width, height), panel, m)?;
+    let full = Frame::fit(area, (width, height), panel, m, (0, 0))?;
     let outside = match &legend {
         Some(legend)
             if legend
@@ -58,7 +166,7 @@ where
                 Side::Right => area.split_horizontally(width - strip.0.ceil() as u32).0,
                 Side::Below => area.split_vertically(height - strip.1.ceil() as u32).0,
             };
-            let frame = Frame::fit(&chart_area, chart_area.dim_in_pixel(), panel, m)?;
+            let frame = Frame::fit(&chart_area, chart_area.dim_in_pixel(), panel, m, (0, 0))?;
             (chart_area, frame)
         }
     };
@@ -132,6 +240,7 @@ impl Frame {
         (width, height): (u32, u32),
         panel: &Panel,
         m: &Metrics,
+        (min_x_area, min_y_area): (u32, u32),
     ) -> Result<Frame, PlotError>
     where
         DB::ErrorType: 'static,
@@ -143,7 +252,7 @@ impl Frame {
             .map_err(draw_err)?;
         let (tick_len, label_gap) = (m.px(TICK_EM), m.px(LABEL_GAP_EM));
         let (top, right, side) = margins(m);
-        let x_area = 2 * tick_len + tick_h + label_gap + label_h;
+        let x_area = (2 * tick_len + tick_h + label_gap + label_h).max(min_x_area);
         let plot_h = height.saturating_sub(top + side + x_area).max(1);
         let y = Axis::y(panel, f64::from(plot_h) / (Y_TICK_SPACING_EM * m.unit));
         let mut widest = 0;
@@ -153,7 +262,7 @@ impl Frame {
                 .map_err(draw_err)?;
             widest = widest.max(w);
         }
-        let y_area = 2 * tick_len + widest + label_gap + label_h;
+        let y_area = (2 * tick_len + widest + label_gap + label_h).max(min_y_area);
         let plot_w = width.saturating_sub(side + right + y_area).max(1);
         let x = Axis::x(panel, f64::from(plot_w) / (X_TICK_SPACING_EM * m.unit));
         Ok(Frame {

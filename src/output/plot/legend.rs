@@ -203,6 +203,13 @@ impl<'a> Legend<'a> {
         choose_outside(area, Self::inset(m), n, |s| self.size(s, m), score)
     }
 
+    /// The legend below a plot in an `area` of device pixels, as a row of a grid reserves it: as many
+    /// columns as fit the width, at the largest scale whose box fits the height ([`choose_outside`]
+    /// restricted to its strip below).
+    pub(super) fn below(&self, area: (f64, f64), m: &Metrics) -> Outside {
+        self.outside(area, m, |w, h| (w >= area.0).then_some(h))
+    }
+
     /// Draws the legend over `area` where it hides the least of the `covered` curves (area
     /// pixels): at the full setting when the box fits the area with its inset, else in the
     /// setting [`choose_outside`] finds for the whole area.

@@ -43,7 +43,7 @@ use super::plot3d::View;
 use crate::figure::{Figure, Panel};
 use crate::layout::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
 use crate::look::PanelKind;
-use cartesian::draw_cartesian;
+use cartesian::{Needs, Shared, draw_cartesian, draw_cartesian_shared};
 use encode::{MAX_DEVICE_PIXELS, device_size, downsample, encode_png, finish_svg};
 use polar::draw_polar;
 use style::{EM_PER_SIZE, Metrics, ensure_font};
@@ -187,28 +187,93 @@ where
         palette: theme::palette(figure.theme),
     };
     root.fill(&m.palette.background).map_err(draw_err)?;
-    let body = titled(root, &figure.title, FIGURE_TITLE_EM, &m)?;
+    let body = titled(root, &figure.title, FIGURE_TITLE_EM, 0, &m)?;
     let cells = body.split_evenly((rows, cols));
-    for ((panel, looks), cell) in figure.panels.iter().zip(theme::looks(figure)).zip(cells) {
-        draw_panel(&cell, panel, &looks, &m)?;
+    let looks = theme::looks(figure);
+    let layout = grid_layout(&cells, figure, &looks, cols, &m)?;
+    for (((panel, looks), cell), place) in figure.panels.iter().zip(&looks).zip(&cells).zip(layout)
+    {
+        draw_panel(cell, panel, looks, place, &m)?;
     }
     root.present().map_err(draw_err)
 }
 
-/// Draws `title` (`size` base text sizes) centred at the top of `area`, if not empty, and
-/// returns the area below it. A title wider than the area less its padding is shrunk or
-/// wrapped ([`fit_text`]), never clipped.
-fn titled<DB: DrawingBackend>(
+/// The layout every panel of a grid shares with its row and column: the row's title band (the
+/// tallest title of the row, so that the plot areas start level) and, for the 2D panels of a
+/// grid of more than one panel, their [`Shared`] band and label areas, so that plot areas of a
+/// row have one height and top and those of the grid one width and left edge. A single panel
+/// keeps its own layout (its legend may then also go beside the plot).
+fn grid_layout<DB: DrawingBackend>(
+    cells: &[DrawingArea<DB, Shift>],
+    figure: &Figure,
+    looks: &[Vec<Look>],
+    cols: usize,
+    m: &Metrics,
+) -> Result<Vec<(i32, Option<Shared>)>, PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let n = figure.panels.len();
+    let mut titles = Vec::with_capacity(n);
+    for (panel, cell) in figure.panels.iter().zip(cells) {
+        titles.push(title_block(cell, &panel.axes.title, PANEL_TITLE_EM, m)?.2);
+    }
+    let row_of = |i: usize| i / cols;
+    let rows = n.div_ceil(cols);
+    let row_title: Vec<i32> = (0..rows)
+        .map(|r| {
+            (0..n)
+                .filter(|&i| row_of(i) == r)
+                .map(|i| titles[i])
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let mut needs: Vec<Option<Needs>> = Vec::with_capacity(n);
+    for (i, (panel, cell)) in figure.panels.iter().zip(cells).enumerate() {
+        let cartesian = n > 1 && panel.axes.kind == PanelKind::Cartesian;
+        needs.push(if cartesian {
+            let area = cell.split_vertically(row_title[row_of(i)]).1;
+            Some(cartesian::needs(&area, panel, &looks[i], m)?)
+        } else {
+            None
+        });
+    }
+    let y_area = needs.iter().flatten().map(|d| d.y_area).max().unwrap_or(0);
+    let row_max = |r: usize, f: &dyn Fn(&Needs) -> f64| {
+        needs
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| row_of(*i) == r)
+            .filter_map(|(_, d)| d.as_ref().map(f))
+            .fold(0.0, f64::max)
+    };
+    Ok((0..n)
+        .map(|i| {
+            let r = row_of(i);
+            let shared = needs[i].map(|_| Shared {
+                band: row_max(r, &|d| d.band),
+                areas: (row_max(r, &|d| f64::from(d.x_area)) as u32, y_area),
+            });
+            (row_title[r], shared)
+        })
+        .collect())
+}
+
+/// How `title` (`size` base text sizes) is set at the top of `area`: the size and lines it fits
+/// the area's width at ([`fit_text`]) and the height of the band it takes, padding included; an
+/// empty title takes none.
+fn title_block<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
     size: f64,
     m: &Metrics,
-) -> Result<DrawingArea<DB, Shift>, PlotError>
+) -> Result<(f64, Vec<String>, i32), PlotError>
 where
     DB::ErrorType: 'static,
 {
     if title.is_empty() {
-        return Ok(area.clone());
+        return Ok((size, Vec::new(), 0));
     }
     let pad = f64::from(m.px(0.5));
     let (width, _) = area.dim_in_pixel();
@@ -217,6 +282,39 @@ where
     let style = m.font(size);
     // plotters' raster text puts the baseline size/2 below a top anchor, so ascenders rise
     // ≈0.3 × size above it (ascent 1901/2384 of the size for DejaVu Sans): start that much lower.
+    let mut bottom = (pad + 0.3 * size * m.unit).round() as i32;
+    for (i, line) in lines.iter().enumerate() {
+        let (_, text_h) = area.estimate_text_size(line, &style).map_err(draw_err)?;
+        bottom += text_h as i32;
+        if i + 1 < lines.len() {
+            bottom += m.px(LINE_GAP_EM * size) as i32;
+        }
+    }
+    Ok((size, lines, bottom + pad as i32))
+}
+
+/// Draws `title` (`size` base text sizes) centred at the top of `area`, if not empty, and
+/// returns the area below its band, at least `min_band` pixels down (so that the titles of a
+/// row end level). A title wider than the area less its padding is shrunk or wrapped
+/// ([`fit_text`]), never clipped.
+fn titled<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    title: &str,
+    size: f64,
+    min_band: i32,
+    m: &Metrics,
+) -> Result<DrawingArea<DB, Shift>, PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let (size, lines, band) = title_block(area, title, size, m)?;
+    let band = band.max(min_band);
+    if band == 0 {
+        return Ok(area.clone());
+    }
+    let pad = f64::from(m.px(0.5));
+    let (width, _) = area.dim_in_pixel();
+    let style = m.font(size);
     let mut top = (pad + 0.3 * size * m.unit).round() as i32;
     let centred = style.pos(Pos::new(HPos::Center, VPos::Top));
     for (i, line) in lines.iter().enumerate() {
@@ -232,29 +330,37 @@ where
             top += m.px(LINE_GAP_EM * size) as i32;
         }
     }
-    Ok(area.split_vertically(top + pad as i32).1)
+    Ok(area.split_vertically(band).1)
 }
 
-/// Draws one panel (title, axes, series in their `looks`, legend) into its grid cell.
+/// Draws one panel (title, axes, series in their `looks`, legend) into its grid cell, its title
+/// band at least `title_band` pixels and, for a 2D panel of a grid, what its row and column share.
 fn draw_panel<DB: DrawingBackend>(
     cell: &DrawingArea<DB, Shift>,
     panel: &Panel,
     looks: &[Look],
+    (title_band, shared): (i32, Option<Shared>),
     m: &Metrics,
 ) -> Result<(), PlotError>
 where
     DB::ErrorType: 'static,
 {
-    let area = titled(cell, &panel.axes.title, PANEL_TITLE_EM, m)?;
-    match &panel.axes.kind {
-        PanelKind::Cartesian => draw_cartesian(&area, panel, looks, m),
-        PanelKind::Polar => draw_polar(&area, panel, looks, m),
-        PanelKind::Surface {
-            z_label,
-            z_range,
-            elevation_deg,
-            azimuth_deg,
-        } => {
+    let area = titled(cell, &panel.axes.title, PANEL_TITLE_EM, title_band, m)?;
+    match (&panel.axes.kind, shared) {
+        (PanelKind::Cartesian, Some(shared)) => {
+            draw_cartesian_shared(&area, panel, looks, shared, m)
+        }
+        (PanelKind::Cartesian, None) => draw_cartesian(&area, panel, looks, m),
+        (PanelKind::Polar, _) => draw_polar(&area, panel, looks, m),
+        (
+            PanelKind::Surface {
+                z_label,
+                z_range,
+                elevation_deg,
+                azimuth_deg,
+            },
+            _,
+        ) => {
             let view = View::new(*elevation_deg, *azimuth_deg);
             draw_surface(&area, panel, looks, (z_label, *z_range), view, m)
         }
@@ -377,7 +483,7 @@ mod tests {
         let (width, height, pixels) = decode(&png(&sample()).unwrap());
         assert_eq!((width, height), (800, 500));
         let has = |[r, g, b]: [u8; 3]| pixels.chunks_exact(3).any(|p| p == [r, g, b]);
-        assert!(has([0xFF, 0x99, 0x00]) && has([0x26, 0x89, 0xD1]) && has([0xDB, 0x2E, 0x2E]));
+        assert!(has([0xC7, 0x6A, 0x00]) && has([0x26, 0x89, 0xD1]) && has([0xDB, 0x2E, 0x2E]));
     }
 
     #[test]
@@ -459,8 +565,11 @@ mod tests {
             ..sample()
         };
         let text = String::from_utf8(svg(&blind).unwrap()).unwrap();
-        // RED, BLUE, ORANGE in order of appearance: blue, vermillion, bluish green.
-        for hex in [0x0072B2, 0xD55E00, 0x009E73] {
+        // RED, BLUE, ORANGE in order of appearance: blue, vermillion, bluish green (darkened a
+        // little for 3:1 contrast on white).
+        let green = theme::on_white(crate::look::Rgb::from_hex(0x009E73));
+        let green = u32::from(green.0) << 16 | u32::from(green.1) << 8 | u32::from(green.2);
+        for hex in [0x0072B2, 0xD55E00, green] {
             assert!(polylines_in(&text, hex) > 0, "{hex:06X}");
         }
         for hex in [RED, BLUE, ORANGE] {
@@ -535,7 +644,7 @@ mod tests {
         let (width, height, pixels) = decode(&png(&figure).unwrap());
         assert_eq!((width, height), (2700, 900));
         let has = |[r, g, b]: [u8; 3]| pixels.chunks_exact(3).any(|p| p == [r, g, b]);
-        assert!(has([0x1F, 0x77, 0xB4]) && has([0xFF, 0x99, 0x00]) && has([0, 0, 0]));
+        assert!(has([0x1F, 0x77, 0xB4]) && has([0xC7, 0x6A, 0x00]) && has([0, 0, 0]));
     }
 
     #[test]

@@ -1,5 +1,6 @@
 //! Themes: the page colours of a figure and the colour and line pattern each series is drawn
-//! in. [`Theme::Notebook`] keeps every spec colour and pattern; [`Theme::ColourBlind`] maps the
+//! in. [`Theme::Notebook`] keeps every spec pattern and colour, darkening only colours too light
+//! for 3:1 contrast on its white page; [`Theme::ColourBlind`] maps the
 //! figure's distinct colours onto pairs of an Okabe–Ito colour and a line pattern, no two alike;
 //! [`Theme::Dark`] lifts every colour above a luminance floor, keeping the order of a sweep's shades.
 
@@ -7,7 +8,7 @@ use plotters::style::RGBColor;
 
 use crate::figure::{Figure, Series};
 
-use crate::look::{Dash, Rgb, Theme};
+use crate::look::{Dash, MAX_LUMINANCE_ON_WHITE, Rgb, Theme};
 
 /// The colours of everything that is not a series.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -76,11 +77,6 @@ const PATTERN_CYCLE: [Pattern; 4] = [
 /// Least relative luminance of a series colour on the dark background: (0.35 + 0.05) /
 /// (L(#16181C) + 0.05) ≈ 6.8, above WCAG's 4.5:1 for text, so thin curves stay clear.
 const DARK_MIN_LUMINANCE: f64 = 0.35;
-/// Steps of the mix towards white tried when lightening a colour (the first that is light
-/// enough is kept): 1/256 changes a channel by at most one level, fine enough that the shades
-/// of a sweep stay apart.
-const LIGHTEN_STEPS: u32 = 256;
-
 /// How a line is stroked.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Pattern {
@@ -123,7 +119,7 @@ pub(super) fn palette(theme: Theme) -> &'static Palette {
 
 /// The look of every series of `figure` under its theme, per panel and series.
 ///
-/// Notebook: the spec's colour and dash. Colour-blind: the k-th distinct spec colour in order
+/// Notebook: the spec's colour ([`on_white`]) and dash. Colour-blind: the k-th distinct spec colour in order
 /// of first appearance across the figure becomes `OKABE_ITO[k mod 8]` and, unless the series
 /// has a dash of its own, `PATTERN_CYCLE[(k + ⌊k/8⌋) mod 4]`: the patterns vary among the first
 /// eight colours too, and colour k + 8j differs from colour k in pattern, so the first 32
@@ -144,11 +140,14 @@ pub(super) fn looks(figure: &Figure) -> Vec<Vec<Look>> {
             pattern: s.style.dash.into(),
         };
         match figure.theme {
-            Theme::Notebook => own,
+            Theme::Notebook => Look {
+                colour: on_white(own.colour),
+                ..own
+            },
             Theme::ColourBlind => {
                 let k = rank(s.style.colour);
                 Look {
-                    colour: Rgb::from_hex(OKABE_ITO[k % OKABE_ITO.len()]),
+                    colour: on_white(Rgb::from_hex(OKABE_ITO[k % OKABE_ITO.len()])),
                     pattern: match s.style.dash {
                         Dash::Solid => {
                             PATTERN_CYCLE[(k + k / OKABE_ITO.len()) % PATTERN_CYCLE.len()]
@@ -170,6 +169,34 @@ pub(super) fn looks(figure: &Figure) -> Vec<Vec<Look>> {
         .collect()
 }
 
+/// Luminance from which colours on the white page are compressed towards
+/// [`MAX_LUMINANCE_ON_WHITE`] rather than kept.
+const WHITE_PAGE_KNEE: f64 = 0.25;
+
+/// The relative luminance a colour of luminance `l` is given on the white page: `l` up to
+/// [`WHITE_PAGE_KNEE`], above it K + (M − K)(1 − e^{−(l − K)/(M − K)}) with M =
+/// [`MAX_LUMINANCE_ON_WHITE`]: continuous, strictly increasing, below M, so every colour has 3:1
+/// contrast on white and lighter colours stay lighter.
+fn white_page_luminance(l: f64) -> f64 {
+    let (knee, max) = (WHITE_PAGE_KNEE, MAX_LUMINANCE_ON_WHITE);
+    if l <= knee {
+        l
+    } else {
+        knee + (max - knee) * (1.0 - (-(l - knee) / (max - knee)).exp())
+    }
+}
+
+/// `colour` darkened to [`white_page_luminance`] of its own where that is lower, keeping its hue.
+pub(super) fn on_white(colour: Rgb) -> Rgb {
+    let l = colour.luminance();
+    let target = white_page_luminance(l);
+    if target < l {
+        colour.with_luminance(target)
+    } else {
+        colour
+    }
+}
+
 /// The relative luminance a colour of luminance `l` is given on the dark background:
 /// L_min + (1 − L_min) · l with L_min = [`DARK_MIN_LUMINANCE`]. Every colour clears the floor,
 /// and the map is strictly increasing, so the dark-to-light shades of a sweep stay in order and
@@ -178,32 +205,9 @@ fn dark_luminance(l: f64) -> f64 {
     DARK_MIN_LUMINANCE + (1.0 - DARK_MIN_LUMINANCE) * l
 }
 
-/// `colour` mixed towards white in steps of 1/[`LIGHTEN_STEPS`] until its relative luminance
-/// reaches [`dark_luminance`] of its own; white when even that is short of it.
+/// `colour` lightened (mixed towards white) to [`dark_luminance`] of its own.
 fn lighten(colour: Rgb) -> Rgb {
-    let target = dark_luminance(luminance(colour));
-    (0..=LIGHTEN_STEPS)
-        .map(|step| {
-            let t = f64::from(step) / f64::from(LIGHTEN_STEPS);
-            let mix = |c: u8| (f64::from(c) + t * (255.0 - f64::from(c))).round() as u8;
-            Rgb(mix(colour.0), mix(colour.1), mix(colour.2))
-        })
-        .find(|&c| luminance(c) >= target)
-        .unwrap_or(Rgb(255, 255, 255))
-}
-
-/// WCAG 2 relative luminance of an sRGB colour: 0.2126 R + 0.7152 G + 0.0722 B of the
-/// linearised channels.
-fn luminance(Rgb(r, g, b): Rgb) -> f64 {
-    let linear = |c: u8| {
-        let c = f64::from(c) / 255.0;
-        if c <= 0.04045 {
-            c / 12.92
-        } else {
-            ((c + 0.055) / 1.055).powf(2.4)
-        }
-    };
-    0.2126 * linear(r) + 0.7152 * linear(g) + 0.0722 * linear(b)
+    colour.with_luminance(dark_luminance(colour.luminance()))
 }
 
 #[cfg(test)]
@@ -217,7 +221,7 @@ mod tests {
         let figure = sample();
         for (panel, looks) in figure.panels.iter().zip(looks(&figure)) {
             for (s, look) in panel.series.iter().zip(looks) {
-                assert_eq!(look.colour, s.style.colour);
+                assert_eq!(look.colour, on_white(s.style.colour));
                 assert_eq!(look.pattern, Pattern::from(s.style.dash));
             }
         }
@@ -243,7 +247,7 @@ mod tests {
         let mut figure = figure(vec![first, second]);
         figure.theme = Theme::ColourBlind;
         let looks = looks(&figure);
-        let okabe = |k: usize| Rgb::from_hex(OKABE_ITO[k]);
+        let okabe = |k: usize| on_white(Rgb::from_hex(OKABE_ITO[k]));
         assert_eq!(looks[0][0].colour, okabe(0));
         assert_eq!(looks[0][1].colour, okabe(1));
         assert_eq!(looks[1][0], looks[0][1], "blue is blue in both panels");
@@ -269,21 +273,45 @@ mod tests {
     }
 
     #[test]
+    fn white_page_colours_have_3_to_1_contrast_and_keep_their_order() {
+        let colours = OKABE_ITO
+            .into_iter()
+            .chain([
+                0xFF9900, 0xFFFF00, 0x88BEE6, 0xFFC773, 0xD6BE73, 0xFFFFFF, 0x222222,
+            ])
+            .map(Rgb::from_hex);
+        for colour in colours {
+            let drawn = on_white(colour);
+            assert!(drawn.contrast(Rgb::WHITE) >= 3.0, "{colour:?} → {drawn:?}");
+        }
+        assert_eq!(on_white(Rgb::from_hex(0x222222)), Rgb::from_hex(0x222222));
+        let ramp: Vec<f64> = (0..=20)
+            .map(|i| {
+                on_white(Rgb::from_hex(0x2689D1).mix(Rgb::WHITE, f64::from(i) / 20.0)).luminance()
+            })
+            .collect();
+        // Lighter stays lighter, up to the rounding of a channel near the limit.
+        for pair in ramp.windows(2) {
+            assert!(pair[1] >= pair[0] - 0.003, "{ramp:?}");
+        }
+    }
+
+    #[test]
     fn the_dark_theme_lifts_colours_above_the_floor_keeping_their_order() {
         let black = lighten(Rgb(0, 0, 0));
-        assert!(luminance(black) >= DARK_MIN_LUMINANCE);
+        assert!(black.luminance() >= DARK_MIN_LUMINANCE);
         assert!(
-            luminance(black) < DARK_MIN_LUMINANCE + 0.01,
+            black.luminance() < DARK_MIN_LUMINANCE + 0.01,
             "no lighter than needed"
         );
         assert_eq!(black.0, black.1);
         assert_eq!(lighten(Rgb(255, 255, 255)), Rgb(255, 255, 255));
         let blue = lighten(Rgb::from_hex(0x2689D1));
         assert!(blue.2 > blue.0, "stays blue");
-        assert!((luminance(Rgb(255, 255, 255)) - 1.0).abs() < 1e-12);
+        assert!((Rgb(255, 255, 255).luminance() - 1.0).abs() < 1e-12);
         // Five shades of one hue, dark to light, stay dark to light and apart.
         let shades = [0x0B2A40, 0x15507A, 0x2689D1, 0x6AB0E2, 0xA9D0EE].map(Rgb::from_hex);
-        let lifted = shades.map(|c| luminance(lighten(c)));
+        let lifted = shades.map(|c| lighten(c).luminance());
         for pair in lifted.windows(2) {
             assert!(pair[1] > pair[0] + 0.02, "{lifted:?}");
         }
