@@ -107,7 +107,7 @@ impl Figure {
             .collect();
         Figure {
             id: scene.id.clone(),
-            title: scene.title.clone(),
+            title: static_title(scene),
             rows: scene.rows,
             cols: scene.cols,
             canvas: scene.canvas,
@@ -115,5 +115,24 @@ impl Figure {
             panels,
             provenance: provenance.clone(),
         }
+    }
+}
+
+/// The title of a scene's static figure: an interactive scene's figure shows the sliders' start
+/// positions, so it also says which (`Fresnel … — at η = 1.1`; just the positions when untitled).
+fn static_title(scene: &Scene) -> String {
+    let Some(interactive) = &scene.interactive else {
+        return scene.title.clone();
+    };
+    let at = interactive
+        .sliders
+        .iter()
+        .map(|s| format!("{} = {}", s.label, crate::curve::pretty(s.values[s.start])))
+        .collect::<Vec<_>>()
+        .join(", ");
+    if scene.title.is_empty() {
+        format!("at {at}")
+    } else {
+        format!("{} — at {at}", scene.title)
     }
 }

@@ -1147,3 +1147,22 @@ fn compare_takes_a_csv_series_as_either_side() {
         "error: --a: data: not a series of θ",
     );
 }
+
+#[test]
+fn an_interactive_scene_static_figure_states_its_slider_positions() {
+    let out = scratch("cli-interactive-title");
+    let output = ndfplot(&[
+        "render",
+        "fresnel-interactive",
+        "-o",
+        out.to_str().unwrap(),
+        "--format",
+        "svg",
+    ]);
+    assert_eq!(output.status.code(), Some(0), "{}", text(&output.stderr));
+    let svg = std::fs::read_to_string(out.join("fresnel-interactive.svg")).unwrap();
+    assert!(
+        svg.contains("at η = 1.1, κ = 0"),
+        "no slider positions in the title"
+    );
+}
