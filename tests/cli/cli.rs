@@ -1151,9 +1151,10 @@ fn compare_takes_a_csv_series_as_either_side() {
 #[test]
 fn an_interactive_scene_static_figure_states_its_slider_positions() {
     let out = scratch("cli-interactive-title");
+    let spec = root().join("configs/fresnel-interactive.json");
     let output = ndfplot(&[
         "render",
-        "fresnel-interactive",
+        spec.to_str().unwrap(),
         "-o",
         out.to_str().unwrap(),
         "--format",
