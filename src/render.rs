@@ -113,6 +113,32 @@ pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -
     }
 }
 
+/// The drawn figures of the specs at `paths` (empty: the built-in catalogue) under `canvas`, in
+/// source order — what SVG, PNG and PDF are encoded from — without encoding or writing anything;
+/// the figure lint reads them.
+pub fn drawn_figures(paths: &[PathBuf], canvas: CanvasOverride) -> Result<Vec<Figure>> {
+    let sources = sources(paths)?;
+    let scenes = resolve::scenes(load_scenes(&sources, canvas))?;
+    let provenance: Vec<Provenance> = sources
+        .iter()
+        .map(|(_, text, _)| Provenance::of_spec(text.as_bytes()))
+        .collect();
+    let outputs = Outputs {
+        drawn: true,
+        table: false,
+        page: false,
+    };
+    let plan = plan(&scenes, outputs);
+    let evaluated = evaluate_all(&plan)?;
+    let feeds = plan.drawn.as_ref().expect("drawn outputs were planned");
+    Ok(scenes
+        .iter()
+        .zip(&provenance)
+        .zip(feeds)
+        .map(|((s, p), f)| Figure::assemble(s, p, f, &evaluated))
+        .collect())
+}
+
 /// Output files as (file name, bytes).
 type Files = Vec<(String, Vec<u8>)>;
 

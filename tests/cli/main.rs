@@ -8,6 +8,7 @@ mod common;
 mod browser;
 mod cli;
 mod lazy_basis;
+mod lint;
 mod robustness;
 mod sampling;
 mod schema;

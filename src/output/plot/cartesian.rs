@@ -8,6 +8,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::axis::{Axis, median_spacing, x_display};
 use super::clip::visible_pieces;
 use super::legend::{Legend, Outside, Sample, Side};
+use super::lint::{record_panel, record_text};
 use super::mathtext;
 use super::style::{Metrics, stroke};
 use super::theme::Look;
@@ -343,6 +344,9 @@ where
     // at the foot of its label area, the y label reading upwards at the outer edge of its own.
     let (x_px, y_px) = chart.plotting_area().get_pixel_range();
     let (base_x, base_y) = area.get_base_pixel();
+    if m.trace.is_some() {
+        record_frame(area, frame, (&x_px, &y_px), m)?;
+    }
     let (left, right) = (f64::from(x_px.start - base_x), f64::from(x_px.end - base_x));
     let (upper, lower) = (f64::from(y_px.start - base_y), f64::from(y_px.end - base_y));
     let desc = m.font(AXIS_LABEL_EM);
@@ -352,7 +356,7 @@ where
     let (_, _, side) = margins(m);
     let foot = (lower + f64::from(frame.x_area)).min(f64::from(area_h.saturating_sub(side)));
     let x_at = ((left + right) / 2.0, foot);
-    mathtext::draw(area, &panel.axes.x_label, &x_style, x_at)?;
+    mathtext::draw(area, &panel.axes.x_label, &x_style, x_at, m)?;
     let y_style = desc
         .transform(FontTransform::Rotate270)
         .pos(Pos::new(HPos::Center, VPos::Top));
@@ -360,7 +364,7 @@ where
         (left - f64::from(frame.y_area)).max(f64::from(side)),
         (upper + lower) / 2.0,
     );
-    mathtext::draw(area, &panel.axes.y_label, &y_style, y_at)?;
+    mathtext::draw(area, &panel.axes.y_label, &y_style, y_at, m)?;
 
     let plot = chart.plotting_area().strip_coord_spec();
     let (pw, ph) = plot.dim_in_pixel();
@@ -414,6 +418,51 @@ where
         m.line(m.palette.frame),
     )?;
     Ok(plot)
+}
+
+/// Records the plot area and the boxes of the tick labels plotters drew for the figure lint: x
+/// labels centred under their ticks below the tick marks, y labels right-aligned left of them.
+fn record_frame<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    frame: &Frame,
+    (x_px, y_px): (&std::ops::Range<i32>, &std::ops::Range<i32>),
+    m: &Metrics,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let plot = [x_px.start, y_px.start, x_px.end, y_px.end].map(f64::from);
+    let (x, y) = (&frame.x, &frame.y);
+    let font = m.font(1.0);
+    let tick = f64::from(m.px(TICK_EM));
+    let labelled = |axis: &Axis| axis.labels.iter().filter(|l| !l.is_empty()).count();
+    record_panel(&m.trace, plot, (labelled(x), labelled(y)));
+    let along = |axis: &Axis, v: f64, (lo, hi): (f64, f64)| {
+        lo + (v - axis.lo) / (axis.hi - axis.lo) * (hi - lo)
+    };
+    for (&v, label) in x.ticks.iter().zip(&x.labels) {
+        let (w, h) = area.estimate_text_size(label, &font).map_err(draw_err)?;
+        let cx = along(x, v, (plot[0], plot[2]));
+        let rect = mathtext::placed(
+            (cx, plot[3] + tick),
+            (f64::from(w), f64::from(h)),
+            (HPos::Center, VPos::Top),
+            false,
+        );
+        record_text(&m.trace, label, label, rect);
+    }
+    for (&v, label) in y.ticks.iter().zip(&y.labels) {
+        let (w, h) = area.estimate_text_size(label, &font).map_err(draw_err)?;
+        let cy = along(y, v, (plot[3], plot[1]));
+        let rect = mathtext::placed(
+            (plot[0] - tick, cy),
+            (f64::from(w), f64::from(h)),
+            (HPos::Right, VPos::Center),
+            false,
+        );
+        record_text(&m.trace, label, label, rect);
+    }
+    Ok(())
 }
 
 /// What the series of `panel` cover in the plot area of `frame`, in plot pixels, for the

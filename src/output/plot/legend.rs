@@ -306,6 +306,7 @@ impl<'a> Legend<'a> {
                     &s.label,
                     &label_style,
                     (f64::from(text_x), f64::from(cy)),
+                    m,
                 )?;
             }
             left += column_width(&self.widths, rows, column, setting.scale, m.unit) + column_gap;

@@ -9,8 +9,10 @@
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos};
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::lint::{Rect, record_text};
+use super::style::Metrics;
 use super::{PlotError, draw_err};
 
 /// Size of a script relative to the text it is attached to.
@@ -149,17 +151,30 @@ pub(super) fn draw<DB: DrawingBackend>(
     text: &str,
     style: &TextStyle,
     at: (f64, f64),
+    m: &Metrics,
 ) -> Result<(), PlotError>
 where
     DB::ErrorType: 'static,
 {
     let point = |x: f64, y: f64| (x.round() as i32, y.round() as i32);
+    let upwards = matches!(style.font.get_transform(), FontTransform::Rotate270);
+    if m.trace.is_some() && !text.is_empty() {
+        let (_, h) = area.estimate_text_size(text, style).map_err(draw_err)?;
+        let shown: String = parse(text).into_iter().map(|r| r.text).collect();
+        let base = area.get_base_pixel();
+        let rect = placed(
+            (f64::from(base.0) + at.0, f64::from(base.1) + at.1),
+            (width(area, text, style)?, f64::from(h)),
+            (style.pos.h_pos, style.pos.v_pos),
+            upwards,
+        );
+        record_text(&m.trace, &shown, text, rect);
+    }
     if !has_markup(text) {
         return area
             .draw_text(text, style, point(at.0, at.1))
             .map_err(draw_err);
     }
-    let upwards = matches!(style.font.get_transform(), FontTransform::Rotate270);
     let total = width(area, text, style)?;
     let start = match style.pos.h_pos {
         HPos::Left => 0.0,
@@ -186,6 +201,42 @@ where
         along += f64::from(w);
     }
     Ok(())
+}
+
+/// The box of a label of `(along, across)` extent anchored at `at` as plotters anchors text
+/// (`h` along the text, `v` across it), upright or reading upwards: left, top, right, bottom.
+pub(super) fn placed(
+    at: (f64, f64),
+    (along, across): (f64, f64),
+    (h, v): (HPos, VPos),
+    upwards: bool,
+) -> Rect {
+    let start = match h {
+        HPos::Left => 0.0,
+        HPos::Center => -along / 2.0,
+        HPos::Right => -along,
+    };
+    let near = match v {
+        VPos::Top => 0.0,
+        VPos::Center => -across / 2.0,
+        VPos::Bottom => -across,
+    };
+    if upwards {
+        // Along the text is up the page; its top faces left.
+        [
+            at.0 + near,
+            at.1 - start - along,
+            at.0 + near + across,
+            at.1 - start,
+        ]
+    } else {
+        [
+            at.0 + start,
+            at.1 + near,
+            at.0 + start + along,
+            at.1 + near + across,
+        ]
+    }
 }
 
 #[cfg(test)]

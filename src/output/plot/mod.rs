@@ -27,6 +27,7 @@ mod encode;
 #[cfg(test)]
 mod fixtures;
 mod legend;
+mod lint;
 mod mathtext;
 mod polar;
 mod style;
@@ -45,6 +46,8 @@ use crate::layout::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
 use crate::look::PanelKind;
 use cartesian::{Needs, Shared, draw_cartesian, draw_cartesian_shared};
 use encode::{MAX_DEVICE_PIXELS, device_size, downsample, encode_png, finish_svg};
+use lint::Recorder;
+pub use lint::lint;
 use polar::draw_polar;
 use style::{EM_PER_SIZE, Metrics, ensure_font};
 use surface::draw_surface;
@@ -110,7 +113,7 @@ pub fn svg(figure: &Figure) -> Result<Vec<u8>, PlotError> {
     let mut document = String::with_capacity(SVG_CAPACITY);
     {
         let root = SVGBackend::with_string(&mut document, (width, height)).into_drawing_area();
-        draw_figure(&root, figure, SVG_UNITS_PER_PX)?;
+        draw_figure(&root, figure, SVG_UNITS_PER_PX, None)?;
     }
     Ok(finish_svg(&document, canvas, (width, height), &figure.provenance).into_bytes())
 }
@@ -129,7 +132,7 @@ pub fn png(figure: &Figure) -> Result<Vec<u8>, PlotError> {
     let mut rgb = vec![0u8; drawn.0 as usize * drawn.1 as usize * 3];
     {
         let root = BitMapBackend::with_buffer(&mut rgb, drawn).into_drawing_area();
-        draw_figure(&root, figure, scale * f64::from(factor))?;
+        draw_figure(&root, figure, scale * f64::from(factor), None)?;
     }
     encode_png(
         &downsample(rgb, drawn, factor),
@@ -163,12 +166,14 @@ fn draw_err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> P
     PlotError::Draw(e.to_string())
 }
 
-/// Draws the whole figure onto `root` at `k` device pixels per CSS pixel.
+/// Draws the whole figure onto `root` at `k` device pixels per CSS pixel, recording what it
+/// places into `trace` when one is given (for [`lint`]), which it returns.
 fn draw_figure<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     figure: &Figure,
     k: f64,
-) -> Result<(), PlotError>
+    trace: Recorder,
+) -> Result<Recorder, PlotError>
 where
     DB::ErrorType: 'static,
 {
@@ -185,6 +190,7 @@ where
         k,
         unit: figure.canvas.font_px * k / EM_PER_SIZE,
         palette: theme::palette(figure.theme),
+        trace,
     };
     root.fill(&m.palette.background).map_err(draw_err)?;
     let body = titled(root, &figure.title, FIGURE_TITLE_EM, 0, &m)?;
@@ -195,7 +201,8 @@ where
     {
         draw_panel(cell, panel, looks, place, &m)?;
     }
-    root.present().map_err(draw_err)
+    root.present().map_err(draw_err)?;
+    Ok(m.trace)
 }
 
 /// The layout every panel of a grid shares with its row and column: the row's title band (the
@@ -324,6 +331,7 @@ where
             line,
             &centred,
             (f64::from(width) / 2.0, f64::from(top)),
+            m,
         )?;
         top += text_h as i32;
         if i + 1 < lines.len() {

@@ -252,7 +252,7 @@ where
             sector.centre.1 + reach * out.1 - if out.1.abs() < 1e-9 { gap } else { 0.0 },
         );
         let label = angle_label(phi, panel.axes.x_unit);
-        draw_label(area, &label, &tick_font.pos(pos), at)?;
+        mathtext::draw(area, &label, &tick_font.pos(pos), at, m)?;
         covered.add(&text_box(at, text(&label, &tick_font)?, corner));
     }
 
@@ -272,7 +272,7 @@ where
             let (x, y) = sector.px_f(r, phi);
             let at = (x + gap * normal.0, y + gap * normal.1);
             let (pos, corner) = anchor_towards(normal);
-            draw_label(area, &label, &tick_font.pos(pos), at)?;
+            mathtext::draw(area, &label, &tick_font.pos(pos), at, m)?;
             covered.add(&text_box(at, size, corner));
         }
     }
@@ -282,7 +282,7 @@ where
             sector.centre.1 + 2.0 * gap + tick_h + label_h / 2.0,
         );
         let centred = label_font.pos(Pos::new(HPos::Center, VPos::Center));
-        draw_label(area, &panel.axes.y_label, &centred, at)?;
+        mathtext::draw(area, &panel.axes.y_label, &centred, at, m)?;
     }
 
     let Some(legend) = legend else {
@@ -396,19 +396,6 @@ fn angle_label(phi: f64, unit: XUnit) -> String {
 /// Greatest common divisor (Euclid).
 fn gcd(a: i64, b: i64) -> i64 {
     if b == 0 { a } else { gcd(b, a % b) }
-}
-
-/// Draws `label` anchored at `at` (area pixels).
-fn draw_label<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    label: &str,
-    style: &TextStyle,
-    at: (f64, f64),
-) -> Result<(), PlotError>
-where
-    DB::ErrorType: 'static,
-{
-    mathtext::draw(area, label, style, at)
 }
 
 #[cfg(test)]

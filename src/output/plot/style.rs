@@ -56,6 +56,8 @@ pub(super) struct Metrics {
     pub(super) unit: f64,
     /// Page colours.
     pub(super) palette: &'static Palette,
+    /// What the drawing places, recorded for the figure lint; `None` when not kept.
+    pub(super) trace: super::lint::Recorder,
 }
 
 impl Metrics {

@@ -256,7 +256,7 @@ where
             } else {
                 centred
             };
-            mathtext::draw(area, titles[i], &style, at)?;
+            mathtext::draw(area, titles[i], &style, at, m)?;
             covered.add(&text_box(at, size, (0.5, 0.5)));
         }
     }

@@ -25,8 +25,8 @@ pub(super) const PLAIN_MIN: f64 = 1e-4;
 pub(super) const PLAIN_MAX: f64 = 1e5;
 /// Mantissas of "nice" linear steps.
 pub(super) const NICE_MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 5.0, 10.0];
-/// Strides between labelled decades.
-const DECADE_STRIDES: [f64; 9] = [1.0, 2.0, 3.0, 5.0, 10.0, 20.0, 25.0, 50.0, 100.0];
+/// Mantissas of the strides between labelled decades (whole numbers of decades).
+const DECADE_STRIDES: [f64; 4] = [1.0, 2.0, 5.0, 10.0];
 /// Slack in units of the step when deciding whether a multiple lies inside a range.
 const EDGE_SLACK: f64 = 1e-9;
 
@@ -155,10 +155,7 @@ fn plain(m: u32, k: i64) -> String {
 pub(super) fn log(lo: f64, hi: f64, room: f64) -> Ticks {
     let most = limit(room, MAX_LOG_TICKS);
     let decades = hi - lo;
-    let stride = DECADE_STRIDES
-        .into_iter()
-        .find(|&s| multiples(lo, hi, s).len() <= most)
-        .unwrap_or(decades.max(1.0));
+    let stride = nice_step(lo, hi, most, &DECADE_STRIDES).max(1.0);
     let between = |mantissas: &[u32]| -> Vec<(u32, i64)> {
         (lo.floor() as i64..=hi.ceil() as i64)
             .flat_map(|k| mantissas.iter().map(move |&m| (m, k)))

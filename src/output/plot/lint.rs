@@ -1,0 +1,276 @@
+//! The figure lint: what the drawing placed, recorded while it draws ([`Trace`]), and the rules a
+//! publication figure keeps ([`lint`]): no literal markup, at least three labelled ticks per axis
+//! of a 2D panel, equal plot areas along a row, no text overlapping other text or leaving the
+//! canvas, every curve at 3:1 contrast with the page, and no two legend entries alike in a panel.
+
+use std::cell::RefCell;
+
+use super::theme::{self, Pattern};
+use super::{PlotError, SVG_UNITS_PER_PX, draw_figure};
+use crate::figure::Figure;
+use crate::look::{PanelKind, Rgb};
+use plotters::prelude::*;
+
+/// Least labelled ticks per axis of a 2D panel.
+pub const MIN_LABELLED_TICKS: usize = 3;
+/// Least WCAG contrast of a curve with its page.
+pub const MIN_CONTRAST: f64 = 3.0;
+/// Plot areas of one row may differ by this much, in CSS pixels.
+pub const ROW_TOLERANCE_PX: f64 = 1.0;
+/// Text boxes may overlap by this much on each side before it counts, in CSS pixels: glyph boxes
+/// include the line's full ascent and descent, so neighbouring lines of one block touch.
+pub const OVERLAP_TOLERANCE_PX: f64 = 1.0;
+
+/// A box in device pixels: left, top, right, bottom.
+pub(super) type Rect = [f64; 4];
+
+/// A piece of text as drawn.
+#[derive(Debug, Clone)]
+pub(super) struct DrawnText {
+    /// The characters drawn (one run of a typeset label, or a whole plain label).
+    pub(super) text: String,
+    /// The label it belongs to, as given.
+    pub(super) label: String,
+    /// Its box.
+    pub(super) rect: Rect,
+}
+
+/// What a 2D panel's drawing placed.
+#[derive(Debug, Clone, Default)]
+pub(super) struct PanelTrace {
+    /// The plot area.
+    pub(super) plot: Rect,
+    /// Labelled ticks on x and y.
+    pub(super) ticks: (usize, usize),
+}
+
+/// Everything one drawing placed, for the lint.
+#[derive(Debug, Clone, Default)]
+pub(super) struct Trace {
+    /// Every text drawn.
+    pub(super) texts: Vec<DrawnText>,
+    /// Every 2D panel's plot area and tick count.
+    pub(super) panels: Vec<PanelTrace>,
+}
+
+/// The record a drawing writes into, when one is kept.
+pub(super) type Recorder = Option<RefCell<Trace>>;
+
+/// Records `text` (of `label`) drawn in `rect`, when a trace is kept.
+pub(super) fn record_text(recorder: &Recorder, text: &str, label: &str, rect: Rect) {
+    if let Some(trace) = recorder {
+        trace.borrow_mut().texts.push(DrawnText {
+            text: text.to_owned(),
+            label: label.to_owned(),
+            rect,
+        });
+    }
+}
+
+/// Records a 2D panel's plot area and labelled tick counts, when a trace is kept.
+pub(super) fn record_panel(recorder: &Recorder, plot: Rect, ticks: (usize, usize)) {
+    if let Some(trace) = recorder {
+        trace.borrow_mut().panels.push(PanelTrace { plot, ticks });
+    }
+}
+
+fn overlap(a: &Rect, b: &Rect, tolerance: f64) -> bool {
+    a[0] + tolerance < b[2]
+        && b[0] + tolerance < a[2]
+        && a[1] + tolerance < b[3]
+        && b[1] + tolerance < a[3]
+}
+
+/// What drawing `figure` (as its SVG is drawn) places.
+fn trace_of(figure: &Figure) -> Result<(Trace, (u32, u32)), PlotError> {
+    let size = super::encode::device_size(&figure.canvas, SVG_UNITS_PER_PX)?;
+    let mut document = String::new();
+    let root = SVGBackend::with_string(&mut document, size).into_drawing_area();
+    let trace = draw_figure(&root, figure, SVG_UNITS_PER_PX, Some(RefCell::default()))?
+        .map(RefCell::into_inner)
+        .unwrap_or_default();
+    Ok((trace, size))
+}
+
+/// The rules `figure` breaks, each as a sentence naming the figure, the panel or text and the
+/// measurement; empty when it keeps them all. The figure is drawn (as its SVG is) to find out.
+pub fn lint(figure: &Figure) -> Result<Vec<String>, PlotError> {
+    let (trace, size) = trace_of(figure)?;
+    Ok(findings(figure, &trace, size))
+}
+
+/// The rules broken by `figure` drawn as `trace` on a canvas of `(width, height)` device pixels.
+fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<String> {
+    let id = &figure.id;
+    let px = |device: f64| device / SVG_UNITS_PER_PX;
+    let slack = OVERLAP_TOLERANCE_PX * SVG_UNITS_PER_PX;
+    let mut findings = Vec::new();
+
+    for t in &trace.texts {
+        let escaped = t.label.contains("\\_") || t.label.contains("\\^");
+        if t.text.contains(['_', '^']) && !escaped {
+            findings.push(format!("{id}: literal markup drawn in {:?}", t.label));
+        }
+        let [l, top, r, b] = t.rect;
+        if l < -slack
+            || top < -slack
+            || r > f64::from(width) + slack
+            || b > f64::from(height) + slack
+        {
+            findings.push(format!("{id}: {:?} is clipped by the canvas", t.label));
+        }
+    }
+    for (i, a) in trace.texts.iter().enumerate() {
+        for b in &trace.texts[..i] {
+            if a.label != b.label && overlap(&a.rect, &b.rect, slack) {
+                findings.push(format!("{id}: {:?} overlaps {:?}", a.label, b.label));
+            }
+        }
+    }
+
+    let cartesian: Vec<usize> = figure
+        .panels
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.axes.kind == PanelKind::Cartesian)
+        .map(|(i, _)| i)
+        .collect();
+    let cols = figure.cols.max(1);
+    for (traced, &panel) in trace.panels.iter().zip(&cartesian) {
+        let (x, y) = traced.ticks;
+        if x < MIN_LABELLED_TICKS || y < MIN_LABELLED_TICKS {
+            findings.push(format!(
+                "{id}: panel {panel} has {x} labelled x ticks and {y} labelled y ticks (expected at least {MIN_LABELLED_TICKS} each)"
+            ));
+        }
+    }
+    for (a, &pa) in trace.panels.iter().zip(&cartesian) {
+        for (b, &pb) in trace.panels.iter().zip(&cartesian) {
+            if pb <= pa || pa / cols != pb / cols {
+                continue;
+            }
+            let size = |r: &Rect| (r[2] - r[0], r[3] - r[1]);
+            let ((wa, ha), (wb, hb)) = (size(&a.plot), size(&b.plot));
+            let worst = [
+                (wa - wb).abs(),
+                (ha - hb).abs(),
+                (a.plot[1] - b.plot[1]).abs(),
+            ]
+            .into_iter()
+            .fold(0.0, f64::max);
+            if px(worst) > ROW_TOLERANCE_PX {
+                findings.push(format!(
+                    "{id}: panels {pa} and {pb} share a row but their plot areas differ by {:.1} px",
+                    px(worst)
+                ));
+            }
+        }
+    }
+
+    let page = theme::palette(figure.theme).background;
+    let page = Rgb(page.0, page.1, page.2);
+    for (panel, looks) in figure.panels.iter().zip(theme::looks(figure)) {
+        let mut seen: Vec<(Rgb, Pattern, u64, &str)> = Vec::new();
+        for (series, look) in panel.series.iter().zip(looks) {
+            let contrast = look.colour.contrast(page);
+            if contrast < MIN_CONTRAST {
+                findings.push(format!(
+                    "{id}: {:?} has contrast {contrast:.2}:1 with the page (expected at least {MIN_CONTRAST}:1)",
+                    series.label
+                ));
+            }
+            if series.label.is_empty() {
+                continue;
+            }
+            let entry = (
+                look.colour,
+                look.pattern,
+                series.style.width.to_bits(),
+                series.label.as_str(),
+            );
+            if seen.contains(&entry) {
+                findings.push(format!(
+                    "{id}: two legend entries {:?} look alike",
+                    series.label
+                ));
+            }
+            seen.push(entry);
+        }
+    }
+    findings
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::look::{Dash, XUnit, YScale};
+    use crate::output::plot::fixtures::{RED, figure, panel, sample, series};
+
+    #[test]
+    fn the_trace_holds_every_label_plot_area_and_tick() {
+        let figure = sample();
+        let (trace, _) = trace_of(&figure).unwrap();
+        let cartesian = figure
+            .panels
+            .iter()
+            .filter(|p| p.axes.kind == PanelKind::Cartesian)
+            .count();
+        assert_eq!(trace.panels.len(), cartesian);
+        for label in ["NDF and Fresnel", "θ", "F₀ = 0.04"] {
+            assert!(trace.texts.iter().any(|t| t.label == label), "{label}");
+        }
+        assert!(
+            trace
+                .panels
+                .iter()
+                .all(|p| p.ticks.0 >= 3 && p.ticks.1 >= 3),
+            "{:?}",
+            trace.panels
+        );
+        assert!(findings(&figure, &trace, (1600, 1000)).is_empty());
+    }
+
+    #[test]
+    fn each_rule_is_reported() {
+        let line = |label: &str| series(label, RED, 1.0, Dash::Solid, vec![(0.0, 1.0), (1.0, 2.0)]);
+        let mut twin = figure(vec![
+            panel(XUnit::Radians, YScale::Linear, vec![line("a"), line("a")]),
+            panel(XUnit::Radians, YScale::Linear, vec![line("b")]),
+        ]);
+        (twin.rows, twin.cols) = (1, 2);
+        let text = |label: &str, rect: Rect| DrawnText {
+            text: label.to_owned(),
+            label: label.to_owned(),
+            rect,
+        };
+        let trace = Trace {
+            texts: vec![
+                text("α_b", [10.0, 10.0, 50.0, 30.0]),
+                text("first", [100.0, 100.0, 200.0, 130.0]),
+                text("second", [150.0, 110.0, 260.0, 140.0]),
+                text("clipped", [1590.0, 10.0, 1700.0, 30.0]),
+            ],
+            panels: vec![
+                PanelTrace {
+                    plot: [0.0, 100.0, 700.0, 500.0],
+                    ticks: (2, 5),
+                },
+                PanelTrace {
+                    plot: [800.0, 120.0, 1500.0, 500.0],
+                    ticks: (5, 5),
+                },
+            ],
+        };
+        let found = findings(&twin, &trace, (1600, 1000)).join("\n");
+        for expected in [
+            "literal markup drawn in \"α_b\"",
+            "\"second\" overlaps \"first\"",
+            "\"clipped\" is clipped",
+            "panel 0 has 2 labelled x ticks",
+            "panels 0 and 1 share a row but their plot areas differ by 5.0 px",
+            "two legend entries \"a\" look alike",
+        ] {
+            assert!(found.contains(expected), "{expected} not in:\n{found}");
+        }
+    }
+}
