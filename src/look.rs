@@ -238,6 +238,21 @@ pub struct Axes {
     pub y_range: Option<(f64, f64)>,
     /// Whether a legend is drawn.
     pub legend: bool,
+    /// Whether grid lines are drawn at the ticks.
+    pub grid: bool,
+    /// The x ticks the spec asks for; `None` = chosen by the locator.
+    pub x_ticks: Option<TickChoice>,
+    /// The y ticks the spec asks for; `None` = chosen by the locator.
+    pub y_ticks: Option<TickChoice>,
+}
+
+/// Ticks a spec asks for on an axis of a 2D panel.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TickChoice {
+    /// At most this many nice ticks, chosen by the locator.
+    Count(usize),
+    /// Exactly these values, in the unit the axis shows (those outside its range are not drawn).
+    At(Vec<f64>),
 }
 
 impl Axes {

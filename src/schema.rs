@@ -109,6 +109,13 @@ fn scene_key(key: &str) -> Value {
         "aspect_ratio" | "width" | "height" | "font_px" | "png_scale" => {
             json!({ "type": "number" })
         }
+        "font_pt" => {
+            json!({ "type": "number", "description": "base font size in points (1 pt = 1/72 in); instead of font_px" })
+        }
+        "dpi" => {
+            json!({ "type": "number", "description": "PNG pixels per inch (96 CSS px = 1 in); instead of png_scale" })
+        }
+        "unit" => strings(scene::SIZE_UNITS),
         "sampling" => reference("sampling"),
         "theme" => strings(scene::THEMES),
         "panels" => json!({ "type": "array", "items": reference("panel"), "minItems": 1 }),
@@ -127,7 +134,7 @@ fn panel_key(key: &str) -> Value {
         "view" => strings(scene::VIEWS),
         "transform" => strings(scene::PANEL_TRANSFORMS),
         "camera" => reference("camera"),
-        "legend" => json!({ "type": "boolean" }),
+        "legend" | "grid" => json!({ "type": "boolean" }),
         "curves" => json!({
             "type": "array",
             "minItems": 1,
@@ -143,6 +150,10 @@ fn axis_key(key: &str) -> Value {
         "scale" => strings(scene::Y_SCALES),
         "range" => interval(),
         "label" => json!({ "type": "string" }),
+        "ticks" => json!({ "anyOf": [
+            { "type": "integer", "minimum": 2, "maximum": scene::MAX_TICK_COUNT },
+            { "type": "array", "items": { "type": "number" }, "minItems": 1 },
+        ] }),
         "elevation" | "azimuth" => json!({ "type": "number" }),
         other => panic!("no schema for the axis key {other:?}"),
     }
@@ -157,6 +168,9 @@ fn extra_key(key: &str) -> Value {
         "colour" => json!({ "type": "string", "pattern": "^#[0-9A-Fa-f]{6}$" }),
         "label" => json!({ "type": "string" }),
         "mark" => strings(scene::MARKS),
+        "width" => {
+            json!({ "type": "number", "minimum": scene::LINE_WIDTHS.0, "maximum": scene::LINE_WIDTHS.1 })
+        }
         other => panic!("no schema for the series key {other:?}"),
     }
 }

@@ -86,6 +86,9 @@ fn panel(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Pane
             x_range: None,
             y_range: None,
             legend: true,
+            grid: true,
+            x_ticks: None,
+            y_ticks: None,
         },
         series,
     }

@@ -19,7 +19,9 @@ use crate::curve::{self, Curve, CurveSpec, Fitted, Label, Model, ParamValue, Par
 use crate::dataset::Dataset;
 use crate::json::{Node, Value};
 use crate::layout;
-use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale, shade};
+use crate::look::{
+    Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, TickChoice, XUnit, YScale, shade,
+};
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::transform::Transform;
 use reader::Reader;
@@ -49,7 +51,10 @@ pub const SCENE_KEYS: &[&str] = &[
     "width",
     "height",
     "font_px",
+    "font_pt",
     "png_scale",
+    "dpi",
+    "unit",
     "sampling",
     "theme",
     "panels",
@@ -74,6 +79,7 @@ pub const PANEL_KEYS: &[&str] = &[
     "z",
     "camera",
     "legend",
+    "grid",
     "curves",
 ];
 /// Panel kinds (`kind`).
@@ -85,7 +91,7 @@ pub const PANEL_TRANSFORMS: &[&str] = &["projected", "slope"];
 /// The slope range (tan θ) a slope axis shows when its `range` is not given.
 pub const DEFAULT_SLOPE_RANGE: (f64, f64) = (0.0, 4.0);
 /// Keys of a panel's `x` axis.
-pub const X_KEYS: &[&str] = &["unit", "range", "label"];
+pub const X_KEYS: &[&str] = &["unit", "range", "label", "ticks"];
 /// Units of an `x` axis.
 pub const X_UNITS: &[&str] = &["radians", "degrees", "slope", "plain"];
 /// Keys of a surface panel's `z` axis.
@@ -93,11 +99,19 @@ pub const Z_KEYS: &[&str] = &["range", "label"];
 /// Keys of a surface panel's `camera`.
 pub const CAMERA_KEYS: &[&str] = &["elevation", "azimuth"];
 /// Keys of a panel's `y` axis.
-pub const Y_KEYS: &[&str] = &["scale", "range", "label"];
+pub const Y_KEYS: &[&str] = &["scale", "range", "label", "ticks"];
 /// Scales of a `y` axis.
 pub const Y_SCALES: &[&str] = &["linear", "log"];
 /// Keys of a scene curve beyond its model parameters.
-pub const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "label", "mark"];
+pub const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "label", "mark", "width"];
+/// Units of a scene's `width` and `height` (`unit`): CSS pixels, inches, centimetres.
+pub const SIZE_UNITS: &[&str] = &["px", "in", "cm"];
+/// CSS pixels per inch: what `in`, `cm`, `dpi` and `font_pt` are converted with.
+pub const CSS_PX_PER_INCH: f64 = 96.0;
+/// Most ticks a spec may ask for by count.
+pub const MAX_TICK_COUNT: usize = 20;
+/// Least and most line width a curve's `width` may set, in multiples of the default.
+pub const LINE_WIDTHS: (f64, f64) = (0.25, 10.0);
 /// Words of a series' `style`.
 pub const STYLE_WORDS: &[&str] = &["thick", "dashed", "dotted", "solid"];
 /// Values of a series' `mark`.
@@ -432,8 +446,18 @@ fn read_canvas(
     cols: usize,
     titled: bool,
 ) -> Option<Canvas> {
-    let side = |v: f64| (16.0..=MAX_SIDE_PX).contains(&v);
-    let side_text = format!("16 to {MAX_SIDE_PX}");
+    let unit = reader.choice(object, "unit", SIZE_UNITS).unwrap_or("px");
+    let px_per_unit = match unit {
+        "in" => CSS_PX_PER_INCH,
+        "cm" => CSS_PX_PER_INCH / 2.54,
+        _ => 1.0,
+    };
+    let side = |v: f64| (16.0..=MAX_SIDE_PX).contains(&(v * px_per_unit));
+    let side_text = format!(
+        "{} to {} {unit}",
+        crate::curve::pretty(16.0 / px_per_unit),
+        crate::curve::pretty(MAX_SIDE_PX / px_per_unit)
+    );
     let aspect = reader
         .number(
             object,
@@ -444,12 +468,21 @@ fn read_canvas(
         .unwrap_or(layout::DEFAULT_ASPECT_RATIO);
     let width = reader
         .number(object, "width", side, &side_text)
+        .map(|w| w * px_per_unit)
         .unwrap_or(layout::default_width(cols));
     let height = reader
         .number(object, "height", side, &side_text)
+        .map(|h| h * px_per_unit)
         .unwrap_or_else(|| {
             layout::default_height(rows, cols, width, aspect, titled).clamp(16.0, MAX_SIDE_PX)
         });
+    let one_of = |reader: &mut Reader, a: &str, b: &str| {
+        let both = object.get(a).is_some() && object.get(b).is_some();
+        if both {
+            reader.report(b, format!("give {a} or {b}, not both (got both)"));
+        }
+        !both
+    };
     let font_px = reader
         .number(
             object,
@@ -457,6 +490,16 @@ fn read_canvas(
             |v| (4.0..=200.0).contains(&v),
             "4 to 200",
         )
+        .or_else(|| {
+            reader
+                .number(
+                    object,
+                    "font_pt",
+                    |v| (3.0..=150.0).contains(&v),
+                    "3 to 150",
+                )
+                .map(|pt| pt * CSS_PX_PER_INCH / 72.0)
+        })
         .unwrap_or(14.0);
     let png_scale = reader
         .number(
@@ -465,7 +508,20 @@ fn read_canvas(
             |v| (0.1..=16.0).contains(&v),
             "0.1 to 16",
         )
+        .or_else(|| {
+            reader
+                .number(
+                    object,
+                    "dpi",
+                    |v| (10.0..=1536.0).contains(&v),
+                    "10 to 1536",
+                )
+                .map(|dpi| dpi / CSS_PX_PER_INCH)
+        })
         .unwrap_or(2.0);
+    if !(one_of(reader, "font_px", "font_pt") & one_of(reader, "png_scale", "dpi")) {
+        return None;
+    }
     let canvas = Canvas {
         width_px: width.round() as u32,
         height_px: height.round() as u32,
@@ -537,6 +593,7 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
     let panel = reader.object(node, path, PANEL_KEYS)?;
     let title = reader.string(&panel, "title").unwrap_or_default();
     let legend = reader.boolean(&panel, "legend").unwrap_or(true);
+    let grid = reader.boolean(&panel, "grid").unwrap_or(true);
     let x_path = panel.path_of("x");
     let y_path = panel.path_of("y");
     let x = panel
@@ -545,6 +602,13 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
     let y = panel
         .get("y")
         .and_then(|n| reader.object(n, &y_path, Y_KEYS));
+    // Read before the series, whose problems end the panel, so that all of them are reported.
+    let y_scale = match y.and_then(|y| reader.choice(&y, "scale", Y_SCALES)) {
+        Some("log") => YScale::Log,
+        _ => YScale::Linear,
+    };
+    let x_ticks = x.and_then(|x| read_ticks(reader, &x, None));
+    let y_ticks = y.and_then(|y| read_ticks(reader, &y, Some(y_scale)));
     let mut series = read_series(reader, &panel)?;
     let transform = read_transform(reader, &panel, &mut series.curves);
     let only_data = series.curves.is_empty() && !series.data.iter().any(|d| d.dataset.is_theta());
@@ -564,10 +628,6 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
         );
     }
     let x_range = read_x_range(reader, x.as_ref(), x_unit);
-    let y_scale = match y.and_then(|y| reader.choice(&y, "scale", Y_SCALES)) {
-        Some("log") => YScale::Log,
-        _ => YScale::Linear,
-    };
     let y_range = y.and_then(|y| match y_scale {
         YScale::Log => reader.interval(&y, "range", |v| v > 0.0, "both > 0 on a log axis"),
         YScale::Linear => reader.interval(&y, "range", f64::is_finite, "finite"),
@@ -593,10 +653,64 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
             x_range,
             y_range,
             legend,
+            grid,
+            x_ticks,
+            y_ticks,
         },
         curves: series.curves,
         data: series.data,
     })
+}
+
+/// An axis' `ticks`: a count (2 to [`MAX_TICK_COUNT`]) or a list of values in the unit the axis
+/// shows, each finite (and > 0 on a log axis, `scale` `Some(Log)`).
+fn read_ticks(
+    reader: &mut Reader,
+    axis: &reader::Object,
+    scale: Option<YScale>,
+) -> Option<TickChoice> {
+    let node = axis.get("ticks")?;
+    let path = axis.path_of("ticks");
+    match &node.value {
+        Value::Number(n)
+            if n.value.fract() == 0.0 && (2.0..=MAX_TICK_COUNT as f64).contains(&n.value) =>
+        {
+            Some(TickChoice::Count(n.value as usize))
+        }
+        Value::Array(items) if !items.is_empty() => {
+            let log = scale == Some(YScale::Log);
+            let mut values = Vec::with_capacity(items.len());
+            for (i, item) in items.iter().enumerate() {
+                match &item.value {
+                    Value::Number(n) if n.value.is_finite() && (!log || n.value > 0.0) => {
+                        values.push(n.value)
+                    }
+                    _ => {
+                        let expected = if log {
+                            "a number > 0 on a log axis"
+                        } else {
+                            "a finite number"
+                        };
+                        reader.report(
+                            join_index(&path, i),
+                            format!("invalid tick (got {item}, expected {expected})"),
+                        );
+                        return None;
+                    }
+                }
+            }
+            values.sort_by(f64::total_cmp);
+            values.dedup();
+            Some(TickChoice::At(values))
+        }
+        _ => {
+            reader.report(
+                path,
+                format!("expected a whole count from 2 to {MAX_TICK_COUNT} or a list of values (got {node})"),
+            );
+            None
+        }
+    }
 }
 
 /// The panel's `transform` (one of [`PANEL_TRANSFORMS`]), applied to each of its curves; a curve
@@ -1052,6 +1166,14 @@ pub(crate) fn read_style(
                 ),
             }
         }
+    }
+    if let Some(width) = reader.number(
+        entry,
+        "width",
+        |w| (LINE_WIDTHS.0..=LINE_WIDTHS.1).contains(&w),
+        "0.25 to 10 times the default line width",
+    ) {
+        style.width = width;
     }
     match reader.choice(entry, "mark", MARKS) {
         Some("points") => style.mark = Mark::Points,

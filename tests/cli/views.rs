@@ -2,6 +2,7 @@
 //! 1/(2π) against sin θ dθ, the slope view to 1/(2π) against tan θ sec²θ dθ (∫∫ P₂₂ dp dq = 1), and a
 //! CSV series compares against the curve it was sampled from.
 
+use crate::common::{ndfplot, render_into, scratch, text};
 use ndfplot::curve::Curve;
 use ndfplot::input::parse_json;
 use ndfplot::math::quad::{QuadError, integrate};
@@ -104,5 +105,56 @@ fn the_slope_view_of_every_normalized_ndf_is_a_density_over_the_slope_plane() {
             curve.canonical_json(),
             mass * 2.0 * PI
         );
+    }
+}
+
+#[test]
+fn figures_take_physical_sizes_tick_choices_line_widths_and_no_grid() {
+    let dir = scratch("views-paper");
+    let spec = dir.join("paper.json");
+    std::fs::write(
+        &spec,
+        r#"{"id": "paper", "unit": "in", "width": 3.5, "height": 2.5, "dpi": 288, "font_pt": 8,
+            "panels": [{"grid": false,
+                        "x": {"unit": "degrees", "ticks": [0, 45, 90]},
+                        "y": {"scale": "log", "ticks": [0.1, 1, 10]},
+                        "curves": [{"ndf": "ggx", "alpha_tr": 0.3, "width": 0.5}]}]}"#,
+    )
+    .unwrap();
+    let out = dir.join("out");
+    render_into(&[&spec], &out, "svg,png");
+    let svg = std::fs::read_to_string(out.join("paper.svg")).unwrap();
+    // 3.5 × 2.5 in at 96 CSS px per inch; the PNG at 288 dpi is 3 pixels per CSS pixel.
+    assert!(
+        svg.starts_with(r#"<svg width="336" height="240""#),
+        "{}",
+        &svg[..80]
+    );
+    let png = std::fs::read(out.join("paper.png")).unwrap();
+    let size = |at: usize| u32::from_be_bytes(png[at..at + 4].try_into().unwrap());
+    assert_eq!((size(16), size(20)), (1008, 720));
+    for label in ["0°", "45°", "90°", "0.1", "10"] {
+        assert!(svg.contains(&format!("\n{label}\n</text>")), "{label}");
+    }
+    assert!(!svg.contains("\n30°\n</text>"), "only the chosen ticks");
+
+    let bad = dir.join("bad.json");
+    std::fs::write(
+        &bad,
+        r#"{"id": "bad", "font_px": 12, "font_pt": 9,
+            "panels": [{"y": {"scale": "log", "ticks": [0, 1]}, "x": {"ticks": 1},
+                        "curves": [{"ndf": "ggx", "alpha_tr": 0.3, "width": 50}]}]}"#,
+    )
+    .unwrap();
+    let output = ndfplot(&["render", bad.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = text(&output.stderr);
+    for expected in [
+        "font_pt: give font_px or font_pt, not both",
+        "panels[0].y.ticks[0]: invalid tick (got 0, expected a number > 0 on a log axis)",
+        "panels[0].x.ticks: expected a whole count from 2 to 20 or a list of values (got 1)",
+        "panels[0].curves[0].width",
+    ] {
+        assert!(stderr.contains(expected), "{expected} not in {stderr}");
     }
 }

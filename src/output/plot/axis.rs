@@ -9,7 +9,7 @@ use plotters::prelude::*;
 
 use crate::figure::{Panel, Series};
 
-use crate::look::{Mark, XUnit, YScale};
+use crate::look::{Mark, TickChoice, XUnit, YScale};
 
 use crate::layout::{AUTO_MARGIN, widen_if_flat};
 
@@ -74,6 +74,10 @@ impl Axis {
             None => automatic(),
         };
         let (lo, hi) = widen_if_flat(lo, hi);
+        let suffix = if unit == XUnit::Degrees { "°" } else { "" };
+        if let Some(choice) = &panel.axes.x_ticks {
+            return Axis::from_ticks(lo, hi, chosen(choice, YScale::Linear, (lo, hi), suffix));
+        }
         let whole = unit == XUnit::Plain && data().all(|v| v.fract() == 0.0);
         let ticks = match unit {
             XUnit::Degrees => {
@@ -116,7 +120,14 @@ impl Axis {
         let base = (bars && panel.axes.y_scale == YScale::Linear).then_some(0.0);
         let data = extent(values(panel).chain(base));
         let range = panel.axes.y_scale.range(panel.axes.y_range, data);
-        Axis::values(panel.axes.y_scale, range, max_ticks)
+        match &panel.axes.y_ticks {
+            Some(choice) => Axis::from_ticks(
+                range.0,
+                range.1,
+                chosen(choice, panel.axes.y_scale, range, ""),
+            ),
+            None => Axis::values(panel.axes.y_scale, range, max_ticks),
+        }
     }
 
     /// The radius axis of a polar panel, with at most about `max_ticks` ticks, over
@@ -159,6 +170,42 @@ impl Axis {
             .iter()
             .position(|&t| t == v)
             .map_or_else(String::new, |i| self.labels[i].clone())
+    }
+}
+
+/// The ticks a spec chose for an axis over `(lo, hi)` (display units) on `scale`: at most `n` nice
+/// ticks for a count, or the given values inside the range (a log axis labels them as written).
+fn chosen(choice: &TickChoice, scale: YScale, (lo, hi): (f64, f64), suffix: &str) -> Ticks {
+    match (choice, scale) {
+        (TickChoice::Count(n), YScale::Linear) => {
+            let step = ticks::nice_step(lo, hi, *n, &ticks::NICE_MANTISSAS);
+            ticks::labelled(ticks::multiples(lo, hi, step), step, suffix)
+        }
+        (TickChoice::Count(n), YScale::Log) => ticks::log(lo, hi, *n as f64),
+        (TickChoice::At(values), YScale::Linear) => {
+            let inside: Vec<f64> = values
+                .iter()
+                .copied()
+                .filter(|v| (lo..=hi).contains(v))
+                .collect();
+            let step = inside
+                .windows(2)
+                .map(|w| w[1] - w[0])
+                .fold(hi - lo, f64::min);
+            ticks::labelled(inside, step, suffix)
+        }
+        (TickChoice::At(values), YScale::Log) => {
+            let inside: Vec<f64> = values
+                .iter()
+                .copied()
+                .filter(|v| (lo..=hi).contains(&v.log10()))
+                .collect();
+            Ticks {
+                major: inside.iter().map(|v| v.log10()).collect(),
+                labels: inside.iter().map(|&v| crate::curve::pretty(v)).collect(),
+                minor: Vec::new(),
+            }
+        }
     }
 }
 

@@ -328,9 +328,11 @@ where
         .map_err(draw_err)?;
     let x_fmt = |v: &f64| x.label(*v);
     let y_fmt = |v: &f64| y.label(*v);
-    chart
-        .configure_mesh()
-        .x_label_formatter(&x_fmt)
+    let mut mesh = chart.configure_mesh();
+    if !panel.axes.grid {
+        mesh.disable_mesh();
+    }
+    mesh.x_label_formatter(&x_fmt)
         .y_label_formatter(&y_fmt)
         .label_style(m.font(1.0))
         .bold_line_style(m.line(m.palette.grid))

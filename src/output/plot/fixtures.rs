@@ -76,6 +76,9 @@ pub(super) fn panel(x_unit: XUnit, y_scale: YScale, series: Vec<Series>) -> Pane
             x_range: None,
             y_range: None,
             legend: true,
+            grid: true,
+            x_ticks: None,
+            y_ticks: None,
         },
         series,
     }
