@@ -236,14 +236,42 @@ pub struct Axes {
     pub x_range: Option<(f64, f64)>,
     /// Displayed y range; `None` = automatic, every point visible (PlotRange → All).
     pub y_range: Option<(f64, f64)>,
-    /// Whether a legend is drawn.
-    pub legend: bool,
+    /// Whether and where the legend is drawn.
+    pub legend: LegendPlace,
     /// Whether grid lines are drawn at the ticks.
     pub grid: bool,
     /// The x ticks the spec asks for; `None` = chosen by the locator.
     pub x_ticks: Option<TickChoice>,
     /// The y ticks the spec asks for; `None` = chosen by the locator.
     pub y_ticks: Option<TickChoice>,
+}
+
+/// Where a panel's legend goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LegendPlace {
+    /// Inside the plot area where it hides no curve, else outside (the default).
+    Best,
+    /// Inside the plot area at this corner, whatever it hides (outside when it does not fit).
+    Corner(Corner),
+    /// Outside, right of the plot area (a grid's panels: in the row's band below).
+    Right,
+    /// Outside, below the plot area.
+    Below,
+    /// No legend.
+    None,
+}
+
+/// A corner of a plot area.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Corner {
+    /// Top right.
+    UpperRight,
+    /// Top left.
+    UpperLeft,
+    /// Bottom left.
+    LowerLeft,
+    /// Bottom right.
+    LowerRight,
 }
 
 /// Ticks a spec asks for on an axis of a 2D panel.

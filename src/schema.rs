@@ -134,7 +134,8 @@ fn panel_key(key: &str) -> Value {
         "view" => strings(scene::VIEWS),
         "transform" => strings(scene::PANEL_TRANSFORMS),
         "camera" => reference("camera"),
-        "legend" | "grid" => json!({ "type": "boolean" }),
+        "legend" => json!({ "anyOf": [{ "type": "boolean" }, strings(scene::LEGEND_PLACES)] }),
+        "grid" => json!({ "type": "boolean" }),
         "curves" => json!({
             "type": "array",
             "minItems": 1,

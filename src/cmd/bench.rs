@@ -7,7 +7,9 @@
 use crate::bench::{self, Row};
 use crate::error::{Error, Result};
 use crate::figure::{Figure, Panel, Series};
-use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
+use crate::look::{
+    Axes, Canvas, Dash, LegendPlace, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale,
+};
 use crate::ndf::Family;
 use crate::output::{plot, write};
 use crate::provenance::Provenance;
@@ -85,7 +87,7 @@ fn panel(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Pane
             y_scale: YScale::Log,
             x_range: None,
             y_range: None,
-            legend: true,
+            legend: LegendPlace::Best,
             grid: true,
             x_ticks: None,
             y_ticks: None,

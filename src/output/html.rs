@@ -93,7 +93,7 @@ pub fn page(
         "width": scene.canvas.width_px,
         "height": scene.canvas.height_px,
         "font_px": scene.canvas.font_px,
-        "legend": panel.axes.legend,
+        "legend": panel.axes.legend != crate::look::LegendPlace::None,
         "sliders": sliders,
         "styles": styles,
         "entries": entries,

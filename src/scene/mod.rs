@@ -20,7 +20,8 @@ use crate::dataset::Dataset;
 use crate::json::{Node, Value};
 use crate::layout;
 use crate::look::{
-    Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, TickChoice, XUnit, YScale, shade,
+    Axes, Canvas, Corner, Dash, LegendPlace, Mark, PanelKind, Rgb, Style, Theme, TickChoice, XUnit,
+    YScale, shade,
 };
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::transform::Transform;
@@ -104,6 +105,17 @@ pub const Y_KEYS: &[&str] = &["scale", "range", "label", "ticks"];
 pub const Y_SCALES: &[&str] = &["linear", "log"];
 /// Keys of a scene curve beyond its model parameters.
 pub const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "label", "mark", "width"];
+/// Places a panel's `legend` may name, besides `true` and `false`.
+pub const LEGEND_PLACES: &[&str] = &[
+    "best",
+    "upper right",
+    "upper left",
+    "lower left",
+    "lower right",
+    "right",
+    "below",
+    "none",
+];
 /// Units of a scene's `width` and `height` (`unit`): CSS pixels, inches, centimetres.
 pub const SIZE_UNITS: &[&str] = &["px", "in", "cm"];
 /// CSS pixels per inch: what `in`, `cm`, `dpi` and `font_pt` are converted with.
@@ -592,7 +604,7 @@ fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<Scene
 fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel<Spec>> {
     let panel = reader.object(node, path, PANEL_KEYS)?;
     let title = reader.string(&panel, "title").unwrap_or_default();
-    let legend = reader.boolean(&panel, "legend").unwrap_or(true);
+    let legend = read_legend(reader, &panel);
     let grid = reader.boolean(&panel, "grid").unwrap_or(true);
     let x_path = panel.path_of("x");
     let y_path = panel.path_of("y");
@@ -660,6 +672,27 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
         curves: series.curves,
         data: series.data,
     })
+}
+
+/// A panel's `legend`: `true` (default) or `false`, or one of [`LEGEND_PLACES`].
+fn read_legend(reader: &mut Reader, panel: &reader::Object) -> LegendPlace {
+    let Some(node) = panel.get("legend") else {
+        return LegendPlace::Best;
+    };
+    match &node.value {
+        Value::Bool(true) => LegendPlace::Best,
+        Value::Bool(false) => LegendPlace::None,
+        _ => match reader.choice(panel, "legend", LEGEND_PLACES) {
+            Some("upper right") => LegendPlace::Corner(Corner::UpperRight),
+            Some("upper left") => LegendPlace::Corner(Corner::UpperLeft),
+            Some("lower left") => LegendPlace::Corner(Corner::LowerLeft),
+            Some("lower right") => LegendPlace::Corner(Corner::LowerRight),
+            Some("right") => LegendPlace::Right,
+            Some("below") => LegendPlace::Below,
+            Some("none") => LegendPlace::None,
+            _ => LegendPlace::Best,
+        },
+    }
 }
 
 /// An axis' `ticks`: a count (2 to [`MAX_TICK_COUNT`]) or a list of values in the unit the axis

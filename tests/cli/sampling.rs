@@ -361,7 +361,7 @@ fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
         &evaluated,
     );
     let panel = &mut figure.panels[p];
-    panel.axes.legend = false;
+    panel.axes.legend = ndfplot::look::LegendPlace::None;
     panel.series[s].style.colour = Rgb::from_hex(0x010203);
     panel.series[s].style.dash = Dash::Solid;
     let panel = &figure.panels[p];

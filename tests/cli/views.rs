@@ -158,3 +158,47 @@ fn figures_take_physical_sizes_tick_choices_line_widths_and_no_grid() {
         assert!(stderr.contains(expected), "{expected} not in {stderr}");
     }
 }
+
+#[test]
+fn a_legend_goes_where_the_spec_places_it() {
+    let dir = scratch("views-legend");
+    // The legend box is the one translucent rectangle: its top-left corner, or none.
+    let legend_at = |place: &str| -> Option<(f64, f64)> {
+        let spec = dir.join(format!("{}.json", place.replace(' ', "-")));
+        std::fs::write(
+            &spec,
+            format!(
+                r#"{{"id": "{}", "width": 640, "height": 400,
+                    "panels": [{{"legend": {place}, "curves": [{{"ndf": "ggx", "alpha_tr": [0.2, 0.4]}}]}}]}}"#,
+                place.trim_matches('"').replace(' ', "-")
+            ),
+        )
+        .unwrap();
+        let out = dir.join("out");
+        render_into(&[&spec], &out, "svg");
+        let name = format!("{}.svg", place.trim_matches('"').replace(' ', "-"));
+        let svg = std::fs::read_to_string(out.join(name)).unwrap();
+        let rect = svg
+            .lines()
+            .find(|l| l.starts_with("<rect") && l.contains(r#"opacity="0.85""#))?;
+        let number = |key: &str| -> f64 {
+            let start = rect.find(&format!(r#" {key}=""#)).unwrap() + key.len() + 3;
+            rect[start..].split('"').next().unwrap().parse().unwrap()
+        };
+        Some((number("x"), number("y")))
+    };
+    let upper_left = legend_at(r#""upper left""#).unwrap();
+    let lower_right = legend_at(r#""lower right""#).unwrap();
+    assert!(
+        upper_left.0 < lower_right.0 && upper_left.1 < lower_right.1,
+        "{upper_left:?} {lower_right:?}"
+    );
+    let right = legend_at(r#""right""#).unwrap();
+    let below = legend_at(r#""below""#).unwrap();
+    assert!(
+        right.0 > lower_right.0 && below.1 > lower_right.1,
+        "{right:?} {below:?} {lower_right:?}"
+    );
+    assert_eq!(legend_at(r#""none""#), None);
+    assert_eq!(legend_at("false"), None);
+}

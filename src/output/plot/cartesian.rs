@@ -16,7 +16,7 @@ use super::{PlotError, draw_err, outline};
 use crate::figure::{Panel, Series};
 use crate::layout::AXIS_LABEL_EM;
 use crate::layout::DEFAULT_ASPECT_RATIO;
-use crate::look::{Mark, YScale};
+use crate::look::{LegendPlace, Mark, YScale};
 
 /// Bar width as a fraction of the median spacing of a series' x values.
 pub(super) const BAR_FRACTION: f64 = 0.6;
@@ -63,12 +63,9 @@ where
     let legend = Legend::of_panel(area, panel, looks, |s| Sample::of(s.style.mark), m)?;
     let (width, height) = area.dim_in_pixel();
     let full = Frame::fit(area, (width, height), panel, m, (0, 0))?;
+    let place = panel.axes.legend;
     let band = match &legend {
-        Some(legend)
-            if legend
-                .inside(full.plot_f(), &covered(panel, &full, m), m)
-                .is_none() =>
-        {
+        Some(legend) if !legend.goes_inside(place, full.plot_f(), &covered(panel, &full, m), m) => {
             legend
                 .below((f64::from(width), f64::from(height)), m)
                 .strip
@@ -119,8 +116,9 @@ where
         },
         m,
     );
-    if shared.band == 0.0 || legend.inside(frame.plot_f(), &covered, m).is_some() {
-        return legend.draw_over(&plot, &covered, m);
+    let place = panel.axes.legend;
+    if shared.band == 0.0 || legend.goes_inside(place, frame.plot_f(), &covered, m) {
+        return legend.draw_inside(&plot, place, &covered, m);
     }
     let dims = (f64::from(width), f64::from(height));
     let setting = legend.below(dims, m).setting;
@@ -149,14 +147,17 @@ where
     let legend = Legend::of_panel(area, panel, looks, |s| Sample::of(s.style.mark), m)?;
     let (width, height) = area.dim_in_pixel();
     let full = Frame::fit(area, (width, height), panel, m, (0, 0))?;
+    let place = panel.axes.legend;
+    let dims = (f64::from(width), f64::from(height));
     let outside = match &legend {
-        Some(legend)
-            if legend
-                .inside(full.plot_f(), &covered(panel, &full, m), m)
-                .is_none() =>
-        {
-            let dims = (f64::from(width), f64::from(height));
-            Some(legend.outside(dims, m, |w, h| full.score((w, h), m)))
+        Some(legend) if !legend.goes_inside(place, full.plot_f(), &covered(panel, &full, m), m) => {
+            Some(match place {
+                LegendPlace::Right => legend.outside(dims, m, |w, h| {
+                    (h >= dims.1).then(|| full.score((w, h), m)).flatten()
+                }),
+                LegendPlace::Below => legend.below(dims, m),
+                _ => legend.outside(dims, m, |w, h| full.score((w, h), m)),
+            })
         }
         _ => None,
     };
@@ -187,7 +188,7 @@ where
                 },
                 m,
             );
-            legend.draw_over(&plot, &covered, m)
+            legend.draw_inside(&plot, panel.axes.legend, &covered, m)
         }
         Some(Outside { side, setting, .. }) => {
             let (box_w, box_h) = legend.size(setting, m);

@@ -5,7 +5,9 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
 use crate::figure::{Figure, Panel, Series};
-use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
+use crate::look::{
+    Axes, Canvas, Dash, LegendPlace, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale,
+};
 use crate::provenance::Provenance;
 
 /// The spec text the test figures claim to come from.
@@ -75,7 +77,7 @@ pub(super) fn panel(x_unit: XUnit, y_scale: YScale, series: Vec<Series>) -> Pane
             y_scale,
             x_range: None,
             y_range: None,
-            legend: true,
+            legend: LegendPlace::Best,
             grid: true,
             x_ticks: None,
             y_ticks: None,

@@ -18,7 +18,7 @@ use super::text::MIN_SHRINK;
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
 use crate::figure::{Panel, Series};
-use crate::look::Mark;
+use crate::look::{Corner, LegendPlace, Mark};
 
 /// Number of heights tried for the legend box, from the top to the bottom of the plot area.
 pub(super) const LEGEND_HEIGHTS: i32 = 5;
@@ -150,7 +150,7 @@ impl<'a> Legend<'a> {
             .series
             .iter()
             .zip(looks)
-            .filter(|(s, _)| panel.axes.legend && !s.label.is_empty())
+            .filter(|(s, _)| panel.axes.legend != LegendPlace::None && !s.label.is_empty())
             .map(|(s, &look)| (s, look, sample(s)))
             .collect();
         if entries.is_empty() {
@@ -189,6 +189,69 @@ impl<'a> Legend<'a> {
         }
         let (at, hidden) = legend_position(plot, size, inset, covered);
         (hidden <= HIDE_TOLERANCE_EM * m.unit).then_some(at)
+    }
+
+    /// The top-left corner of the full-size box at `corner` of a plot area of `plot` pixels, inset
+    /// from its edges; `None` when it does not fit there.
+    pub(super) fn at_corner(
+        &self,
+        plot: (f64, f64),
+        corner: Corner,
+        m: &Metrics,
+    ) -> Option<(f64, f64)> {
+        let (w, h) = self.size(Setting::FULL, m);
+        let inset = Self::inset(m);
+        if w + 2.0 * inset > plot.0 || h + 2.0 * inset > plot.1 {
+            return None;
+        }
+        let (left, right) = (inset, plot.0 - inset - w);
+        let (top, bottom) = (inset, plot.1 - inset - h);
+        Some(match corner {
+            Corner::UpperRight => (right, top),
+            Corner::UpperLeft => (left, top),
+            Corner::LowerLeft => (left, bottom),
+            Corner::LowerRight => (right, bottom),
+        })
+    }
+
+    /// Whether the legend of a panel placed as `place` goes inside a plot area of `plot` pixels
+    /// over the `covered` curves: at the best place when it hides none ([`Legend::inside`]), at
+    /// its corner when it fits there; never when it is asked for outside.
+    pub(super) fn goes_inside(
+        &self,
+        place: LegendPlace,
+        plot: (f64, f64),
+        covered: &[Vec<(f64, f64)>],
+        m: &Metrics,
+    ) -> bool {
+        match place {
+            LegendPlace::Best => self.inside(plot, covered, m).is_some(),
+            LegendPlace::Corner(corner) => self.at_corner(plot, corner, m).is_some(),
+            LegendPlace::Right | LegendPlace::Below | LegendPlace::None => false,
+        }
+    }
+
+    /// Draws the legend inside `plot` as `place` asks (its corner, else where it hides the least
+    /// of the `covered` curves).
+    pub(super) fn draw_inside<DB: DrawingBackend>(
+        &self,
+        plot: &DrawingArea<DB, Shift>,
+        place: LegendPlace,
+        covered: &[Vec<(f64, f64)>],
+        m: &Metrics,
+    ) -> Result<(), PlotError>
+    where
+        DB::ErrorType: 'static,
+    {
+        let (w, h) = plot.dim_in_pixel();
+        let corner = match place {
+            LegendPlace::Corner(corner) => self.at_corner((f64::from(w), f64::from(h)), corner, m),
+            _ => None,
+        };
+        match corner {
+            Some(at) => self.draw(plot, at, Setting::FULL, m),
+            None => self.draw_over(plot, covered, m),
+        }
     }
 
     /// Where the legend goes outside a plot that would fill an `area` of device pixels:

@@ -442,7 +442,7 @@ mod tests {
         let mut p = panel(XUnit::Degrees, y_scale, series);
         p.axes.kind = PanelKind::Polar;
         p.axes.y_range = y_range;
-        p.axes.legend = false;
+        p.axes.legend = crate::look::LegendPlace::None;
         figure(vec![p])
     }
 
