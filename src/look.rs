@@ -78,6 +78,19 @@ impl Rgb {
     }
 }
 
+/// `text` with its math-text markup characters (`\\`, `_`, `^`, `{`, `}`) escaped, so that a drawn
+/// label shows it as written: for names made of identifiers (`lazanyi_term`, `closed_form`).
+pub fn literal(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if matches!(c, '\\' | '_' | '^' | '{' | '}') {
+            out.push('\\');
+        }
+        out.push(c);
+    }
+    out
+}
+
 /// CIE lightness L* (0 black … 100 white) of relative luminance `y`.
 pub fn lightness(y: f64) -> f64 {
     if y > 216.0 / 24389.0 {
@@ -320,6 +333,13 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn literal_escapes_every_markup_character() {
+        assert_eq!(literal("lazanyi_term"), "lazanyi\\_term");
+        assert_eq!(literal(r"a^{b}\c"), r"a\^\{b\}\\c");
+        assert_eq!(literal("α = 0.3"), "α = 0.3");
     }
 
     #[test]

@@ -360,7 +360,7 @@ fn with_family_prefix(curve: &Curve, text: &str) -> String {
         },
         Model::Fresnel(model) => {
             let l2 = belcour_l2(curve).map_or(String::new(), |l2| format!(", L2 = {l2:.2}"));
-            format!("{} {text}{l2}", model.name())
+            format!("{} {text}{l2}", crate::look::literal(model.name()))
                 .trim_end()
                 .to_string()
         }

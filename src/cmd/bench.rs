@@ -8,7 +8,8 @@ use crate::bench::{self, Row};
 use crate::error::{Error, Result};
 use crate::figure::{Figure, Panel, Series};
 use crate::look::{
-    Axes, Canvas, Dash, LegendPlace, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale,
+    Axes, Canvas, Dash, LegendPlace, Mark, PanelKind, Rgb, Style, Theme, TickChoice, XUnit, YScale,
+    literal, shade,
 };
 use crate::ndf::Family;
 use crate::output::{plot, write};
@@ -96,34 +97,54 @@ fn panel(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Pane
     }
 }
 
-/// A short label of a case: `phong 2048`, `trowbridge_reitz 0.01`.
+/// The family of a drawing case (its canonical curve JSON names it).
+fn family_of(case: &str) -> Option<Family> {
+    Family::ALL
+        .into_iter()
+        .find(|f| case.contains(&format!("\"{}\"", f.name())))
+}
+
+/// A short label of a case: the family's title and its parameter values (`Phong 2048`,
+/// `Trowbridge–Reitz 0.01`).
 fn short(case: &str) -> String {
     let words: Vec<&str> = case
         .split(|c: char| "{}\":,".contains(c))
         .filter(|w| !w.is_empty())
         .collect();
-    let family = words.get(1).copied().unwrap_or(case);
-    let values: Vec<&str> = words.iter().skip(3).step_by(2).copied().collect();
-    format!("{family} {}", values.join(" "))
-}
-
-/// A family's name short enough for an axis label of all families: a name of several words by their
-/// initials (`torrance_sparrow` → `TS`).
-fn short_family(family: Family) -> String {
-    let name = family.name();
-    if name.contains('_') {
-        name.split('_')
-            .filter_map(|word| word.chars().next())
-            .collect::<String>()
-            .to_uppercase()
-    } else {
-        name.to_string()
+    let values: Vec<String> = words
+        .iter()
+        .skip(3)
+        .step_by(2)
+        .map(|w| w.parse().map_or_else(|_| literal(w), crate::curve::pretty))
+        .collect();
+    match family_of(case) {
+        Some(family) => format!("{} {}", family.title(), values.join(" ")),
+        None => literal(case),
     }
 }
 
-/// The figure: (a) drawn error in px against time per curve, uniform dashed and adaptive solid;
-/// (b) relative error of each normalization route against time; (c) samples per second per family
-/// and method. Times on log₁₀ axes.
+/// The series marking the floor at which exact results (error 0) are drawn, across `x`.
+fn floor_line(x: (f64, f64)) -> Series {
+    series(
+        "error 0 (exact) is drawn at 10^{−17}".to_owned(),
+        style(0x777777, Dash::Dotted, Mark::Line),
+        vec![(x.0, ERROR_FLOOR), (x.1, ERROR_FLOOR)],
+    )
+}
+
+/// The extent of `values`, `(0, 1)` when empty.
+fn span(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    values
+        .fold(None, |acc: Option<(f64, f64)>, v| {
+            Some(acc.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v))))
+        })
+        .unwrap_or((0.0, 1.0))
+}
+
+/// The figure: (a) drawn error in px against time per curve, uniform dashed and adaptive solid,
+/// one shade of its family's colour per case; (b) relative error of each normalization route
+/// against time; (c) samples per second on one thread, a bar per family in its colour. Times on
+/// log₁₀ axes; exact results at a marked floor.
 pub fn figure(rows: &[Row]) -> Figure {
     let log_time = |r: &Row| r.seconds.max(f64::MIN_POSITIVE).log10();
     let mut drawing = Vec::new();
@@ -134,10 +155,15 @@ pub fn figure(rows: &[Row]) -> Figure {
         .collect();
     cases.dedup();
     for case in &cases {
-        let colour = Family::ALL
-            .into_iter()
-            .find(|f| case.contains(&format!("\"{}\"", f.name())))
-            .map_or(0x000000, Family::colour);
+        let family = family_of(case);
+        let siblings: Vec<&&str> = cases.iter().filter(|c| family_of(c) == family).collect();
+        let k = siblings.iter().position(|c| **c == *case).unwrap_or(0);
+        let base = Rgb::from_hex(family.map_or(0x000000, Family::colour));
+        let colour = if siblings.len() > 1 {
+            shade(base, k, siblings.len())
+        } else {
+            base
+        };
         for (method, dash) in [("uniform", Dash::Dashed), ("adaptive", Dash::Solid)] {
             let points: Vec<(f64, f64)> = rows
                 .iter()
@@ -145,11 +171,21 @@ pub fn figure(rows: &[Row]) -> Figure {
                 .map(|r| (log_time(r), r.error.max(ERROR_FLOOR)))
                 .collect();
             drawing.push(series(
-                format!("{} {method}", short(case)),
-                style(colour, dash, Mark::LinePoints),
+                format!("{}, {method}", short(case)),
+                Style {
+                    colour,
+                    ..style(0, dash, Mark::LinePoints)
+                },
                 points,
             ));
         }
+    }
+    let drawing_times = span(rows.iter().filter(|r| r.section == "drawing").map(log_time));
+    if rows
+        .iter()
+        .any(|r| r.section == "drawing" && r.error <= ERROR_FLOOR)
+    {
+        drawing.push(floor_line(drawing_times));
     }
     let mut routes: Vec<&str> = rows
         .iter()
@@ -158,7 +194,7 @@ pub fn figure(rows: &[Row]) -> Figure {
         .collect();
     routes.sort();
     routes.dedup();
-    let normalization = routes
+    let mut normalization: Vec<Series> = routes
         .iter()
         .enumerate()
         .map(|(i, route)| {
@@ -168,39 +204,47 @@ pub fn figure(rows: &[Row]) -> Figure {
                 .map(|r| (log_time(r), r.error.max(ERROR_FLOOR)))
                 .collect();
             series(
-                route.to_string(),
+                literal(&route.replace('_', " ")),
                 style(PALETTE[i % PALETTE.len()], Dash::Solid, Mark::Points),
                 points,
             )
         })
         .collect();
-    let methods = ["eval_1_thread", "eval_all_threads"];
-    let throughput = methods
+    if rows
+        .iter()
+        .any(|r| r.section == "normalization" && r.error <= ERROR_FLOOR)
+    {
+        let times = span(
+            rows.iter()
+                .filter(|r| r.section == "normalization")
+                .map(log_time),
+        );
+        normalization.push(floor_line(times));
+    }
+    let throughput = Family::ALL
         .iter()
         .enumerate()
-        .map(|(i, method)| {
-            let points = Family::ALL
-                .iter()
-                .enumerate()
-                .filter_map(|(k, family)| {
-                    let r = rows.iter().find(|r| {
-                        r.section == "throughput" && r.method == *method && r.case == family.name()
-                    })?;
-                    Some(((k + 1) as f64, r.samples as f64 / r.seconds / 1e6))
-                })
-                .collect();
-            series(
-                method.to_string(),
-                style(PALETTE[i], Dash::Solid, Mark::LinePoints),
-                points,
-            )
+        .filter_map(|(k, family)| {
+            let r = rows.iter().find(|r| {
+                r.section == "throughput" && r.method == "eval_1_thread" && r.case == family.name()
+            })?;
+            Some(series(
+                family.title().to_owned(),
+                style(family.colour(), Dash::Solid, Mark::Bars),
+                vec![((k + 1) as f64, r.samples as f64 / r.seconds / 1e6)],
+            ))
         })
         .collect();
-    let families: Vec<String> = Family::ALL
-        .iter()
-        .enumerate()
-        .map(|(k, f)| format!("{} {}", k + 1, short_family(*f)))
-        .collect();
+    let mut speed = panel(
+        "(c) eval throughput, one thread",
+        "family, in the legend's order",
+        "M samples/s",
+        throughput,
+    );
+    speed.axes.y_scale = YScale::Linear;
+    speed.axes.x_ticks = Some(TickChoice::At(
+        (1..=Family::ALL.len()).map(|k| k as f64).collect(),
+    ));
     Figure {
         id: "bench".into(),
         title: "ndfplot bench: time against error".into(),
@@ -222,12 +266,7 @@ pub fn figure(rows: &[Row]) -> Figure {
                 "relative error",
                 normalization,
             ),
-            panel(
-                "(c) throughput, uniform grid",
-                &families.join(", "),
-                "M samples/s",
-                throughput,
-            ),
+            speed,
         ],
     }
 }
@@ -246,6 +285,47 @@ mod tests {
             seconds: 1e-4 * setting,
             error,
         }
+    }
+
+    #[test]
+    fn the_figure_names_families_and_routes_and_passes_the_figure_lint() {
+        let beckmann = |a: &str| format!(r#"{{"ndf":"beckmann","alpha_b":{a}}}"#);
+        let mut rows = Vec::new();
+        for case in [beckmann("0.001"), beckmann("0.5")] {
+            for (setting, error) in [(16.0, 3.0), (256.0, 0.02), (4096.0, 0.0)] {
+                rows.push(row("drawing", &case, "uniform", setting, error));
+                rows.push(row(
+                    "drawing",
+                    &case,
+                    "adaptive",
+                    setting / 64.0,
+                    error / 2.0,
+                ));
+            }
+        }
+        for (k, route) in ["closed_form", "quadrature"].iter().enumerate() {
+            rows.push(row(
+                "normalization",
+                "abc",
+                route,
+                1.0 + k as f64,
+                1e-15 * k as f64,
+            ));
+        }
+        for family in Family::ALL {
+            rows.push(row("throughput", family.name(), "eval_1_thread", 2.0, 0.0));
+        }
+        let figure = figure(&rows);
+        let labels: Vec<&str> = figure
+            .panels
+            .iter()
+            .flat_map(|p| p.series.iter().map(|s| s.label.as_str()))
+            .collect();
+        for expected in ["Beckmann 0.001, uniform", "closed form", "Torrance–Sparrow"] {
+            assert!(labels.contains(&expected), "{expected} not in {labels:?}");
+        }
+        assert!(labels.iter().any(|l| l.starts_with("error 0 (exact)")));
+        assert_eq!(plot::lint(&figure).unwrap(), Vec::<String>::new());
     }
 
     #[test]

@@ -97,6 +97,7 @@ impl Abc {
 
 impl Distribution for Abc {
     const NAME: &'static str = "abc";
+    const TITLE: &'static str = "ABC";
     const PARAMS: &'static [Param] = &[ALPHA_ABC1, ALPHA_ABC2];
     const LEGEND_PREFIX: Option<&'static str> = Some("ABC");
     const COLOUR: u32 = 0x6C70C4;

@@ -59,6 +59,7 @@ impl Beckmann {
 
 impl Distribution for Beckmann {
     const NAME: &'static str = "beckmann";
+    const TITLE: &'static str = "Beckmann";
     const PARAMS: &'static [Param] = &[ALPHA_B];
     const COLOUR: u32 = 0x2689D1;
     const EXAMPLE: &'static [f64] = &[0.3];

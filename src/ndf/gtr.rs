@@ -109,6 +109,7 @@ impl Gtr {
 
 impl Distribution for Gtr {
     const NAME: &'static str = "gtr";
+    const TITLE: &'static str = "GTR";
     const PARAMS: &'static [Param] = &[ALPHA_GTR, GAMMA_GTR];
     const LEGEND_PREFIX: Option<&'static str> = Some("GTR");
     const COLOUR: u32 = 0x2AA198;

@@ -16,6 +16,8 @@ use std::fmt;
 pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
     /// The canonical name in curve JSON (`"ndf": "<name>"`).
     const NAME: &'static str;
+    /// The family's name in prose and on figures (`Torrance–Sparrow`).
+    const TITLE: &'static str;
     /// Other accepted names (`ggx` for Trowbridge–Reitz).
     const ALIASES: &'static [&'static str] = &[];
     /// The parameters in MATH.md's order, each with its domain and the reason for each bound: the only
@@ -94,6 +96,13 @@ macro_rules! families {
             pub fn name(self) -> &'static str {
                 match self {
                     $(Family::$variant => <$ty as Distribution>::NAME,)+
+                }
+            }
+
+            /// The family's name in prose and on figures (see [`Distribution::TITLE`]).
+            pub fn title(self) -> &'static str {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::TITLE,)+
                 }
             }
 

@@ -60,6 +60,7 @@ impl Phong {
 
 impl Distribution for Phong {
     const NAME: &'static str = "phong";
+    const TITLE: &'static str = "Phong";
     const PARAMS: &'static [Param] = &[ALPHA_P];
     const COLOUR: u32 = 0xDB2E2E;
     /// α_p = 2/α_b² − 2 of the notebook's α_b = 0.3 (MATH.md, Walter et al. 2007).

@@ -85,6 +85,7 @@ impl Sgd {
 
 impl Distribution for Sgd {
     const NAME: &'static str = "sgd";
+    const TITLE: &'static str = "SGD";
     const PARAMS: &'static [Param] = &[ALPHA_SGD1, ALPHA_SGD2];
     const LEGEND_PREFIX: Option<&'static str> = Some("SGD");
     const COLOUR: u32 = 0xB58800;

@@ -67,6 +67,7 @@ impl TorranceSparrow {
 
 impl Distribution for TorranceSparrow {
     const NAME: &'static str = "torrance_sparrow";
+    const TITLE: &'static str = "Torrance–Sparrow";
     const PARAMS: &'static [Param] = &[ALPHA_TS];
     const COLOUR: u32 = 0xFF9900;
     /// The notebook's peak match of Phong at α_b = 0.3 (MATH.md).

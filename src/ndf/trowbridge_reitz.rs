@@ -57,6 +57,7 @@ impl TrowbridgeReitz {
 
 impl Distribution for TrowbridgeReitz {
     const NAME: &'static str = "trowbridge_reitz";
+    const TITLE: &'static str = "Trowbridge–Reitz";
     const ALIASES: &'static [&'static str] = &["ggx"];
     const PARAMS: &'static [Param] = &[ALPHA_TR];
     const COLOUR: u32 = 0x849900;
