@@ -33,7 +33,7 @@ use faer::matrix_free::eigen::{PartialEigenParams, partial_svd, partial_svd_scra
 use faer::prelude::default;
 use faer::{Col, Mat, Par};
 
-use super::exact::{Index, normalized_reflectance, reflectance};
+use super::exact::{Incidence, Index, normalized_reflectance, reflectance};
 use super::gulbrandsen;
 use crate::grid::linspace;
 
@@ -78,7 +78,7 @@ pub fn grid() -> Vec<f64> {
 pub fn normalized_curve(cos_theta: &[f64], index: Index) -> Vec<f64> {
     cos_theta
         .iter()
-        .map(|&c| normalized_reflectance(c, index))
+        .map(|&c| normalized_reflectance(Incidence::from_cos(c), index))
         .collect()
 }
 
@@ -356,10 +356,10 @@ pub fn coeffs(index: Index) -> Coefficients {
     let basis = basis();
     let [b1, b2, b3] = [basis.function(1), basis.function(2), basis.function(3)];
     let [i1, i2] = basis.critical;
-    let c0 = reflectance(1.0, index);
+    let c0 = reflectance(Incidence::NORMAL, index);
     let c1 = if c0 != 0.0 { 1.0 - c0 } else { 0.0 };
-    let df1 = reflectance(basis.cos_theta[i1], index) - (c0 + c1 * b1[i1]);
-    let df2 = reflectance(basis.cos_theta[i2], index) - (c0 + c1 * b1[i2]);
+    let df1 = reflectance(Incidence::from_cos(basis.cos_theta[i1]), index) - (c0 + c1 * b1[i1]);
+    let df2 = reflectance(Incidence::from_cos(basis.cos_theta[i2]), index) - (c0 + c1 * b1[i2]);
     let det = b2[i1] * b3[i2] - b3[i1] * b2[i2];
     let c2 = (df1 * b3[i2] - df2 * b3[i1]) / det;
     let c3 = (b2[i1] * df2 - b2[i2] * df1) / det;
@@ -399,7 +399,7 @@ impl Coefficients {
             .cos_theta
             .iter()
             .zip(&reconstruction)
-            .map(|(&c, f_hat)| (reflectance(c, index) - f_hat).powi(2))
+            .map(|(&c, f_hat)| (reflectance(Incidence::from_cos(c), index) - f_hat).powi(2))
             .sum();
         sum_sq.sqrt()
     }

@@ -17,14 +17,17 @@
 //!   r_s = −a/(c + w)², r_p = a (η̃² c² − sin²θ)/(η̃² c + w)² (η̃² c² − sin²θ is MATH.md's
 //!   c²(η̃² + 1) − 1). These are used everywhere: the denominators never cancel (Re w ≥ 0, c ≥ 0),
 //!   so they are at least as accurate as the raw ratios. |a| = |η̃ − 1| |η̃ + 1|, a product of norms.
+//! - The angle is an [`Incidence`]: c = cos θ and sin²θ, each accurate relative to itself. From θ,
+//!   sin²θ = (sin θ)²; from a c given exactly (the basis grid), (1 − c)(1 + c). Forming sin²θ from
+//!   a rounded cos θ keeps only ε absolute near θ = 0, where a tiny η̃² − sin²θ needs it relative.
 //! - w² = η̃² − sin²θ = c² + a is a sum of two terms either way: c² + a loses nothing when η̃ ≈ 1
 //!   (η̃² − sin²θ would subtract two numbers near 1 at grazing incidence and leave the rounding of
-//!   η̃² in w² ≈ η̃² − 1), and η̃² − sin²θ (sin²θ = (1 − c)(1 + c)) loses nothing when η̃ is tiny
-//!   (c² + a would lose η̃² against 1 near normal incidence). The split with the smaller terms,
+//!   η̃² in w² ≈ η̃² − 1), and η̃² − sin²θ loses nothing when η̃ is tiny (c² + a would lose η̃²
+//!   against 1 near normal incidence). The split with the smaller terms,
 //!   |a| + c² against |η̃²| + sin²θ, is taken: its rounding is ε (|a| + c²) or ε (|η̃²| + sin²θ),
 //!   no more than what a relative rounding of c or η̃ alone does to w². Near a critical angle
-//!   (κ = 0, η < 1, w → 0) that still leaves F ill-conditioned in c: its relative error grows like
-//!   ε c/|w| there, whatever the evaluation.
+//!   (κ = 0, η < 1, w → 0) F is ill-conditioned in θ itself: its relative error grows like
+//!   ε max(c, sin θ)/|w| there, whatever the evaluation.
 //! - Only moduli are formed, each as a ratio of hypot-based norms: no complex division, and no
 //!   overflow for |η̃| up to 1e150.
 //! - η̃ = 1 exactly gives F ≡ 0 (the conjugate form is 0/0 at c = 0): a guard.
@@ -65,13 +68,45 @@ impl Index {
     }
 }
 
+/// The angle of incidence θ ∈ [0, π/2] as the exact form uses it: c = cos θ and sin²θ.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Incidence {
+    cos_theta: f64,
+    sin2_theta: f64,
+}
+
+impl Incidence {
+    /// Normal incidence: c = 1, sin²θ = 0.
+    pub const NORMAL: Incidence = Incidence {
+        cos_theta: 1.0,
+        sin2_theta: 0.0,
+    };
+
+    /// From θ ∈ [0, π/2]: c = cos θ and sin²θ = (sin θ)², each within an ulp or two of itself.
+    pub fn from_theta(theta: f64) -> Incidence {
+        let sin_theta = theta.sin();
+        Incidence {
+            cos_theta: theta.cos(),
+            sin2_theta: sin_theta * sin_theta,
+        }
+    }
+
+    /// From c = cos θ ∈ [0, 1] taken as exact (the basis grid): sin²θ = (1 − c)(1 + c).
+    pub fn from_cos(cos_theta: f64) -> Incidence {
+        Incidence {
+            cos_theta,
+            sin2_theta: (1.0 - cos_theta) * (1.0 + cos_theta),
+        }
+    }
+}
+
 /// Exact unpolarized reflectance F(c; η̃) of MATH.md's normative form, in [0, 1].
 ///
-/// `cos_theta` = c = cos θ ∈ [0, 1] (θ the angle of incidence); `index` is η̃ = η + iκ, the medium
-/// entered from index 1. Exactly 0 for η̃ = 1, exactly 1 under total internal reflection (κ = 0,
+/// `incidence` is the angle of incidence θ (c = cos θ); `index` is η̃ = η + iκ, the medium entered
+/// from index 1. Exactly 0 for η̃ = 1, exactly 1 under total internal reflection (κ = 0,
 /// η ≤ sin θ).
-pub fn reflectance(cos_theta: f64, index: Index) -> f64 {
-    match Interface::new(cos_theta, index) {
+pub fn reflectance(incidence: Incidence, index: Index) -> f64 {
+    match Interface::new(incidence, index) {
         Interface::Index1 => 0.0,
         Interface::TotalInternalReflection => 1.0,
         Interface::General {
@@ -98,8 +133,8 @@ pub fn reflectance(cos_theta: f64, index: Index) -> f64 {
 ///
 /// Accurate to a few ulps relative where F is close to 1 (conductors, grazing incidence), where
 /// 1 − `reflectance` keeps only the absolute accuracy of F. Same domain and guards as [`reflectance`].
-pub fn one_minus_reflectance(cos_theta: f64, index: Index) -> f64 {
-    match Interface::new(cos_theta, index) {
+pub fn one_minus_reflectance(incidence: Incidence, index: Index) -> f64 {
+    match Interface::new(incidence, index) {
         Interface::Index1 => 1.0,
         Interface::TotalInternalReflection => 0.0,
         Interface::General { c, eta2, w, .. } => {
@@ -117,16 +152,16 @@ pub fn one_minus_reflectance(cos_theta: f64, index: Index) -> f64 {
 /// formed as (F − F₀)/(1 − F₀) from [`reflectance`], otherwise as 1 − (1 − F)/(1 − F₀) from
 /// [`one_minus_reflectance`], so the difference is always taken between the smaller quantities.
 /// 0 for η̃ = 1 and where 1 − F₀ underflows to 0.
-pub fn normalized_reflectance(cos_theta: f64, index: Index) -> f64 {
-    let f0 = reflectance(1.0, index);
+pub fn normalized_reflectance(incidence: Incidence, index: Index) -> f64 {
+    let f0 = reflectance(Incidence::NORMAL, index);
     if f0 <= 0.5 {
-        (reflectance(cos_theta, index) - f0) / (1.0 - f0)
+        (reflectance(incidence, index) - f0) / (1.0 - f0)
     } else {
-        let one_minus_f0 = one_minus_reflectance(1.0, index);
+        let one_minus_f0 = one_minus_reflectance(Incidence::NORMAL, index);
         if one_minus_f0 == 0.0 {
             0.0
         } else {
-            1.0 - one_minus_reflectance(cos_theta, index) / one_minus_f0
+            1.0 - one_minus_reflectance(incidence, index) / one_minus_f0
         }
     }
 }
@@ -137,7 +172,7 @@ enum Interface {
     Index1,
     /// κ = 0 and η² ≤ sin²θ: w is purely imaginary and F = 1 exactly.
     TotalInternalReflection,
-    /// c = cos θ, sin²θ = (1 − c)(1 + c), η̃² and the principal root w = √(η̃² − sin²θ).
+    /// c = cos θ, sin²θ, η̃² and the principal root w = √(η̃² − sin²θ).
     General {
         c: f64,
         sin2_theta: f64,
@@ -147,7 +182,7 @@ enum Interface {
 }
 
 impl Interface {
-    fn new(cos_theta: f64, index: Index) -> Interface {
+    fn new(incidence: Incidence, index: Index) -> Interface {
         let Index {
             eta,
             eta_minus_one,
@@ -156,9 +191,11 @@ impl Interface {
         if eta_minus_one == 0.0 && kappa == 0.0 {
             return Interface::Index1;
         }
-        let c = cos_theta;
+        let Incidence {
+            cos_theta: c,
+            sin2_theta,
+        } = incidence;
         let cos2_theta = c * c;
-        let sin2_theta = (1.0 - c) * (1.0 + c);
         let eta_c = Complex::new(eta, kappa);
         let eta2 = eta_c * eta_c;
         // a = η̃² − 1 = (η̃ − 1)(η̃ + 1), its real part from η − 1.
@@ -240,8 +277,8 @@ mod tests {
         ] {
             for c in [0.0, 0.1, 0.5, 0.9, 1.0] {
                 let (f, t) = (
-                    reflectance(c, Index::new(eta, kappa)),
-                    one_minus_reflectance(c, Index::new(eta, kappa)),
+                    reflectance(Incidence::from_cos(c), Index::new(eta, kappa)),
+                    one_minus_reflectance(Incidence::from_cos(c), Index::new(eta, kappa)),
                 );
                 // Both are accurate to a few ulps of 1.
                 assert!(
@@ -255,7 +292,7 @@ mod tests {
     #[test]
     fn quirky_training_material_keeps_the_principal_branch() {
         // MATH.md step 2: η ≈ −9.99995e-6, κ ≈ 1 gives F₀ = 0.99998 with the principal root.
-        let f0 = reflectance(1.0, Index::new(-9.99995e-6, 1.0));
+        let f0 = reflectance(Incidence::NORMAL, Index::new(-9.99995e-6, 1.0));
         assert!((f0 - 0.99998).abs() < 1e-6, "{f0}");
     }
 }

@@ -17,7 +17,7 @@ pub mod exact;
 pub mod gulbrandsen;
 
 pub use basis::Coefficients;
-pub use exact::Index;
+pub use exact::{Incidence, Index};
 
 use crate::domain::{DomainError, check};
 
@@ -190,16 +190,18 @@ impl Fresnel {
     /// interpolated linearly in cos θ between the 1000 grid nodes and reproduce a node to ~1e-14.
     pub fn eval(&self, theta: f64) -> f64 {
         match self {
-            Fresnel::Exact(ior) => exact::reflectance(theta.cos(), ior.index()),
+            Fresnel::Exact(ior) => exact::reflectance(Incidence::from_theta(theta), ior.index()),
             Fresnel::Schlick(SchlickF0::F0(f0)) => approx::schlick(*f0, theta),
             Fresnel::Schlick(SchlickF0::Ior(ior)) => {
-                approx::schlick(exact::reflectance(1.0, ior.index()), theta)
+                approx::schlick(exact::reflectance(Incidence::NORMAL, ior.index()), theta)
             }
             Fresnel::Lazanyi { f0, a } => approx::lazanyi(*f0, *a, theta),
             Fresnel::LazanyiTerm => approx::lazanyi_term(theta),
             Fresnel::Belcour(_, coefficients) => coefficients.interpolate(theta.cos()),
             Fresnel::Basis(k) => basis::basis().interpolate(*k, theta.cos()),
-            Fresnel::Normalized(ior) => exact::normalized_reflectance(theta.cos(), ior.index()),
+            Fresnel::Normalized(ior) => {
+                exact::normalized_reflectance(Incidence::from_theta(theta), ior.index())
+            }
         }
     }
 

@@ -17,7 +17,10 @@ Regimes (where eta~^2 - 1 is small and float64 loses it if it forms eta~^2 first
   t in {0.5, 1e-2, 1e-3} (partial reflection) and t in {-1e-3, -0.5} (total internal reflection, F = 1).
   Closer to theta_c, F is ill-conditioned in cos theta itself (relative condition ~ cos theta / |w|, so a
   rounding of cos theta costs ~eps / sqrt(t)); t >= 1e-3 keeps that below 4e-15;
-- theta from 0 through 1e-8 and Brewster's angle (pi/4 near the index 1) to the double nearest pi/2.
+- theta from 0 through 1e-8 and Brewster's angle (pi/4 near the index 1) to the double nearest pi/2;
+- and, where sin^2 theta must be known relative to itself rather than from a rounded cos theta, tiny
+  indices (|eta~| from 1e-8 to 1e-3) at theta from 1e-9 to 1e-3 (for kappa = 0 away from the critical
+  angle asin(eta): |sin theta - eta| > eta / 2).
 Also Schlick with F0 from these indices, and the normalized curve (F - F0)/(1 - F0) at theta >= 0.5: below,
 F - F0 cancels in float64 (relative error ~ eps F0 / |F - F0|, and near the index 1 F - F0 ~ F0 theta^4, so
 ~1e-12 at theta = 0.1).
@@ -39,6 +42,8 @@ GULBRANDSEN_R = [1e-6, 1e-9, 1e-12]
 GULBRANDSEN_G = [0.0, 0.25, 0.5, 0.9, 1.0]
 CRITICAL_ETAS = [1 - 1e-6, 1 - 1e-9, 1 - 1e-12]
 CRITICAL_T = [0.5, 1e-2, 1e-3, -1e-3, -0.5]
+SMALL = [(1e-8, 1e-8), (1e-6, 1e-6), (1e-4, 1e-4), (1e-3, 1e-6), (1e-3, 0.0)]
+SMALL_THETAS = [0.0, 1e-9, 1e-7, 3e-7, 1e-6, 1e-5, 1e-4, 5e-4, 1e-3, 0.5, HALF_PI]
 NORMALIZED_MIN_THETA = 0.5
 
 
@@ -90,6 +95,9 @@ for i, n in enumerate(CRITICAL_ETAS):
     c2 = 1 - mpf(n) ** 2
     ts = [0.0, 0.5, 1.0] + [double_theta((1 + mpf(t)) * c2) for t in CRITICAL_T]
     indices.append(("critical-%d" % i, {"eta": n, "kappa": 0.0}, mpf(n), mpf(0), ts))
+for i, (n, k) in enumerate(SMALL):
+    ts = [t for t in SMALL_THETAS if k > 0 or abs(mp.sin(mpf(t)) - n) > n / 2]
+    indices.append(("small-%d" % i, {"eta": n, "kappa": k}, mpf(n), mpf(k), ts))
 
 print("case_id,curve_json,theta,value")
 for label, params, n, k, thetas in indices:
