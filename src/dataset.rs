@@ -195,8 +195,7 @@ impl Dataset {
                         } else {
                             g
                         };
-                        let (eta, kappa) = gulbrandsen::to_eta_kappa(r, g);
-                        basis::coeffs(eta, kappa)
+                        basis::coeffs(gulbrandsen::index(r, g))
                     })
                     .collect();
                 let points = coefficients.iter().map(|c| (x.of(c), y.of(c))).collect();

@@ -371,8 +371,7 @@ fn with_family_prefix(curve: &Curve, text: &str) -> String {
 fn belcour_l2(curve: &Curve) -> Option<f64> {
     match curve {
         Curve::Fresnel(Fresnel::Belcour(ior, coefficients)) => {
-            let (eta, kappa) = ior.complex();
-            Some(coefficients.l2_grid(eta, kappa))
+            Some(coefficients.l2_grid(ior.index()))
         }
         _ => None,
     }

@@ -25,9 +25,9 @@ pub fn table(curves: &[Curve]) -> Result<String> {
                 curve.canonical_json()
             ))
         })?;
-        let (eta, kappa) = ior.complex();
-        let c = basis::coeffs(eta, kappa);
-        let l2 = c.l2_grid(eta, kappa);
+        let index = ior.index();
+        let c = basis::coeffs(index);
+        let l2 = c.l2_grid(index);
         // `+ 0.0` turns a −0.0 from the 2×2 solve into 0.0: the coefficient is zero, not signed.
         for v in [c.c0, c.c1, c.c2, c.c3].map(|v| v + 0.0) {
             table.number(v);

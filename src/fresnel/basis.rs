@@ -33,7 +33,7 @@ use faer::matrix_free::eigen::{PartialEigenParams, partial_svd, partial_svd_scra
 use faer::prelude::default;
 use faer::{Col, Mat, Par};
 
-use super::exact::{one_minus_reflectance, reflectance};
+use super::exact::{Incidence, Index, normalized_reflectance, reflectance};
 use super::gulbrandsen;
 use crate::grid::linspace;
 
@@ -67,19 +67,18 @@ pub fn grid() -> Vec<f64> {
     linspace(0.0, 1.0, GRID_SIZE)
 }
 
-/// The normalized curve (F(c_i) − F₀)/(1 − F₀) of the exact Fresnel form on the grid, F₀ = F(1),
-/// evaluated as 1 − (1 − F(c_i))/(1 − F₀) with `one_minus_reflectance`: accurate to ~1e-16 even
-/// where 1 − F₀ is tiny (the training row with 1 − F₀ = 2e-5, where the direct quotient carries
-/// ~4e-11 of rounding). Identically 0 for η̃ = 1.
+/// The normalized curve (F(c_i) − F₀)/(1 − F₀) of the exact Fresnel form on the grid, F₀ = F(1)
+/// (`exact::normalized_reflectance`): accurate to ~1e-16 even where 1 − F₀ is tiny (the training
+/// row with 1 − F₀ = 2e-5, where the direct quotient carries ~4e-11 of rounding). Identically 0 for
+/// η̃ = 1.
 ///
 /// The spectrum curves (the notebook's left spectrum panel, and the matrix of the spectrum check).
 /// The basis training rows are rounded like numpy's instead (`numpy_f64::training_row`), which is
 /// ~1e-11 less accurate in the row with 1 − F₀ = 2e-5 but reproduces the published basis.
-pub fn normalized_curve(cos_theta: &[f64], eta: f64, kappa: f64) -> Vec<f64> {
-    let t0 = one_minus_reflectance(1.0, eta, kappa);
+pub fn normalized_curve(cos_theta: &[f64], index: Index) -> Vec<f64> {
     cos_theta
         .iter()
-        .map(|&c| 1.0 - one_minus_reflectance(c, eta, kappa) / t0)
+        .map(|&c| normalized_reflectance(Incidence::from_cos(c), index))
         .collect()
 }
 
@@ -350,17 +349,17 @@ pub struct Coefficients {
     pub c3: f64,
 }
 
-/// The notebook's `fresnel2coeffs` (MATH.md step 5) for the exact Fresnel of η̃ = η + iκ:
+/// The notebook's `fresnel2coeffs` (MATH.md step 5) for the exact Fresnel of `index` η̃ = η + iκ:
 /// c₀ = F(1), c₁ = 1 − c₀ (0 when c₀ = 0), and (c₂, c₃) from the 2×2 system at the critical nodes,
 /// solved by Cramer's rule. Computes the basis on first use.
-pub fn coeffs(eta: f64, kappa: f64) -> Coefficients {
+pub fn coeffs(index: Index) -> Coefficients {
     let basis = basis();
     let [b1, b2, b3] = [basis.function(1), basis.function(2), basis.function(3)];
     let [i1, i2] = basis.critical;
-    let c0 = reflectance(1.0, eta, kappa);
+    let c0 = reflectance(Incidence::NORMAL, index);
     let c1 = if c0 != 0.0 { 1.0 - c0 } else { 0.0 };
-    let df1 = reflectance(basis.cos_theta[i1], eta, kappa) - (c0 + c1 * b1[i1]);
-    let df2 = reflectance(basis.cos_theta[i2], eta, kappa) - (c0 + c1 * b1[i2]);
+    let df1 = reflectance(Incidence::from_cos(basis.cos_theta[i1]), index) - (c0 + c1 * b1[i1]);
+    let df2 = reflectance(Incidence::from_cos(basis.cos_theta[i2]), index) - (c0 + c1 * b1[i2]);
     let det = b2[i1] * b3[i2] - b3[i1] * b2[i2];
     let c2 = (df1 * b3[i2] - df2 * b3[i1]) / det;
     let c3 = (b2[i1] * df2 - b2[i2] * df1) / det;
@@ -391,15 +390,16 @@ impl Coefficients {
         (1.0 - t) * node(i) + t * node(i + 1)
     }
 
-    /// `l2_grid` = ‖F − F̂‖₂ over the 1000 grid nodes, F the exact Fresnel of η̃ = η + iκ (the notebook's L2).
-    pub fn l2_grid(&self, eta: f64, kappa: f64) -> f64 {
+    /// `l2_grid` = ‖F − F̂‖₂ over the 1000 grid nodes, F the exact Fresnel of `index` η̃ = η + iκ (the
+    /// notebook's L2).
+    pub fn l2_grid(&self, index: Index) -> f64 {
         let basis = basis();
         let reconstruction = self.reconstruction();
         let sum_sq: f64 = basis
             .cos_theta
             .iter()
             .zip(&reconstruction)
-            .map(|(&c, f_hat)| (reflectance(c, eta, kappa) - f_hat).powi(2))
+            .map(|(&c, f_hat)| (reflectance(Incidence::from_cos(c), index) - f_hat).powi(2))
             .sum();
         sum_sq.sqrt()
     }
@@ -427,7 +427,7 @@ pub fn spectrum() -> &'static Spectrum {
         let cos_theta = grid();
         let rows: Vec<Vec<f64>> = etas
             .iter()
-            .map(|&eta| normalized_curve(&cos_theta, eta, 0.0))
+            .map(|&eta| normalized_curve(&cos_theta, Index::new(eta, 0.0)))
             .collect();
         let (singular_values, _) = thin_svd(&stack_rows(&rows), ComputeSvdVectors::No);
         let total: f64 = singular_values.iter().sum();
@@ -465,7 +465,7 @@ mod tests {
         // mpmath at 50 digits from these exact doubles, rounded to the nearest double.
         let (eta, kappa) = (-9.999950000513731e-6, 0.9999999999472646);
         let c = grid();
-        let row = normalized_curve(&c, eta, kappa);
+        let row = normalized_curve(&c, Index::new(eta, kappa));
         let expected = [
             (1, 0.9985843570318703),
             (128, 0.8195432810777029),

@@ -9,12 +9,25 @@
 //! makes F₀ = 0.99998. Behaviour: F(θ = 0) = ((η − 1)² + κ²)/((η + 1)² + κ²), F → 1 at θ → π/2.
 //!
 //! Stable forms and why:
-//! - Both numerators cancel near η̃ = 1. Multiplying through by the conjugate denominators, with
-//!   a = η̃² − 1 = (η̃ − 1)(η̃ + 1): r_s = −a/(c + w)², r_p = a (η̃² c² − sin²θ)/(η̃² c + w)²
-//!   (η̃² c² − sin²θ is MATH.md's c²(η̃² + 1) − 1). These are used everywhere: the denominators
-//!   never cancel (Re w ≥ 0, c ≥ 0), so they are at least as accurate as the raw ratios.
-//! - sin²θ = (1 − c)(1 + c) rather than 1 − c², and w² = η̃² − sin²θ rather than a + c², so that a
-//!   tiny η̃² is not lost against 1 (it keeps |r_p| = 1 at normal incidence for η → 0).
+//! - The index is an [`Index`]: η together with η − 1, so that a = η̃² − 1 = (η̃ − 1)(η̃ + 1) is
+//!   formed from η − 1 directly. For an index given as η, η − 1 is exact for η ∈ [0.5, 2]; an index
+//!   given by Gulbrandsen's (r, g) carries η − 1 from its own closed form, since η itself rounds
+//!   η − 1 ~ √r away for small r.
+//! - Both numerators cancel near η̃ = 1. Multiplying through by the conjugate denominators:
+//!   r_s = −a/(c + w)², r_p = a (η̃² c² − sin²θ)/(η̃² c + w)² (η̃² c² − sin²θ is MATH.md's
+//!   c²(η̃² + 1) − 1). These are used everywhere: the denominators never cancel (Re w ≥ 0, c ≥ 0),
+//!   so they are at least as accurate as the raw ratios. |a| = |η̃ − 1| |η̃ + 1|, a product of norms.
+//! - The angle is an [`Incidence`]: c = cos θ and sin²θ, each accurate relative to itself. From θ,
+//!   sin²θ = (sin θ)²; from a c given exactly (the basis grid), (1 − c)(1 + c). Forming sin²θ from
+//!   a rounded cos θ keeps only ε absolute near θ = 0, where a tiny η̃² − sin²θ needs it relative.
+//! - w² = η̃² − sin²θ = c² + a is a sum of two terms either way: c² + a loses nothing when η̃ ≈ 1
+//!   (η̃² − sin²θ would subtract two numbers near 1 at grazing incidence and leave the rounding of
+//!   η̃² in w² ≈ η̃² − 1), and η̃² − sin²θ loses nothing when η̃ is tiny (c² + a would lose η̃²
+//!   against 1 near normal incidence). The split with the smaller terms,
+//!   |a| + c² against |η̃²| + sin²θ, is taken: its rounding is ε (|a| + c²) or ε (|η̃²| + sin²θ),
+//!   no more than what a relative rounding of c or η̃ alone does to w². Near a critical angle
+//!   (κ = 0, η < 1, w → 0) F is ill-conditioned in θ itself: its relative error grows like
+//!   ε max(c, sin θ)/|w| there, whatever the evaluation.
 //! - Only moduli are formed, each as a ratio of hypot-based norms: no complex division, and no
 //!   overflow for |η̃| up to 1e150.
 //! - η̃ = 1 exactly gives F ≡ 0 (the conjugate form is 0/0 at c = 0): a guard.
@@ -23,16 +36,77 @@
 //! - Rounding can put F an ulp above 1 near grazing incidence; the result is clamped to ≤ 1.
 //! - 1 − F is also offered without cancellation (`one_minus_reflectance`): the basis training set
 //!   divides by 1 − F₀ = 2e-5 for one material, which would amplify the rounding of F 5e4-fold.
+//! - The normalized curve (F − F₀)/(1 − F₀) (`normalized_reflectance`) takes the difference of
+//!   whichever of F or 1 − F is the smaller at normal incidence, so that neither a tiny F₀ (η̃ ≈ 1)
+//!   nor a tiny 1 − F₀ is lost against 1.
 
 use num_complex::Complex;
 
-/// Exact unpolarized reflectance F(c; η, κ) of MATH.md's normative form, in [0, 1].
+/// A complex index η̃ = η + iκ together with η − 1, the form every function of this module takes.
 ///
-/// `cos_theta` = c = cos θ ∈ [0, 1] (θ the angle of incidence). `eta`, `kappa`: the complex index
-/// η̃ = η + iκ of the medium entered from index 1. Exactly 0 for η̃ = 1, exactly 1 under total
-/// internal reflection (κ = 0, η ≤ sin θ).
-pub fn reflectance(cos_theta: f64, eta: f64, kappa: f64) -> f64 {
-    match Interface::new(cos_theta, eta, kappa) {
+/// Build it with [`Index::new`] from η, or field by field where η − 1 is known more accurately than
+/// η − 1 computed from η (`gulbrandsen::index` for small r). Not validated: `Ior` in `mod.rs` does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Index {
+    /// Real part η.
+    pub eta: f64,
+    /// η − 1, accurate to a few ulps of itself (not only of η).
+    pub eta_minus_one: f64,
+    /// Extinction coefficient κ.
+    pub kappa: f64,
+}
+
+impl Index {
+    /// η̃ = η + iκ, with η − 1 by subtraction (exact for η ∈ [0.5, 2], a correctly rounded
+    /// difference elsewhere).
+    pub fn new(eta: f64, kappa: f64) -> Index {
+        Index {
+            eta,
+            eta_minus_one: eta - 1.0,
+            kappa,
+        }
+    }
+}
+
+/// The angle of incidence θ ∈ [0, π/2] as the exact form uses it: c = cos θ and sin²θ.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Incidence {
+    cos_theta: f64,
+    sin2_theta: f64,
+}
+
+impl Incidence {
+    /// Normal incidence: c = 1, sin²θ = 0.
+    pub const NORMAL: Incidence = Incidence {
+        cos_theta: 1.0,
+        sin2_theta: 0.0,
+    };
+
+    /// From θ ∈ [0, π/2]: c = cos θ and sin²θ = (sin θ)², each within an ulp or two of itself.
+    pub fn from_theta(theta: f64) -> Incidence {
+        let sin_theta = theta.sin();
+        Incidence {
+            cos_theta: theta.cos(),
+            sin2_theta: sin_theta * sin_theta,
+        }
+    }
+
+    /// From c = cos θ ∈ [0, 1] taken as exact (the basis grid): sin²θ = (1 − c)(1 + c).
+    pub fn from_cos(cos_theta: f64) -> Incidence {
+        Incidence {
+            cos_theta,
+            sin2_theta: (1.0 - cos_theta) * (1.0 + cos_theta),
+        }
+    }
+}
+
+/// Exact unpolarized reflectance F(c; η̃) of MATH.md's normative form, in [0, 1].
+///
+/// `incidence` is the angle of incidence θ (c = cos θ); `index` is η̃ = η + iκ, the medium entered
+/// from index 1. Exactly 0 for η̃ = 1, exactly 1 under total internal reflection (κ = 0,
+/// η ≤ sin θ).
+pub fn reflectance(incidence: Incidence, index: Index) -> f64 {
+    match Interface::new(incidence, index) {
         Interface::Index1 => 0.0,
         Interface::TotalInternalReflection => 1.0,
         Interface::General {
@@ -41,9 +115,9 @@ pub fn reflectance(cos_theta: f64, eta: f64, kappa: f64) -> f64 {
             eta2,
             w,
         } => {
-            let eta_c = Complex::new(eta, kappa);
-            // a = η̃² − 1 without cancellation near η̃ = 1.
-            let abs_a = ((eta_c - 1.0) * (eta_c + 1.0)).norm();
+            // |a| = |η̃ − 1| |η̃ + 1|: no cancellation near η̃ = 1.
+            let abs_a =
+                index.eta_minus_one.hypot(index.kappa) * (index.eta + 1.0).hypot(index.kappa);
             let abs_s_den = (w + c).norm();
             let r_s = abs_a / abs_s_den / abs_s_den;
             let abs_p_den = (eta2 * c + w).norm();
@@ -53,14 +127,14 @@ pub fn reflectance(cos_theta: f64, eta: f64, kappa: f64) -> f64 {
     }
 }
 
-/// 1 − F(c; η, κ) without cancellation, in [0, 1]: from |A + B|² − |A − B|² = 4 Re(A B̄),
+/// 1 − F(c; η̃) without cancellation, in [0, 1]: from |A + B|² − |A − B|² = 4 Re(A B̄),
 /// 1 − |r_s|² = 4c Re w / |c + w|² and 1 − |r_p|² = 4c Re(η̃² w̄) / |η̃² c + w|², so
 /// 1 − F = 2c [Re w / |c + w|² + Re(η̃² w̄) / |η̃² c + w|²].
 ///
 /// Accurate to a few ulps relative where F is close to 1 (conductors, grazing incidence), where
 /// 1 − `reflectance` keeps only the absolute accuracy of F. Same domain and guards as [`reflectance`].
-pub fn one_minus_reflectance(cos_theta: f64, eta: f64, kappa: f64) -> f64 {
-    match Interface::new(cos_theta, eta, kappa) {
+pub fn one_minus_reflectance(incidence: Incidence, index: Index) -> f64 {
+    match Interface::new(incidence, index) {
         Interface::Index1 => 1.0,
         Interface::TotalInternalReflection => 0.0,
         Interface::General { c, eta2, w, .. } => {
@@ -74,13 +148,31 @@ pub fn one_minus_reflectance(cos_theta: f64, eta: f64, kappa: f64) -> f64 {
     }
 }
 
+/// The normalized curve (F(c) − F₀)/(1 − F₀) of the basis training set, F₀ = F(1): for F₀ ≤ 1/2
+/// formed as (F − F₀)/(1 − F₀) from [`reflectance`], otherwise as 1 − (1 − F)/(1 − F₀) from
+/// [`one_minus_reflectance`], so the difference is always taken between the smaller quantities.
+/// 0 for η̃ = 1 and where 1 − F₀ underflows to 0.
+pub fn normalized_reflectance(incidence: Incidence, index: Index) -> f64 {
+    let f0 = reflectance(Incidence::NORMAL, index);
+    if f0 <= 0.5 {
+        (reflectance(incidence, index) - f0) / (1.0 - f0)
+    } else {
+        let one_minus_f0 = one_minus_reflectance(Incidence::NORMAL, index);
+        if one_minus_f0 == 0.0 {
+            0.0
+        } else {
+            1.0 - one_minus_reflectance(incidence, index) / one_minus_f0
+        }
+    }
+}
+
 /// The cases of the interface at one angle, with the shared quantities of the general case.
 enum Interface {
     /// η̃ = 1: no interface, F ≡ 0.
     Index1,
     /// κ = 0 and η² ≤ sin²θ: w is purely imaginary and F = 1 exactly.
     TotalInternalReflection,
-    /// c = cos θ, sin²θ = (1 − c)(1 + c), η̃² and the principal root w = √(η̃² − sin²θ).
+    /// c = cos θ, sin²θ, η̃² and the principal root w = √(η̃² − sin²θ).
     General {
         c: f64,
         sin2_theta: f64,
@@ -90,15 +182,32 @@ enum Interface {
 }
 
 impl Interface {
-    fn new(cos_theta: f64, eta: f64, kappa: f64) -> Interface {
-        if eta == 1.0 && kappa == 0.0 {
+    fn new(incidence: Incidence, index: Index) -> Interface {
+        let Index {
+            eta,
+            eta_minus_one,
+            kappa,
+        } = index;
+        if eta_minus_one == 0.0 && kappa == 0.0 {
             return Interface::Index1;
         }
-        let c = cos_theta;
-        let sin2_theta = (1.0 - c) * (1.0 + c);
+        let Incidence {
+            cos_theta: c,
+            sin2_theta,
+        } = incidence;
+        let cos2_theta = c * c;
         let eta_c = Complex::new(eta, kappa);
         let eta2 = eta_c * eta_c;
-        let w2 = eta2 - sin2_theta;
+        // a = η̃² − 1 = (η̃ − 1)(η̃ + 1), its real part from η − 1.
+        let a = Complex::new(
+            eta_minus_one * (eta + 1.0) - kappa * kappa,
+            2.0 * eta * kappa,
+        );
+        let w2 = if a.l1_norm() + cos2_theta <= eta2.l1_norm() + sin2_theta {
+            a + cos2_theta
+        } else {
+            eta2 - sin2_theta
+        };
         if kappa == 0.0 && w2.re <= 0.0 {
             return Interface::TotalInternalReflection;
         }
@@ -168,8 +277,8 @@ mod tests {
         ] {
             for c in [0.0, 0.1, 0.5, 0.9, 1.0] {
                 let (f, t) = (
-                    reflectance(c, eta, kappa),
-                    one_minus_reflectance(c, eta, kappa),
+                    reflectance(Incidence::from_cos(c), Index::new(eta, kappa)),
+                    one_minus_reflectance(Incidence::from_cos(c), Index::new(eta, kappa)),
                 );
                 // Both are accurate to a few ulps of 1.
                 assert!(
@@ -183,7 +292,7 @@ mod tests {
     #[test]
     fn quirky_training_material_keeps_the_principal_branch() {
         // MATH.md step 2: η ≈ −9.99995e-6, κ ≈ 1 gives F₀ = 0.99998 with the principal root.
-        let f0 = reflectance(1.0, -9.99995e-6, 1.0);
+        let f0 = reflectance(Incidence::NORMAL, Index::new(-9.99995e-6, 1.0));
         assert!((f0 - 0.99998).abs() < 1e-6, "{f0}");
     }
 }

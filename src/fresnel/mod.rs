@@ -17,6 +17,7 @@ pub mod exact;
 pub mod gulbrandsen;
 
 pub use basis::Coefficients;
+pub use exact::{Incidence, Index};
 
 use crate::domain::{DomainError, check};
 
@@ -75,19 +76,26 @@ impl Ior {
         Ok(Ior::Gulbrandsen { r, g, g_remap })
     }
 
-    /// The complex index (η, κ); Gulbrandsen's map for (r, g) (MATH.md, κ² clamped at 0).
-    pub fn complex(&self) -> (f64, f64) {
+    /// The complex index with η − 1 (`exact::Index`): η̃ itself, or Gulbrandsen's map
+    /// (`gulbrandsen::index`) of (r, g) or of (r, ḡ).
+    pub fn index(&self) -> Index {
         match *self {
-            Ior::EtaKappa { eta, kappa } => (eta, kappa),
+            Ior::EtaKappa { eta, kappa } => Index::new(eta, kappa),
             Ior::Gulbrandsen { r, g, g_remap } => {
                 let g = if g_remap {
                     gulbrandsen::remap_edge_tint(g)
                 } else {
                     g
                 };
-                gulbrandsen::to_eta_kappa(r, g)
+                gulbrandsen::index(r, g)
             }
         }
+    }
+
+    /// The complex index (η, κ) of [`Ior::index`].
+    pub fn complex(&self) -> (f64, f64) {
+        let index = self.index();
+        (index.eta, index.kappa)
     }
 }
 
@@ -128,8 +136,9 @@ pub enum Fresnel {
     Belcour(Ior, Coefficients),
     /// Basis function b_k, k ∈ 0..=3; build with [`Fresnel::basis`].
     Basis(usize),
-    /// The exact Fresnel normalized as the basis training curves are: (F − F₀)/(1 − F₀), computed
-    /// as 1 − (1 − F)/(1 − F₀) without cancellation; 0 where 1 − F₀ underflows to 0.
+    /// The exact Fresnel normalized as the basis training curves are: (F − F₀)/(1 − F₀), with the
+    /// difference taken between F and F₀ or between 1 − F and 1 − F₀, whichever pair is the smaller
+    /// (`exact::normalized_reflectance`); 0 where 1 − F₀ underflows to 0.
     Normalized(Ior),
 }
 
@@ -165,8 +174,7 @@ impl Fresnel {
     /// The Belcour–Bati–Barla reconstruction of `ior`, its coefficients computed now (`basis::coeffs`;
     /// the basis itself is computed on first use).
     pub fn belcour(ior: Ior) -> Fresnel {
-        let (eta, kappa) = ior.complex();
-        Fresnel::Belcour(ior, basis::coeffs(eta, kappa))
+        Fresnel::Belcour(ior, basis::coeffs(ior.index()))
     }
 
     /// Basis function b_k, `index` ∈ 0..=3.
@@ -182,27 +190,17 @@ impl Fresnel {
     /// interpolated linearly in cos θ between the 1000 grid nodes and reproduce a node to ~1e-14.
     pub fn eval(&self, theta: f64) -> f64 {
         match self {
-            Fresnel::Exact(ior) => {
-                let (eta, kappa) = ior.complex();
-                exact::reflectance(theta.cos(), eta, kappa)
-            }
+            Fresnel::Exact(ior) => exact::reflectance(Incidence::from_theta(theta), ior.index()),
             Fresnel::Schlick(SchlickF0::F0(f0)) => approx::schlick(*f0, theta),
             Fresnel::Schlick(SchlickF0::Ior(ior)) => {
-                let (eta, kappa) = ior.complex();
-                approx::schlick(exact::reflectance(1.0, eta, kappa), theta)
+                approx::schlick(exact::reflectance(Incidence::NORMAL, ior.index()), theta)
             }
             Fresnel::Lazanyi { f0, a } => approx::lazanyi(*f0, *a, theta),
             Fresnel::LazanyiTerm => approx::lazanyi_term(theta),
             Fresnel::Belcour(_, coefficients) => coefficients.interpolate(theta.cos()),
             Fresnel::Basis(k) => basis::basis().interpolate(*k, theta.cos()),
             Fresnel::Normalized(ior) => {
-                let (eta, kappa) = ior.complex();
-                let one_minus_f0 = exact::one_minus_reflectance(1.0, eta, kappa);
-                if one_minus_f0 == 0.0 {
-                    0.0
-                } else {
-                    1.0 - exact::one_minus_reflectance(theta.cos(), eta, kappa) / one_minus_f0
-                }
+                exact::normalized_reflectance(Incidence::from_theta(theta), ior.index())
             }
         }
     }

@@ -4,7 +4,8 @@
 //! crate, its benchmarks and its tests goes through these; nothing here does I/O.
 //!
 //! The NDF and special-function tests compare against 50-digit mpmath values computed from the exact
-//! doubles of their inputs (`tests/data/reference/`, `tests/data/ndf_extreme.csv`).
+//! doubles of their inputs (`tests/data/reference/`, `tests/data/ndf_extreme.csv`,
+//! `tests/data/fresnel_near_one.csv`).
 
 /// Relative error allowed for Trowbridge–Reitz values: a rational function of sin²θ and cos²θ with no
 /// exponential, so only a handful of roundings (≈ 1e-15) separate it from the exact value.
@@ -14,6 +15,11 @@ pub const REL_TOL_TROWBRIDGE_REITZ: f64 = 1e-13;
 /// computed exponent E, so its error floor is |E| · ε, and |E| reaches ~1450 where D is still a normal
 /// double (1450 · 2.2e-16 ≈ 3e-13, kept under this bound with margin).
 pub const REL_TOL_NDF: f64 = 1e-12;
+
+/// Relative error allowed for exact Fresnel values and the curves built on it (Schlick's F₀ from an
+/// index, the normalized curve away from θ = 0): the cancellation-free forms of `fresnel::exact` take a
+/// complex square root and a few products and quotients, ~1e-15 in practice, also near η̃ = 1.
+pub const REL_TOL_FRESNEL: f64 = 1e-13;
 
 /// Below this magnitude reference values are compared absolutely: they sit near or below the smallest
 /// normal double (2.2e-308) where relative precision is lost to gradual underflow.

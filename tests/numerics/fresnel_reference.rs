@@ -1,15 +1,13 @@
 //! Fresnel against the reference files of tests/data/reference (see its README.md): exact, Gulbrandsen
 //! and Schlick curves from mpmath at 50 digits, and the Belcour–Bati–Barla basis, coefficients and
-//! spectrum from numpy float64 following the notebook's procedure.
+//! spectrum from numpy float64 following the notebook's procedure; and against
+//! tests/data/fresnel_near_one.csv: exact, Schlick and normalized curves near η̃ = 1 (mpmath).
 
 use std::time::Instant;
 
 use crate::common::{csv_records, number};
-use ndfplot::fresnel::{Fresnel, Ior, SchlickF0, basis};
-use ndfplot::math::tolerance::floored_relative_difference;
-
-/// Fresnel curves, relative (reference/README.md: achievable 1e-15 … 1e-13 with the stable forms).
-const CURVE_REL_TOL: f64 = 1e-13;
+use ndfplot::fresnel::{Fresnel, Index, Ior, SchlickF0, basis};
+use ndfplot::math::tolerance::{REL_TOL_FRESNEL, floored_relative_difference};
 /// The basis b₀…b₃, the coefficients c₀…c₃, `l2` and the normalized spectrum, absolute: a different
 /// SVD routine moves them by ~2e-14 (reference/README.md), given training rows rounded like numpy's
 /// (the row with 1 − F₀ = 2e-5 amplifies each ulp of F 5e4-fold). Measured: b₂ 9.0e-15, b₃ 1.1e-14.
@@ -32,21 +30,23 @@ fn curve(json: &str) -> Fresnel {
     match value["fresnel"].as_str() {
         Some("exact") => Fresnel::Exact(ior),
         Some("schlick") => Fresnel::Schlick(SchlickF0::Ior(ior)),
+        Some("normalized") => Fresnel::Normalized(ior),
         other => panic!("unexpected model {other:?} in {json}"),
     }
 }
 
-#[test]
-fn visible_curves_match_mpmath() {
-    let rows = csv_records("tests/data/reference/fresnel_visible.csv");
-    assert_eq!(rows.len(), 144);
+/// Checks every row of the curve reference file at `path` (`case_id,curve_json,theta,value`) at
+/// [`REL_TOL_FRESNEL`], and returns the worst relative error with its case.
+fn check_curves(path: &str, rows_expected: usize) -> (f64, String) {
+    let rows = csv_records(path);
+    assert_eq!(rows.len(), rows_expected);
     let mut worst = (0.0, String::new());
     for row in &rows {
         let (theta, expected) = (number(row, 2), number(row, 3));
         let value = curve(&row[1]).eval(theta);
         let err = floored_relative_difference(value, expected);
         assert!(
-            err <= CURVE_REL_TOL,
+            err <= REL_TOL_FRESNEL,
             "{}: θ = {theta}: {value} vs {expected} (error {err:e})",
             &row[0]
         );
@@ -54,8 +54,23 @@ fn visible_curves_match_mpmath() {
             worst = (err, row[0].to_string());
         }
     }
+    worst
+}
+
+#[test]
+fn visible_curves_match_mpmath() {
+    let worst = check_curves("tests/data/reference/fresnel_visible.csv", 144);
     println!(
         "fresnel_visible: max relative error {:e} ({})",
+        worst.0, worst.1
+    );
+}
+
+#[test]
+fn curves_near_index_one_match_mpmath() {
+    let worst = check_curves("tests/data/fresnel_near_one.csv", 1087);
+    println!(
+        "fresnel_near_one: max relative error {:e} ({})",
         worst.0, worst.1
     );
 }
@@ -128,8 +143,9 @@ fn coefficients_and_l2_match_numpy() {
     let mut worst = [0.0_f64; 5];
     for row in csv_records("tests/data/reference/belcour_materials.csv") {
         let (eta, kappa) = (number(&row, 1), number(&row, 2));
-        let coefficients = basis::coeffs(eta, kappa);
-        let l2 = coefficients.l2_grid(eta, kappa);
+        let index = Index::new(eta, kappa);
+        let coefficients = basis::coeffs(index);
+        let l2 = coefficients.l2_grid(index);
         let values = [
             coefficients.c0,
             coefficients.c1,
