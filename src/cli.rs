@@ -27,6 +27,16 @@ pub enum Command {
     Fit(FitArgs),
     /// Audit the normalization of every curve in scenes (or the built-in catalogue).
     Check(CheckArgs),
+    /// List the built-in catalogue: one `id<TAB>title` line per figure.
+    #[command(after_long_help = "Examples:\n  \
+        ndfplot list\n  \
+        ndfplot list | cut -f1 | grep interactive | xargs ndfplot render -o pages")]
+    List,
+    /// Print the spec of a catalogue figure, ready to copy and edit.
+    #[command(after_long_help = "Examples:\n  \
+        ndfplot show gtr-gamma > my-figure.json\n  \
+        ndfplot render gtr-gamma -o plots")]
+    Show(ShowArgs),
     /// Print the JSON Schema of the scene spec and curve formats.
     #[command(
         after_long_help = "The root validates a scene file; a curve file (eval --curve @FILE) validates against\n\
@@ -46,6 +56,13 @@ pub enum Command {
     /// Measure run time against error (drawing, normalization routes, throughput); writes
     /// bench.csv, bench.svg and bench.png.
     Bench(BenchArgs),
+}
+
+/// Arguments of `ndfplot show`.
+#[derive(Debug, Args)]
+pub struct ShowArgs {
+    /// The catalogue id (as `ndfplot list` prints it).
+    pub id: String,
 }
 
 /// Arguments of `ndfplot completions`.

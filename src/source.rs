@@ -29,8 +29,9 @@ pub struct CanvasOverride {
 /// built-in catalogue).
 pub type Source = (String, String, Option<PathBuf>);
 
-/// The spec sources named by `paths` (files, or folders whose `*.json` are taken sorted by name),
-/// or the built-in catalogue when `paths` is empty.
+/// The spec sources named by `paths` (files, folders whose `*.json` are taken sorted by name, or
+/// catalogue ids: a path that exists wins over an id), or the whole built-in catalogue when `paths`
+/// is empty.
 pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
     if paths.is_empty() {
         return Ok(CATALOGUE
@@ -52,6 +53,18 @@ pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
                 let name = file.display().to_string();
                 sources.push((name.clone(), read_file(&name)?, Some(path.clone())));
             }
+        } else if let Some((file, text)) = path
+            .to_str()
+            .filter(|_| !path.exists())
+            .and_then(crate::catalogue::find)
+        {
+            sources.push((format!("configs/{file}"), text.to_string(), None));
+        } else if !path.exists() {
+            let name = path.display().to_string();
+            return Err(Error::Usage(format!(
+                "{name}: no such file, folder or catalogue id (see ndfplot list){}",
+                crate::problem::suggestion(&name, crate::catalogue::ids())
+            )));
         } else {
             let name = path.display().to_string();
             let folder = path.parent().map(Path::to_path_buf).unwrap_or_default();

@@ -29,10 +29,23 @@ pub fn run(command: Command) -> Result<()> {
         Command::Compare(args) => run_compare(args),
         Command::Fit(args) => run_fit(args),
         Command::Check(args) => run_check(args),
+        Command::List => stdout::print(&crate::catalogue::listing()),
+        Command::Show(args) => run_show(&args.id),
         Command::Schema => schema::run(),
         Command::Completions(args) => completions::completions(args.shell),
         Command::Man => completions::man(),
         Command::Bench(args) => bench::run(&args.out).map(|_| ()),
+    }
+}
+
+/// Prints the spec of catalogue figure `id`; an unknown id is a usage error with a suggestion.
+fn run_show(id: &str) -> Result<()> {
+    match crate::catalogue::find(id) {
+        Some((_, text)) => stdout::print(text),
+        None => Err(crate::error::Error::Usage(format!(
+            "show: unknown catalogue id (got \"{id}\", see ndfplot list){}",
+            crate::problem::suggestion(id, crate::catalogue::ids())
+        ))),
     }
 }
 

@@ -1167,3 +1167,45 @@ fn an_interactive_scene_static_figure_states_its_slider_positions() {
         "no slider positions in the title"
     );
 }
+
+#[test]
+fn the_catalogue_is_listed_shown_and_rendered_by_id() {
+    let list = ndfplot(&["list"]);
+    assert_eq!(list.status.code(), Some(0));
+    let listing = text(&list.stdout);
+    let configs = files_in(&root().join("configs"));
+    assert_eq!(listing.lines().count(), configs.len());
+    assert!(
+        listing.contains("tr-ranges\tTrowbridge–Reitz (GGX)\n"),
+        "{listing}"
+    );
+
+    let show = ndfplot(&["show", "tr-ranges"]);
+    assert_eq!(show.status.code(), Some(0));
+    let committed = std::fs::read_to_string(root().join("configs/tr-ranges.json")).unwrap();
+    assert_eq!(text(&show.stdout), committed);
+    let unknown = ndfplot(&["show", "tr-range"]);
+    assert_eq!(unknown.status.code(), Some(2));
+    assert!(text(&unknown.stderr).contains("did you mean \"tr-ranges\""));
+
+    let out = scratch("cli-render-by-id");
+    let output = ndfplot(&[
+        "render",
+        "tr-ranges",
+        "-o",
+        out.to_str().unwrap(),
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(output.status.code(), Some(0), "{}", text(&output.stderr));
+    assert_eq!(files_in(&out), ["tr-ranges.csv"]);
+    let missing = ndfplot(&["render", "tr-rangez", "-o", out.to_str().unwrap()]);
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(
+        text(&missing.stderr).contains(
+            "no such file, folder or catalogue id (see ndfplot list); did you mean \"tr-ranges\"?"
+        ),
+        "{}",
+        text(&missing.stderr)
+    );
+}
