@@ -166,8 +166,9 @@ pub struct EvalArgs {
         allow_hyphen_values = true
     )]
     pub curve: Vec<String>,
-    /// Angles: comma-separated (0,0.1,1.5707963267948966) or start:stop:count (numpy linspace,
-    /// both ends included). Radians in [0, π/2] unless --degrees. Use --theta=-1 for negatives.
+    /// Angles: comma-separated (0,0.1,pi/2) or start:stop:count (numpy linspace, both ends
+    /// included; 0:pi/2:91). Radians in [0, π/2], any of them a multiple of π (pi, pi/2, 3pi/8),
+    /// unless --degrees. Use --theta=-1 for negatives.
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub theta: String,
     /// Read the angles in degrees (θ = d·π/180).

@@ -9,11 +9,33 @@ use std::f64::consts::FRAC_PI_2;
 /// Largest θ count of a `start:stop:count` list (CONTRACTS.md).
 pub const MAX_THETA_COUNT: u64 = 10_000_000;
 
-/// Parses a θ list: comma-separated numbers or `start:stop:count` (numpy linspace), in radians,
-/// or in degrees when `degrees` (θ = d·π/180). Every θ must lie in [0, π/2].
+/// A multiple of π written `pi`, `π`, `pi/2`, `3pi/4` or `0.5pi`: k·π/n with k and n positive
+/// numbers (1 when absent), computed as (k·π)/n, so `pi/2` is the double nearest π/2. `None` when
+/// `s` is not of that form.
+pub fn pi_multiple(s: &str) -> Option<f64> {
+    let s = s.trim();
+    let (before, after) = s.split_once("pi").or_else(|| s.split_once('π'))?;
+    let k: f64 = if before.is_empty() {
+        1.0
+    } else {
+        before.trim_end_matches('*').parse().ok()?
+    };
+    let n: f64 = match after {
+        "" => 1.0,
+        rest => rest.strip_prefix('/')?.parse().ok()?,
+    };
+    (k > 0.0 && n > 0.0).then(|| k * std::f64::consts::PI / n)
+}
+
+/// Parses a θ list: comma-separated numbers or `start:stop:count` (numpy linspace), in radians
+/// (any value may be a multiple of π, [`pi_multiple`]), or in degrees when `degrees`
+/// (θ = d·π/180). Every θ must lie in [0, π/2].
 pub fn parse_theta_list(text: &str, degrees: bool) -> Result<Vec<f64>> {
     let bad = |what: String| Error::Usage(format!("--theta: {what}"));
     let number = |s: &str| -> Result<f64> {
+        if !degrees && let Some(v) = pi_multiple(s) {
+            return Ok(v);
+        }
         let v: f64 = s
             .trim()
             .parse()
@@ -105,6 +127,32 @@ pub fn table(curves: &[Curve], thetas: &[f64]) -> Result<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn multiples_of_pi_are_read_in_any_position() {
+        use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+        assert_eq!(pi_multiple("pi"), Some(PI));
+        assert_eq!(pi_multiple("π/2"), Some(FRAC_PI_2));
+        assert_eq!(pi_multiple(" pi/4 "), Some(FRAC_PI_4));
+        assert_eq!(pi_multiple("3pi/8"), Some(3.0 * PI / 8.0));
+        assert_eq!(pi_multiple("0.5*pi"), Some(0.5 * PI));
+        for not in ["p", "pi/", "pi/0", "-pi", "2pie", "x"] {
+            assert_eq!(pi_multiple(not), None, "{not}");
+        }
+        assert_eq!(
+            parse_theta_list("0,pi/4,pi/2", false).unwrap(),
+            [0.0, FRAC_PI_4, FRAC_PI_2]
+        );
+        assert_eq!(
+            parse_theta_list("0:pi/2:3", false).unwrap(),
+            [0.0, FRAC_PI_4, FRAC_PI_2]
+        );
+        assert!(parse_theta_list("pi", false).is_err());
+        assert!(
+            parse_theta_list("pi/4", true).is_err(),
+            "degrees take numbers only"
+        );
+    }
 
     #[test]
     fn theta_lists() {
