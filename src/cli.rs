@@ -124,6 +124,10 @@ pub struct RenderArgs {
     /// No progress bar on stderr.
     #[arg(short, long)]
     pub quiet: bool,
+    /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
+    /// inside the folder of the spec naming it. Repeatable.
+    #[arg(long = "allow-read", value_name = "DIR")]
+    pub allow_read: Vec<PathBuf>,
 }
 
 /// A clap value parser for a finite number within [low, high].
@@ -228,6 +232,11 @@ pub struct CompareArgs {
     /// Fail (exit 1) when a metric exceeds a bound, as <metric>=<number>; repeatable.
     #[arg(long = "max-error", value_name = "METRIC=X")]
     pub max_error: Vec<String>,
+    /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
+    /// inside the folder it resolves against (an @FILE's folder, else the working
+    /// directory). Repeatable.
+    #[arg(long = "allow-read", value_name = "DIR")]
+    pub allow_read: Vec<PathBuf>,
 }
 
 /// Arguments of `ndfplot fit`.
@@ -274,6 +283,10 @@ pub struct CheckArgs {
     /// Largest accepted |2 pi integral D sin cos dtheta - 1|.
     #[arg(long, value_name = "X", default_value_t = crate::audit::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
+    /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
+    /// inside the folder of the spec naming it. Repeatable.
+    #[arg(long = "allow-read", value_name = "DIR")]
+    pub allow_read: Vec<PathBuf>,
 }
 
 /// Arguments of `ndfplot bench`.

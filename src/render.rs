@@ -31,6 +31,8 @@ pub struct RenderOptions {
     pub formats: Vec<Format>,
     /// Canvas overrides.
     pub canvas: CanvasOverride,
+    /// Folders data files may also be read from, beside each spec's own (`--allow-read`).
+    pub allow_read: Vec<PathBuf>,
 }
 
 /// The interactive page of every scene that has sliders, from its planned jobs `feeds`.
@@ -124,7 +126,7 @@ fn encode_outputs(
     quiet: bool,
 ) -> Result<(Files, RenderStats)> {
     let start = std::time::Instant::now();
-    let sources = sources(&options.paths)?;
+    let sources = sources(&options.paths, &options.allow_read)?;
     let scenes = resolve::scenes(load_scenes(&sources, options.canvas))?;
     let provenance: Vec<Provenance> = sources
         .iter()

@@ -19,6 +19,7 @@ use crate::metrics::sampled::{Operand, Samples};
 use crate::problem::{Problem, Problems};
 use crate::{input, resolve, source, stdout};
 use std::io::Read;
+use std::path::PathBuf;
 
 /// Runs a parsed command line.
 pub fn run(command: Command) -> Result<()> {
@@ -71,8 +72,8 @@ fn input_error(source: &str, problem: Problem) -> Error {
 
 /// One side of `compare` ([`input::load_operand`]), resolved (a CSV series read), with its
 /// canonical JSON.
-fn load_operand(arg: &str, flag: &str) -> Result<(Operand, String)> {
-    let (source, side) = input::load_operand(arg, flag, read_stdin)?;
+fn load_operand(arg: &str, flag: &str, allow_read: &[PathBuf]) -> Result<(Operand, String)> {
+    let (source, side) = input::load_operand(arg, flag, allow_read, read_stdin)?;
     match side {
         Side::Curve(spec) => {
             let curve = resolve::curve(&spec).map_err(|p| input_error(&source, p))?;
@@ -111,8 +112,8 @@ fn run_compare(args: CompareArgs) -> Result<()> {
         .iter()
         .map(|b| compare::parse_bound(b))
         .collect::<Result<_>>()?;
-    let (a, a_name) = load_operand(&args.a, "--a")?;
-    let (b, b_name) = load_operand(&args.b, "--b")?;
+    let (a, a_name) = load_operand(&args.a, "--a", &args.allow_read)?;
+    let (b, b_name) = load_operand(&args.b, "--b", &args.allow_read)?;
     let metrics = compare::metrics(&a, &b)?;
     let report = if args.format == "json" {
         compare::json(&a_name, &b_name, &metrics)
@@ -136,7 +137,7 @@ fn run_fit(args: FitArgs) -> Result<()> {
 
 fn run_check(args: CheckArgs) -> Result<()> {
     let scenes = resolve::scenes(source::load_scenes(
-        &source::sources(&args.paths)?,
+        &source::sources(&args.paths, &args.allow_read)?,
         source::CanvasOverride::default(),
     ))?;
     let audits = crate::audit::audit_scenes(&scenes)?;

@@ -546,7 +546,7 @@ fn read_entry(
             },
         );
         let mut scratch = Reader {
-            base_dir: reader.base_dir.clone(),
+            data: reader.data.clone(),
             ..Reader::default()
         };
         let mut curves = Vec::new();

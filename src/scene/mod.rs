@@ -264,11 +264,14 @@ pub fn valid_id(id: &str) -> bool {
 }
 
 /// Validates a parsed scene document into its description; every problem is returned with its
-/// JSON path. Data files named by the spec resolve against `base_dir`, the spec's folder (`None`:
-/// no data files); they are not read, nor is anything computed.
-pub fn parse(node: &Node, base_dir: Option<&std::path::Path>) -> Result<Scene<Spec>, Invalid> {
+/// JSON path. Data files named by the spec are read from `data`, the spec's folder and the
+/// folders allowed beside it (`None`: no data files); they are not read, nor is anything computed.
+pub fn parse(
+    node: &Node,
+    data: Option<&crate::datafile::DataScope>,
+) -> Result<Scene<Spec>, Invalid> {
     let mut reader = Reader {
-        base_dir: base_dir.map(std::path::Path::to_path_buf),
+        data: data.cloned(),
         ..Reader::default()
     };
     let scene = read_scene(&mut reader, node);

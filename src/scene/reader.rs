@@ -12,9 +12,9 @@ use crate::problem::{Problem, join_key, suggestion};
 pub struct Reader {
     /// Problems in the order found.
     pub problems: Vec<Problem>,
-    /// Folder of the document, against which relative data paths resolve; `None` for documents
-    /// not read from disk (the built-in catalogue, arguments).
-    pub base_dir: Option<std::path::PathBuf>,
+    /// Where the document's data files may be read from; `None` for documents not read from disk
+    /// (the built-in catalogue, arguments).
+    pub data: Option<crate::datafile::DataScope>,
     /// The fallible work (fits, data files) described so far, in the order met.
     pub pending: Vec<super::Pending>,
 }

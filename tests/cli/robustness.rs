@@ -407,3 +407,112 @@ fn every_subcommand_help_has_an_example_and_completions_and_man_are_generated() 
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
 }
+
+#[test]
+fn data_paths_stay_in_the_spec_folder_unless_allowed_and_errors_never_quote_the_file() {
+    let dir = scratch("robustness-data-paths");
+    let (specs, shared) = (dir.join("specs"), dir.join("shared"));
+    std::fs::create_dir_all(&specs).unwrap();
+    std::fs::create_dir_all(&shared).unwrap();
+    std::fs::write(shared.join("data.csv"), "theta,SECRET_TOKEN=1\n0,1\n").unwrap();
+    std::os::unix::fs::symlink(shared.join("data.csv"), specs.join("link.csv")).unwrap();
+    let fifo = Command::new("mkfifo")
+        .arg(specs.join("fifo.csv"))
+        .status()
+        .unwrap();
+    assert!(fifo.success());
+    let spec = |name: &str, path: &str| {
+        let file = specs.join(format!("{name}.json"));
+        std::fs::write(
+            &file,
+            format!(
+                r#"{{"id": "{name}", "panels": [{{"curves": [{{"data": "csv", "path": "{path}", "y": "SECRET_TOKEN=1"}}]}}]}}"#
+            ),
+        )
+        .unwrap();
+        file
+    };
+    let out = dir.join("out");
+    let render = |spec: &Path, extra: &[&str]| {
+        let mut args = vec![
+            "render",
+            spec.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--format",
+            "csv",
+        ];
+        args.extend(extra);
+        ndfplot(&args)
+    };
+    for (name, path, message) in [
+        ("parent", "../shared/data.csv", "leaves the spec's folder"),
+        (
+            "link",
+            "link.csv",
+            "leaves the spec's folder through a symbolic link",
+        ),
+        ("fifo", "fifo.csv", "not a regular file"),
+    ] {
+        let file = spec(name, path);
+        let result = render(&file, &[]);
+        let err = text(&result.stderr);
+        assert_eq!(result.status.code(), Some(2), "{name}: {err}");
+        assert!(
+            err.starts_with(&format!(
+                "error: {}: panels[0].curves[0].path: cannot read \"{path}\": {message}",
+                file.display()
+            )),
+            "{name}: {err}"
+        );
+    }
+    // The folder given with --allow-read opens to both the relative path and the link.
+    let allow = ["--allow-read", shared.to_str().unwrap()];
+    for name in ["parent", "link"] {
+        let result = render(&specs.join(format!("{name}.json")), &allow);
+        assert_eq!(result.status.code(), Some(0), "{}", text(&result.stderr));
+    }
+
+    // compare's operand: an inline series resolves against the working directory.
+    let compare = |a: &str, extra: &[&str]| {
+        let mut args = vec![
+            "compare",
+            "--a",
+            a,
+            "--b",
+            r#"{"ndf": "ggx", "alpha_tr": 0.3}"#,
+        ];
+        args.extend(extra);
+        Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+            .args(&args)
+            .current_dir(&specs)
+            .env_clear()
+            .env("A_CANARY", "do-not-print".repeat(100))
+            .output()
+            .unwrap()
+    };
+    let result = compare(
+        r#"{"data": "csv", "path": "/proc/self/environ", "y": "x"}"#,
+        &[],
+    );
+    let err = text(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("leaves the spec's folder") && !err.contains("do-not-print"),
+        "{err}"
+    );
+    let result = compare(
+        r#"{"data": "csv", "path": "/proc/self/environ", "y": "x"}"#,
+        &["--allow-read", "/proc/self"],
+    );
+    let err = text(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{err}");
+    // Allowed, the file is read, and the message quotes a bounded excerpt of its header only.
+    assert!(err.lines().count() == 1 && err.len() < 300, "{err}");
+    let result = compare(
+        r#"{"data": "csv", "path": "../shared/data.csv", "y": "SECRET_TOKEN=1"}"#,
+        &[],
+    );
+    assert_eq!(result.status.code(), Some(2));
+    assert!(text(&result.stderr).contains("leaves the spec's folder"));
+}
