@@ -89,7 +89,7 @@ pub fn run_with_progress(
 ) -> Result<(Vec<PathBuf>, RenderStats)> {
     let (outputs, mut stats) = encode_outputs(options, false, quiet)?;
     let stage = std::time::Instant::now();
-    let written = write_outputs(&options.out, &outputs)?;
+    let written = write::write_files(&options.out, &outputs)?;
     stats.encoding += stage.elapsed();
     Ok((written, stats))
 }
@@ -206,15 +206,4 @@ fn encode_outputs(
     outputs.sort_by(|a, b| a.0.cmp(&b.0));
     stats.encoding += stage.elapsed();
     Ok((outputs, stats))
-}
-
-fn write_outputs(dir: &Path, outputs: &[(String, Vec<u8>)]) -> Result<Vec<PathBuf>> {
-    write::ensure_dir(dir)?;
-    let mut written = Vec::with_capacity(outputs.len());
-    for (name, bytes) in outputs {
-        write::remove_stale(dir, name)?;
-        write::write_atomic(dir, name, bytes)?;
-        written.push(dir.join(name));
-    }
-    Ok(written)
 }

@@ -40,18 +40,14 @@ pub fn write_outputs(dir: &Path, rows: &[Row]) -> Result<Vec<PathBuf>> {
     let drawing_failed = |e| Error::Numerics(format!("bench: drawing failed: {e}"));
     let svg = plot::svg(&figure).map_err(drawing_failed)?;
     let png = plot::png(&figure).map_err(drawing_failed)?;
-    write::ensure_dir(dir)?;
-    let mut written = Vec::new();
-    for (name, bytes) in [
-        ("bench.csv", bench::csv(rows).into_bytes()),
-        ("bench.svg", svg),
-        ("bench.png", png),
-    ] {
-        write::remove_stale(dir, name)?;
-        write::write_atomic(dir, name, &bytes)?;
-        written.push(dir.join(name));
-    }
-    Ok(written)
+    write::write_files(
+        dir,
+        &[
+            ("bench.csv", bench::csv(rows).into_bytes()),
+            ("bench.svg", svg),
+            ("bench.png", png),
+        ],
+    )
 }
 
 fn style(colour: u32, dash: Dash, mark: Mark) -> Style {

@@ -1,6 +1,7 @@
 //! Robustness of the real binary: the malformed-spec corpus (exit 2, nothing on stdout, every line
 //! naming the file and the expected message), the fuzz corpus replayed, a render killed with
-//! SIGKILL mid-run (only complete files under real names; the next run cleans the temporaries),
+//! SIGKILL mid-run (only complete files under real names; a later run removes abandoned
+//! temporaries), two renders into one folder at once,
 //! `render --check`, and the generated help, completions and manual page.
 
 #[path = "../../fuzz/harness.rs"]
@@ -109,11 +110,11 @@ fn fuzz_findings_exit_2_through_the_binary() {
     }
 }
 
-/// Forty small scenes, so that a run spends a while writing files one after another.
-fn write_kill_specs(dir: &Path) -> usize {
+/// `count` small scenes in `dir/specs`, so that a run spends a while writing files one after
+/// another; returns how many files a render of them writes.
+fn write_specs(dir: &Path, count: usize) -> usize {
     let specs = dir.join("specs");
     std::fs::create_dir_all(&specs).unwrap();
-    let count = 40;
     for i in 0..count {
         let spec = format!(
             r#"{{"id": "scene-{i:02}", "title": "Scene {i}", "sampling": {{"uniform": 400}}, "panels": [
@@ -178,9 +179,9 @@ fn assert_complete(dir: &Path, reference: &Path) -> usize {
 }
 
 #[test]
-fn a_render_killed_mid_run_leaves_only_complete_files_and_the_next_run_cleans_up() {
+fn a_render_killed_mid_run_leaves_only_complete_files_and_a_later_run_removes_old_temporaries() {
     let dir = scratch("robustness-kill");
-    let total = write_kill_specs(&dir);
+    let total = write_specs(&dir, 40);
     let specs = dir.join("specs");
     let reference = dir.join("reference");
     let start = Instant::now();
@@ -218,13 +219,19 @@ fn a_render_killed_mid_run_leaves_only_complete_files_and_the_next_run_cleans_up
         dir.join("attempt-15")
     });
 
-    // The next run replaces every file and removes stale temporaries, including one planted for a
-    // file the killed run had not reached yet.
-    std::fs::write(
-        out.join(".scene-00.csv.tmp"),
-        "panel,series,curve,x,y\n0,0,",
-    )
-    .unwrap();
+    // The next run replaces every file. It removes the temporaries of its files older than an hour
+    // (left by a killed run), and leaves younger ones, which may belong to a run still writing.
+    std::fs::create_dir_all(&out).unwrap();
+    let plant = |name: &str, age: Duration| {
+        let path = out.join(name);
+        std::fs::write(&path, "panel,series,curve,x,y\n0,0,").unwrap();
+        let file = std::fs::File::options().write(true).open(&path).unwrap();
+        file.set_modified(std::time::SystemTime::now() - age)
+            .unwrap();
+    };
+    plant(".scene-00.csv.abc123.tmp", Duration::from_secs(7200));
+    plant(".scene-01.csv.def456.tmp", Duration::ZERO);
+    plant(".unrelated.csv.ghi789.tmp", Duration::from_secs(7200));
     let rerun = render_into(&specs, &out)
         .stderr(Stdio::piped())
         .output()
@@ -234,13 +241,64 @@ fn a_render_killed_mid_run_leaves_only_complete_files_and_the_next_run_cleans_up
         "{}",
         String::from_utf8_lossy(&rerun.stderr)
     );
-    assert_eq!(
-        files_in(&out).iter().filter(|f| f.starts_with('.')).count(),
-        0,
-        "{:?}",
-        files_in(&out)
+    let hidden: Vec<String> = files_in(&out)
+        .into_iter()
+        .filter(|f| f.starts_with('.'))
+        .collect();
+    assert!(
+        !hidden.contains(&".scene-00.csv.abc123.tmp".to_string()),
+        "{hidden:?}"
     );
+    assert!(
+        hidden.contains(&".scene-01.csv.def456.tmp".to_string()),
+        "{hidden:?}"
+    );
+    assert!(
+        hidden.contains(&".unrelated.csv.ghi789.tmp".to_string()),
+        "{hidden:?}"
+    );
+    assert!(hidden.iter().all(|f| f.ends_with(".tmp")), "{hidden:?}");
     assert_eq!(assert_complete(&out, &reference), total);
+}
+
+#[test]
+fn two_renders_into_one_folder_both_succeed_with_complete_files() {
+    let dir = scratch("robustness-concurrent");
+    let total = write_specs(&dir, 12);
+    let specs = dir.join("specs");
+    let reference = dir.join("reference");
+    assert!(render_into(&specs, &reference).status().unwrap().success());
+    // A symbolic link where a temporary used to be named is never written through.
+    let out = dir.join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    let victim = dir.join("victim.txt");
+    std::fs::write(&victim, "untouched").unwrap();
+    std::os::unix::fs::symlink(&victim, out.join(".scene-00.csv.tmp")).unwrap();
+    for round in 0..5 {
+        let children: Vec<_> = (0..2)
+            .map(|_| {
+                render_into(&specs, &out)
+                    .stderr(Stdio::piped())
+                    .spawn()
+                    .unwrap()
+            })
+            .collect();
+        for child in children {
+            let result = child.wait_with_output().unwrap();
+            assert!(
+                result.status.success(),
+                "round {round}: {}",
+                String::from_utf8_lossy(&result.stderr)
+            );
+        }
+        assert_eq!(assert_complete(&out, &reference), total, "round {round}");
+        let hidden: Vec<String> = files_in(&out)
+            .into_iter()
+            .filter(|f| f.starts_with('.'))
+            .collect();
+        assert_eq!(hidden, [".scene-00.csv.tmp"], "round {round}");
+    }
+    assert_eq!(std::fs::read_to_string(&victim).unwrap(), "untouched");
 }
 
 const SPEC: &str = r#"{"id": "checked", "sampling": {"uniform": 50}, "panels": [
