@@ -5,7 +5,7 @@
 //! directory for an inline `compare` side) and may not leave it — neither by an absolute path or
 //! `..`, nor through a symbolic link — unless it lies inside a folder allowed with `--allow-read`.
 //! Only regular files are read, up to [`MAX_DATA_FILE_BYTES`]. Messages never quote a file's
-//! contents; [`excerpt`] bounds and sanitizes what they quote of its header.
+//! contents; [`crate::problem::excerpt`] bounds and sanitizes what they quote of its header.
 
 use std::io::Read;
 use std::path::{Component, Path, PathBuf};
@@ -14,9 +14,6 @@ use std::sync::Arc;
 /// Largest data file read, in bytes (64 MiB): far more than [`crate::scene::data::MAX_DATA_POINTS`]
 /// rows need.
 pub const MAX_DATA_FILE_BYTES: u64 = 64 << 20;
-
-/// Longest excerpt of a header or a value that a message quotes, in characters.
-pub const MAX_EXCERPT_CHARS: usize = 60;
 
 /// Where the data files of one document may be read from.
 #[derive(Debug, Clone, PartialEq)]
@@ -124,37 +121,9 @@ fn absolute(path: &Path) -> std::io::Result<PathBuf> {
     Ok(out)
 }
 
-/// At most [`MAX_EXCERPT_CHARS`] characters of `text`, control and other non-printable characters
-/// replaced by `�`, and `…` appended when cut: what a message may quote of a file or a long value.
-pub fn excerpt(text: &str) -> String {
-    let mut out: String = text
-        .chars()
-        .take(MAX_EXCERPT_CHARS)
-        .map(|c| {
-            if c.is_control() || matches!(c, '\u{200b}'..='\u{200f}' | '\u{2028}'..='\u{202e}') {
-                '\u{fffd}'
-            } else {
-                c
-            }
-        })
-        .collect();
-    if text.chars().nth(MAX_EXCERPT_CHARS).is_some() {
-        out.push('…');
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn excerpts_are_bounded_and_printable() {
-        assert_eq!(excerpt("theta"), "theta");
-        assert_eq!(excerpt("a\u{7}b\nc"), "a\u{fffd}b\u{fffd}c");
-        let long = "x".repeat(1000);
-        assert_eq!(excerpt(&long).chars().count(), MAX_EXCERPT_CHARS + 1);
-    }
 
     #[test]
     fn paths_resolve_lexically_before_any_link_is_followed() {

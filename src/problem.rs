@@ -71,6 +71,29 @@ pub fn one_line(text: &str) -> std::borrow::Cow<'_, str> {
     std::borrow::Cow::Owned(out)
 }
 
+/// Longest excerpt of a file's header or of a value that a message quotes, in characters.
+pub const MAX_EXCERPT_CHARS: usize = 60;
+
+/// At most [`MAX_EXCERPT_CHARS`] characters of `text`, control and other non-printable characters
+/// replaced by `�`, and `…` appended when cut: what a message may quote of a file or a long value.
+pub fn excerpt(text: &str) -> String {
+    let mut out: String = text
+        .chars()
+        .take(MAX_EXCERPT_CHARS)
+        .map(|c| {
+            if c.is_control() || matches!(c, '\u{200b}'..='\u{200f}' | '\u{2028}'..='\u{202e}') {
+                '\u{fffd}'
+            } else {
+                c
+            }
+        })
+        .collect();
+    if text.chars().nth(MAX_EXCERPT_CHARS).is_some() {
+        out.push('…');
+    }
+    out
+}
+
 /// Joins a JSON path and an object key: `("panels[0]", "title")` → `panels[0].title`.
 pub fn join_key(path: &str, key: &str) -> String {
     if path.is_empty() {
@@ -131,6 +154,14 @@ fn edit_distance(a: &str, b: &str) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn excerpts_are_bounded_and_printable() {
+        assert_eq!(excerpt("theta"), "theta");
+        assert_eq!(excerpt("a\u{7}b\nc"), "a\u{fffd}b\u{fffd}c");
+        let long = "x".repeat(1000);
+        assert_eq!(excerpt(&long).chars().count(), MAX_EXCERPT_CHARS + 1);
+    }
 
     #[test]
     fn suggests_near_names_only() {

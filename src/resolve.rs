@@ -8,12 +8,11 @@
 //! it still describes are reported with them ([`Invalid`]), so one run names them all.
 
 use crate::curve::{self, Curve, CurveSpec, Fitted, Label, Model, ParamValue, Part};
-use crate::datafile::excerpt;
 use crate::dataset::Dataset;
 use crate::error::{Error, Result};
 use crate::fit;
 use crate::fresnel::Fresnel;
-use crate::problem::{Problem, Problems, join_key};
+use crate::problem::{Problem, Problems, excerpt, join_key};
 use crate::scene::data::{CsvFile, DataSpec, MAX_DATA_POINTS};
 use crate::scene::interactive::{self, Entry, Interactive};
 use crate::scene::{

@@ -109,7 +109,7 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
         _ => read_table(reader, &entry).map(DataSpec::Ready),
     };
     let style = read_style(reader, &entry, Rgb::from_hex(DATA_COLOUR));
-    let label = reader.string(&entry, "label");
+    let label = reader.text(&entry, "label");
     if reader.problems.len() != before {
         return None;
     }
@@ -275,9 +275,9 @@ fn read_table(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
 /// which two named columns of which CSV file (with a header row) to read; the file is listed in
 /// the reader's pending work and read by resolve.
 fn read_csv(reader: &mut Reader, entry: &Object) -> Option<CsvFile> {
-    let path = reader.string(entry, "path");
-    let x_column = reader.string(entry, "x").unwrap_or_else(|| "theta".into());
-    let y_column = reader.string(entry, "y").unwrap_or_else(|| "value".into());
+    let path = reader.text(entry, "path");
+    let x_column = reader.text(entry, "x").unwrap_or_else(|| "theta".into());
+    let y_column = reader.text(entry, "y").unwrap_or_else(|| "value".into());
     let degrees = reader.boolean(entry, "degrees").unwrap_or(false);
     let at = entry.path_of("path");
     let Some(path) = path else {

@@ -153,7 +153,7 @@ fn read_slider(reader: &mut Reader, node: &Node, path: &str) -> Option<Slider> {
             None
         }
     };
-    let label = reader.string(&object, "label");
+    let label = reader.text(&object, "label");
     let values = match (object.get("range"), object.get("geomspace")) {
         (Some(_), Some(_)) => {
             reader.report(

@@ -310,7 +310,7 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene<Spec>> {
             None
         }
     };
-    let title = reader.string(&object, "title").unwrap_or_default();
+    let title = reader.text(&object, "title").unwrap_or_default();
     let sampling = read_sampling(reader, &object);
     let theme = read_theme(reader, &object);
     let panels = read_panels(reader, &object);
@@ -538,7 +538,7 @@ fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<Scene
 
 fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel<Spec>> {
     let panel = reader.object(node, path, PANEL_KEYS)?;
-    let title = reader.string(&panel, "title").unwrap_or_default();
+    let title = reader.text(&panel, "title").unwrap_or_default();
     let legend = reader.boolean(&panel, "legend").unwrap_or(true);
     let x_path = panel.path_of("x");
     let y_path = panel.path_of("y");
@@ -585,10 +585,10 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
         axes: Axes {
             title,
             x_label: x
-                .and_then(|x| reader.string(&x, "label"))
+                .and_then(|x| reader.text(&x, "label"))
                 .unwrap_or(default_x_label),
             y_label: y
-                .and_then(|y| reader.string(&y, "label"))
+                .and_then(|y| reader.text(&y, "label"))
                 .unwrap_or(default_y_label),
             x_unit,
             kind,
@@ -780,15 +780,13 @@ fn read_surface(
             .unwrap_or(default)
     };
     Some(PanelKind::Surface {
-        z_label: z
-            .and_then(|z| reader.string(&z, "label"))
-            .unwrap_or_else(|| {
-                series
-                    .data
-                    .first()
-                    .map(|d| data::z_label(&d.dataset))
-                    .unwrap_or_default()
-            }),
+        z_label: z.and_then(|z| reader.text(&z, "label")).unwrap_or_else(|| {
+            series
+                .data
+                .first()
+                .map(|d| data::z_label(&d.dataset))
+                .unwrap_or_default()
+        }),
         z_range: z.and_then(|z| reader.interval(&z, "range", f64::is_finite, "finite")),
         // The notebook's view_init(elev=65, azim=-45).
         elevation_deg: angle(reader, "elevation", 65.0),
@@ -859,7 +857,7 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
         return;
     };
     let entry = reader::Object::from_members(members, path);
-    let label_template = reader.string(&entry, "label");
+    let label_template = reader.text(&entry, "label");
     let base_style = read_style(reader, &entry, default_colour(resolved.model));
 
     // Per parameter, its values; absent keys take their defaults.

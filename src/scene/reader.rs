@@ -91,6 +91,30 @@ impl Reader {
         }
     }
 
+    /// A string field that is drawn as text (a title, a label, a column name shown on an axis): a
+    /// string without control characters, which no figure format can show (SVG's XML refuses most
+    /// of them). `None` when absent, of the wrong type or holding one (reported).
+    pub fn text(&mut self, object: &Object, key: &str) -> Option<String> {
+        let text = self.string(object, key)?;
+        match text
+            .chars()
+            .find(|&c| c.is_control() || matches!(c, '\u{fffe}' | '\u{ffff}'))
+        {
+            Some(bad) => {
+                self.report(
+                    object.path_of(key),
+                    format!(
+                        "control character U+{:04X} in text (got \"{}\", expected printable text)",
+                        bad as u32,
+                        crate::problem::excerpt(&text)
+                    ),
+                );
+                None
+            }
+            None => Some(text),
+        }
+    }
+
     /// A boolean field; `None` when absent or of the wrong type (reported).
     pub fn boolean(&mut self, object: &Object, key: &str) -> Option<bool> {
         let node = object.get(key)?;

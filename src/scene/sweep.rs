@@ -398,7 +398,7 @@ pub fn difference_entry(
         return;
     };
     let entry = reader::Object::from_members(members, path);
-    let template = reader.string(&entry, "label");
+    let template = reader.text(&entry, "label");
     let Some(style) = read_style(reader, &entry, default_colour(a[0].curve.model())) else {
         return;
     };
