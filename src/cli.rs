@@ -82,8 +82,9 @@ pub struct CoeffsArgs {
 #[derive(Debug, Args)]
 #[command(
     after_long_help = "Every spec is validated before anything is evaluated or written; files are written as\n\
-    hidden temporaries and renamed into place. With --check nothing is written: the CSVs are\n\
-    re-rendered and compared with DIR's (exit 1 on any difference, a missing or an extra CSV).\n\n\
+    hidden temporaries and renamed into place. With --check nothing is written: the CSVs and SVGs are\n\
+    re-rendered and compared with DIR's, every CSV cell and, for figures whose values match, the\n\
+    drawing of the stored SVG (exit 1 on any difference, a missing or an extra CSV).\n\n\
     Examples:\n  \
     ndfplot render\n  \
     ndfplot render configs/abc-vs-tr.json my-scenes/ -o out --format svg,csv\n  \
@@ -115,7 +116,8 @@ pub struct RenderArgs {
     /// Base font size in CSS pixels (default 14 unless the scene says otherwise).
     #[arg(long, value_name = "PX", value_parser = float_in(4.0, 200.0))]
     pub font_px: Option<f64>,
-    /// Write nothing: re-render the CSVs and compare them with those in DIR (exit 1 on a difference).
+    /// Write nothing: re-render the CSVs and SVGs and compare them with those in DIR (exit 1 on a
+    /// difference in values or drawing).
     #[arg(long, value_name = "DIR")]
     pub check: Option<PathBuf>,
     /// Largest accepted relative difference of a CSV value under --check.

@@ -87,29 +87,30 @@ pub fn run_with_progress(
     options: &RenderOptions,
     quiet: bool,
 ) -> Result<(Vec<PathBuf>, RenderStats)> {
-    let (outputs, mut stats) = encode_outputs(options, false, quiet)?;
+    let (outputs, mut stats) = encode_outputs(options, quiet)?;
     let stage = std::time::Instant::now();
     let written = write::write_files(&options.out, &outputs)?;
     stats.encoding += stage.elapsed();
     Ok((written, stats))
 }
 
-/// `render --check DIR`: re-renders the CSVs of `options` (writing nothing) and compares them with
-/// DIR's at a relative `tolerance`; prints every difference, and fails (exit 1) on any. Only CSV
-/// is encoded.
+/// `render --check DIR`: re-renders the CSVs and SVGs of `options` (writing nothing) and compares
+/// them with DIR's ([`check_outputs::compare`]: values at a relative `tolerance`, then the drawing
+/// of figures whose values match); prints every difference, and fails (exit 1) on any. Only CSV
+/// and SVG are encoded, whatever `options.formats` says.
 pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -> Result<()> {
-    let mut options = options.clone();
-    if !options.formats.contains(&Format::Csv) {
-        options.formats.push(Format::Csv);
-    }
-    let (outputs, _) = encode_outputs(&options, true, quiet)?;
+    let options = RenderOptions {
+        formats: vec![Format::Svg, Format::Csv],
+        ..options.clone()
+    };
+    let (outputs, _) = encode_outputs(&options, quiet)?;
     let (report, ok) = check_outputs::compare(dir, &outputs, tolerance)?;
     crate::stdout::print(&report)?;
     if ok {
         Ok(())
     } else {
         Err(Error::CheckFailed(format!(
-            "error: render --check: the CSVs differ from {}",
+            "error: render --check: the figures differ from {}",
             dir.display()
         )))
     }
@@ -118,13 +119,8 @@ pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -
 /// Output files as (file name, bytes).
 type Files = Vec<(String, Vec<u8>)>;
 
-/// Every output of `options` as (file name, bytes), sorted by name, without writing anything; only
-/// the CSVs when `tables_only`.
-fn encode_outputs(
-    options: &RenderOptions,
-    tables_only: bool,
-    quiet: bool,
-) -> Result<(Files, RenderStats)> {
+/// Every output of `options` as (file name, bytes), sorted by name, without writing anything.
+fn encode_outputs(options: &RenderOptions, quiet: bool) -> Result<(Files, RenderStats)> {
     let start = std::time::Instant::now();
     let sources = sources(&options.paths, &options.allow_read)?;
     let scenes = resolve::scenes(load_scenes(&sources, options.canvas))?;
@@ -134,20 +130,16 @@ fn encode_outputs(
         .collect();
     let has = |f: Format| options.formats.contains(&f);
     let outputs = Outputs {
-        drawn: !tables_only && (has(Format::Svg) || has(Format::Png) || has(Format::Pdf)),
+        drawn: has(Format::Svg) || has(Format::Png) || has(Format::Pdf),
         table: has(Format::Csv),
-        page: !tables_only && has(Format::Html),
+        page: has(Format::Html),
     };
     let plan = plan(&scenes, outputs);
-    let encoded_formats = if tables_only {
-        1
-    } else {
-        options
-            .formats
-            .iter()
-            .filter(|&&f| f != Format::Html)
-            .count()
-    };
+    let encoded_formats = options
+        .formats
+        .iter()
+        .filter(|&&f| f != Format::Html)
+        .count();
     let progress = Progress::new(
         (plan.jobs.len() + scenes.len() * encoded_formats) as u64,
         quiet,

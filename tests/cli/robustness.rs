@@ -574,3 +574,42 @@ fn data_paths_stay_in_the_spec_folder_unless_allowed_and_errors_never_quote_the_
     assert_eq!(result.status.code(), Some(2));
     assert!(text(&result.stderr).contains("leaves the spec's folder"));
 }
+
+#[test]
+fn render_check_catches_a_change_of_the_drawing_alone() {
+    let dir = scratch("robustness-check-drawing");
+    let spec = dir.join("spec.json");
+    let titled = SPEC.replace(
+        r#""id": "checked","#,
+        r#""id": "checked", "title": "Before","#,
+    );
+    std::fs::write(&spec, &titled).unwrap();
+    let plots = dir.join("plots");
+    crate::common::render_into(&[&spec], &plots, "svg,csv");
+    assert_eq!(check(&spec, &plots, &[]).status.code(), Some(0));
+    for (from, to) in [
+        ("Before", "After"),
+        (r#""f0": 0.04}"#, r##""f0": 0.04, "colour": "#DC322F"}"##),
+        (
+            r#""id": "checked","#,
+            r#""id": "checked", "theme": "dark","#,
+        ),
+    ] {
+        std::fs::write(&spec, titled.replace(from, to)).unwrap();
+        let out = check(&spec, &plots, &[]);
+        let report = text(&out.stdout);
+        assert_eq!(
+            out.status.code(),
+            Some(1),
+            "{to}: {report}{}",
+            text(&out.stderr)
+        );
+        assert!(
+            report.starts_with("checked.svg: the drawing differs though every value matches")
+                && report.contains("1 figures differ")
+                && report.contains("0 in their values")
+                && report.contains("1 in their drawing only"),
+            "{to}: {report}"
+        );
+    }
+}
