@@ -9,8 +9,17 @@ use crate::json;
 use crate::problem::{Problem, Problems};
 use crate::scene::data::CsvFile;
 
-/// Reads a text file, naming it in the error.
+/// Reads a text file, naming it in the error. Only regular files are read: a FIFO or a device
+/// is refused before it is opened (opening a FIFO would block).
 pub fn read_file(path: &str) -> Result<String> {
+    let meta = std::fs::metadata(path).map_err(|e| Error::io(path, e))?;
+    if !meta.is_file() {
+        let kind = std::io::ErrorKind::InvalidInput;
+        return Err(Error::io(
+            path,
+            std::io::Error::new(kind, "not a regular file"),
+        ));
+    }
     std::fs::read_to_string(path).map_err(|e| Error::io(path, e))
 }
 

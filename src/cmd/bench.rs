@@ -28,8 +28,10 @@ const ERROR_FLOOR: f64 = 1e-17;
 /// Colours of the normalization routes and throughput methods (Solarized accents, as the catalogue).
 const PALETTE: [u32; 6] = [0x268BD2, 0xDC322F, 0x859900, 0xB58900, 0x6C71C4, 0x2AA198];
 
-/// Runs every measurement with the system clock and writes the CSV and the figure into `dir`.
+/// Runs every measurement with the system clock and writes the CSV and the figure into `dir`;
+/// an output folder that cannot be written fails before anything is measured.
 pub fn run(dir: &Path) -> Result<Vec<PathBuf>> {
+    write::check_writable(dir)?;
     let rows = bench::run(&bench::SystemClock::new(), &bench::Settings::standard());
     write_outputs(dir, &rows)
 }

@@ -18,7 +18,7 @@ use crate::input::Side;
 use crate::metrics::sampled::{Operand, Samples};
 use crate::problem::{Problem, Problems};
 use crate::{input, resolve, source, stdout};
-use std::io::Read;
+use std::io::{Read, Write};
 use std::path::PathBuf;
 
 /// Runs a parsed command line.
@@ -131,7 +131,8 @@ fn run_fit(args: FitArgs) -> Result<()> {
     let target = load_one_curve(&args.target, "--target")?;
     let fitted = fit::run(&target, family, &fixed, by)?;
     stdout::print(&fit::stdout_line(&fitted))?;
-    eprintln!("{}", fit::residual_line(&fitted, by));
+    // stderr is informative only: a closed or full stderr does not fail the fit.
+    let _ = writeln!(std::io::stderr(), "{}", fit::residual_line(&fitted, by));
     Ok(())
 }
 

@@ -95,6 +95,18 @@ pub fn write_files<N: AsRef<str>, B: AsRef<[u8]>>(
     Ok(written)
 }
 
+/// Creates `dir` if needed and checks that a file can be created in it (a temporary, removed at
+/// once), so a long run can fail before its work rather than after it.
+pub fn check_writable(dir: &Path) -> Result<()> {
+    ensure_dir(dir)?;
+    tempfile::Builder::new()
+        .prefix(".ndfplot-probe.")
+        .suffix(SUFFIX)
+        .tempfile_in(dir)
+        .map(drop)
+        .map_err(|e| Error::io(dir.display().to_string(), e))
+}
+
 /// Creates the output folder (and its parents) if needed.
 fn ensure_dir(dir: &Path) -> Result<()> {
     fs::create_dir_all(dir).map_err(|e| Error::io(dir.display().to_string(), e))

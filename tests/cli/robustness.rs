@@ -613,3 +613,86 @@ fn render_check_catches_a_change_of_the_drawing_alone() {
         );
     }
 }
+
+/// Waits for `child` at most `limit`; kills it and fails when it runs longer.
+fn finish_within(mut child: std::process::Child, limit: Duration, what: &str) -> Output {
+    let start = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > limit {
+            child.kill().unwrap();
+            child.wait().unwrap();
+            panic!("{what} still running after {limit:?}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+#[test]
+fn a_fifo_spec_a_full_stderr_and_an_unwritable_bench_folder_fail_at_once() {
+    let dir = scratch("robustness-fail-fast");
+    let run = |args: &[&str], stderr: Stdio| {
+        Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+            .args(args)
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(stderr)
+            .spawn()
+            .unwrap()
+    };
+    let limit = Duration::from_secs(30);
+
+    let fifo = dir.join("spec.json");
+    assert!(
+        Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap()
+            .success()
+    );
+    let out = dir.join("out");
+    let args = [
+        "render",
+        fifo.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    let result = finish_within(run(&args, Stdio::piped()), limit, "render of a FIFO");
+    assert_eq!(result.status.code(), Some(2));
+    assert!(
+        text(&result.stderr).contains("not a regular file"),
+        "{}",
+        text(&result.stderr)
+    );
+
+    let full = || {
+        Stdio::from(
+            std::fs::File::options()
+                .write(true)
+                .open("/dev/full")
+                .unwrap(),
+        )
+    };
+    let bad = run(
+        &["eval", "--curve", r#"{"ndf": "nope"}"#, "--theta", "0"],
+        full(),
+    );
+    assert_eq!(finish_within(bad, limit, "eval").status.code(), Some(2));
+    let fit = [
+        "fit",
+        "--target",
+        r#"{"ndf": "ggx", "alpha_tr": 0.3}"#,
+        "--family",
+        "beckmann",
+    ];
+    let result = finish_within(run(&fit, full()), limit, "fit");
+    assert_eq!(result.status.code(), Some(0));
+    assert!(text(&result.stdout).starts_with(r#"{"ndf":"beckmann""#));
+
+    let file = dir.join("file.txt");
+    std::fs::write(&file, "").unwrap();
+    let under_a_file = file.join("bench");
+    let args = ["bench", "-o", under_a_file.to_str().unwrap()];
+    let result = finish_within(run(&args, Stdio::piped()), limit, "bench");
+    assert_eq!(result.status.code(), Some(2), "{}", text(&result.stderr));
+}
