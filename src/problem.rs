@@ -74,20 +74,12 @@ pub fn one_line(text: &str) -> std::borrow::Cow<'_, str> {
 /// Longest excerpt of a file's header or of a value that a message quotes, in characters.
 pub const MAX_EXCERPT_CHARS: usize = 60;
 
-/// At most [`MAX_EXCERPT_CHARS`] characters of `text`, control and other non-printable characters
-/// replaced by `�`, and `…` appended when cut: what a message may quote of a file or a long value.
+/// At most [`MAX_EXCERPT_CHARS`] characters of `text`, control characters escaped as by
+/// [`one_line`], and `…` appended when cut: what a message may quote of a file or of a value given
+/// by the user, however long.
 pub fn excerpt(text: &str) -> String {
-    let mut out: String = text
-        .chars()
-        .take(MAX_EXCERPT_CHARS)
-        .map(|c| {
-            if c.is_control() || matches!(c, '\u{200b}'..='\u{200f}' | '\u{2028}'..='\u{202e}') {
-                '\u{fffd}'
-            } else {
-                c
-            }
-        })
-        .collect();
+    let cut: String = text.chars().take(MAX_EXCERPT_CHARS).collect();
+    let mut out = one_line(&cut).into_owned();
     if text.chars().nth(MAX_EXCERPT_CHARS).is_some() {
         out.push('…');
     }
@@ -158,7 +150,7 @@ mod tests {
     #[test]
     fn excerpts_are_bounded_and_printable() {
         assert_eq!(excerpt("theta"), "theta");
-        assert_eq!(excerpt("a\u{7}b\nc"), "a\u{fffd}b\u{fffd}c");
+        assert_eq!(excerpt("a\u{7}b\nc"), "a\\u0007b\\nc");
         let long = "x".repeat(1000);
         assert_eq!(excerpt(&long).chars().count(), MAX_EXCERPT_CHARS + 1);
     }

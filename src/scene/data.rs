@@ -287,7 +287,13 @@ fn read_csv(reader: &mut Reader, entry: &Object) -> Option<CsvFile> {
         return None;
     };
     let Some(scope) = reader.data.clone() else {
-        reader.report(at, format!("data files need a spec read from disk (got \"{path}\" in a built-in or inline spec)"));
+        reader.report(
+            at,
+            format!(
+                "data files need a spec read from disk (got \"{}\" in a built-in or inline spec)",
+                crate::problem::excerpt(&path)
+            ),
+        );
         return None;
     };
     let csv = CsvFile {

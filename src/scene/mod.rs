@@ -297,7 +297,7 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene<Spec>> {
     let id = match reader.string(&object, "id") {
         Some(id) if valid_id(&id) => Some(id),
         Some(id) => {
-            reader.report("id", format!("invalid id (got \"{id}\", expected ^[a-z0-9][a-z0-9_-]{{0,63}}$: lower-case letters, digits, '-' and '_', no paths)"));
+            reader.report("id", format!("invalid id (got \"{}\", expected ^[a-z0-9][a-z0-9_-]{{0,63}}$: lower-case letters, digits, '-' and '_', no paths)", crate::problem::excerpt(&id)));
             None
         }
         None => {
@@ -1041,7 +1041,8 @@ pub(crate) fn read_style(
                     other => reader.report(
                         word_path,
                         format!(
-                            "unknown style (got \"{other}\", expected any of: {}){}",
+                            "unknown style (got \"{}\", expected any of: {}){}",
+                            crate::problem::excerpt(other),
                             STYLE_WORDS.join(", "),
                             suggestion(other, STYLE_WORDS.iter().copied())
                         ),
@@ -1065,7 +1066,10 @@ pub(crate) fn read_style(
             Some(colour) => style.colour = colour,
             None => reader.report(
                 entry.path_of("colour"),
-                format!("invalid colour (got \"{text}\", expected #RRGGBB)"),
+                format!(
+                    "invalid colour (got \"{}\", expected #RRGGBB)",
+                    crate::problem::excerpt(&text)
+                ),
             ),
         }
     }

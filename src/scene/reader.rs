@@ -205,7 +205,8 @@ impl Reader {
             self.report(
                 object.path_of(key),
                 format!(
-                    "unknown value (got \"{text}\", expected one of: {}){}",
+                    "unknown value (got \"{}\", expected one of: {}){}",
+                    crate::problem::excerpt(&text),
                     choices.join(", "),
                     suggestion(&text, choices.iter().copied())
                 ),
