@@ -37,6 +37,7 @@ fn report(label: &str, paths: Vec<PathBuf>, dir: &Path) {
         out: dir.join("out"),
         formats: vec![Format::Svg, Format::Png, Format::Csv],
         canvas: CanvasOverride::default(),
+        allow_read: Vec::new(),
     };
     let runs: Vec<RenderStats> = (0..RUNS)
         .map(|_| {

@@ -99,8 +99,9 @@ pub struct CoeffsArgs {
 #[derive(Debug, Args)]
 #[command(
     after_long_help = "Every spec is validated before anything is evaluated or written; files are written as\n\
-    hidden temporaries and renamed into place. With --check nothing is written: the CSVs are\n\
-    re-rendered and compared with DIR's (exit 1 on any difference, a missing or an extra CSV).\n\n\
+    hidden temporaries and renamed into place. With --check nothing is written: the CSVs and SVGs are\n\
+    re-rendered and compared with DIR's, every CSV cell and, for figures whose values match, the\n\
+    drawing of the stored SVG (exit 1 on any difference, a missing or an extra CSV).\n\n\
     Examples:\n  \
     ndfplot render\n  \
     ndfplot render configs/abc-vs-tr.json my-scenes/ -o out --format svg,csv\n  \
@@ -132,7 +133,8 @@ pub struct RenderArgs {
     /// Base font size in CSS pixels (default 14 unless the scene says otherwise).
     #[arg(long, value_name = "PX", value_parser = float_in(4.0, 200.0))]
     pub font_px: Option<f64>,
-    /// Write nothing: re-render the CSVs and compare them with those in DIR (exit 1 on a difference).
+    /// Write nothing: re-render the CSVs and SVGs and compare them with those in DIR (exit 1 on a
+    /// difference in values or drawing).
     #[arg(long, value_name = "DIR")]
     pub check: Option<PathBuf>,
     /// Largest accepted relative difference of a CSV value under --check.
@@ -141,6 +143,10 @@ pub struct RenderArgs {
     /// No progress bar on stderr.
     #[arg(short, long)]
     pub quiet: bool,
+    /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
+    /// inside the folder of the spec naming it. Repeatable.
+    #[arg(long = "allow-read", value_name = "DIR")]
+    pub allow_read: Vec<PathBuf>,
 }
 
 /// A clap value parser for a finite number within [low, high].
@@ -246,6 +252,11 @@ pub struct CompareArgs {
     /// Fail (exit 1) when a metric exceeds a bound, as <metric>=<number>; repeatable.
     #[arg(long = "max-error", value_name = "METRIC=X")]
     pub max_error: Vec<String>,
+    /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
+    /// inside the folder it resolves against (an @FILE's folder, else the working
+    /// directory). Repeatable.
+    #[arg(long = "allow-read", value_name = "DIR")]
+    pub allow_read: Vec<PathBuf>,
 }
 
 /// Arguments of `ndfplot fit`.
@@ -292,6 +303,10 @@ pub struct CheckArgs {
     /// Largest accepted |2 pi integral D sin cos dtheta - 1|.
     #[arg(long, value_name = "X", default_value_t = crate::audit::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
+    /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
+    /// inside the folder of the spec naming it. Repeatable.
+    #[arg(long = "allow-read", value_name = "DIR")]
+    pub allow_read: Vec<PathBuf>,
 }
 
 /// Arguments of `ndfplot bench`.

@@ -731,7 +731,8 @@ fn model_from_node(
         problems.push(Problem::new(
             at,
             format!(
-                "unknown {key} model (got \"{name}\", expected one of: {}){}",
+                "unknown {key} model (got \"{}\", expected one of: {}){}",
+                crate::problem::excerpt(name),
                 names.join(", "),
                 suggestion(name, names.iter().copied())
             ),
@@ -957,7 +958,8 @@ pub fn difference_parts<'a>(
                 problems.push(Problem::new(
                     join_key(path, DIFFERENCE_KEY),
                     format!(
-                        "unknown difference (got \"{name}\", expected one of: {}){}",
+                        "unknown difference (got \"{}\", expected one of: {}){}",
+                        crate::problem::excerpt(name),
                         names.join(", "),
                         suggestion(name, names.iter().copied())
                     ),

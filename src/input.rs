@@ -3,13 +3,23 @@
 //! Every problem of every argument is collected before failing, so one run reports them all.
 
 use crate::curve::{self, CurveSpec};
+use crate::datafile::DataScope;
 use crate::error::{Error, Result};
 use crate::json;
 use crate::problem::{Problem, Problems};
 use crate::scene::data::CsvFile;
 
-/// Reads a text file, naming it in the error.
+/// Reads a text file, naming it in the error. Only regular files are read: a FIFO or a device
+/// is refused before it is opened (opening a FIFO would block).
 pub fn read_file(path: &str) -> Result<String> {
+    let meta = std::fs::metadata(path).map_err(|e| Error::io(path, e))?;
+    if !meta.is_file() {
+        let kind = std::io::ErrorKind::InvalidInput;
+        return Err(Error::io(
+            path,
+            std::io::Error::new(kind, "not a regular file"),
+        ));
+    }
     std::fs::read_to_string(path).map_err(|e| Error::io(path, e))
 }
 
@@ -34,20 +44,16 @@ pub enum Side {
     Csv(CsvFile),
 }
 
-/// Parses one side of a comparison: a curve, or a `{"data": "csv", …}` series whose file resolves
-/// against `base_dir`.
-fn parse_side(
-    text: &str,
-    source: &str,
-    base_dir: &std::path::Path,
-) -> std::result::Result<Side, Problems> {
+/// Parses one side of a comparison: a curve, or a `{"data": "csv", …}` series whose file is read
+/// from `scope`.
+fn parse_side(text: &str, source: &str, scope: DataScope) -> std::result::Result<Side, Problems> {
     let node = parse_json(text, source)?;
     let problems = |list| Problems {
         source: source.to_string(),
         list,
     };
     if crate::scene::data::is_data(&node) {
-        let file = crate::scene::data::parse_csv_series(&node, base_dir).map_err(problems)?;
+        let file = crate::scene::data::parse_csv_series(&node, scope).map_err(problems)?;
         return Ok(Side::Csv(file));
     }
     curve::parse(&node, "").map(Side::Curve).map_err(problems)
@@ -55,11 +61,13 @@ fn parse_side(
 
 /// Loads one side of `compare` from `arg`: inline JSON, `@path` or `-` (one line on `stdin`), holding a
 /// curve or a `{"data": "csv", "path": …}` series. The CSV path resolves against the folder of an
-/// `@path` file, else against the working directory; the file is not read. Returns the source's
-/// name (as problems name it) and the side.
+/// `@path` file, else against the working directory, and may be read from there or from the
+/// folders `allow_read`; the file is not read. Returns the source's name (as problems name it) and
+/// the side.
 pub fn load_operand(
     arg: &str,
     flag: &str,
+    allow_read: &[std::path::PathBuf],
     stdin: impl FnOnce() -> std::io::Result<String>,
 ) -> Result<(String, Side)> {
     let here = std::path::Path::new(".");
@@ -72,7 +80,8 @@ pub fn load_operand(
     } else {
         (arg.to_string(), flag.to_string(), here)
     };
-    let side = parse_side(&text, &source, base_dir).map_err(|p| Error::Input(vec![p]))?;
+    let scope = DataScope::new(base_dir, std::sync::Arc::from(allow_read));
+    let side = parse_side(&text, &source, scope).map_err(|p| Error::Input(vec![p]))?;
     Ok((source, side))
 }
 

@@ -15,6 +15,7 @@ pub mod check_outputs;
 pub mod cli;
 pub mod cmd;
 pub mod curve;
+pub mod datafile;
 pub mod dataset;
 pub mod domain;
 pub mod dyadic;

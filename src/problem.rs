@@ -71,6 +71,21 @@ pub fn one_line(text: &str) -> std::borrow::Cow<'_, str> {
     std::borrow::Cow::Owned(out)
 }
 
+/// Longest excerpt of a file's header or of a value that a message quotes, in characters.
+pub const MAX_EXCERPT_CHARS: usize = 60;
+
+/// At most [`MAX_EXCERPT_CHARS`] characters of `text`, control characters escaped as by
+/// [`one_line`], and `…` appended when cut: what a message may quote of a file or of a value given
+/// by the user, however long.
+pub fn excerpt(text: &str) -> String {
+    let cut: String = text.chars().take(MAX_EXCERPT_CHARS).collect();
+    let mut out = one_line(&cut).into_owned();
+    if text.chars().nth(MAX_EXCERPT_CHARS).is_some() {
+        out.push('…');
+    }
+    out
+}
+
 /// Joins a JSON path and an object key: `("panels[0]", "title")` → `panels[0].title`.
 pub fn join_key(path: &str, key: &str) -> String {
     if path.is_empty() {
@@ -131,6 +146,14 @@ fn edit_distance(a: &str, b: &str) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn excerpts_are_bounded_and_printable() {
+        assert_eq!(excerpt("theta"), "theta");
+        assert_eq!(excerpt("a\u{7}b\nc"), "a\\u0007b\\nc");
+        let long = "x".repeat(1000);
+        assert_eq!(excerpt(&long).chars().count(), MAX_EXCERPT_CHARS + 1);
+    }
 
     #[test]
     fn suggests_near_names_only() {

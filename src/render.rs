@@ -31,6 +31,8 @@ pub struct RenderOptions {
     pub formats: Vec<Format>,
     /// Canvas overrides.
     pub canvas: CanvasOverride,
+    /// Folders data files may also be read from, beside each spec's own (`--allow-read`).
+    pub allow_read: Vec<PathBuf>,
 }
 
 /// The interactive page of every scene that has sliders, from its planned jobs `feeds`.
@@ -85,39 +87,44 @@ pub fn run_with_progress(
     options: &RenderOptions,
     quiet: bool,
 ) -> Result<(Vec<PathBuf>, RenderStats)> {
-    let (outputs, mut stats) = encode_outputs(options, false, quiet)?;
+    let (outputs, mut stats) = encode_outputs(options, quiet)?;
     let stage = std::time::Instant::now();
-    let written = write_outputs(&options.out, &outputs)?;
+    let written = write::write_files(&options.out, &outputs)?;
     stats.encoding += stage.elapsed();
     Ok((written, stats))
 }
 
-/// `render --check DIR`: re-renders the CSVs of `options` (writing nothing) and compares them with
-/// DIR's at a relative `tolerance`; prints every difference, and fails (exit 1) on any. Only CSV
-/// is encoded.
+/// `render --check DIR`: re-renders the CSVs and SVGs of `options` (writing nothing) and compares
+/// them with DIR's ([`check_outputs::compare`]: values at a relative `tolerance`, then the drawing
+/// of figures whose values match); prints every difference, and fails (exit 1) on any. Only CSV
+/// and SVG are encoded, whatever `options.formats` says.
 pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -> Result<()> {
-    let mut options = options.clone();
-    if !options.formats.contains(&Format::Csv) {
-        options.formats.push(Format::Csv);
-    }
-    let (outputs, _) = encode_outputs(&options, true, quiet)?;
+    let options = RenderOptions {
+        formats: vec![Format::Svg, Format::Csv],
+        ..options.clone()
+    };
+    let (outputs, _) = encode_outputs(&options, quiet)?;
     let (report, ok) = check_outputs::compare(dir, &outputs, tolerance)?;
     crate::stdout::print(&report)?;
     if ok {
         Ok(())
     } else {
         Err(Error::CheckFailed(format!(
-            "error: render --check: the CSVs differ from {}",
+            "error: render --check: the figures differ from {}",
             dir.display()
         )))
     }
 }
 
-/// The drawn figures of the specs at `paths` (empty: the built-in catalogue) under `canvas`, in
-/// source order — what SVG, PNG and PDF are encoded from — without encoding or writing anything;
-/// the figure lint reads them.
-pub fn drawn_figures(paths: &[PathBuf], canvas: CanvasOverride) -> Result<Vec<Figure>> {
-    let sources = sources(paths)?;
+/// The drawn figures of the specs at `paths` (empty: the built-in catalogue; data files read from
+/// each spec's folder and `allow_read`) under `canvas`, in source order — what SVG, PNG and PDF are
+/// encoded from — without encoding or writing anything; the figure lint reads them.
+pub fn drawn_figures(
+    paths: &[PathBuf],
+    allow_read: &[PathBuf],
+    canvas: CanvasOverride,
+) -> Result<Vec<Figure>> {
+    let sources = sources(paths, allow_read)?;
     let scenes = resolve::scenes(load_scenes(&sources, canvas))?;
     let provenance: Vec<Provenance> = sources
         .iter()
@@ -142,15 +149,10 @@ pub fn drawn_figures(paths: &[PathBuf], canvas: CanvasOverride) -> Result<Vec<Fi
 /// Output files as (file name, bytes).
 type Files = Vec<(String, Vec<u8>)>;
 
-/// Every output of `options` as (file name, bytes), sorted by name, without writing anything; only
-/// the CSVs when `tables_only`.
-fn encode_outputs(
-    options: &RenderOptions,
-    tables_only: bool,
-    quiet: bool,
-) -> Result<(Files, RenderStats)> {
+/// Every output of `options` as (file name, bytes), sorted by name, without writing anything.
+fn encode_outputs(options: &RenderOptions, quiet: bool) -> Result<(Files, RenderStats)> {
     let start = std::time::Instant::now();
-    let sources = sources(&options.paths)?;
+    let sources = sources(&options.paths, &options.allow_read)?;
     let scenes = resolve::scenes(load_scenes(&sources, options.canvas))?;
     let provenance: Vec<Provenance> = sources
         .iter()
@@ -158,20 +160,16 @@ fn encode_outputs(
         .collect();
     let has = |f: Format| options.formats.contains(&f);
     let outputs = Outputs {
-        drawn: !tables_only && (has(Format::Svg) || has(Format::Png) || has(Format::Pdf)),
+        drawn: has(Format::Svg) || has(Format::Png) || has(Format::Pdf),
         table: has(Format::Csv),
-        page: !tables_only && has(Format::Html),
+        page: has(Format::Html),
     };
     let plan = plan(&scenes, outputs);
-    let encoded_formats = if tables_only {
-        1
-    } else {
-        options
-            .formats
-            .iter()
-            .filter(|&&f| f != Format::Html)
-            .count()
-    };
+    let encoded_formats = options
+        .formats
+        .iter()
+        .filter(|&&f| f != Format::Html)
+        .count();
     let progress = Progress::new(
         (plan.jobs.len() + scenes.len() * encoded_formats) as u64,
         quiet,
@@ -230,15 +228,4 @@ fn encode_outputs(
     outputs.sort_by(|a, b| a.0.cmp(&b.0));
     stats.encoding += stage.elapsed();
     Ok((outputs, stats))
-}
-
-fn write_outputs(dir: &Path, outputs: &[(String, Vec<u8>)]) -> Result<Vec<PathBuf>> {
-    write::ensure_dir(dir)?;
-    let mut written = Vec::with_capacity(outputs.len());
-    for (name, bytes) in outputs {
-        write::remove_stale(dir, name)?;
-        write::write_atomic(dir, name, bytes)?;
-        written.push(dir.join(name));
-    }
-    Ok(written)
 }

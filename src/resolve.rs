@@ -12,7 +12,7 @@ use crate::dataset::Dataset;
 use crate::error::{Error, Result};
 use crate::fit;
 use crate::fresnel::Fresnel;
-use crate::problem::{Problem, Problems, join_key};
+use crate::problem::{Problem, Problems, excerpt, join_key};
 use crate::scene::data::{CsvFile, DataSpec, MAX_DATA_POINTS};
 use crate::scene::interactive::{self, Entry, Interactive};
 use crate::scene::{
@@ -113,12 +113,22 @@ pub fn curve(spec: &CurveSpec) -> std::result::Result<Curve, Problem> {
     })
 }
 
-/// Reads a CSV data file: its two columns as finite numbers, θ converted to radians and checked
-/// within [0, π/2]. Problems are reported at the entry's `path` key.
+/// Reads a CSV data file within its [`DataScope`](crate::datafile::DataScope): its two columns as
+/// finite numbers, θ converted to radians and checked within [0, π/2]. Problems are reported at the
+/// entry's `path` key, quoting the path (as an excerpt) and no more of the file than an excerpt of
+/// its header.
 pub fn csv(file: &CsvFile) -> std::result::Result<Dataset, Problem> {
     let path = &file.path;
-    let (x, y) = read_columns(&file.file, &file.x_column, &file.y_column)
-        .map_err(|message| Problem::new(&file.at, format!("cannot read \"{path}\": {message}")))?;
+    let (x, y) = file
+        .scope
+        .read(path)
+        .and_then(|bytes| read_columns(&bytes, &file.x_column, &file.y_column))
+        .map_err(|message| {
+            Problem::new(
+                &file.at,
+                format!("cannot read \"{}\": {message}", excerpt(path)),
+            )
+        })?;
     let to_radians = if file.degrees {
         std::f64::consts::PI / 180.0
     } else {
@@ -134,7 +144,8 @@ pub fn csv(file: &CsvFile) -> std::result::Result<Dataset, Problem> {
         return Err(Problem::new(
             &file.at,
             format!(
-                "θ out of range in \"{path}\" (got {:?}, expected {unit})",
+                "θ out of range in \"{}\" (got {:?}, expected {unit})",
+                excerpt(path),
                 bad / to_radians
             ),
         ));
@@ -425,23 +436,25 @@ fn data_points(dataset: &Dataset) -> usize {
     }
 }
 
-/// The columns `x_column` and `y_column` of a CSV file with a header, as finite numbers.
+/// The columns `x_column` and `y_column` of the CSV text `bytes` (with a header), as finite
+/// numbers. Messages quote no cell, and of the header only an [`excerpt`].
 fn read_columns(
-    file: &std::path::Path,
+    bytes: &[u8],
     x_column: &str,
     y_column: &str,
 ) -> std::result::Result<(Vec<f64>, Vec<f64>), String> {
-    let mut csv = csv::Reader::from_path(file).map_err(|e| e.to_string())?;
+    let mut csv = csv::Reader::from_reader(bytes);
     let headers = csv.headers().map_err(|e| e.to_string())?.clone();
     let column = |name: &str| {
         headers
             .iter()
             .position(|h| h.trim() == name)
             .ok_or_else(|| {
-                let names: Vec<&str> = headers.iter().collect();
+                let names: Vec<&str> = headers.iter().map(str::trim).collect();
                 format!(
-                    "no column \"{name}\" (expected one of: {})",
-                    names.join(", ")
+                    "no column \"{}\" (expected one of: {})",
+                    excerpt(name),
+                    excerpt(&names.join(", "))
                 )
             })
     };
@@ -449,15 +462,21 @@ fn read_columns(
     let (mut x, mut y) = (Vec::new(), Vec::new());
     for (row, record) in csv.records().enumerate() {
         let record = record.map_err(|e| e.to_string())?;
-        let number = |i: usize| -> std::result::Result<f64, String> {
+        let number = |i: usize, name: &str| -> std::result::Result<f64, String> {
             let text = record.get(i).unwrap_or("").trim();
             text.parse::<f64>()
                 .ok()
                 .filter(|v| v.is_finite())
-                .ok_or_else(|| format!("row {}: not a finite number (got \"{text}\")", row + 2))
+                .ok_or_else(|| {
+                    format!(
+                        "row {}: column \"{}\" is not a finite number",
+                        row + 2,
+                        excerpt(name)
+                    )
+                })
         };
-        x.push(number(xi)?);
-        y.push(number(yi)?);
+        x.push(number(xi, x_column)?);
+        y.push(number(yi, y_column)?);
         if x.len() > MAX_DATA_POINTS {
             return Err(format!("more than {MAX_DATA_POINTS} rows"));
         }

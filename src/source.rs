@@ -6,11 +6,13 @@
 //! [`crate::resolve::scenes`] takes what it returns.
 
 use crate::catalogue::CATALOGUE;
+use crate::datafile::DataScope;
 use crate::error::{Error, Result};
 use crate::input::{parse_json, read_file};
 use crate::problem::Problem;
 use crate::scene::{self, Invalid, Scene, Spec};
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 /// Command-line overrides of every scene's canvas.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -25,14 +27,16 @@ pub struct CanvasOverride {
     pub font_px: Option<f64>,
 }
 
-/// A spec's source name, text, and the folder its data paths resolve against (`None` for the
+/// A spec's source name, text, and where its data files may be read from (`None` for the
 /// built-in catalogue).
-pub type Source = (String, String, Option<PathBuf>);
+pub type Source = (String, String, Option<DataScope>);
 
 /// The spec sources named by `paths` (files, folders whose `*.json` are taken sorted by name, or
 /// catalogue ids: a path that exists wins over an id), or the whole built-in catalogue when `paths`
-/// is empty.
-pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
+/// is empty. A spec's data files may be read from its folder and from the folders `allow_read`.
+pub fn sources(paths: &[PathBuf], allow_read: &[PathBuf]) -> Result<Vec<Source>> {
+    let allowed: Arc<[PathBuf]> = Arc::from(allow_read);
+    let scope = |folder: PathBuf| Some(DataScope::new(folder, allowed.clone()));
     if paths.is_empty() {
         return Ok(CATALOGUE
             .iter()
@@ -51,7 +55,7 @@ pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
             files.sort();
             for file in files {
                 let name = file.display().to_string();
-                sources.push((name.clone(), read_file(&name)?, Some(path.clone())));
+                sources.push((name.clone(), read_file(&name)?, scope(path.clone())));
             }
         } else if let Some((file, text)) = path
             .to_str()
@@ -68,7 +72,7 @@ pub fn sources(paths: &[PathBuf]) -> Result<Vec<Source>> {
         } else {
             let name = path.display().to_string();
             let folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
-            sources.push((name.clone(), read_file(&name)?, Some(folder)));
+            sources.push((name.clone(), read_file(&name)?, scope(folder)));
         }
     }
     Ok(sources)
@@ -88,14 +92,14 @@ pub struct Loaded {
 /// are kept with it. Nothing is computed and no data file is read.
 pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Vec<Loaded> {
     let mut loaded: Vec<Loaded> = Vec::with_capacity(sources.len());
-    for (name, text, base_dir) in sources {
+    for (name, text, data) in sources {
         let invalid = |list| Invalid {
             problems: list,
             pending: Vec::new(),
         };
         let scene = parse_json(text, name)
             .map_err(|p| invalid(p.list))
-            .and_then(|node| scene::parse(&node, base_dir.as_deref()))
+            .and_then(|node| scene::parse(&node, data.as_ref()))
             .and_then(|s| apply_override(s, canvas).map_err(|p| invalid(vec![p])))
             .and_then(|scene| {
                 let first = loaded

@@ -31,8 +31,10 @@ const ERROR_FLOOR: f64 = 1e-17;
 /// Colours of the normalization routes and throughput methods (Solarized accents, as the catalogue).
 const PALETTE: [u32; 6] = [0x268BD2, 0xDC322F, 0x859900, 0xB58900, 0x6C71C4, 0x2AA198];
 
-/// Runs every measurement with the system clock and writes the CSV and the figure into `dir`.
+/// Runs every measurement with the system clock and writes the CSV and the figure into `dir`;
+/// an output folder that cannot be written fails before anything is measured.
 pub fn run(dir: &Path) -> Result<Vec<PathBuf>> {
+    write::check_writable(dir)?;
     let rows = bench::run(&bench::SystemClock::new(), &bench::Settings::standard());
     write_outputs(dir, &rows)
 }
@@ -43,18 +45,14 @@ pub fn write_outputs(dir: &Path, rows: &[Row]) -> Result<Vec<PathBuf>> {
     let drawing_failed = |e| Error::Numerics(format!("bench: drawing failed: {e}"));
     let svg = plot::svg(&figure).map_err(drawing_failed)?;
     let png = plot::png(&figure).map_err(drawing_failed)?;
-    write::ensure_dir(dir)?;
-    let mut written = Vec::new();
-    for (name, bytes) in [
-        ("bench.csv", bench::csv(rows).into_bytes()),
-        ("bench.svg", svg),
-        ("bench.png", png),
-    ] {
-        write::remove_stale(dir, name)?;
-        write::write_atomic(dir, name, &bytes)?;
-        written.push(dir.join(name));
-    }
-    Ok(written)
+    write::write_files(
+        dir,
+        &[
+            ("bench.csv", bench::csv(rows).into_bytes()),
+            ("bench.svg", svg),
+            ("bench.png", png),
+        ],
+    )
 }
 
 fn style(colour: u32, dash: Dash, mark: Mark) -> Style {

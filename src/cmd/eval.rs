@@ -49,12 +49,16 @@ pub fn parse_theta_list(text: &str, degrees: bool) -> Result<Vec<f64>> {
     let raw: Vec<f64> = if text.contains(':') {
         if text.contains(',') {
             return Err(bad(format!(
-                "use either a comma list or start:stop:count, not both (got \"{text}\")"
+                "use either a comma list or start:stop:count, not both (got \"{}\")",
+                crate::problem::excerpt(text)
             )));
         }
         let parts: Vec<&str> = text.split(':').collect();
         let [start, stop, count] = parts[..] else {
-            return Err(bad(format!("expected start:stop:count (got \"{text}\")")));
+            return Err(bad(format!(
+                "expected start:stop:count (got \"{}\")",
+                crate::problem::excerpt(text)
+            )));
         };
         let count: u64 = count.trim().parse().map_err(|_| {
             bad(format!(

@@ -18,7 +18,8 @@ use crate::input::Side;
 use crate::metrics::sampled::{Operand, Samples};
 use crate::problem::{Problem, Problems};
 use crate::{input, resolve, source, stdout};
-use std::io::Read;
+use std::io::{Read, Write};
+use std::path::PathBuf;
 
 /// Runs a parsed command line.
 pub fn run(command: Command) -> Result<()> {
@@ -84,8 +85,8 @@ fn input_error(source: &str, problem: Problem) -> Error {
 
 /// One side of `compare` ([`input::load_operand`]), resolved (a CSV series read), with its
 /// canonical JSON.
-fn load_operand(arg: &str, flag: &str) -> Result<(Operand, String)> {
-    let (source, side) = input::load_operand(arg, flag, read_stdin)?;
+fn load_operand(arg: &str, flag: &str, allow_read: &[PathBuf]) -> Result<(Operand, String)> {
+    let (source, side) = input::load_operand(arg, flag, allow_read, read_stdin)?;
     match side {
         Side::Curve(spec) => {
             let curve = resolve::curve(&spec).map_err(|p| input_error(&source, p))?;
@@ -124,8 +125,8 @@ fn run_compare(args: CompareArgs) -> Result<()> {
         .iter()
         .map(|b| compare::parse_bound(b))
         .collect::<Result<_>>()?;
-    let (a, a_name) = load_operand(&args.a, "--a")?;
-    let (b, b_name) = load_operand(&args.b, "--b")?;
+    let (a, a_name) = load_operand(&args.a, "--a", &args.allow_read)?;
+    let (b, b_name) = load_operand(&args.b, "--b", &args.allow_read)?;
     let metrics = compare::metrics(&a, &b)?;
     let report = if args.format == "json" {
         compare::json(&a_name, &b_name, &metrics)
@@ -143,13 +144,14 @@ fn run_fit(args: FitArgs) -> Result<()> {
     let target = load_one_curve(&args.target, "--target")?;
     let fitted = fit::run(&target, family, &fixed, by)?;
     stdout::print(&fit::stdout_line(&fitted))?;
-    eprintln!("{}", fit::residual_line(&fitted, by));
+    // stderr is informative only: a closed or full stderr does not fail the fit.
+    let _ = writeln!(std::io::stderr(), "{}", fit::residual_line(&fitted, by));
     Ok(())
 }
 
 fn run_check(args: CheckArgs) -> Result<()> {
     let scenes = resolve::scenes(source::load_scenes(
-        &source::sources(&args.paths)?,
+        &source::sources(&args.paths, &args.allow_read)?,
         source::CanvasOverride::default(),
     ))?;
     let audits = crate::audit::audit_scenes(&scenes)?;

@@ -18,6 +18,7 @@ pub fn run(args: RenderArgs) -> Result<()> {
             png_scale: args.png_scale,
             font_px: args.font_px,
         },
+        allow_read: args.allow_read,
     };
     match &args.check {
         Some(dir) => render::check(&options, dir, args.tolerance, args.quiet),

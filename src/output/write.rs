@@ -1,49 +1,113 @@
 //! The one place that writes output files: atomically, inside the output folder only.
 //!
-//! Each file is written as the hidden temporary `<dir>/.<name>.tmp` and renamed into place, so an
-//! interrupted run never leaves a truncated file under a real name (CONTRACTS.md).
+//! Each file is written as a hidden temporary `<dir>/.<name>.<unique>.tmp`, created exclusively
+//! (never through an existing file or symbolic link), and renamed into place, so an interrupted
+//! run never leaves a truncated file under a real name and two runs into one folder never touch
+//! each other's temporaries (the last rename wins per file; CONTRACTS.md).
 
 use crate::error::{Error, Result};
 use std::fs;
 use std::io::Write;
+use std::os::unix::fs::PermissionsExt;
 use std::path::Path;
+use std::time::{Duration, SystemTime};
 
-/// The temporary name of `name` in `dir`.
-fn temporary(dir: &Path, name: &str) -> std::path::PathBuf {
-    dir.join(format!(".{name}.tmp"))
+/// Age beyond which a temporary is taken as left by a killed run, and may be removed.
+pub const ABANDONED_AFTER: Duration = Duration::from_secs(3600);
+
+/// The temporaries of `name` are `.<name>.<unique>.tmp`: this prefix, then [`SUFFIX`].
+fn prefix(name: &str) -> String {
+    format!(".{name}.")
 }
 
-/// Writes `bytes` to `dir/name` atomically (temporary file, sync, rename). `name` must be a plain
-/// file name (the caller validated the scene id it comes from).
-pub fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<()> {
+/// The end of every temporary's name.
+const SUFFIX: &str = ".tmp";
+
+/// Writes `bytes` to `dir/name` atomically (exclusive temporary with a unique name, sync, rename).
+/// `name` must be a plain file name (the caller validated the scene id it comes from). The file
+/// gets the permissions a plain create would give (0666 less the umask).
+fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<()> {
     debug_assert!(!name.contains(['/', '\\']) && !name.starts_with('.'));
     let target = dir.join(name);
-    let tmp = temporary(dir, name);
     let shown = target.display().to_string();
     let result = (|| {
-        let mut file = fs::File::create(&tmp)?;
+        let mut file = tempfile::Builder::new()
+            .prefix(&prefix(name))
+            .suffix(SUFFIX)
+            .permissions(fs::Permissions::from_mode(0o666))
+            .tempfile_in(dir)?;
         file.write_all(bytes)?;
-        file.sync_all()?;
-        fs::rename(&tmp, &target)
+        file.as_file().sync_all()?;
+        file.persist(&target).map_err(|e| e.error)?;
+        Ok(())
     })();
-    result.map_err(|e| {
-        let _ = fs::remove_file(&tmp);
-        Error::io(shown, e)
-    })
+    // On failure the temporary was removed when dropped.
+    result.map_err(|e| Error::io(shown, e))
 }
 
-/// Removes stale temporaries that an interrupted run left for `name`.
-pub fn remove_stale(dir: &Path, name: &str) -> Result<()> {
-    let tmp = temporary(dir, name);
-    match fs::remove_file(&tmp) {
-        Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
-            Err(Error::io(tmp.display().to_string(), e))
+/// Removes the temporaries of the files `names` in `dir` that are older than `age`: those a killed
+/// run left. Younger ones may belong to a run still writing, and are left alone.
+fn remove_abandoned(dir: &Path, names: &[&str], age: Duration) -> Result<()> {
+    let shown = dir.display().to_string();
+    let now = SystemTime::now();
+    for entry in fs::read_dir(dir).map_err(|e| Error::io(&shown, e))? {
+        let entry = entry.map_err(|e| Error::io(&shown, e))?;
+        let file_name = entry.file_name();
+        let Some(file_name) = file_name.to_str() else {
+            continue;
+        };
+        let ours =
+            file_name.ends_with(SUFFIX) && names.iter().any(|n| file_name.starts_with(&prefix(n)));
+        let old = || {
+            entry.metadata().is_ok_and(|m| {
+                m.is_file()
+                    && m.modified()
+                        .is_ok_and(|t| now.duration_since(t).is_ok_and(|d| d > age))
+            })
+        };
+        if ours && old() {
+            match fs::remove_file(entry.path()) {
+                Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                    return Err(Error::io(entry.path().display().to_string(), e));
+                }
+                _ => {}
+            }
         }
-        _ => Ok(()),
     }
+    Ok(())
+}
+
+/// Writes every (file name, bytes) of `files` into `dir` with [`write_atomic`], creating `dir` if
+/// needed and first removing the [abandoned](ABANDONED_AFTER) temporaries of those names; returns
+/// the paths written, in order.
+pub fn write_files<N: AsRef<str>, B: AsRef<[u8]>>(
+    dir: &Path,
+    files: &[(N, B)],
+) -> Result<Vec<std::path::PathBuf>> {
+    ensure_dir(dir)?;
+    let names: Vec<&str> = files.iter().map(|(name, _)| name.as_ref()).collect();
+    remove_abandoned(dir, &names, ABANDONED_AFTER)?;
+    let mut written = Vec::with_capacity(files.len());
+    for (name, bytes) in files {
+        write_atomic(dir, name.as_ref(), bytes.as_ref())?;
+        written.push(dir.join(name.as_ref()));
+    }
+    Ok(written)
+}
+
+/// Creates `dir` if needed and checks that a file can be created in it (a temporary, removed at
+/// once), so a long run can fail before its work rather than after it.
+pub fn check_writable(dir: &Path) -> Result<()> {
+    ensure_dir(dir)?;
+    tempfile::Builder::new()
+        .prefix(".ndfplot-probe.")
+        .suffix(SUFFIX)
+        .tempfile_in(dir)
+        .map(drop)
+        .map_err(|e| Error::io(dir.display().to_string(), e))
 }
 
 /// Creates the output folder (and its parents) if needed.
-pub fn ensure_dir(dir: &Path) -> Result<()> {
+fn ensure_dir(dir: &Path) -> Result<()> {
     fs::create_dir_all(dir).map_err(|e| Error::io(dir.display().to_string(), e))
 }

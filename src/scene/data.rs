@@ -13,10 +13,10 @@ use super::reader::{Object, Reader};
 use super::sweep;
 use super::{Pending, SceneData, Spec, read_style};
 use crate::curve::{ParamKind, pretty};
+use crate::datafile::DataScope;
 use crate::dataset::{Coefficient, Dataset, SpectrumQuantity};
 use crate::json::{Node, Value};
 use crate::look::Rgb;
-use std::path::PathBuf;
 
 /// Most points one data series may have; a 1000 × 1000 coefficient grid is already far beyond
 /// what a figure can show.
@@ -62,8 +62,8 @@ impl DataSpec {
 pub struct CsvFile {
     /// The file as the spec names it (relative to the spec's folder).
     pub path: String,
-    /// The file to open: `path` against the spec's folder.
-    pub file: PathBuf,
+    /// Where it may be read from: the spec's folder and the folders allowed beside it.
+    pub scope: DataScope,
     /// Column holding θ.
     pub x_column: String,
     /// Column holding the values.
@@ -109,7 +109,7 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
         _ => read_table(reader, &entry).map(DataSpec::Ready),
     };
     let style = read_style(reader, &entry, Rgb::from_hex(DATA_COLOUR));
-    let label = reader.string(&entry, "label");
+    let label = reader.text(&entry, "label");
     if reader.problems.len() != before {
         return None;
     }
@@ -123,14 +123,14 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
 }
 
 /// Validates a `{"data": "csv", …}` series given on its own (a `compare` side) at the root path, its
-/// file resolved against `base_dir` but not read. Other data kinds are not functions of θ and are
+/// file to be read from `scope` but not read. Other data kinds are not functions of θ and are
 /// reported.
 pub fn parse_csv_series(
     node: &Node,
-    base_dir: &std::path::Path,
+    scope: DataScope,
 ) -> Result<CsvFile, Vec<crate::problem::Problem>> {
     let mut reader = Reader {
-        base_dir: Some(base_dir.to_path_buf()),
+        data: Some(scope),
         ..Reader::default()
     };
     let entry = read_entry(&mut reader, node, "");
@@ -275,9 +275,9 @@ fn read_table(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
 /// which two named columns of which CSV file (with a header row) to read; the file is listed in
 /// the reader's pending work and read by resolve.
 fn read_csv(reader: &mut Reader, entry: &Object) -> Option<CsvFile> {
-    let path = reader.string(entry, "path");
-    let x_column = reader.string(entry, "x").unwrap_or_else(|| "theta".into());
-    let y_column = reader.string(entry, "y").unwrap_or_else(|| "value".into());
+    let path = reader.text(entry, "path");
+    let x_column = reader.text(entry, "x").unwrap_or_else(|| "theta".into());
+    let y_column = reader.text(entry, "y").unwrap_or_else(|| "value".into());
     let degrees = reader.boolean(entry, "degrees").unwrap_or(false);
     let at = entry.path_of("path");
     let Some(path) = path else {
@@ -286,13 +286,19 @@ fn read_csv(reader: &mut Reader, entry: &Object) -> Option<CsvFile> {
         }
         return None;
     };
-    let Some(base_dir) = reader.base_dir.clone() else {
-        reader.report(at, format!("data files need a spec read from disk (got \"{path}\" in a built-in or inline spec)"));
+    let Some(scope) = reader.data.clone() else {
+        reader.report(
+            at,
+            format!(
+                "data files need a spec read from disk (got \"{}\" in a built-in or inline spec)",
+                crate::problem::excerpt(&path)
+            ),
+        );
         return None;
     };
     let csv = CsvFile {
-        file: base_dir.join(&path),
         path,
+        scope,
         x_column,
         y_column,
         degrees,

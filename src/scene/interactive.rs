@@ -142,7 +142,10 @@ fn read_slider(reader: &mut Reader, node: &Node, path: &str) -> Option<Slider> {
         Some(name) => {
             reader.report(
                 object.path_of("name"),
-                format!("invalid slider name (got \"{name}\", expected ^[a-z][a-z0-9_]{{0,31}}$)"),
+                format!(
+                    "invalid slider name (got \"{}\", expected ^[a-z][a-z0-9_]{{0,31}}$)",
+                    crate::problem::excerpt(&name)
+                ),
             );
             None
         }
@@ -153,7 +156,7 @@ fn read_slider(reader: &mut Reader, node: &Node, path: &str) -> Option<Slider> {
             None
         }
     };
-    let label = reader.string(&object, "label");
+    let label = reader.text(&object, "label");
     let values = match (object.get("range"), object.get("geomspace")) {
         (Some(_), Some(_)) => {
             reader.report(
@@ -379,7 +382,8 @@ fn check_reference(
         reader.report(
             name_path,
             format!(
-                "unknown slider (got \"{name}\"; the scene declares no \"interactive\" params)"
+                "unknown slider (got \"{}\"; the scene declares no \"interactive\" params)",
+                crate::problem::excerpt(name)
             ),
         );
         return None;
@@ -390,7 +394,8 @@ fn check_reference(
         reader.report(
             name_path,
             format!(
-                "unknown slider (got \"{name}\", expected one of: {}){}",
+                "unknown slider (got \"{}\", expected one of: {}){}",
+                crate::problem::excerpt(name),
                 names.join(", "),
                 suggestion(name, names.iter().copied())
             ),
@@ -546,7 +551,7 @@ fn read_entry(
             },
         );
         let mut scratch = Reader {
-            base_dir: reader.base_dir.clone(),
+            data: reader.data.clone(),
             ..Reader::default()
         };
         let mut curves = Vec::new();

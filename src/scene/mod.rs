@@ -290,11 +290,14 @@ pub fn valid_id(id: &str) -> bool {
 }
 
 /// Validates a parsed scene document into its description; every problem is returned with its
-/// JSON path. Data files named by the spec resolve against `base_dir`, the spec's folder (`None`:
-/// no data files); they are not read, nor is anything computed.
-pub fn parse(node: &Node, base_dir: Option<&std::path::Path>) -> Result<Scene<Spec>, Invalid> {
+/// JSON path. Data files named by the spec are read from `data`, the spec's folder and the
+/// folders allowed beside it (`None`: no data files); they are not read, nor is anything computed.
+pub fn parse(
+    node: &Node,
+    data: Option<&crate::datafile::DataScope>,
+) -> Result<Scene<Spec>, Invalid> {
     let mut reader = Reader {
-        base_dir: base_dir.map(std::path::Path::to_path_buf),
+        data: data.cloned(),
         ..Reader::default()
     };
     let scene = read_scene(&mut reader, node);
@@ -320,7 +323,7 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene<Spec>> {
     let id = match reader.string(&object, "id") {
         Some(id) if valid_id(&id) => Some(id),
         Some(id) => {
-            reader.report("id", format!("invalid id (got \"{id}\", expected ^[a-z0-9][a-z0-9_-]{{0,63}}$: lower-case letters, digits, '-' and '_', no paths)"));
+            reader.report("id", format!("invalid id (got \"{}\", expected ^[a-z0-9][a-z0-9_-]{{0,63}}$: lower-case letters, digits, '-' and '_', no paths)", crate::problem::excerpt(&id)));
             None
         }
         None => {
@@ -333,7 +336,7 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene<Spec>> {
             None
         }
     };
-    let title = reader.string(&object, "title").unwrap_or_default();
+    let title = reader.text(&object, "title").unwrap_or_default();
     let sampling = read_sampling(reader, &object);
     let theme = read_theme(reader, &object);
     let panels = read_panels(reader, &object);
@@ -603,7 +606,7 @@ fn read_panels(reader: &mut Reader, object: &reader::Object) -> Option<Vec<Scene
 
 fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel<Spec>> {
     let panel = reader.object(node, path, PANEL_KEYS)?;
-    let title = reader.string(&panel, "title").unwrap_or_default();
+    let title = reader.text(&panel, "title").unwrap_or_default();
     let legend = read_legend(reader, &panel);
     let grid = reader.boolean(&panel, "grid").unwrap_or(true);
     let x_path = panel.path_of("x");
@@ -654,10 +657,10 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
         axes: Axes {
             title,
             x_label: x
-                .and_then(|x| reader.string(&x, "label"))
+                .and_then(|x| reader.text(&x, "label"))
                 .unwrap_or(default_x_label),
             y_label: y
-                .and_then(|y| reader.string(&y, "label"))
+                .and_then(|y| reader.text(&y, "label"))
                 .unwrap_or(default_y_label),
             x_unit,
             kind,
@@ -924,15 +927,13 @@ fn read_surface(
             .unwrap_or(default)
     };
     Some(PanelKind::Surface {
-        z_label: z
-            .and_then(|z| reader.string(&z, "label"))
-            .unwrap_or_else(|| {
-                series
-                    .data
-                    .first()
-                    .map(|d| data::z_label(&d.dataset))
-                    .unwrap_or_default()
-            }),
+        z_label: z.and_then(|z| reader.text(&z, "label")).unwrap_or_else(|| {
+            series
+                .data
+                .first()
+                .map(|d| data::z_label(&d.dataset))
+                .unwrap_or_default()
+        }),
         z_range: z.and_then(|z| reader.interval(&z, "range", f64::is_finite, "finite")),
         // The notebook's view_init(elev=65, azim=-45).
         elevation_deg: angle(reader, "elevation", 65.0),
@@ -1003,7 +1004,7 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
         return;
     };
     let entry = reader::Object::from_members(members, path);
-    let label_template = reader.string(&entry, "label");
+    let label_template = reader.text(&entry, "label");
     let base_style = read_style(reader, &entry, default_colour(resolved.model));
 
     // Per parameter, its values; absent keys take their defaults.
@@ -1187,7 +1188,8 @@ pub(crate) fn read_style(
                     other => reader.report(
                         word_path,
                         format!(
-                            "unknown style (got \"{other}\", expected any of: {}){}",
+                            "unknown style (got \"{}\", expected any of: {}){}",
+                            crate::problem::excerpt(other),
                             STYLE_WORDS.join(", "),
                             suggestion(other, STYLE_WORDS.iter().copied())
                         ),
@@ -1219,7 +1221,10 @@ pub(crate) fn read_style(
             Some(colour) => style.colour = colour,
             None => reader.report(
                 entry.path_of("colour"),
-                format!("invalid colour (got \"{text}\", expected #RRGGBB)"),
+                format!(
+                    "invalid colour (got \"{}\", expected #RRGGBB)",
+                    crate::problem::excerpt(&text)
+                ),
             ),
         }
     }

@@ -12,9 +12,9 @@ use crate::problem::{Problem, join_key, suggestion};
 pub struct Reader {
     /// Problems in the order found.
     pub problems: Vec<Problem>,
-    /// Folder of the document, against which relative data paths resolve; `None` for documents
-    /// not read from disk (the built-in catalogue, arguments).
-    pub base_dir: Option<std::path::PathBuf>,
+    /// Where the document's data files may be read from; `None` for documents not read from disk
+    /// (the built-in catalogue, arguments).
+    pub data: Option<crate::datafile::DataScope>,
     /// The fallible work (fits, data files) described so far, in the order met.
     pub pending: Vec<super::Pending>,
 }
@@ -88,6 +88,30 @@ impl Reader {
                 );
                 None
             }
+        }
+    }
+
+    /// A string field that is drawn as text (a title, a label, a column name shown on an axis): a
+    /// string without control characters, which no figure format can show (SVG's XML refuses most
+    /// of them). `None` when absent, of the wrong type or holding one (reported).
+    pub fn text(&mut self, object: &Object, key: &str) -> Option<String> {
+        let text = self.string(object, key)?;
+        match text
+            .chars()
+            .find(|&c| c.is_control() || matches!(c, '\u{fffe}' | '\u{ffff}'))
+        {
+            Some(bad) => {
+                self.report(
+                    object.path_of(key),
+                    format!(
+                        "control character U+{:04X} in text (got \"{}\", expected printable text)",
+                        bad as u32,
+                        crate::problem::excerpt(&text)
+                    ),
+                );
+                None
+            }
+            None => Some(text),
         }
     }
 
@@ -181,7 +205,8 @@ impl Reader {
             self.report(
                 object.path_of(key),
                 format!(
-                    "unknown value (got \"{text}\", expected one of: {}){}",
+                    "unknown value (got \"{}\", expected one of: {}){}",
+                    crate::problem::excerpt(&text),
                     choices.join(", "),
                     suggestion(&text, choices.iter().copied())
                 ),

@@ -146,6 +146,13 @@ fn numbers(reader: &mut Reader, node: &Node, path: &str) -> Option<(Vec<f64>, bo
         }
         Value::Object(_) => {
             let object = reader.object(node, path, SWEEP_KEYS)?;
+            if object.get("range").is_some() && object.get("linspace").is_some() {
+                reader.report(
+                    path,
+                    "keys range, linspace cannot be combined (expected one of them)",
+                );
+                return None;
+            }
             if let Some(linspace_node) = object.get("linspace") {
                 return linspace(reader, linspace_node, &join_key(path, "linspace"))
                     .map(|v| (v, true));
@@ -398,7 +405,7 @@ pub fn difference_entry(
         return;
     };
     let entry = reader::Object::from_members(members, path);
-    let template = reader.string(&entry, "label");
+    let template = reader.text(&entry, "label");
     let Some(style) = read_style(reader, &entry, default_colour(a[0].curve.model())) else {
         return;
     };

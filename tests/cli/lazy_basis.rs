@@ -48,6 +48,7 @@ fn render(dir: &std::path::Path, spec: &str) {
         out: dir.join("out"),
         formats: vec![Format::Svg, Format::Png, Format::Csv],
         canvas: CanvasOverride::default(),
+        allow_read: Vec::new(),
     })
     .unwrap();
 }
@@ -89,7 +90,7 @@ fn reading_a_spec_fits_nothing_computes_no_basis_and_reads_no_data_file() {
     )
     .unwrap();
     let loaded = source::load_scenes(
-        &source::sources(std::slice::from_ref(&spec)).unwrap(),
+        &source::sources(std::slice::from_ref(&spec), &[]).unwrap(),
         CanvasOverride::default(),
     );
     let scene = loaded[0].scene.as_ref().expect("the spec is valid");
@@ -127,7 +128,7 @@ fn reading_a_spec_fits_nothing_computes_no_basis_and_reads_no_data_file() {
     .unwrap();
     std::fs::write(dir.join("renderer.csv"), "theta,value\n0,1\n0.5,2\n").unwrap();
     let loaded = source::load_scenes(
-        &source::sources(std::slice::from_ref(&spec)).unwrap(),
+        &source::sources(std::slice::from_ref(&spec), &[]).unwrap(),
         CanvasOverride::default(),
     );
     let scenes = resolve::scenes(loaded).unwrap();

@@ -8,7 +8,7 @@ use ndfplot::source::CanvasOverride;
 
 #[test]
 fn every_catalogue_figure_passes_the_figure_lint() {
-    let figures = drawn_figures(&[], CanvasOverride::default()).unwrap();
+    let figures = drawn_figures(&[], &[], CanvasOverride::default()).unwrap();
     assert!(figures.len() >= 36);
     let findings: Vec<String> = figures
         .iter()

@@ -1,6 +1,7 @@
 //! Robustness of the real binary: the malformed-spec corpus (exit 2, nothing on stdout, every line
 //! naming the file and the expected message), the fuzz corpus replayed, a render killed with
-//! SIGKILL mid-run (only complete files under real names; the next run cleans the temporaries),
+//! SIGKILL mid-run (only complete files under real names; a later run removes abandoned
+//! temporaries), two renders into one folder at once,
 //! `render --check`, and the generated help, completions and manual page.
 
 #[path = "../../fuzz/harness.rs"]
@@ -109,11 +110,11 @@ fn fuzz_findings_exit_2_through_the_binary() {
     }
 }
 
-/// Forty small scenes, so that a run spends a while writing files one after another.
-fn write_kill_specs(dir: &Path) -> usize {
+/// `count` small scenes in `dir/specs`, so that a run spends a while writing files one after
+/// another; returns how many files a render of them writes.
+fn write_specs(dir: &Path, count: usize) -> usize {
     let specs = dir.join("specs");
     std::fs::create_dir_all(&specs).unwrap();
-    let count = 40;
     for i in 0..count {
         let spec = format!(
             r#"{{"id": "scene-{i:02}", "title": "Scene {i}", "sampling": {{"uniform": 400}}, "panels": [
@@ -178,9 +179,9 @@ fn assert_complete(dir: &Path, reference: &Path) -> usize {
 }
 
 #[test]
-fn a_render_killed_mid_run_leaves_only_complete_files_and_the_next_run_cleans_up() {
+fn a_render_killed_mid_run_leaves_only_complete_files_and_a_later_run_removes_old_temporaries() {
     let dir = scratch("robustness-kill");
-    let total = write_kill_specs(&dir);
+    let total = write_specs(&dir, 40);
     let specs = dir.join("specs");
     let reference = dir.join("reference");
     let start = Instant::now();
@@ -218,13 +219,19 @@ fn a_render_killed_mid_run_leaves_only_complete_files_and_the_next_run_cleans_up
         dir.join("attempt-15")
     });
 
-    // The next run replaces every file and removes stale temporaries, including one planted for a
-    // file the killed run had not reached yet.
-    std::fs::write(
-        out.join(".scene-00.csv.tmp"),
-        "panel,series,curve,x,y\n0,0,",
-    )
-    .unwrap();
+    // The next run replaces every file. It removes the temporaries of its files older than an hour
+    // (left by a killed run), and leaves younger ones, which may belong to a run still writing.
+    std::fs::create_dir_all(&out).unwrap();
+    let plant = |name: &str, age: Duration| {
+        let path = out.join(name);
+        std::fs::write(&path, "panel,series,curve,x,y\n0,0,").unwrap();
+        let file = std::fs::File::options().write(true).open(&path).unwrap();
+        file.set_modified(std::time::SystemTime::now() - age)
+            .unwrap();
+    };
+    plant(".scene-00.csv.abc123.tmp", Duration::from_secs(7200));
+    plant(".scene-01.csv.def456.tmp", Duration::ZERO);
+    plant(".unrelated.csv.ghi789.tmp", Duration::from_secs(7200));
     let rerun = render_into(&specs, &out)
         .stderr(Stdio::piped())
         .output()
@@ -234,13 +241,64 @@ fn a_render_killed_mid_run_leaves_only_complete_files_and_the_next_run_cleans_up
         "{}",
         String::from_utf8_lossy(&rerun.stderr)
     );
-    assert_eq!(
-        files_in(&out).iter().filter(|f| f.starts_with('.')).count(),
-        0,
-        "{:?}",
-        files_in(&out)
+    let hidden: Vec<String> = files_in(&out)
+        .into_iter()
+        .filter(|f| f.starts_with('.'))
+        .collect();
+    assert!(
+        !hidden.contains(&".scene-00.csv.abc123.tmp".to_string()),
+        "{hidden:?}"
     );
+    assert!(
+        hidden.contains(&".scene-01.csv.def456.tmp".to_string()),
+        "{hidden:?}"
+    );
+    assert!(
+        hidden.contains(&".unrelated.csv.ghi789.tmp".to_string()),
+        "{hidden:?}"
+    );
+    assert!(hidden.iter().all(|f| f.ends_with(".tmp")), "{hidden:?}");
     assert_eq!(assert_complete(&out, &reference), total);
+}
+
+#[test]
+fn two_renders_into_one_folder_both_succeed_with_complete_files() {
+    let dir = scratch("robustness-concurrent");
+    let total = write_specs(&dir, 12);
+    let specs = dir.join("specs");
+    let reference = dir.join("reference");
+    assert!(render_into(&specs, &reference).status().unwrap().success());
+    // A symbolic link where a temporary used to be named is never written through.
+    let out = dir.join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    let victim = dir.join("victim.txt");
+    std::fs::write(&victim, "untouched").unwrap();
+    std::os::unix::fs::symlink(&victim, out.join(".scene-00.csv.tmp")).unwrap();
+    for round in 0..5 {
+        let children: Vec<_> = (0..2)
+            .map(|_| {
+                render_into(&specs, &out)
+                    .stderr(Stdio::piped())
+                    .spawn()
+                    .unwrap()
+            })
+            .collect();
+        for child in children {
+            let result = child.wait_with_output().unwrap();
+            assert!(
+                result.status.success(),
+                "round {round}: {}",
+                String::from_utf8_lossy(&result.stderr)
+            );
+        }
+        assert_eq!(assert_complete(&out, &reference), total, "round {round}");
+        let hidden: Vec<String> = files_in(&out)
+            .into_iter()
+            .filter(|f| f.starts_with('.'))
+            .collect();
+        assert_eq!(hidden, [".scene-00.csv.tmp"], "round {round}");
+    }
+    assert_eq!(std::fs::read_to_string(&victim).unwrap(), "untouched");
 }
 
 const SPEC: &str = r#"{"id": "checked", "sampling": {"uniform": 50}, "panels": [
@@ -406,4 +464,235 @@ fn every_subcommand_help_has_an_example_and_completions_and_man_are_generated() 
     let out = ndfplot(&["completions", "tcsh"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn data_paths_stay_in_the_spec_folder_unless_allowed_and_errors_never_quote_the_file() {
+    let dir = scratch("robustness-data-paths");
+    let (specs, shared) = (dir.join("specs"), dir.join("shared"));
+    std::fs::create_dir_all(&specs).unwrap();
+    std::fs::create_dir_all(&shared).unwrap();
+    std::fs::write(shared.join("data.csv"), "theta,SECRET_TOKEN=1\n0,1\n").unwrap();
+    std::os::unix::fs::symlink(shared.join("data.csv"), specs.join("link.csv")).unwrap();
+    let fifo = Command::new("mkfifo")
+        .arg(specs.join("fifo.csv"))
+        .status()
+        .unwrap();
+    assert!(fifo.success());
+    let spec = |name: &str, path: &str| {
+        let file = specs.join(format!("{name}.json"));
+        std::fs::write(
+            &file,
+            format!(
+                r#"{{"id": "{name}", "panels": [{{"curves": [{{"data": "csv", "path": "{path}", "y": "SECRET_TOKEN=1"}}]}}]}}"#
+            ),
+        )
+        .unwrap();
+        file
+    };
+    let out = dir.join("out");
+    let render = |spec: &Path, extra: &[&str]| {
+        let mut args = vec![
+            "render",
+            spec.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--format",
+            "csv",
+        ];
+        args.extend(extra);
+        ndfplot(&args)
+    };
+    for (name, path, message) in [
+        ("parent", "../shared/data.csv", "leaves the spec's folder"),
+        (
+            "link",
+            "link.csv",
+            "leaves the spec's folder through a symbolic link",
+        ),
+        ("fifo", "fifo.csv", "not a regular file"),
+    ] {
+        let file = spec(name, path);
+        let result = render(&file, &[]);
+        let err = text(&result.stderr);
+        assert_eq!(result.status.code(), Some(2), "{name}: {err}");
+        assert!(
+            err.starts_with(&format!(
+                "error: {}: panels[0].curves[0].path: cannot read \"{path}\": {message}",
+                file.display()
+            )),
+            "{name}: {err}"
+        );
+    }
+    // The folder given with --allow-read opens to both the relative path and the link.
+    let allow = ["--allow-read", shared.to_str().unwrap()];
+    for name in ["parent", "link"] {
+        let result = render(&specs.join(format!("{name}.json")), &allow);
+        assert_eq!(result.status.code(), Some(0), "{}", text(&result.stderr));
+    }
+
+    // compare's operand: an inline series resolves against the working directory.
+    let compare = |a: &str, extra: &[&str]| {
+        let mut args = vec![
+            "compare",
+            "--a",
+            a,
+            "--b",
+            r#"{"ndf": "ggx", "alpha_tr": 0.3}"#,
+        ];
+        args.extend(extra);
+        Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+            .args(&args)
+            .current_dir(&specs)
+            .env_clear()
+            .env("A_CANARY", "do-not-print".repeat(100))
+            .output()
+            .unwrap()
+    };
+    let result = compare(
+        r#"{"data": "csv", "path": "/proc/self/environ", "y": "x"}"#,
+        &[],
+    );
+    let err = text(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("leaves the spec's folder") && !err.contains("do-not-print"),
+        "{err}"
+    );
+    let result = compare(
+        r#"{"data": "csv", "path": "/proc/self/environ", "y": "x"}"#,
+        &["--allow-read", "/proc/self"],
+    );
+    let err = text(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{err}");
+    // Allowed, the file is read, and the message quotes a bounded excerpt of its header only.
+    assert!(err.lines().count() == 1 && err.len() < 300, "{err}");
+    let result = compare(
+        r#"{"data": "csv", "path": "../shared/data.csv", "y": "SECRET_TOKEN=1"}"#,
+        &[],
+    );
+    assert_eq!(result.status.code(), Some(2));
+    assert!(text(&result.stderr).contains("leaves the spec's folder"));
+}
+
+#[test]
+fn render_check_catches_a_change_of_the_drawing_alone() {
+    let dir = scratch("robustness-check-drawing");
+    let spec = dir.join("spec.json");
+    let titled = SPEC.replace(
+        r#""id": "checked","#,
+        r#""id": "checked", "title": "Before","#,
+    );
+    std::fs::write(&spec, &titled).unwrap();
+    let plots = dir.join("plots");
+    crate::common::render_into(&[&spec], &plots, "svg,csv");
+    assert_eq!(check(&spec, &plots, &[]).status.code(), Some(0));
+    for (from, to) in [
+        ("Before", "After"),
+        (r#""f0": 0.04}"#, r##""f0": 0.04, "colour": "#DC322F"}"##),
+        (
+            r#""id": "checked","#,
+            r#""id": "checked", "theme": "dark","#,
+        ),
+    ] {
+        std::fs::write(&spec, titled.replace(from, to)).unwrap();
+        let out = check(&spec, &plots, &[]);
+        let report = text(&out.stdout);
+        assert_eq!(
+            out.status.code(),
+            Some(1),
+            "{to}: {report}{}",
+            text(&out.stderr)
+        );
+        assert!(
+            report.starts_with("checked.svg: the drawing differs though every value matches")
+                && report.contains("1 figures differ")
+                && report.contains("0 in their values")
+                && report.contains("1 in their drawing only"),
+            "{to}: {report}"
+        );
+    }
+}
+
+/// Waits for `child` at most `limit`; kills it and fails when it runs longer.
+fn finish_within(mut child: std::process::Child, limit: Duration, what: &str) -> Output {
+    let start = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > limit {
+            child.kill().unwrap();
+            child.wait().unwrap();
+            panic!("{what} still running after {limit:?}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+#[test]
+fn a_fifo_spec_a_full_stderr_and_an_unwritable_bench_folder_fail_at_once() {
+    let dir = scratch("robustness-fail-fast");
+    let run = |args: &[&str], stderr: Stdio| {
+        Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+            .args(args)
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(stderr)
+            .spawn()
+            .unwrap()
+    };
+    let limit = Duration::from_secs(30);
+
+    let fifo = dir.join("spec.json");
+    assert!(
+        Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap()
+            .success()
+    );
+    let out = dir.join("out");
+    let args = [
+        "render",
+        fifo.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    let result = finish_within(run(&args, Stdio::piped()), limit, "render of a FIFO");
+    assert_eq!(result.status.code(), Some(2));
+    assert!(
+        text(&result.stderr).contains("not a regular file"),
+        "{}",
+        text(&result.stderr)
+    );
+
+    let full = || {
+        Stdio::from(
+            std::fs::File::options()
+                .write(true)
+                .open("/dev/full")
+                .unwrap(),
+        )
+    };
+    let bad = run(
+        &["eval", "--curve", r#"{"ndf": "nope"}"#, "--theta", "0"],
+        full(),
+    );
+    assert_eq!(finish_within(bad, limit, "eval").status.code(), Some(2));
+    let fit = [
+        "fit",
+        "--target",
+        r#"{"ndf": "ggx", "alpha_tr": 0.3}"#,
+        "--family",
+        "beckmann",
+    ];
+    let result = finish_within(run(&fit, full()), limit, "fit");
+    assert_eq!(result.status.code(), Some(0));
+    assert!(text(&result.stdout).starts_with(r#"{"ndf":"beckmann""#));
+
+    let file = dir.join("file.txt");
+    std::fs::write(&file, "").unwrap();
+    let under_a_file = file.join("bench");
+    let args = ["bench", "-o", under_a_file.to_str().unwrap()];
+    let result = finish_within(run(&args, Stdio::piped()), limit, "bench");
+    assert_eq!(result.status.code(), Some(2), "{}", text(&result.stderr));
 }

@@ -73,7 +73,7 @@ fn load(dir: &Path, text: &str) -> Vec<ndfplot::scene::Scene> {
     let path = dir.join("s.json");
     std::fs::write(&path, text).unwrap();
     ndfplot::resolve::scenes(source::load_scenes(
-        &source::sources(&[path]).unwrap(),
+        &source::sources(&[path], &[]).unwrap(),
         CanvasOverride::default(),
     ))
     .unwrap()
@@ -186,7 +186,7 @@ fn sampling_key_errors_name_the_problem() {
         let path = dir.join("s.json");
         std::fs::write(&path, scene(sampling)).unwrap();
         let error = ndfplot::resolve::scenes(source::load_scenes(
-            &source::sources(&[path]).unwrap(),
+            &source::sources(&[path], &[]).unwrap(),
             CanvasOverride::default(),
         ))
         .unwrap_err();
@@ -204,6 +204,7 @@ fn a_run_produces_only_the_requested_formats_and_needed_jobs() {
         out: dir.join("out"),
         formats,
         canvas: CanvasOverride::default(),
+        allow_read: Vec::new(),
     };
     let (_, svg_only) = render::run_with_stats(&options(vec![Format::Svg])).unwrap();
     assert_eq!(
@@ -254,6 +255,7 @@ fn the_requested_formats_never_change_a_value_written() {
             out: out.clone(),
             formats,
             canvas: CanvasOverride::default(),
+            allow_read: Vec::new(),
         })
         .unwrap();
         out
@@ -339,7 +341,7 @@ const FIT_SLACK_PX: f64 = 0.05;
 fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
     const UNIQUE: &str = "#010203";
     let scenes = ndfplot::resolve::scenes(source::load_scenes(
-        &source::sources(&[]).unwrap(),
+        &source::sources(&[], &[]).unwrap(),
         CanvasOverride::default(),
     ))
     .unwrap()
