@@ -27,6 +27,50 @@ pub(super) const LONE_BAR_FRACTION: f64 = 0.05;
 pub(super) const X_TICK_SPACING_EM: f64 = 4.0;
 pub(super) const Y_TICK_SPACING_EM: f64 = 3.0;
 
+/// A 2D panel laid out alone in its area: its legend, the area's size, the frame filling it, and
+/// whether the legend belongs outside that frame's plot area (as its place and the curves decide).
+struct Alone<'a> {
+    legend: Option<Legend<'a>>,
+    size: (u32, u32),
+    full: Frame,
+    legend_outside: bool,
+}
+
+impl<'a> Alone<'a> {
+    fn of<DB: DrawingBackend>(
+        area: &DrawingArea<DB, Shift>,
+        panel: &'a Panel,
+        looks: &[Look],
+        m: &Metrics,
+    ) -> Result<Alone<'a>, PlotError>
+    where
+        DB::ErrorType: 'static,
+    {
+        let legend = Legend::of_panel(area, panel, looks, |s| Sample::of(s.style.mark), m)?;
+        let size = area.dim_in_pixel();
+        let full = Frame::fit(area, size, panel, m, (0, 0))?;
+        let legend_outside = legend.as_ref().is_some_and(|legend| {
+            !legend.goes_inside(
+                panel.axes.legend,
+                full.plot_f(),
+                &covered(panel, &full, m),
+                m,
+            )
+        });
+        Ok(Alone {
+            legend,
+            size,
+            full,
+            legend_outside,
+        })
+    }
+
+    /// The area's size as numbers.
+    fn dims(&self) -> (f64, f64) {
+        (f64::from(self.size.0), f64::from(self.size.1))
+    }
+}
+
 /// What a 2D panel of a grid asks of its row and column: the tick-label areas of its frame and
 /// the height of the band below the plots its legend needs when it fits inside no plot area.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -60,17 +104,10 @@ pub(super) fn needs<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let legend = Legend::of_panel(area, panel, looks, |s| Sample::of(s.style.mark), m)?;
-    let (width, height) = area.dim_in_pixel();
-    let full = Frame::fit(area, (width, height), panel, m, (0, 0))?;
-    let place = panel.axes.legend;
-    let band = match &legend {
-        Some(legend) if !legend.goes_inside(place, full.plot_f(), &covered(panel, &full, m), m) => {
-            legend
-                .below((f64::from(width), f64::from(height)), m)
-                .strip
-                .1
-        }
+    let alone = Alone::of(area, panel, looks, m)?;
+    let (width, height) = alone.size;
+    let band = match &alone.legend {
+        Some(legend) if alone.legend_outside => legend.below(alone.dims(), m).strip.1,
         _ => 0.0,
     };
     let chart_h = height.saturating_sub(band.ceil() as u32).max(1);
@@ -144,21 +181,21 @@ pub(super) fn draw_cartesian<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let legend = Legend::of_panel(area, panel, looks, |s| Sample::of(s.style.mark), m)?;
-    let (width, height) = area.dim_in_pixel();
-    let full = Frame::fit(area, (width, height), panel, m, (0, 0))?;
-    let place = panel.axes.legend;
+    let Alone {
+        legend,
+        size: (width, height),
+        full,
+        legend_outside,
+    } = Alone::of(area, panel, looks, m)?;
     let dims = (f64::from(width), f64::from(height));
     let outside = match &legend {
-        Some(legend) if !legend.goes_inside(place, full.plot_f(), &covered(panel, &full, m), m) => {
-            Some(match place {
-                LegendPlace::Right => legend.outside(dims, m, |w, h| {
-                    (h >= dims.1).then(|| full.score((w, h), m)).flatten()
-                }),
-                LegendPlace::Below => legend.below(dims, m),
-                _ => legend.outside(dims, m, |w, h| full.score((w, h), m)),
-            })
-        }
+        Some(legend) if legend_outside => Some(match panel.axes.legend {
+            LegendPlace::Right => legend.outside(dims, m, |w, h| {
+                (h >= dims.1).then(|| full.score((w, h), m)).flatten()
+            }),
+            LegendPlace::Below => legend.below(dims, m),
+            _ => legend.outside(dims, m, |w, h| full.score((w, h), m)),
+        }),
         _ => None,
     };
     let (chart_area, frame) = match outside {
