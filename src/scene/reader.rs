@@ -159,7 +159,8 @@ impl Reader {
         }
     }
 
-    /// A field holding `[low, high]` with low < high, both finite and satisfying `ok`.
+    /// A field holding `[low, high]` with low < high, both finite and satisfying `ok`, and a finite span
+    /// high − low.
     pub fn interval(
         &mut self,
         object: &Object,
@@ -181,10 +182,12 @@ impl Reader {
                 },
             ] = items.as_slice()
             {
-                if a.value < b.value && ok(a.value) && ok(b.value) {
+                // A span past the largest double (±1e308) would reach the axes as ∞ and NaN ticks.
+                let span_finite = (b.value - a.value).is_finite();
+                if a.value < b.value && span_finite && ok(a.value) && ok(b.value) {
                     return Some((a.value, b.value));
                 }
-                self.report(at, format!("invalid interval (got {node}, expected [low, high] with low < high, {expected})"));
+                self.report(at, format!("invalid interval (got {node}, expected [low, high] with low < high, high − low finite, {expected})"));
                 return None;
             }
         }
