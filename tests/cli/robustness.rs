@@ -696,3 +696,24 @@ fn a_fifo_spec_a_full_stderr_and_an_unwritable_bench_folder_fail_at_once() {
     let result = finish_within(run(&args, Stdio::piped()), limit, "bench");
     assert_eq!(result.status.code(), Some(2), "{}", text(&result.stderr));
 }
+
+#[test]
+fn thousands_of_threads_asked_for_under_a_memory_limit_are_capped_not_a_crash() {
+    let out = scratch("robustness-threads");
+    let script = format!(
+        "ulimit -v 1500000 && RAYON_NUM_THREADS=5000 exec {} render tr-ranges -q -o {}",
+        env!("CARGO_BIN_EXE_ndfplot"),
+        out.display()
+    );
+    let result = Command::new("sh").args(["-c", &script]).output().unwrap();
+    assert_eq!(result.status.code(), Some(0), "{}", text(&result.stderr));
+    assert!(
+        text(&result.stderr).contains("RAYON_NUM_THREADS=5000 is more than 64; using 64"),
+        "{}",
+        text(&result.stderr)
+    );
+    assert_eq!(
+        files_in(&out),
+        ["tr-ranges.csv", "tr-ranges.png", "tr-ranges.svg"]
+    );
+}
