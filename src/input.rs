@@ -20,7 +20,21 @@ pub fn read_file(path: &str) -> Result<String> {
             std::io::Error::new(kind, "not a regular file"),
         ));
     }
-    std::fs::read_to_string(path).map_err(|e| Error::io(path, e))
+    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    String::from_utf8(bytes).map_err(|e| {
+        let (line, column) = line_column(&e.as_bytes()[..e.utf8_error().valid_up_to()]);
+        Error::Usage(format!(
+            "{path}: {line}:{column}: not UTF-8 text (a byte sequence that is not UTF-8 starts here)"
+        ))
+    })
+}
+
+/// The 1-based line and column (in characters) just after `text`, valid UTF-8.
+fn line_column(text: &[u8]) -> (usize, usize) {
+    let text = std::str::from_utf8(text).unwrap_or_default();
+    let line = text.matches('\n').count() + 1;
+    let column = text.rsplit('\n').next().unwrap_or_default().chars().count() + 1;
+    (line, column)
 }
 
 /// Parses JSON text from `source` (a file name or argument name) into a node, reporting a syntax
