@@ -33,10 +33,14 @@ pub struct Problems {
     pub list: Vec<Problem>,
 }
 
+/// Most problems of one source printed; the rest are counted in a last line.
+pub const MAX_PRINTED_PROBLEMS: usize = 100;
+
 impl fmt::Display for Problems {
-    /// One `error: <source>: <at>: <message>` line per problem, without a trailing newline.
+    /// One `error: <source>: <at>: <message>` line per problem, without a trailing newline; past
+    /// [`MAX_PRINTED_PROBLEMS`], one line saying how many more there are.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (i, problem) in self.list.iter().enumerate() {
+        for (i, problem) in self.list.iter().take(MAX_PRINTED_PROBLEMS).enumerate() {
             if i > 0 {
                 writeln!(f)?;
             }
@@ -45,6 +49,14 @@ impl fmt::Display for Problems {
                 write!(f, "{}: ", one_line(&problem.at))?;
             }
             write!(f, "{}", one_line(&problem.message))?;
+        }
+        if self.list.len() > MAX_PRINTED_PROBLEMS {
+            write!(
+                f,
+                "\nerror: {}: {} more problems not shown",
+                one_line(&self.source),
+                self.list.len() - MAX_PRINTED_PROBLEMS
+            )?;
         }
         Ok(())
     }

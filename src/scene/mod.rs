@@ -990,6 +990,7 @@ fn read_series(reader: &mut Reader, panel: &reader::Object) -> Option<PanelSerie
 
 /// Expands one curve entry (possibly swept) into `out`.
 fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<SceneCurve<Spec>>) {
+    let entry_start = reader.problems.len();
     if curve::is_difference(node) {
         return sweep::difference_entry(reader, node, path, out);
     }
@@ -1088,8 +1089,10 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
                 match resolved.build(&values, path) {
                     Ok(curve) => curve,
                     Err(problem) => {
-                        // One report per offending value, however many combinations it appears in.
-                        if !reader.problems.contains(&problem) {
+                        // One report per offending value, however many combinations it appears in;
+                        // only this entry's reports can repeat it, so only they are searched (a
+                        // search of every report so far made validation quadratic in them).
+                        if !reader.problems[entry_start..].contains(&problem) {
                             reader.problems.push(problem);
                         }
                         continue;

@@ -717,3 +717,32 @@ fn thousands_of_threads_asked_for_under_a_memory_limit_are_capped_not_a_crash() 
         ["tr-ranges.csv", "tr-ranges.png", "tr-ranges.svg"]
     );
 }
+
+#[test]
+fn a_spec_with_a_hundred_thousand_problems_prints_the_first_hundred_and_a_count() {
+    let dir = scratch("robustness-many-problems");
+    let entry = r#"{"ndf": "phong", "alpha_p": -1}"#;
+    let curves = vec![entry; 100_000].join(",");
+    let spec = dir.join("many.json");
+    std::fs::write(
+        &spec,
+        format!(r#"{{"id": "many", "panels": [{{"curves": [{curves}]}}]}}"#),
+    )
+    .unwrap();
+    let out = ndfplot(&[
+        "render",
+        spec.to_str().unwrap(),
+        "-o",
+        dir.join("out").to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = text(&out.stderr);
+    let lines: Vec<&str> = stderr.lines().collect();
+    assert_eq!(lines.len(), 101, "{}", lines.last().unwrap());
+    assert!(lines[99].contains("panels[0].curves[99].alpha_p: out of domain"));
+    assert!(
+        lines[100].ends_with("many.json: 99900 more problems not shown"),
+        "{}",
+        lines[100]
+    );
+}
