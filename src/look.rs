@@ -297,6 +297,26 @@ pub enum TickChoice {
 }
 
 impl Axes {
+    /// The axes of a 2D panel with these labels, unit and scale, and every other choice automatic:
+    /// no title, ranges showing every point, the legend at its best place, grid lines, ticks from
+    /// the locator.
+    pub fn cartesian(x_label: &str, y_label: &str, x_unit: XUnit, y_scale: YScale) -> Axes {
+        Axes {
+            title: String::new(),
+            x_label: x_label.to_owned(),
+            y_label: y_label.to_owned(),
+            x_unit,
+            kind: PanelKind::Cartesian,
+            y_scale,
+            x_range: None,
+            y_range: None,
+            legend: LegendPlace::Best,
+            grid: true,
+            x_ticks: None,
+            y_ticks: None,
+        }
+    }
+
     /// The θ interval the panel's curves are sampled on: the visible range, [0, π/2] by default
     /// and for plain x axes.
     pub fn theta_range(&self) -> (f64, f64) {

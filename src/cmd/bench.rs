@@ -8,8 +8,7 @@ use crate::bench::{self, Row};
 use crate::error::{Error, Result};
 use crate::figure::{Figure, Panel, Series};
 use crate::look::{
-    Axes, Canvas, Dash, LegendPlace, Mark, PanelKind, Rgb, Style, Theme, TickChoice, XUnit, YScale,
-    literal, shade,
+    Axes, Canvas, Dash, Mark, Rgb, Style, Theme, TickChoice, XUnit, YScale, literal, shade,
 };
 use crate::ndf::Family;
 use crate::output::{plot, write};
@@ -79,17 +78,7 @@ fn panel(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Pane
     Panel {
         axes: Axes {
             title: title.into(),
-            x_label: x_label.into(),
-            y_label: y_label.into(),
-            x_unit: XUnit::Plain,
-            kind: PanelKind::Cartesian,
-            y_scale: YScale::Log,
-            x_range: None,
-            y_range: None,
-            legend: LegendPlace::Best,
-            grid: true,
-            x_ticks: None,
-            y_ticks: None,
+            ..Axes::cartesian(x_label, y_label, XUnit::Plain, YScale::Log)
         },
         series,
     }

@@ -141,7 +141,7 @@ fn figures_take_physical_sizes_tick_choices_line_widths_and_no_grid() {
     let bad = dir.join("bad.json");
     std::fs::write(
         &bad,
-        r#"{"id": "bad", "font_px": 12, "font_pt": 9,
+        r#"{"id": "bad", "font_px": 12, "font_pt": 9, "png_scale": 2, "dpi": 300, "unit": "mm",
             "panels": [{"y": {"scale": "log", "ticks": [0, 1]}, "x": {"ticks": 1},
                         "curves": [{"ndf": "ggx", "alpha_tr": 0.3, "width": 50}]}]}"#,
     )
@@ -151,6 +151,8 @@ fn figures_take_physical_sizes_tick_choices_line_widths_and_no_grid() {
     let stderr = text(&output.stderr);
     for expected in [
         "font_pt: give font_px or font_pt, not both",
+        "dpi: give png_scale or dpi, not both",
+        "unit: unknown value (got \"mm\", expected one of: px, in, cm)",
         "panels[0].y.ticks[0]: invalid tick (got 0, expected a number > 0 on a log axis)",
         "panels[0].x.ticks: expected a whole count from 2 to 20 or a list of values (got 1)",
         "panels[0].curves[0].width",

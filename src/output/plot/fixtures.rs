@@ -5,9 +5,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
 use crate::figure::{Figure, Panel, Series};
-use crate::look::{
-    Axes, Canvas, Dash, LegendPlace, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale,
-};
+use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
 use crate::provenance::Provenance;
 
 /// The spec text the test figures claim to come from.
@@ -68,20 +66,7 @@ fn beckmann(alpha_b: f64) -> Vec<(f64, f64)> {
 
 pub(super) fn panel(x_unit: XUnit, y_scale: YScale, series: Vec<Series>) -> Panel {
     Panel {
-        axes: Axes {
-            title: String::new(),
-            x_label: "θ".to_owned(),
-            y_label: "D(θ)".to_owned(),
-            x_unit,
-            kind: PanelKind::Cartesian,
-            y_scale,
-            x_range: None,
-            y_range: None,
-            legend: LegendPlace::Best,
-            grid: true,
-            x_ticks: None,
-            y_ticks: None,
-        },
+        axes: Axes::cartesian("θ", "D(θ)", x_unit, y_scale),
         series,
     }
 }

@@ -223,7 +223,7 @@ where
     let n = figure.panels.len();
     let mut titles = Vec::with_capacity(n);
     for (panel, cell) in figure.panels.iter().zip(cells) {
-        titles.push(title_block(cell, &panel.axes.title, PANEL_TITLE_EM, m)?.2);
+        titles.push(title_block(cell, &panel.axes.title, PANEL_TITLE_EM, m)?.band);
     }
     let row_of = |i: usize| i / cols;
     let rows = n.div_ceil(cols);
@@ -267,20 +267,31 @@ where
         .collect())
 }
 
-/// How `title` (`size` base text sizes) is set at the top of `area`: the size and lines it fits
-/// the area's width at ([`fit_text`]) and the height of the band it takes, padding included; an
-/// empty title takes none.
+/// A title as set: its size, its lines with the top each is drawn at, the height of its band.
+struct TitleBlock {
+    size: f64,
+    lines: Vec<(String, i32)>,
+    band: i32,
+}
+
+/// How `title` (`size` base text sizes) is set at the top of `area`: the size it fits the area's
+/// width at ([`fit_text`]), each line with the top it is drawn at, and the height of the band it
+/// takes, padding included; an empty title takes none.
 fn title_block<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
     size: f64,
     m: &Metrics,
-) -> Result<(f64, Vec<String>, i32), PlotError>
+) -> Result<TitleBlock, PlotError>
 where
     DB::ErrorType: 'static,
 {
     if title.is_empty() {
-        return Ok((size, Vec::new(), 0));
+        return Ok(TitleBlock {
+            size,
+            lines: Vec::new(),
+            band: 0,
+        });
     }
     let pad = f64::from(m.px(0.5));
     let (width, _) = area.dim_in_pixel();
@@ -289,15 +300,22 @@ where
     let style = m.font(size);
     // plotters' raster text puts the baseline size/2 below a top anchor, so ascenders rise
     // ≈0.3 × size above it (ascent 1901/2384 of the size for DejaVu Sans): start that much lower.
-    let mut bottom = (pad + 0.3 * size * m.unit).round() as i32;
-    for (i, line) in lines.iter().enumerate() {
-        let (_, text_h) = area.estimate_text_size(line, &style).map_err(draw_err)?;
-        bottom += text_h as i32;
-        if i + 1 < lines.len() {
-            bottom += m.px(LINE_GAP_EM * size) as i32;
+    let mut top = (pad + 0.3 * size * m.unit).round() as i32;
+    let mut placed = Vec::with_capacity(lines.len());
+    let count = lines.len();
+    for (i, line) in lines.into_iter().enumerate() {
+        let (_, text_h) = area.estimate_text_size(&line, &style).map_err(draw_err)?;
+        placed.push((line, top));
+        top += text_h as i32;
+        if i + 1 < count {
+            top += m.px(LINE_GAP_EM * size) as i32;
         }
     }
-    Ok((size, lines, bottom + pad as i32))
+    Ok(TitleBlock {
+        size,
+        lines: placed,
+        band: top + pad as i32,
+    })
 }
 
 /// Draws `title` (`size` base text sizes) centred at the top of `area`, if not empty, and
@@ -314,29 +332,16 @@ fn titled<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let (size, lines, band) = title_block(area, title, size, m)?;
+    let TitleBlock { size, lines, band } = title_block(area, title, size, m)?;
     let band = band.max(min_band);
     if band == 0 {
         return Ok(area.clone());
     }
-    let pad = f64::from(m.px(0.5));
     let (width, _) = area.dim_in_pixel();
-    let style = m.font(size);
-    let mut top = (pad + 0.3 * size * m.unit).round() as i32;
-    let centred = style.pos(Pos::new(HPos::Center, VPos::Top));
-    for (i, line) in lines.iter().enumerate() {
-        let (_, text_h) = area.estimate_text_size(line, &style).map_err(draw_err)?;
-        mathtext::draw(
-            area,
-            line,
-            &centred,
-            (f64::from(width) / 2.0, f64::from(top)),
-            m,
-        )?;
-        top += text_h as i32;
-        if i + 1 < lines.len() {
-            top += m.px(LINE_GAP_EM * size) as i32;
-        }
+    let centred = m.font(size).pos(Pos::new(HPos::Center, VPos::Top));
+    for (line, top) in &lines {
+        let at = (f64::from(width) / 2.0, f64::from(*top));
+        mathtext::draw(area, line, &centred, at, m)?;
     }
     Ok(area.split_vertically(band).1)
 }
