@@ -212,6 +212,20 @@ pub struct Canvas {
     pub font_px: f64,
 }
 
+impl Canvas {
+    /// Largest PNG drawn, in pixels: 2²⁶ (8192 × 8192). Its drawing buffer (RGBA) and the
+    /// encoded rows (RGB) take 7 bytes a pixel, 470 MB at the cap.
+    pub const MAX_PNG_PIXELS: u64 = 1 << 26;
+
+    /// The PNG's width and height in pixels: each side times `png_scale`, rounded.
+    pub fn png_size(&self) -> (f64, f64) {
+        (
+            (f64::from(self.width_px) * self.png_scale).round(),
+            (f64::from(self.height_px) * self.png_scale).round(),
+        )
+    }
+}
+
 /// Colours and line distinctions of a figure.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Theme {

@@ -20,27 +20,34 @@ use crate::scene::{
     Spec,
 };
 use crate::source::Loaded;
+use rayon::prelude::*;
 use std::f64::consts::FRAC_PI_2;
 
-/// Resolves every source the spec stage read, in order. Every problem of every source is reported
+/// Resolves every source the spec stage read, in parallel, reported in order. Every problem of every source is reported
 /// together: a valid spec's resolve problems, an invalid spec's own problems followed by those of
 /// the work it describes.
 pub fn scenes(loaded: Vec<Loaded>) -> Result<Vec<Scene>> {
-    let mut scenes = Vec::with_capacity(loaded.len());
-    let mut failures = Vec::new();
-    for Loaded { source, scene } in loaded {
-        let resolved = match scene {
-            Ok(spec) => self::scene(spec),
-            Err(Invalid {
-                mut problems,
-                pending,
-            }) => {
-                for problem in pending_problems(&pending) {
-                    push_once(&mut problems, problem);
+    let resolved: Vec<_> = loaded
+        .into_par_iter()
+        .map(|Loaded { source, scene }| {
+            let resolved = match scene {
+                Ok(spec) => self::scene(spec),
+                Err(Invalid {
+                    mut problems,
+                    pending,
+                }) => {
+                    for problem in pending_problems(&pending) {
+                        push_once(&mut problems, problem);
+                    }
+                    Err(problems)
                 }
-                Err(problems)
-            }
-        };
+            };
+            (source, resolved)
+        })
+        .collect();
+    let mut scenes = Vec::with_capacity(resolved.len());
+    let mut failures = Vec::new();
+    for (source, resolved) in resolved {
         match resolved {
             Ok(scene) => scenes.push(scene),
             Err(list) => failures.push(Problems { source, list }),

@@ -43,7 +43,7 @@ pub fn write_outputs(dir: &Path, rows: &[Row]) -> Result<Vec<PathBuf>> {
     let figure = figure(rows);
     let drawing_failed = |e| Error::Numerics(format!("bench: drawing failed: {e}"));
     let svg = plot::svg(&figure).map_err(drawing_failed)?;
-    let png = plot::png(&figure).map_err(drawing_failed)?;
+    let png = plot::png(&figure, &svg).map_err(drawing_failed)?;
     write::write_files(
         dir,
         &[

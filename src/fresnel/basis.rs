@@ -27,6 +27,8 @@
 
 use std::sync::OnceLock;
 
+use rayon::prelude::*;
+
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::svd::{self, ComputeSvdVectors};
 use faer::matrix_free::eigen::{PartialEigenParams, partial_svd, partial_svd_scratch};
@@ -108,10 +110,11 @@ fn stack_rows(rows: &[Vec<f64>]) -> Mat<f64> {
 }
 
 /// The training matrix: row k is the normalized curve of training material k, rounded as numpy
-/// rounds it (`numpy_f64`), so that the basis reproduces the published numpy reference.
+/// rounds it (`numpy_f64`), so that the basis reproduces the published numpy reference. Rows are
+/// computed in parallel; each is the same whichever thread computes it.
 fn training_matrix(cos_theta: &[f64]) -> Mat<f64> {
     let rows: Vec<Vec<f64>> = training_set()
-        .iter()
+        .par_iter()
         .map(|&(eta, kappa)| numpy_f64::training_row(cos_theta, eta, kappa))
         .collect();
     stack_rows(&rows)

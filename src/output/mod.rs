@@ -9,6 +9,7 @@ pub mod html;
 pub mod pdf;
 pub mod plot;
 pub mod plot3d;
+pub mod svg_tree;
 pub mod write;
 
 use crate::error::{Error, Result};
@@ -72,8 +73,8 @@ pub fn encode(figure: &Figure, format: Format) -> Result<Vec<u8>> {
     Ok(encode_all(figure, &[format])?.remove(0))
 }
 
-/// The bytes of each of `formats` of a figure, in order. The PDF is converted from the figure's
-/// SVG, which is drawn once when both are asked for.
+/// The bytes of each of `formats` of a figure, in order. The PNG and the PDF are converted from
+/// the figure's SVG, which is drawn once however many of the three are asked for.
 pub fn encode_all(figure: &Figure, formats: &[Format]) -> Result<Vec<Vec<u8>>> {
     let plot_error =
         |e: plot::PlotError| Error::Numerics(format!("{}: drawing failed: {e}", figure.id));
@@ -81,20 +82,19 @@ pub fn encode_all(figure: &Figure, formats: &[Format]) -> Result<Vec<Vec<u8>>> {
     let mut encoded = Vec::with_capacity(formats.len());
     for &format in formats {
         encoded.push(match format {
-            Format::Svg | Format::Pdf => {
+            Format::Svg | Format::Png | Format::Pdf => {
                 let svg = match svg {
                     Some(ref drawn) => drawn,
                     None => svg.insert(plot::svg(figure).map_err(plot_error)?),
                 };
-                if format == Format::Svg {
-                    svg.clone()
-                } else {
-                    pdf::from_svg(svg, &figure.title, &figure.provenance).map_err(|e| {
+                match format {
+                    Format::Svg => svg.clone(),
+                    Format::Png => plot::png(figure, svg).map_err(plot_error)?,
+                    _ => pdf::from_svg(svg, &figure.title, &figure.provenance).map_err(|e| {
                         Error::Numerics(format!("{}: PDF conversion failed: {e}", figure.id))
-                    })?
+                    })?,
                 }
             }
-            Format::Png => plot::png(figure).map_err(plot_error)?,
             Format::Csv => figure_csv(figure),
             Format::Html => unreachable!("pages are built from scenes, by `pages`"),
         });

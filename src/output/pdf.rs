@@ -2,29 +2,22 @@
 //!
 //! Owns the conversion of the SVG that [`super::plot::svg`] draws (parsed by usvg, written by
 //! krilla): text stays text in a subset of the embedded face, and the document information
-//! dictionary carries the figure's title and provenance record. The font database holds only the
-//! embedded face; system fonts are never loaded, so the output is the same on a machine with no
-//! fonts at all. Nothing in the document varies between runs: no date is written, and the file
+//! dictionary carries the figure's title and provenance record. The SVG is read by
+//! [`super::svg_tree`], which never loads a system font. Nothing in the document varies between runs: no date is written, and the file
 //! identifiers are hashes of the content.
 //!
 //! It must not draw (the SVG is the drawing), compute provenance, or touch the file system.
-
-use std::sync::{Arc, OnceLock};
 
 use krilla::geom::Size;
 use krilla::metadata::Metadata;
 use krilla::page::PageSettings;
 use krilla::{Document, SerializeSettings};
 use krilla_svg::{SurfaceExt, SvgSettings};
-use usvg::fontdb;
 
 use crate::provenance::Provenance;
 
 /// PDF points per CSS pixel: 72 points and 96 CSS pixels to the inch.
 pub const POINTS_PER_PX: f32 = 0.75;
-
-/// Family that the SVG names first and that every generic family resolves to.
-const FAMILY: &str = "DejaVu Sans";
 
 /// Why an SVG could not be turned into a PDF.
 #[derive(Debug, thiserror::Error)]
@@ -56,12 +49,7 @@ pub enum PdfError {
 /// words (`ndfplot-version=0.1.0, spec-sha256=…`); the XMP metadata repeats them. No creation
 /// date; identical input gives identical bytes.
 pub fn from_svg(svg: &[u8], title: &str, provenance: &Provenance) -> Result<Vec<u8>, PdfError> {
-    let options = usvg::Options {
-        font_family: FAMILY.to_owned(),
-        fontdb: Arc::clone(font_database()),
-        ..usvg::Options::default()
-    };
-    let tree = usvg::Tree::from_data(svg, &options)?;
+    let tree = super::svg_tree::parse(svg)?;
     let (width, height) = (tree.size().width(), tree.size().height());
     let page = Size::from_wh(width * POINTS_PER_PX, height * POINTS_PER_PX)
         .ok_or(PdfError::Page { width, height })?;
@@ -90,22 +78,6 @@ pub fn from_svg(svg: &[u8], title: &str, provenance: &Provenance) -> Result<Vec<
     document
         .finish()
         .map_err(|e| PdfError::Write(format!("{e:?}")))
-}
-
-/// The font database of every conversion: the embedded DejaVu Sans face only, also answering
-/// for the generic families, built once per process.
-fn font_database() -> &'static Arc<fontdb::Database> {
-    static DATABASE: OnceLock<Arc<fontdb::Database>> = OnceLock::new();
-    DATABASE.get_or_init(|| {
-        let mut database = fontdb::Database::new();
-        database.load_font_data(dejavu::sans::regular().to_vec());
-        database.set_sans_serif_family(FAMILY);
-        database.set_serif_family(FAMILY);
-        database.set_monospace_family(FAMILY);
-        database.set_cursive_family(FAMILY);
-        database.set_fantasy_family(FAMILY);
-        Arc::new(database)
-    })
 }
 
 #[cfg(test)]
@@ -148,13 +120,6 @@ mod tests {
             &format!("/Keywords ({})", record.words().join(", "))
         ));
         assert!(!contains(&bytes, "/CreationDate"));
-    }
-
-    #[test]
-    fn fonts_come_from_the_embedded_face_only() {
-        let faces: Vec<_> = font_database().faces().collect();
-        assert_eq!(faces.len(), 1, "no system font is ever loaded");
-        assert_eq!(faces[0].families[0].0, FAMILY);
     }
 
     #[test]

@@ -6,6 +6,7 @@
 //! each other's temporaries (the last rename wins per file; CONTRACTS.md).
 
 use crate::error::{Error, Result};
+use rayon::prelude::*;
 use std::fs;
 use std::io::Write;
 use std::os::unix::fs::PermissionsExt;
@@ -23,7 +24,7 @@ fn prefix(name: &str) -> String {
 /// The end of every temporary's name.
 const SUFFIX: &str = ".tmp";
 
-/// Writes `bytes` to `dir/name` atomically (exclusive temporary with a unique name, sync, rename).
+/// Writes `bytes` to `dir/name` atomically (exclusive temporary with a unique name, rename).
 /// `name` must be a plain file name (the caller validated the scene id it comes from). The file
 /// gets the permissions a plain create would give (0666 less the umask).
 fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<()> {
@@ -37,7 +38,6 @@ fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<()> {
             .permissions(fs::Permissions::from_mode(0o666))
             .tempfile_in(dir)?;
         file.write_all(bytes)?;
-        file.as_file().sync_all()?;
         file.persist(&target).map_err(|e| e.error)?;
         Ok(())
     })();
@@ -79,20 +79,21 @@ fn remove_abandoned(dir: &Path, names: &[&str], age: Duration) -> Result<()> {
 
 /// Writes every (file name, bytes) of `files` into `dir` with [`write_atomic`], creating `dir` if
 /// needed and first removing the [abandoned](ABANDONED_AFTER) temporaries of those names; returns
-/// the paths written, in order.
-pub fn write_files<N: AsRef<str>, B: AsRef<[u8]>>(
+/// the paths written, in order. The files are written in parallel; when some fail, the error
+/// is the first failure in `files`' order.
+pub fn write_files<N: AsRef<str> + Sync, B: AsRef<[u8]> + Sync>(
     dir: &Path,
     files: &[(N, B)],
 ) -> Result<Vec<std::path::PathBuf>> {
     ensure_dir(dir)?;
     let names: Vec<&str> = files.iter().map(|(name, _)| name.as_ref()).collect();
     remove_abandoned(dir, &names, ABANDONED_AFTER)?;
-    let mut written = Vec::with_capacity(files.len());
-    for (name, bytes) in files {
-        write_atomic(dir, name.as_ref(), bytes.as_ref())?;
-        written.push(dir.join(name.as_ref()));
-    }
-    Ok(written)
+    let results: Vec<Result<()>> = files
+        .par_iter()
+        .map(|(name, bytes)| write_atomic(dir, name.as_ref(), bytes.as_ref()))
+        .collect();
+    results.into_iter().collect::<Result<()>>()?;
+    Ok(names.iter().map(|name| dir.join(name)).collect())
 }
 
 /// Creates `dir` if needed and checks that a file can be created in it (a temporary, removed at

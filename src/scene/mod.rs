@@ -39,9 +39,6 @@ pub const MAX_POINTS_PER_SCENE: usize = 10_000_000;
 pub const DEFAULT_SAMPLES: usize = 1000;
 /// Largest figure side in CSS pixels; beyond it rasters exhaust memory for no visible gain.
 pub const MAX_SIDE_PX: f64 = 20_000.0;
-/// Largest PNG pixel count (width × height × scale²), about a 100-megapixel image.
-pub const MAX_PNG_PIXELS: f64 = 1e8;
-
 /// Keys a scene may have.
 pub const SCENE_KEYS: &[&str] = &[
     "$schema",
@@ -549,16 +546,17 @@ fn read_canvas(
     Some(canvas)
 }
 
-/// Rejects canvases whose PNG would exceed [`MAX_PNG_PIXELS`].
+/// Rejects canvases whose PNG would exceed [`Canvas::MAX_PNG_PIXELS`].
 pub fn check_canvas(canvas: &Canvas) -> Result<(), String> {
-    let pixels = f64::from(canvas.width_px)
-        * f64::from(canvas.height_px)
-        * canvas.png_scale
-        * canvas.png_scale;
-    if pixels > MAX_PNG_PIXELS {
+    let (width, height) = canvas.png_size();
+    let pixels = width * height;
+    if pixels > Canvas::MAX_PNG_PIXELS as f64 {
         Err(format!(
-            "the PNG would have {pixels:.0} pixels (got {}×{} px at scale {}, expected at most {MAX_PNG_PIXELS:.0} pixels)",
-            canvas.width_px, canvas.height_px, canvas.png_scale
+            "the PNG would have {pixels:.0} pixels (got {}×{} px at scale {}, expected at most {} pixels)",
+            canvas.width_px,
+            canvas.height_px,
+            canvas.png_scale,
+            Canvas::MAX_PNG_PIXELS
         ))
     } else {
         Ok(())

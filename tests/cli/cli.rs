@@ -318,9 +318,9 @@ fn render_writes_svg_png_csv_and_csv_values_equal_eval() {
     // `α_b = 0.4` is typeset: α, then b as a subscript run, then the rest.
     assert!(
         svg.contains("Test figure")
-            && svg.contains("\nα\n</text>")
-            && svg.contains("\nb\n</text>")
-            && svg.contains("\n = 0.4\n</text>")
+            && svg.contains(">α</text>")
+            && svg.contains(">b</text>")
+            && svg.contains("> = 0.4</text>")
             && !svg.contains("α_b"),
         "labels missing from SVG"
     );
@@ -1024,7 +1024,7 @@ fn scene_fits_and_differences_render_with_fitted_values_in_the_csv() {
     let svg = std::fs::read_to_string(dir.join("fits.svg")).unwrap();
     // The fit's label names its target, `α_{tr}` typeset with tr as a subscript run.
     assert!(
-        svg.contains("a₁ = 11.5819 (peak fit to α\n</text>") && svg.contains("\ntr\n</text>"),
+        svg.contains("a₁ = 11.5819 (peak fit to α</text>") && svg.contains(">tr</text>"),
         "legend"
     );
     std::fs::write(

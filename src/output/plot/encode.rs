@@ -1,5 +1,5 @@
-//! Bytes out: the device size of a canvas, the finishing touches of the SVG document and the
-//! PNG encoding, each carrying the figure's provenance record. Nothing here draws, and nothing
+//! Bytes out: the device size of a canvas, the finishing touches of the SVG document, its
+//! rasterization and the PNG encoding, each carrying the figure's provenance record. Nothing here draws, and nothing
 //! here computes the record: it only embeds it.
 
 use super::PlotError;
@@ -7,13 +7,11 @@ use super::style::{EM_PER_SIZE, FONT_NAME};
 use crate::look::Canvas;
 use crate::provenance::Provenance;
 
-/// Largest raster accepted: 2²⁶ pixels (64 Mpx, a 192 MB RGB buffer).
-pub(super) const MAX_DEVICE_PIXELS: u64 = 1 << 26;
-
 /// `font-family` written into the SVG: the embedded face, then the generic fallback.
 pub(super) const SVG_FONT_FAMILY: &str = "DejaVu Sans, sans-serif";
 
-/// Device size of `canvas` at `scale`, after checking that it can be drawn.
+/// Device size of `canvas` drawn at `scale` device units per CSS pixel, after checking that it
+/// can be drawn: positive finite scale and font size, at least one unit a side.
 pub(super) fn device_size(canvas: &Canvas, scale: f64) -> Result<(u32, u32), PlotError> {
     let fail = |reason| PlotError::Canvas {
         width_px: canvas.width_px,
@@ -33,10 +31,26 @@ pub(super) fn device_size(canvas: &Canvas, scale: f64) -> Result<(u32, u32), Plo
     if width < 1.0 || height < 1.0 {
         return Err(fail("the raster would be empty"));
     }
-    if width * height > MAX_DEVICE_PIXELS as f64 {
-        return Err(fail("the raster would exceed 2^26 pixels"));
+    if width.max(height) > f64::from(u32::MAX) {
+        return Err(fail("a side would exceed 2^32 device units"));
     }
     Ok((width as u32, height as u32))
+}
+
+/// The PNG's size in pixels ([`Canvas::png_size`]), after checking it as [`device_size`] does
+/// and against [`Canvas::MAX_PNG_PIXELS`], the cap that validation enforces.
+pub(super) fn png_size(canvas: &Canvas) -> Result<(u32, u32), PlotError> {
+    let (width, height) = device_size(canvas, canvas.png_scale)?;
+    if u64::from(width) * u64::from(height) > Canvas::MAX_PNG_PIXELS {
+        return Err(PlotError::Canvas {
+            width_px: canvas.width_px,
+            height_px: canvas.height_px,
+            scale: canvas.png_scale,
+            font_px: canvas.font_px,
+            reason: "the raster would exceed 2^26 pixels",
+        });
+    }
+    Ok((width, height))
 }
 
 /// Gives the SVG its CSS size, font family and font sizes, and puts the provenance record in a
@@ -60,7 +74,7 @@ pub(super) fn finish_svg(
         r#"<svg width="{}" height="{}" "#,
         canvas.width_px, canvas.height_px
     );
-    let document = document.replacen(&drawn, &sized, 1);
+    let document = paint_opacity(&document.replacen(&drawn, &sized, 1));
     // The opening tag ends at the first `>`: plotters writes no `>` inside its attributes.
     let document = match document.split_once('>') {
         Some((open, rest)) => format!(
@@ -77,38 +91,72 @@ pub(super) fn finish_svg(
         let (size, rest) = part.split_once('"').unwrap_or(("", part));
         let em = size.parse::<f64>().unwrap_or(0.0) * PLOTTERS_SVG_DIVISOR * EM_PER_SIZE;
         out.push_str(&format!(
-            r#"font-family="{SVG_FONT_FAMILY}" font-size="{em:.2}"{rest}"#
+            r#"font-family="{SVG_FONT_FAMILY}" font-size="{em:.2}""#
         ));
+        out.push_str(&preserve_spaces(rest));
     }
     out
 }
 
-/// The packed 8-bit RGB raster `rgb` of `(width, height)` pixels shrunk `factor` times on each
-/// side: each output pixel is the mean of its `factor` × `factor` block, rounded (a box filter,
-/// which turns a supersampled drawing into anti-aliased pixels). `factor` 1 returns `rgb`.
-pub(super) fn downsample(rgb: Vec<u8>, (width, height): (u32, u32), factor: u32) -> Vec<u8> {
-    if factor <= 1 {
-        return rgb;
-    }
-    let (f, row) = (factor as usize, width as usize * 3);
-    let out_row = row / f;
-    let block = (f * f) as u32;
-    let mut out = Vec::with_capacity(out_row * height as usize / f);
-    let mut sums = vec![0u32; out_row];
-    for rows in rgb.chunks_exact(row * f) {
-        sums.fill(0);
-        for line in rows.chunks_exact(row) {
-            for (sum, pixels) in sums.chunks_exact_mut(3).zip(line.chunks_exact(3 * f)) {
-                for pixel in pixels.chunks_exact(3) {
-                    for (s, &c) in sum.iter_mut().zip(pixel) {
-                        *s += u32::from(c);
-                    }
-                }
-            }
+/// `document` with each element's `opacity` moved onto its one paint: plotters draws every
+/// element either filled or stroked, never both, so `opacity="a" fill="…"` is
+/// `fill-opacity="a" fill="…"` and `opacity="a" stroke="…"` is `stroke-opacity="a" stroke="…"`,
+/// and `opacity="1"` says nothing. The picture is the same, but a renderer need not paint a
+/// translucent element into a layer of its own first (a legend's background, a surface's facets).
+fn paint_opacity(document: &str) -> String {
+    const OPACITY: &str = r#" opacity=""#;
+    let mut out = String::with_capacity(document.len());
+    let mut rest = document;
+    while let Some(at) = rest.find(OPACITY) {
+        out.push_str(&rest[..at]);
+        let after = &rest[at + OPACITY.len()..];
+        let (value, tail) = after.split_once('"').unwrap_or((after, ""));
+        if value != "1" {
+            let paint = if tail.starts_with(r#" stroke=""#) { "stroke" } else { "fill" };
+            out.push_str(&format!(r#" {paint}-opacity="{value}""#));
         }
-        out.extend(sums.iter().map(|&s| ((s + block / 2) / block) as u8));
+        rest = tail;
     }
+    out.push_str(rest);
     out
+}
+
+/// The rest of a `<text>` element as plotters writes it (`… fill="#222222">\n = 0.2\n</text>…`)
+/// with its content's spaces kept: `xml:space="preserve"` on the element and the line breaks
+/// plotters puts around the content removed. Text is drawn in runs placed one after another, so
+/// a run such as `" = 0.2"` after a subscript must keep its leading space in every renderer.
+fn preserve_spaces(rest: &str) -> String {
+    let Some((attributes, after)) = rest.split_once(">\n") else {
+        return rest.to_owned();
+    };
+    let Some((content, tail)) = after.split_once("\n</text>") else {
+        return rest.to_owned();
+    };
+    format!(r#"{attributes} xml:space="preserve">{content}</text>{tail}"#)
+}
+
+/// The SVG `svg` of a figure on `canvas` (as [`super::svg`] draws it) rasterized at
+/// `canvas.png_scale` pixels per CSS pixel by resvg, anti-aliased with sub-pixel positions, on an
+/// opaque white ground, as packed 8-bit RGB.
+pub(super) fn rasterize(svg: &[u8], canvas: &Canvas) -> Result<(Vec<u8>, (u32, u32)), PlotError> {
+    let (width, height) = png_size(canvas)?;
+    let tree = crate::output::svg_tree::parse(svg)
+        .map_err(|e| PlotError::Draw(format!("the drawn SVG could not be read back: {e}")))?;
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(width, height)
+        .ok_or_else(|| PlotError::Draw("the raster could not be allocated".to_owned()))?;
+    pixmap.fill(resvg::tiny_skia::Color::WHITE);
+    let size = tree.size();
+    let transform = resvg::tiny_skia::Transform::from_scale(
+        width as f32 / size.width(),
+        height as f32 / size.height(),
+    );
+    resvg::render(&tree, transform, &mut pixmap.as_mut());
+    // Opaque ground: premultiplied and straight colour agree, so alpha is dropped as it is.
+    let mut rgb = vec![0; width as usize * height as usize * 3];
+    for (rgb, rgba) in rgb.chunks_exact_mut(3).zip(pixmap.data().chunks_exact(4)) {
+        rgb.copy_from_slice(&rgba[..3]);
+    }
+    Ok((rgb, (width, height)))
 }
 
 /// Encodes packed 8-bit RGB pixels as a PNG with fixed settings: fast deflate and the Sub
@@ -136,20 +184,4 @@ pub(super) fn encode_png(
     writer.write_image_data(rgb)?;
     writer.finish()?;
     Ok(out)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn downsampling_averages_each_block_per_channel() {
-        // A 4×2 raster, factor 2: two output pixels, each the rounded mean of a 2×2 block.
-        let rgb = vec![
-            0, 10, 255, 2, 10, 255, /**/ 9, 9, 9, 9, 9, 9, //
-            0, 10, 255, 3, 11, 0, /**/ 9, 9, 9, 9, 9, 10,
-        ];
-        assert_eq!(downsample(rgb.clone(), (4, 2), 2), [1, 10, 191, 9, 9, 9]);
-        assert_eq!(downsample(rgb.clone(), (4, 2), 1), rgb);
-    }
 }

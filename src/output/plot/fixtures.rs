@@ -9,6 +9,11 @@ use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit,
 use crate::provenance::Provenance;
 
 /// The spec text the test figures claim to come from.
+/// The PNG of `figure`, rasterized from its SVG as `render` does.
+pub(super) fn draw_png(figure: &Figure) -> Result<Vec<u8>, super::PlotError> {
+    super::png(figure, &super::svg(figure)?)
+}
+
 pub(super) const SPEC: &[u8] = br#"{"id": "sample"}"#;
 
 pub(super) const RED: u32 = 0xDB2E2E;

@@ -1,7 +1,7 @@
 //! Figure → SVG and PNG bytes, drawn with plotters and the embedded DejaVu Sans face.
 //!
 //! Owns the page layout (figure title, panel grid, axes, ticks, legend), the automatic
-//! ranges ("PlotRange → All") and the in-memory PNG encoding. It must not compute curves,
+//! ranges ("PlotRange → All"), the rasterization and the in-memory PNG encoding. It must not compute curves,
 //! decide what to plot, or touch the file system: callers hand it a finished [`Figure`] and
 //! write the returned bytes themselves.
 //!
@@ -9,11 +9,10 @@
 //! axes box with back panes, depth-sorted translucent surface meshes and 3D lines, using the
 //! camera geometry of [`super::plot3d`].
 //!
-//! Both formats share one drawing routine, parameterised by a device scale `k` (device pixels
-//! per CSS pixel): the SVG is drawn at `k = SVG_UNITS_PER_PX` and then given a `viewBox` that
-//! maps it back to the canvas size, so that coordinates and line widths keep sub-pixel precision
-//! although plotters works in integer device units; the PNG is drawn on the same grid (a whole
-//! multiple of `png_scale`, at least `SVG_UNITS_PER_PX`) and box-filtered down to `png_scale`.
+//! There is one drawing: the SVG, drawn at `SVG_UNITS_PER_PX` device units per CSS pixel and
+//! given a `viewBox` that maps it back to the canvas size, so that coordinates and line widths
+//! keep sub-pixel precision although plotters works in integer device units. The PNG is that SVG
+//! rasterized (resvg), as the PDF is that SVG converted, so the three formats cannot disagree.
 //!
 //! This file holds the entry points and the page layout; each drawing job has its own file:
 //! [`axis`] (ranges, ticks, tick labels), [`clip`] (curves cut to the visible box),
@@ -45,7 +44,7 @@ use crate::figure::{Figure, Panel};
 use crate::layout::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
 use crate::look::PanelKind;
 use cartesian::{Needs, Shared, draw_cartesian, draw_cartesian_shared};
-use encode::{MAX_DEVICE_PIXELS, device_size, downsample, encode_png, finish_svg};
+use encode::{device_size, encode_png, finish_svg, rasterize};
 use lint::Recorder;
 pub use lint::lint;
 use polar::draw_polar;
@@ -118,41 +117,14 @@ pub fn svg(figure: &Figure) -> Result<Vec<u8>, PlotError> {
     Ok(finish_svg(&document, canvas, (width, height), &figure.provenance).into_bytes())
 }
 
-/// Renders `figure` as a PNG of (width_px·png_scale) × (height_px·png_scale) pixels.
-///
-/// Drawn [`supersampling`] times larger on each side and box-filtered down, so that curve
-/// vertices and edges keep sub-pixel positions. 8-bit RGB, tagged sRGB, no time stamp:
-/// identical figures give identical bytes. The figure's provenance is in `tEXt` chunks
-/// (`Software`, `ndfplot-version`, `spec-sha256`).
-pub fn png(figure: &Figure) -> Result<Vec<u8>, PlotError> {
-    let scale = figure.canvas.png_scale;
-    let (width, height) = device_size(&figure.canvas, scale)?;
-    let factor = supersampling(scale, (width, height));
-    let drawn = (width * factor, height * factor);
-    let mut rgb = vec![0u8; drawn.0 as usize * drawn.1 as usize * 3];
-    {
-        let root = BitMapBackend::with_buffer(&mut rgb, drawn).into_drawing_area();
-        draw_figure(&root, figure, scale * f64::from(factor), None)?;
-    }
-    encode_png(
-        &downsample(rgb, drawn, factor),
-        (width, height),
-        &figure.provenance,
-    )
-}
-
-/// How many times larger on each side a PNG of `(width, height)` pixels at `scale` pixels per
-/// CSS pixel is drawn: the least whole factor that reaches [`SVG_UNITS_PER_PX`] device units per
-/// CSS pixel, so that the raster snaps vertices to the SVG's grid (2 at the default scale of 2,
-/// where whole output pixels would move a vertex by up to 0.7 px and kink a curve at every
-/// vertex), smaller while the drawn raster would exceed [`MAX_DEVICE_PIXELS`].
-fn supersampling(scale: f64, (width, height): (u32, u32)) -> u32 {
-    let pixels = u64::from(width) * u64::from(height);
-    let wanted = (SVG_UNITS_PER_PX / scale).ceil().max(1.0) as u64;
-    (1..=wanted)
-        .rev()
-        .find(|f| pixels * f * f <= MAX_DEVICE_PIXELS)
-        .unwrap_or(1) as u32
+/// The PNG of `figure` from its drawn SVG `svg` (what [`svg`] returned for it): the same drawing
+/// rasterized at (width_px·png_scale) × (height_px·png_scale) pixels, anti-aliased, with text
+/// from the embedded face. 8-bit RGB, tagged sRGB, no time stamp: identical figures give
+/// identical bytes. The figure's provenance is in `tEXt` chunks (`Software`, `ndfplot-version`,
+/// `spec-sha256`).
+pub fn png(figure: &Figure, svg: &[u8]) -> Result<Vec<u8>, PlotError> {
+    let (rgb, size) = rasterize(svg, &figure.canvas)?;
+    encode_png(&rgb, size, &figure.provenance)
 }
 
 /// SVG device units per CSS pixel: plotters draws on an integer grid, so 4 gives 0.25 px
@@ -401,7 +373,7 @@ mod tests {
     use crate::figure::Series;
     use crate::look::{Dash, Mark, PanelKind, Theme, XUnit, YScale};
     use crate::output::plot::fixtures::{
-        BLACK, BLUE, ORANGE, RED, SPEC, STEEL, decode, figure, fresnel_sample, in_3d,
+        BLACK, BLUE, ORANGE, RED, SPEC, STEEL, decode, draw_png, figure, fresnel_sample, in_3d,
         manifold_edge, manifold_grid, marked, panel, polylines_in, sample, sampled, series,
         surface_kind, xy, zs,
     };
@@ -422,12 +394,12 @@ mod tests {
             "10⁰",
             "90°",
         ] {
-            assert!(svg.contains(&format!("\n{label}\n</text>")), "{label}");
+            assert!(svg.contains(&format!(">{label}</text>")), "{label}");
         }
         // `α_b = 0.4` is typeset: α, a smaller b, then the rest, with no markup left.
         assert!(!svg.contains("α_b"));
         for run in ["α", "b", " = 0.4"] {
-            assert!(svg.contains(&format!("\n{run}\n</text>")), "{run}");
+            assert!(svg.contains(&format!(">{run}</text>")), "{run}");
         }
         let families = svg.matches("font-family=").count();
         assert!(families > 10);
@@ -448,7 +420,7 @@ mod tests {
             Some(format!("<metadata>{}</metadata>", record.words().join(" ")).as_str())
         );
         roxmltree::Document::parse(&svg).expect("still well-formed XML");
-        let bytes = png(&figure).unwrap();
+        let bytes = draw_png(&figure).unwrap();
         let reader = png::Decoder::new(bytes.as_slice()).read_info().unwrap();
         let text: Vec<(&str, &str)> = reader
             .info()
@@ -482,18 +454,8 @@ mod tests {
     }
 
     #[test]
-    fn pngs_are_drawn_on_the_svg_grid_within_the_pixel_cap() {
-        assert_eq!(supersampling(2.0, (1920, 960)), 2);
-        assert_eq!(supersampling(1.0, (960, 480)), 4);
-        assert_eq!(supersampling(3.0, (960, 480)), 2);
-        assert_eq!(supersampling(4.0, (960, 480)), 1);
-        // 6000 × 6000 px: 2 × 2 would exceed the cap.
-        assert_eq!(supersampling(2.0, (6000, 6000)), 1);
-    }
-
-    #[test]
     fn png_has_the_scaled_size_and_shows_the_curves() {
-        let (width, height, pixels) = decode(&png(&sample()).unwrap());
+        let (width, height, pixels) = decode(&draw_png(&sample()).unwrap());
         assert_eq!((width, height), (800, 500));
         let has = |[r, g, b]: [u8; 3]| pixels.chunks_exact(3).any(|p| p == [r, g, b]);
         assert!(has([0xC7, 0x6A, 0x00]) && has([0x26, 0x89, 0xD1]) && has([0xDB, 0x2E, 0x2E]));
@@ -502,10 +464,10 @@ mod tests {
     #[test]
     fn renders_are_byte_identical_across_runs_and_threads() {
         let figure = sample();
-        let (svg0, png0) = (svg(&figure).unwrap(), png(&figure).unwrap());
+        let (svg0, png0) = (svg(&figure).unwrap(), draw_png(&figure).unwrap());
         std::thread::scope(|scope| {
             let runs: Vec<_> = (0..3)
-                .map(|_| scope.spawn(|| (svg(&figure).unwrap(), png(&figure).unwrap())))
+                .map(|_| scope.spawn(|| (svg(&figure).unwrap(), draw_png(&figure).unwrap())))
                 .collect();
             for run in runs {
                 let (svg1, png1) = run.join().unwrap();
@@ -554,7 +516,7 @@ mod tests {
         ];
         for figure in &figures {
             svg(figure).unwrap();
-            let (width, height, _) = decode(&png(figure).unwrap());
+            let (width, height, _) = decode(&draw_png(figure).unwrap());
             assert_eq!((width, height), (800, 500));
         }
     }
@@ -565,7 +527,7 @@ mod tests {
             theme: Theme::Dark,
             ..sample()
         };
-        let (width, _, pixels) = decode(&png(&dark).unwrap());
+        let (width, _, pixels) = decode(&draw_png(&dark).unwrap());
         assert_eq!(pixels[..3], [0x16, 0x18, 0x1C], "top-left corner");
         let last = pixels.len() - 3;
         assert_eq!(pixels[last..], [0x16, 0x18, 0x1C], "bottom-right corner");
@@ -597,12 +559,25 @@ mod tests {
     fn unusable_canvases_and_grids_are_errors() {
         let mut figure = sample();
         figure.canvas.png_scale = 0.0;
-        assert!(matches!(png(&figure), Err(PlotError::Canvas { .. })));
+        assert!(matches!(draw_png(&figure), Err(PlotError::Canvas { .. })));
         figure.canvas.png_scale = f64::NAN;
-        assert!(matches!(png(&figure), Err(PlotError::Canvas { .. })));
+        assert!(matches!(draw_png(&figure), Err(PlotError::Canvas { .. })));
         let mut figure = sample();
         figure.canvas.width_px = 0;
         assert!(matches!(svg(&figure), Err(PlotError::Canvas { .. })));
+        // The raster cap is the one validation enforces; the SVG has none.
+        let mut figure = sample();
+        (figure.canvas.width_px, figure.canvas.height_px) = (8193, 8192);
+        figure.canvas.png_scale = 1.0;
+        assert!(crate::scene::check_canvas(&figure.canvas).is_err());
+        assert!(matches!(
+            encode::png_size(&figure.canvas),
+            Err(PlotError::Canvas { .. })
+        ));
+        assert!(svg(&figure).is_ok());
+        figure.canvas.width_px = 8192;
+        assert!(crate::scene::check_canvas(&figure.canvas).is_ok());
+        assert_eq!(encode::png_size(&figure.canvas).unwrap(), (8192, 8192));
         let mut figure = sample();
         figure.cols = 1;
         assert!(matches!(svg(&figure), Err(PlotError::Layout { .. })));
@@ -626,10 +601,10 @@ mod tests {
             "g = 1",
             "15",
         ] {
-            assert!(svg.contains(&format!("\n{label}\n</text>")), "{label}");
+            assert!(svg.contains(&format!(">{label}</text>")), "{label}");
         }
         // Whole-number ticks on the index axis.
-        assert!(!svg.contains("\n2.5\n</text>"));
+        assert!(!svg.contains(">2.5</text>"));
         // 2500 scatter dots, 20 line dots and 1 legend dot; 361 mesh cells and 1 legend patch.
         let steel = format!(r##"fill="#{STEEL:06X}""##);
         let dots = svg
@@ -654,7 +629,7 @@ mod tests {
         // The 3D lines: one polyline each, plus a legend sample.
         assert_eq!(polylines_in(&svg, BLACK), 2 + 2);
 
-        let (width, height, pixels) = decode(&png(&figure).unwrap());
+        let (width, height, pixels) = decode(&draw_png(&figure).unwrap());
         assert_eq!((width, height), (2700, 900));
         let has = |[r, g, b]: [u8; 3]| pixels.chunks_exact(3).any(|p| p == [r, g, b]);
         assert!(has([0x1F, 0x77, 0xB4]) && has([0xC7, 0x6A, 0x00]) && has([0, 0, 0]));
@@ -663,10 +638,10 @@ mod tests {
     #[test]
     fn new_marks_and_surfaces_render_identically_across_threads() {
         let figure = fresnel_sample();
-        let (svg0, png0) = (svg(&figure).unwrap(), png(&figure).unwrap());
+        let (svg0, png0) = (svg(&figure).unwrap(), draw_png(&figure).unwrap());
         std::thread::scope(|scope| {
             let runs: Vec<_> = (0..2)
-                .map(|_| scope.spawn(|| (svg(&figure).unwrap(), png(&figure).unwrap())))
+                .map(|_| scope.spawn(|| (svg(&figure).unwrap(), draw_png(&figure).unwrap())))
                 .collect();
             for run in runs {
                 let (svg1, png1) = run.join().unwrap();
@@ -749,7 +724,7 @@ mod tests {
         ];
         for figure in &figures {
             svg(figure).unwrap();
-            let (width, height, _) = decode(&png(figure).unwrap());
+            let (width, height, _) = decode(&draw_png(figure).unwrap());
             assert_eq!((width, height), (800, 500));
         }
     }
@@ -765,7 +740,7 @@ mod tests {
         p.axes.kind = surface_kind(None);
         let missing = figure(vec![p.clone()]);
         assert!(matches!(svg(&missing), Err(PlotError::Series { label, .. }) if label == "no z"));
-        assert!(matches!(png(&missing), Err(PlotError::Series { .. })));
+        assert!(matches!(draw_png(&missing), Err(PlotError::Series { .. })));
         p.series[0] = in_3d(p.series[0].clone(), zs(&grid), Some((3, 4)));
         assert!(matches!(
             svg(&figure(vec![p.clone()])),
@@ -783,7 +758,7 @@ mod tests {
     fn legend_boxes(svg: &roxmltree::Document) -> Vec<[f64; 4]> {
         let number = |node: &roxmltree::Node, key| node.attribute(key).unwrap().parse().unwrap();
         svg.descendants()
-            .filter(|n| n.has_tag_name("rect") && n.attribute("opacity") == Some("0.85"))
+            .filter(|n| n.has_tag_name("rect") && n.attribute("fill-opacity") == Some("0.85"))
             .map(|n| ["x", "y", "width", "height"].map(|key| number(&n, key)))
             .collect()
     }

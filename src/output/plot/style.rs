@@ -253,10 +253,10 @@ mod tests {
         };
         for (pattern, (on, off)) in [(Pattern::Dashed, DASHED), (Pattern::Dotted, DOTTED)] {
             let draw = |ours: bool| {
-                let mut pixels = vec![0u8; 700 * 300 * 3];
+                let mut document = String::new();
                 {
                     let root =
-                        BitMapBackend::with_buffer(&mut pixels, (700, 300)).into_drawing_area();
+                        SVGBackend::with_string(&mut document, (700, 300)).into_drawing_area();
                     let area = root.margin(37, 0, 91, 0);
                     if ours {
                         stroke(&area, path.clone(), style, pattern).unwrap();
@@ -266,7 +266,7 @@ mod tests {
                         area.draw(&dashed).unwrap();
                     }
                 }
-                pixels
+                document
             };
             assert!(draw(true) == draw(false), "{pattern:?}");
         }

@@ -1,0 +1,50 @@
+//! The drawn SVG read back as a usvg tree, for the outputs converted from it (PNG and PDF).
+//!
+//! Owns the font database of those conversions: the embedded DejaVu Sans face only, also
+//! answering for the generic families, so text is laid out the same on a machine with no fonts.
+
+use std::sync::{Arc, OnceLock};
+
+use usvg::fontdb;
+
+/// Family that the SVG names first and that every generic family resolves to.
+const FAMILY: &str = "DejaVu Sans";
+
+/// The usvg tree of `svg` (a document as [`super::plot::svg`] writes it), its text set in the
+/// embedded face.
+pub fn parse(svg: &[u8]) -> Result<usvg::Tree, usvg::Error> {
+    let options = usvg::Options {
+        font_family: FAMILY.to_owned(),
+        fontdb: Arc::clone(font_database()),
+        ..usvg::Options::default()
+    };
+    usvg::Tree::from_data(svg, &options)
+}
+
+/// The font database of every conversion: the embedded DejaVu Sans face only, built once per
+/// process.
+fn font_database() -> &'static Arc<fontdb::Database> {
+    static DATABASE: OnceLock<Arc<fontdb::Database>> = OnceLock::new();
+    DATABASE.get_or_init(|| {
+        let mut database = fontdb::Database::new();
+        database.load_font_data(dejavu::sans::regular().to_vec());
+        database.set_sans_serif_family(FAMILY);
+        database.set_serif_family(FAMILY);
+        database.set_monospace_family(FAMILY);
+        database.set_cursive_family(FAMILY);
+        database.set_fantasy_family(FAMILY);
+        Arc::new(database)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fonts_come_from_the_embedded_face_only() {
+        let faces: Vec<_> = font_database().faces().collect();
+        assert_eq!(faces.len(), 1, "no system font is ever loaded");
+        assert_eq!(faces[0].families[0].0, FAMILY);
+    }
+}
