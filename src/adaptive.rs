@@ -14,7 +14,7 @@
 //! a third is 8/9 of the largest, so probes are held to 8/9 of the tolerance.
 
 use crate::layout;
-use crate::look::{PanelKind, XUnit, YScale};
+use crate::look::{PanelKind, XUnit, Scale};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
@@ -69,8 +69,10 @@ pub struct Frame {
     pub width_px: f64,
     /// Plot area height in output pixels.
     pub height_px: f64,
+    /// x scale of a cartesian panel, applied to θ or tan θ (linear on a polar panel).
+    pub x_scale: Scale,
     /// y scale of the panel (the radius scale of a polar panel).
-    pub y_scale: YScale,
+    pub y_scale: Scale,
     /// Given y range, `None` = automatic from the data.
     pub y_range: Option<(f64, f64)>,
     /// Tolerance in output pixels.
@@ -90,8 +92,8 @@ impl Frame {
         font_px: f64,
         titled: bool,
         scale: f64,
-        (theta_range, geometry): ((f64, f64), Geometry),
-        (y_scale, y_range): (YScale, Option<(f64, f64)>),
+        (theta_range, geometry, x_scale): ((f64, f64), Geometry, Scale),
+        (y_scale, y_range): (Scale, Option<(f64, f64)>),
         tolerance_px: f64,
     ) -> Frame {
         let (width_px, height_px) =
@@ -100,6 +102,7 @@ impl Frame {
             theta_range,
             width_px,
             height_px,
+            x_scale,
             y_scale,
             y_range,
             tolerance_px,
@@ -108,7 +111,7 @@ impl Frame {
     }
 
     /// The pixel map once the panel's data `extent` is known (ignored for a given range). The
-    /// displayed range is the plot writer's: [`YScale::range`], or [`YScale::radial_range`] for a
+    /// displayed range is the plot writer's: [`Scale::range`], or [`Scale::radial_range`] for a
     /// polar panel, whose radius range fills the largest half-disc of the plot area that shows
     /// the θ range either side of the normal.
     pub fn map(&self, extent: Option<Extent>) -> PixelMap {
@@ -118,22 +121,21 @@ impl Frame {
             Geometry::Angle | Geometry::Slope => self.y_scale.range(self.y_range, data),
         };
         let (a, b) = self.theta_range;
-        let x_span = |lo: f64, hi: f64| (hi - lo).max(f64::MIN_POSITIVE);
+        let cartesian = |tan: bool| {
+            let axis = Axis {
+                tan,
+                log: self.x_scale == Scale::Log,
+            };
+            let (lo, hi) = (axis.x(a), axis.x(b));
+            XMap::Cartesian {
+                axis,
+                lo,
+                px_per: self.width_px / (hi - lo).max(f64::MIN_POSITIVE),
+            }
+        };
         let (x, y_px) = match self.geometry {
-            Geometry::Angle => (
-                XMap::Linear {
-                    lo: a,
-                    px_per: self.width_px / x_span(a, b),
-                },
-                self.height_px,
-            ),
-            Geometry::Slope => (
-                XMap::Tan {
-                    lo: a.tan(),
-                    px_per: self.width_px / x_span(a.tan(), b.tan()),
-                },
-                self.height_px,
-            ),
+            Geometry::Angle => (cartesian(false), self.height_px),
+            Geometry::Slope => (cartesian(true), self.height_px),
             Geometry::Polar => {
                 let half_width = b.clamp(0.0, std::f64::consts::FRAC_PI_2).sin();
                 let radius =
@@ -146,18 +148,37 @@ impl Frame {
             y_lo,
             y_hi,
             px_per_y: y_px / (y_hi - y_lo),
-            log: self.y_scale == YScale::Log,
+            log: self.y_scale == Scale::Log,
         }
+    }
+}
+
+/// The displayed x of a cartesian panel as a function of θ: θ or tan θ, then log₁₀ on a log axis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Axis {
+    tan: bool,
+    log: bool,
+}
+
+impl Axis {
+    /// The displayed x of θ (up to the unit's constant factor, which the pixel scale absorbs).
+    fn x(self, theta: f64) -> f64 {
+        let x = if self.tan { theta.tan() } else { theta };
+        if self.log { x.log10() } else { x }
+    }
+
+    /// The θ of a displayed x: the inverse of [`Axis::x`].
+    fn theta(self, x: f64) -> f64 {
+        let x = if self.log { 10f64.powf(x) } else { x };
+        if self.tan { x.atan() } else { x }
     }
 }
 
 /// How θ becomes a pixel coordinate.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum XMap {
-    /// x = (θ − lo) · px_per.
-    Linear { lo: f64, px_per: f64 },
-    /// x = (tan θ − lo) · px_per.
-    Tan { lo: f64, px_per: f64 },
+    /// x = (axis.x(θ) − lo) · px_per.
+    Cartesian { axis: Axis, lo: f64, px_per: f64 },
     /// The y pixel distance is a radius, turned by θ from the vertical.
     Polar,
 }
@@ -178,8 +199,7 @@ impl PixelMap {
     pub fn px(&self, theta: f64, v: f64) -> (f64, f64) {
         let y_px = self.y_px(v);
         match self.x {
-            XMap::Linear { lo, px_per } => ((theta - lo) * px_per, y_px),
-            XMap::Tan { lo, px_per } => ((theta.tan() - lo) * px_per, y_px),
+            XMap::Cartesian { axis, lo, px_per } => ((axis.x(theta) - lo) * px_per, y_px),
             XMap::Polar => {
                 let (sin, cos) = theta.sin_cos();
                 (y_px * sin, y_px * cos)
@@ -222,7 +242,7 @@ impl PixelMap {
                 let unrolled = |(theta, v): (f64, f64)| (rim * theta, self.y_px(v));
                 drawn.max(distance_to_segment(unrolled(p), unrolled(a), unrolled(b)))
             }
-            XMap::Linear { .. } | XMap::Tan { .. } => drawn,
+            XMap::Cartesian { .. } => drawn,
         }
     }
 
@@ -230,21 +250,21 @@ impl PixelMap {
     /// x distance, or on a polar panel the arc between them at the rim.
     fn reach_px(&self, a: f64, b: f64) -> f64 {
         match self.x {
-            XMap::Linear { px_per, .. } => (b - a).abs() * px_per,
-            XMap::Tan { px_per, .. } => (b.tan() - a.tan()).abs() * px_per,
+            XMap::Cartesian { axis, px_per, .. } => (axis.x(b) - axis.x(a)).abs() * px_per,
             XMap::Polar => (b - a).abs() * (self.y_hi - self.y_lo) * self.px_per_y,
         }
     }
 
-    /// The θ at a third and two thirds of the way from `a` to `b` along the x axis (in tan θ on a
-    /// slope axis, in θ otherwise), where [`THIRD_TO_MAX`] holds.
+    /// The θ at a third and two thirds of the way from `a` to `b` along the x axis (in the
+    /// displayed x of a cartesian panel: tan θ on a slope axis, log₁₀ on a log axis; in θ on a
+    /// polar panel), where [`THIRD_TO_MAX`] holds.
     fn thirds(&self, a: f64, b: f64) -> [f64; 2] {
         match self.x {
-            XMap::Tan { .. } => {
-                let (ta, tb) = (a.tan(), b.tan());
-                [(2.0 * ta + tb) / 3.0, (ta + 2.0 * tb) / 3.0].map(f64::atan)
+            XMap::Cartesian { axis, .. } => {
+                let (xa, xb) = (axis.x(a), axis.x(b));
+                [(2.0 * xa + xb) / 3.0, (xa + 2.0 * xb) / 3.0].map(|x| axis.theta(x))
             }
-            XMap::Linear { .. } | XMap::Polar => [(2.0 * a + b) / 3.0, (a + 2.0 * b) / 3.0],
+            XMap::Polar => [(2.0 * a + b) / 3.0, (a + 2.0 * b) / 3.0],
         }
     }
 }
@@ -394,13 +414,13 @@ pub struct Extent {
 }
 
 impl Extent {
-    /// The extent in display units of `scale` ([`YScale::display`]): (min, max) on a linear
+    /// The extent in display units of `scale` ([`Scale::display`]): (min, max) on a linear
     /// scale, the logarithms of the least positive value and the maximum on a log scale;
     /// `None` when no value can be displayed.
-    pub fn display(&self, scale: YScale) -> Option<(f64, f64)> {
+    pub fn display(&self, scale: Scale) -> Option<(f64, f64)> {
         match scale {
-            YScale::Linear => Some((self.min, self.max)),
-            YScale::Log => Some((scale.display(self.min_positive?)?, scale.display(self.max)?)),
+            Scale::Linear => Some((self.min, self.max)),
+            Scale::Log => Some((scale.display(self.min_positive?)?, scale.display(self.max)?)),
         }
     }
 }
@@ -482,7 +502,8 @@ mod tests {
             theta_range: (0.0, std::f64::consts::FRAC_PI_2),
             width_px: 400.0,
             height_px: 250.0,
-            y_scale: YScale::Linear,
+            x_scale: Scale::Linear,
+            y_scale: Scale::Linear,
             y_range,
             tolerance_px: 0.25,
             geometry: Geometry::Angle,
@@ -583,9 +604,39 @@ mod tests {
     }
 
     #[test]
+    fn log_x_maps_place_decades_evenly_and_keep_the_tolerance() {
+        // θ from 10⁻³ to 1: three decades over 400 px.
+        let log_theta = Frame {
+            x_scale: Scale::Log,
+            theta_range: (1e-3, 1.0),
+            ..frame(Some((0.0, 1.0)))
+        };
+        let map = log_theta.map(None);
+        for (theta, x) in [(1e-3, 0.0), (1e-2, 400.0 / 3.0), (1.0, 400.0)] {
+            assert!((map.px(theta, 0.5).0 - x).abs() < 1e-9, "θ = {theta}");
+        }
+        let [a, b] = map.thirds(1e-3, 1.0);
+        assert!((a - 1e-2).abs() < 1e-15 && (b - 1e-1).abs() < 1e-14);
+        // tan θ from 10⁻² to 10²: x = 100 px per decade.
+        let log_slope = Frame {
+            geometry: Geometry::Slope,
+            x_scale: Scale::Log,
+            theta_range: (1e-2f64.atan(), 1e2f64.atan()),
+            ..frame(Some((0.0, 1.0)))
+        };
+        let (x, _) = log_slope.map(None).px(1.0f64.atan(), 0.5);
+        assert!((x - 200.0).abs() < 1e-9, "x linear in log₁₀ tan θ");
+        // A lobe whose features are spread over decades of θ is drawn within tolerance.
+        let lobe = |t: f64| 1.0 / (1.0 + (t / 0.003).powi(2));
+        let (error, points) = drawn_error(&lobe, &log_theta, &[]);
+        assert!(error <= 0.25 * 1.05, "{error} px, {points} points");
+        assert!(points < 2000, "{points} points");
+    }
+
+    #[test]
     fn a_narrow_lobe_is_drawn_within_tolerance_in_polar_and_slope_panels() {
         let lobe = |t: f64| (-(t / 0.01).powi(2)).exp();
-        for (y_scale, y_range) in [(YScale::Linear, None), (YScale::Log, Some((1e-4, 1.0)))] {
+        for (y_scale, y_range) in [(Scale::Linear, None), (Scale::Log, Some((1e-4, 1.0)))] {
             let polar = Frame {
                 geometry: Geometry::Polar,
                 y_scale,
@@ -615,9 +666,10 @@ mod tests {
         let points = [(0.0, 0.0), (0.5, 1e-3), (1.0, 20.0)];
         let e = extent([points.as_slice()]).unwrap();
         assert_eq!(e.min_positive, Some(1e-3));
-        assert_eq!(e.display(YScale::Log), Some((-3.0, 20f64.log10())));
+        assert_eq!(e.display(Scale::Log), Some((-3.0, 20f64.log10())));
         let log = Frame {
-            y_scale: YScale::Log,
+            x_scale: Scale::Linear,
+            y_scale: Scale::Log,
             ..frame(None)
         };
         let map = log.map(Some(e));

@@ -6,7 +6,7 @@
 //! [`Row`]s into a CSV and a figure). Timings are never part of the catalogue or of `render --check`.
 
 use crate::adaptive::{self, Frame, PixelMap};
-use crate::look::YScale;
+use crate::look::Scale;
 use crate::math::quad::integrate;
 use crate::math::special::upper_gamma_scaled;
 use crate::math::tolerance::floored_relative_difference;
@@ -162,7 +162,8 @@ fn drawing_map(ndf: &Ndf) -> (Frame, PixelMap) {
         theta_range: (0.0, FRAC_PI_2),
         width_px: DRAWING_AREA_PX.0,
         height_px: DRAWING_AREA_PX.1,
-        y_scale: YScale::Linear,
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
         y_range: None,
         tolerance_px: DRAWING_TOLERANCE_PX,
         geometry: adaptive::Geometry::Angle,

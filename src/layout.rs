@@ -7,7 +7,7 @@
 //! what the drawing measures with real text metrics: a larger plot area would only make the
 //! sampling tolerance stricter. It computes geometry only; it evaluates and draws nothing.
 
-use crate::look::YScale;
+use crate::look::Scale;
 
 /// Default panel height / width: 1/φ, Mathematica's default `AspectRatio`.
 pub const DEFAULT_ASPECT_RATIO: f64 = 0.618_033_988_749_894_9;
@@ -81,13 +81,13 @@ pub const AUTO_MARGIN: f64 = 0.05;
 /// maximum: deeper tails would squeeze the lobe into a ring near the rim.
 pub const POLAR_DECADES: f64 = 4.0;
 
-impl YScale {
+impl Scale {
     /// `v` in display units: `v` on a linear scale, log₁₀ `v` on a log scale; `None` when it
     /// cannot be drawn (not finite, or ≤ 0 on a log scale).
     pub fn display(self, v: f64) -> Option<f64> {
         match self {
-            YScale::Linear => v.is_finite().then_some(v),
-            YScale::Log => (v > 0.0 && v.is_finite()).then(|| v.log10()),
+            Scale::Linear => v.is_finite().then_some(v),
+            Scale::Log => (v > 0.0 && v.is_finite()).then(|| v.log10()),
         }
     }
 
@@ -101,7 +101,7 @@ impl YScale {
     pub fn range(self, given: Option<(f64, f64)>, extent: Option<(f64, f64)>) -> (f64, f64) {
         match (self, self.shown(given)) {
             (_, Some((lo, hi))) => widen_if_flat(lo, hi),
-            (YScale::Linear, None) => {
+            (Scale::Linear, None) => {
                 let Some((lo, hi)) = extent else {
                     return (0.0, 1.0);
                 };
@@ -110,7 +110,7 @@ impl YScale {
                 let lo = if lo == 0.0 { 0.0 } else { lo - margin };
                 widen_if_flat(lo, hi + margin)
             }
-            (YScale::Log, None) => match extent {
+            (Scale::Log, None) => match extent {
                 Some((lo, hi)) => {
                     let (lo, hi) = (lo.floor(), hi.ceil());
                     (lo, hi.max(lo + 1.0))
@@ -121,12 +121,12 @@ impl YScale {
     }
 
     /// The radial range of a polar panel in display units: the centre's value to the rim's.
-    /// As [`YScale::range`], except that an automatic log range starts at most
+    /// As [`Scale::range`], except that an automatic log range starts at most
     /// [`POLAR_DECADES`] below the decade of the maximum (values below it sit at the centre).
     pub fn radial_range(self, given: Option<(f64, f64)>, extent: Option<(f64, f64)>) -> (f64, f64) {
         let (lo, hi) = self.range(given, extent);
         match (self, self.shown(given), extent) {
-            (YScale::Log, None, Some((_, max))) => (lo.max(max.floor() - POLAR_DECADES), hi),
+            (Scale::Log, None, Some((_, max))) => (lo.max(max.floor() - POLAR_DECADES), hi),
             _ => (lo, hi),
         }
     }
@@ -155,42 +155,42 @@ mod tests {
 
     #[test]
     fn automatic_ranges_follow_the_plot_range_rule() {
-        let (lo, hi) = YScale::Linear.range(None, Some((1.0, 3.0)));
+        let (lo, hi) = Scale::Linear.range(None, Some((1.0, 3.0)));
         assert!(
             lo == 0.0 && (hi - 3.15).abs() < 1e-12,
             "margin of the span from 0"
         );
-        let (lo, hi) = YScale::Linear.range(None, Some((-1.0, 1.0)));
+        let (lo, hi) = Scale::Linear.range(None, Some((-1.0, 1.0)));
         assert!((lo + 1.1).abs() < 1e-12 && (hi - 1.1).abs() < 1e-12);
-        assert_eq!(YScale::Linear.range(None, Some((0.0, 0.0))), (-1.0, 1.0));
-        assert_eq!(YScale::Linear.range(Some((2.0, 1.0)), None), (1.0, 2.0));
-        assert_eq!(YScale::Log.range(None, Some((-2.7, 1.2))), (-3.0, 2.0));
-        assert_eq!(YScale::Log.range(None, Some((1.0, 1.0))), (1.0, 2.0));
+        assert_eq!(Scale::Linear.range(None, Some((0.0, 0.0))), (-1.0, 1.0));
+        assert_eq!(Scale::Linear.range(Some((2.0, 1.0)), None), (1.0, 2.0));
+        assert_eq!(Scale::Log.range(None, Some((-2.7, 1.2))), (-3.0, 2.0));
+        assert_eq!(Scale::Log.range(None, Some((1.0, 1.0))), (1.0, 2.0));
         assert_eq!(
-            YScale::Log.range(Some((0.0, 10.0)), None),
+            Scale::Log.range(Some((0.0, 10.0)), None),
             (0.0, 1.0),
             "0 has no log"
         );
-        assert_eq!(YScale::Log.range(Some((1e-3, 10.0)), None), (-3.0, 1.0));
+        assert_eq!(Scale::Log.range(Some((1e-3, 10.0)), None), (-3.0, 1.0));
     }
 
     #[test]
     fn polar_log_radii_reach_at_most_four_decades_below_the_peak() {
         assert_eq!(
-            YScale::Log.radial_range(None, Some((-9.0, 1.2))),
+            Scale::Log.radial_range(None, Some((-9.0, 1.2))),
             (-3.0, 2.0)
         );
         assert_eq!(
-            YScale::Log.radial_range(None, Some((-1.5, 1.2))),
+            Scale::Log.radial_range(None, Some((-1.5, 1.2))),
             (-2.0, 2.0)
         );
         assert_eq!(
-            YScale::Log.radial_range(Some((1e-6, 10.0)), Some((-9.0, 1.2))),
+            Scale::Log.radial_range(Some((1e-6, 10.0)), Some((-9.0, 1.2))),
             (-6.0, 1.0)
         );
         assert_eq!(
-            YScale::Linear.radial_range(None, Some((0.0, 2.0))),
-            YScale::Linear.range(None, Some((0.0, 2.0)))
+            Scale::Linear.radial_range(None, Some((0.0, 2.0))),
+            Scale::Linear.range(None, Some((0.0, 2.0)))
         );
     }
 }

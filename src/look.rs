@@ -190,12 +190,12 @@ pub enum PanelKind {
     },
 }
 
-/// Scale of the y axis.
+/// Scale of an axis.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum YScale {
-    /// Linear y.
+pub enum Scale {
+    /// Linear.
     Linear,
-    /// Base-10 logarithmic y (non-positive values are not drawn).
+    /// Base-10 logarithmic (non-positive values are not drawn).
     Log,
 }
 
@@ -255,10 +255,13 @@ pub struct Axes {
     pub y_label: String,
     /// What the x axis shows: θ in a display unit, or a plain quantity.
     pub x_unit: XUnit,
+    /// Scale of the x axis, applied to the displayed value (θ in its unit, tan θ, or the plain
+    /// quantity): logarithmic only on 2D panels.
+    pub x_scale: Scale,
     /// 2D, or 3D with its z axis and view.
     pub kind: PanelKind,
     /// Scale of the y axis.
-    pub y_scale: YScale,
+    pub y_scale: Scale,
     /// Displayed x range (radians on θ axes, within [0, π/2]); `None` = automatic.
     pub x_range: Option<(f64, f64)>,
     /// Displayed y range; `None` = automatic, every point visible (PlotRange → All).
@@ -314,12 +317,13 @@ impl Axes {
     /// The axes of a 2D panel with these labels, unit and scale, and every other choice automatic:
     /// no title, ranges showing every point, the legend at its best place, grid lines, ticks from
     /// the locator.
-    pub fn cartesian(x_label: &str, y_label: &str, x_unit: XUnit, y_scale: YScale) -> Axes {
+    pub fn cartesian(x_label: &str, y_label: &str, x_unit: XUnit, y_scale: Scale) -> Axes {
         Axes {
             title: String::new(),
             x_label: x_label.to_owned(),
             y_label: y_label.to_owned(),
             x_unit,
+            x_scale: Scale::Linear,
             kind: PanelKind::Cartesian,
             y_scale,
             x_range: None,

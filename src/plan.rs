@@ -223,6 +223,7 @@ fn frame(scene: &Scene, panel: &ScenePanel, tolerance_px: f64) -> Frame {
         (
             panel.axes.theta_range(),
             Geometry::of(&panel.axes.kind, panel.axes.x_unit),
+            panel.axes.x_scale,
         ),
         (panel.axes.y_scale, panel.axes.y_range),
         tolerance_px,

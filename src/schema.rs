@@ -148,7 +148,7 @@ fn panel_key(key: &str) -> Value {
 fn axis_key(key: &str) -> Value {
     match key {
         "unit" => strings(scene::X_UNITS),
-        "scale" => strings(scene::Y_SCALES),
+        "scale" => strings(scene::SCALES),
         "range" => interval(),
         "label" => json!({ "type": "string" }),
         "ticks" => json!({ "anyOf": [

@@ -8,7 +8,7 @@ use crate::bench::{self, Row};
 use crate::error::{Error, Result};
 use crate::figure::{Figure, Panel, Series};
 use crate::look::{
-    Axes, Canvas, Dash, Mark, Rgb, Style, Theme, TickChoice, XUnit, YScale, literal, shade,
+    Axes, Canvas, Dash, Mark, Rgb, Style, Theme, TickChoice, XUnit, Scale, literal, shade,
 };
 use crate::ndf::Family;
 use crate::output::{plot, write};
@@ -78,7 +78,7 @@ fn panel(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Pane
     Panel {
         axes: Axes {
             title: title.into(),
-            ..Axes::cartesian(x_label, y_label, XUnit::Plain, YScale::Log)
+            ..Axes::cartesian(x_label, y_label, XUnit::Plain, Scale::Log)
         },
         series,
     }
@@ -228,7 +228,7 @@ pub fn figure(rows: &[Row]) -> Figure {
         "M samples/s",
         throughput,
     );
-    speed.axes.y_scale = YScale::Linear;
+    speed.axes.y_scale = Scale::Linear;
     speed.axes.x_ticks = Some(TickChoice::At(
         (1..=Family::ALL.len()).map(|k| k as f64).collect(),
     ));

@@ -14,7 +14,7 @@ mod samples;
 use crate::curve::Curve;
 use crate::dyadic;
 use crate::fresnel::{Fresnel, Ior};
-use crate::look::{Dash, XUnit, YScale};
+use crate::look::{Dash, XUnit, Scale};
 use crate::sample::Evaluated;
 use crate::scene::interactive::Interactive;
 use crate::scene::{Scene, SceneCurve};
@@ -88,7 +88,7 @@ pub fn page(
         "log_step": samples::LOG_STEP,
         "log_decades": dyadic::LOG_DECADES,
         "precision": PRECISION,
-        "y_scale": if panel.axes.y_scale == YScale::Log { "log" } else { "linear" },
+        "y_scale": if panel.axes.y_scale == Scale::Log { "log" } else { "linear" },
         "y_range": panel.axes.y_range.map(|(a, b)| [a, b]),
         "width": scene.canvas.width_px,
         "height": scene.canvas.height_px,

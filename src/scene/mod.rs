@@ -21,7 +21,7 @@ use crate::json::{Node, Value};
 use crate::layout;
 use crate::look::{
     Axes, Canvas, Corner, Dash, LegendPlace, Mark, PanelKind, Rgb, Style, Theme, TickChoice, XUnit,
-    YScale, shade,
+    Scale, shade,
 };
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::transform::Transform;
@@ -89,7 +89,7 @@ pub const PANEL_TRANSFORMS: &[&str] = &["projected", "slope"];
 /// The slope range (tan θ) a slope axis shows when its `range` is not given.
 pub const DEFAULT_SLOPE_RANGE: (f64, f64) = (0.0, 4.0);
 /// Keys of a panel's `x` axis.
-pub const X_KEYS: &[&str] = &["unit", "range", "label", "ticks"];
+pub const X_KEYS: &[&str] = &["unit", "scale", "range", "label", "ticks"];
 /// Units of an `x` axis.
 pub const X_UNITS: &[&str] = &["radians", "degrees", "slope", "plain"];
 /// Keys of a surface panel's `z` axis.
@@ -99,7 +99,7 @@ pub const CAMERA_KEYS: &[&str] = &["elevation", "azimuth"];
 /// Keys of a panel's `y` axis.
 pub const Y_KEYS: &[&str] = &["scale", "range", "label", "ticks"];
 /// Scales of a `y` axis.
-pub const Y_SCALES: &[&str] = &["linear", "log"];
+pub const SCALES: &[&str] = &["linear", "log"];
 /// Keys of a scene curve beyond its model parameters.
 pub const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "label", "mark", "width"];
 /// Places a panel's `legend` may name, besides `true` and `false`.
@@ -370,7 +370,8 @@ pub fn theme_named(name: &str) -> Theme {
     }
 }
 
-/// Reports panels an interactive page cannot draw: its pages plot y against θ on cartesian axes.
+/// Reports panels an interactive page cannot draw: its pages plot y against θ on cartesian axes,
+/// x linear.
 fn check_interactive_views(reader: &mut Reader, panels: &[ScenePanel<Spec>]) {
     for (i, panel) in panels.iter().enumerate() {
         let path = join_index("panels", i);
@@ -384,6 +385,12 @@ fn check_interactive_views(reader: &mut Reader, panels: &[ScenePanel<Spec>]) {
             reader.report(
                 join_key(&join_key(&path, "x"), "unit"),
                 "interactive pages draw θ axes (got \"slope\", expected radians or degrees)",
+            );
+        }
+        if panel.axes.x_scale == Scale::Log {
+            reader.report(
+                join_key(&join_key(&path, "x"), "scale"),
+                "interactive pages draw linear x axes (got \"log\", expected \"linear\")",
             );
         }
     }
@@ -616,11 +623,15 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
         .get("y")
         .and_then(|n| reader.object(n, &y_path, Y_KEYS));
     // Read before the series, whose problems end the panel, so that all of them are reported.
-    let y_scale = match y.and_then(|y| reader.choice(&y, "scale", Y_SCALES)) {
-        Some("log") => YScale::Log,
-        _ => YScale::Linear,
+    let y_scale = match y.and_then(|y| reader.choice(&y, "scale", SCALES)) {
+        Some("log") => Scale::Log,
+        _ => Scale::Linear,
     };
-    let x_ticks = x.and_then(|x| read_ticks(reader, &x, None));
+    let x_scale = match x.and_then(|x| reader.choice(&x, "scale", SCALES)) {
+        Some("log") => Scale::Log,
+        _ => Scale::Linear,
+    };
+    let x_ticks = x.and_then(|x| read_ticks(reader, &x, Some(x_scale)));
     let y_ticks = y.and_then(|y| read_ticks(reader, &y, Some(y_scale)));
     let mut series = read_series(reader, &panel)?;
     let transform = read_transform(reader, &panel, &mut series.curves);
@@ -640,12 +651,18 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
             "curves of θ need an angle axis (got unit \"plain\", expected radians, degrees or slope)",
         );
     }
-    let x_range = read_x_range(reader, x.as_ref(), x_unit);
+    let x_range = read_x_range(reader, x.as_ref(), x_unit, x_scale);
     let y_range = y.and_then(|y| match y_scale {
-        YScale::Log => reader.interval(&y, "range", |v| v > 0.0, "both > 0 on a log axis"),
-        YScale::Linear => reader.interval(&y, "range", f64::is_finite, "finite"),
+        Scale::Log => reader.interval(&y, "range", |v| v > 0.0, "both > 0 on a log axis"),
+        Scale::Linear => reader.interval(&y, "range", f64::is_finite, "finite"),
     });
     let kind = read_kind(reader, &panel, &series, x_unit)?;
+    if x_scale == Scale::Log && kind != PanelKind::Cartesian {
+        reader.report(
+            join_key(&x_path, "scale"),
+            "a log x axis is drawn on cartesian panels only (got \"log\" on a polar or surface panel, expected \"linear\")",
+        );
+    }
     let (default_x_label, default_y_label) = match (series.curves.first(), series.data.first()) {
         (Some(first), _) => default_curve_labels(first, x_unit, transform),
         (None, Some(first)) => data::default_labels(&first.dataset),
@@ -661,6 +678,7 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
                 .and_then(|y| reader.text(&y, "label"))
                 .unwrap_or(default_y_label),
             x_unit,
+            x_scale,
             kind,
             y_scale,
             x_range,
@@ -701,7 +719,7 @@ fn read_legend(reader: &mut Reader, panel: &reader::Object) -> LegendPlace {
 fn read_ticks(
     reader: &mut Reader,
     axis: &reader::Object,
-    scale: Option<YScale>,
+    scale: Option<Scale>,
 ) -> Option<TickChoice> {
     let node = axis.get("ticks")?;
     let path = axis.path_of("ticks");
@@ -712,7 +730,7 @@ fn read_ticks(
             Some(TickChoice::Count(n.value as usize))
         }
         Value::Array(items) if !items.is_empty() => {
-            let log = scale == Some(YScale::Log);
+            let log = scale == Some(Scale::Log);
             let mut values = Vec::with_capacity(items.len());
             for (i, item) in items.iter().enumerate() {
                 match &item.value {
@@ -785,41 +803,46 @@ fn read_x_range(
     reader: &mut Reader,
     x: Option<&reader::Object>,
     unit: XUnit,
+    scale: Scale,
 ) -> Option<(f64, f64)> {
-    match unit {
-        XUnit::Degrees => x
-            .and_then(|x| {
-                reader.interval(
-                    x,
-                    "range",
-                    |v| (0.0..=90.0).contains(&v),
-                    "degrees within [0, 90]",
-                )
-            })
-            .map(|(a, b)| (a.to_radians(), b.to_radians().min(FRAC_PI_2))),
-        XUnit::Radians => x.and_then(|x| {
-            reader.interval(
-                x,
-                "range",
-                |v| (0.0..=FRAC_PI_2).contains(&v),
-                "radians within [0, π/2]",
-            )
-        }),
-        XUnit::Slope => {
-            let slopes = x
-                .and_then(|x| {
-                    reader.interval(
-                        x,
-                        "range",
-                        |v| v.is_finite() && v >= 0.0,
-                        "slopes tan θ, finite and ≥ 0",
-                    )
-                })
-                .unwrap_or(DEFAULT_SLOPE_RANGE);
-            Some((slopes.0.atan(), slopes.1.atan()))
-        }
-        XUnit::Plain => x.and_then(|x| reader.interval(x, "range", f64::is_finite, "finite")),
+    let log = scale == Scale::Log;
+    // A log axis shows no 0: its range must start above it.
+    let above = |low: f64| move |v: f64| if log { v > low } else { v >= low };
+    let range = |reader: &mut Reader, test: &dyn Fn(f64) -> bool, expected: &str| {
+        x.and_then(|x| reader.interval(x, "range", test, expected))
+    };
+    let given = match unit {
+        XUnit::Degrees => range(
+            reader,
+            &|v| above(0.0)(v) && v <= 90.0,
+            if log { "degrees within (0, 90] on a log axis" } else { "degrees within [0, 90]" },
+        )
+        .map(|(a, b)| (a.to_radians(), b.to_radians().min(FRAC_PI_2))),
+        XUnit::Radians => range(
+            reader,
+            &|v| above(0.0)(v) && v <= FRAC_PI_2,
+            if log { "radians within (0, π/2] on a log axis" } else { "radians within [0, π/2]" },
+        ),
+        XUnit::Slope => range(
+            reader,
+            &|v| v.is_finite() && above(0.0)(v),
+            if log { "slopes tan θ, finite and > 0 on a log axis" } else { "slopes tan θ, finite and ≥ 0" },
+        )
+        .or((!log).then_some(DEFAULT_SLOPE_RANGE))
+        .map(|(a, b)| (a.atan(), b.atan())),
+        XUnit::Plain => range(
+            reader,
+            &|v| v.is_finite() && (!log || v > 0.0),
+            if log { "finite and > 0 on a log axis" } else { "finite" },
+        ),
+    };
+    if let Some(x) = x.filter(|x| log && unit != XUnit::Plain && x.get("range").is_none()) {
+        reader.report(
+            x.path_of("scale"),
+            "a log θ axis needs a range above 0 (got none, expected e.g. \"range\": [0.001, 1.5707963267948966] in the axis' unit)",
+        );
     }
+    given
 }
 
 /// Default axis labels of a panel whose first series is `first`, a curve of θ.

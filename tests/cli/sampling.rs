@@ -5,7 +5,7 @@
 use crate::common::scratch;
 use ndfplot::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
 use ndfplot::figure::Figure;
-use ndfplot::look::{Dash, PanelKind, Rgb, XUnit, YScale};
+use ndfplot::look::{Dash, PanelKind, Rgb, XUnit, Scale};
 use ndfplot::ndf::Family;
 use ndfplot::output::Format;
 use ndfplot::plan::{Job, Outputs, plan};
@@ -21,7 +21,8 @@ fn frame() -> Frame {
         theta_range: (0.0, FRAC_PI_2),
         width_px: 600.0,
         height_px: 370.0,
-        y_scale: YScale::Linear,
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
         y_range: None,
         tolerance_px: 0.25,
         geometry: adaptive::Geometry::Angle,
@@ -393,8 +394,8 @@ fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
     };
     // The panel's map from (θ, value) to SVG units, fitted to the drawn vertices.
     let y_display = |v: f64| match panel.axes.y_scale {
-        YScale::Linear => v,
-        YScale::Log => v.log10(),
+        Scale::Linear => v,
+        Scale::Log => v.log10(),
     };
     let place: Box<dyn Fn(f64, f64) -> (f64, f64)> = if polar {
         let floor = panel

@@ -161,7 +161,7 @@ fn every_key_table_equals_the_schema_properties() {
     );
     assert_eq!(
         enum_of(&def(&schema, "y_axis")["properties"]["scale"]),
-        set(scene::Y_SCALES.iter().copied())
+        set(scene::SCALES.iter().copied())
     );
     let curve = def(&schema, &signature_def("scene_curve", models()[0], 0));
     assert_eq!(

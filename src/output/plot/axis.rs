@@ -9,7 +9,7 @@ use plotters::prelude::*;
 
 use crate::figure::{Panel, Series};
 
-use crate::look::{Mark, TickChoice, XUnit, YScale};
+use crate::look::{Axes, Mark, Scale, TickChoice, XUnit};
 
 use crate::layout::{AUTO_MARGIN, widen_if_flat};
 
@@ -40,13 +40,14 @@ impl Axis {
     /// half a bar spacing when bars are drawn). Plain axes whose x values are all whole
     /// numbers (indices) tick at whole numbers.
     pub(super) fn x(panel: &Panel, max_ticks: f64) -> Axis {
-        let unit = panel.axes.x_unit;
+        let axes = &panel.axes;
+        let unit = axes.x_unit;
         let data = || {
             panel
                 .series
                 .iter()
                 .flat_map(|s| s.points.iter())
-                .filter_map(move |&(theta, _)| x_display(theta, unit))
+                .filter_map(move |&(theta, _)| x_display(theta, axes))
         };
         let automatic = || match extent(data()) {
             None => default_x(unit),
@@ -55,7 +56,7 @@ impl Axis {
                     .series
                     .iter()
                     .filter(|s| s.style.mark == Mark::Bars)
-                    .filter_map(|s| median_spacing(s, unit))
+                    .filter_map(|s| median_spacing(s, axes))
                     .fold(0.0, f64::max)
                     / 2.0;
                 let pad = (AUTO_MARGIN * (hi - lo)).max(half_bar);
@@ -66,7 +67,7 @@ impl Axis {
         let given = panel
             .axes
             .x_range
-            .and_then(|(a, b)| Some((x_display(a, unit)?, x_display(b, unit)?)));
+            .and_then(|(a, b)| Some((x_display(a, axes)?, x_display(b, axes)?)));
         let (lo, hi) = match given {
             Some((a, b)) => (a.min(b), a.max(b)),
             // tan θ is unbounded: the data's extent would reach 10¹⁶ at θ = π/2.
@@ -76,7 +77,10 @@ impl Axis {
         let (lo, hi) = widen_if_flat(lo, hi);
         let suffix = if unit == XUnit::Degrees { "°" } else { "" };
         if let Some(choice) = &panel.axes.x_ticks {
-            return Axis::from_ticks(lo, hi, chosen(choice, YScale::Linear, (lo, hi), suffix));
+            return Axis::from_ticks(lo, hi, chosen(choice, axes.x_scale, (lo, hi), suffix));
+        }
+        if axes.x_scale == Scale::Log {
+            return Axis::from_ticks(lo, hi, ticks::log(lo, hi, max_ticks));
         }
         let whole = unit == XUnit::Plain && data().all(|v| v.fract() == 0.0);
         let ticks = match unit {
@@ -114,10 +118,10 @@ impl Axis {
     }
 
     /// The value axis of `panel`, with at most about `max_ticks` ticks, over
-    /// [`YScale::range`]. An automatic linear range includes 0 when bars are drawn.
+    /// [`Scale::range`]. An automatic linear range includes 0 when bars are drawn.
     pub(super) fn y(panel: &Panel, max_ticks: f64) -> Axis {
         let bars = panel.series.iter().any(|s| s.style.mark == Mark::Bars);
-        let base = (bars && panel.axes.y_scale == YScale::Linear).then_some(0.0);
+        let base = (bars && panel.axes.y_scale == Scale::Linear).then_some(0.0);
         let data = extent(values(panel).chain(base));
         let range = panel.axes.y_scale.range(panel.axes.y_range, data);
         match &panel.axes.y_ticks {
@@ -131,7 +135,7 @@ impl Axis {
     }
 
     /// The radius axis of a polar panel, with at most about `max_ticks` ticks, over
-    /// [`YScale::radial_range`]: the centre is its low end, the rim its high end.
+    /// [`Scale::radial_range`]: the centre is its low end, the rim its high end.
     pub(super) fn radius(panel: &Panel, max_ticks: f64) -> Axis {
         let range = panel
             .axes
@@ -142,16 +146,16 @@ impl Axis {
 
     /// An axis of values on `scale` over `(lo, hi)` (display units): [`ticks::linear`] or
     /// [`ticks::log`] ticks.
-    fn values(scale: YScale, (lo, hi): (f64, f64), max_ticks: f64) -> Axis {
+    fn values(scale: Scale, (lo, hi): (f64, f64), max_ticks: f64) -> Axis {
         let ticks = match scale {
-            YScale::Linear => ticks::linear(lo, hi, max_ticks, &ticks::NICE_MANTISSAS, ""),
-            YScale::Log => ticks::log(lo, hi, max_ticks),
+            Scale::Linear => ticks::linear(lo, hi, max_ticks, &ticks::NICE_MANTISSAS, ""),
+            Scale::Log => ticks::log(lo, hi, max_ticks),
         };
         Axis::from_ticks(lo, hi, ticks)
     }
 
     /// The z axis of a surface panel: `given` or the extent of the series' z values, as a
-    /// linear [`YScale::range`].
+    /// linear [`Scale::range`].
     pub(super) fn z(panel: &Panel, given: Option<(f64, f64)>, max_ticks: f64) -> Axis {
         let data = panel
             .series
@@ -160,8 +164,8 @@ impl Axis {
             .flatten()
             .copied()
             .filter(|v| v.is_finite());
-        let range = YScale::Linear.range(given, extent(data));
-        Axis::values(YScale::Linear, range, max_ticks)
+        let range = Scale::Linear.range(given, extent(data));
+        Axis::values(Scale::Linear, range, max_ticks)
     }
 
     /// The label of tick `v` (one of `ticks`); empty for any other value.
@@ -174,15 +178,16 @@ impl Axis {
 }
 
 /// The ticks a spec chose for an axis over `(lo, hi)` (display units) on `scale`: at most `n` nice
-/// ticks for a count, or the given values inside the range (a log axis labels them as written).
-fn chosen(choice: &TickChoice, scale: YScale, (lo, hi): (f64, f64), suffix: &str) -> Ticks {
+/// ticks for a count, or the given values inside the range (on a log axis labelled as its own
+/// ticks are when they are m × 10ᵏ).
+fn chosen(choice: &TickChoice, scale: Scale, (lo, hi): (f64, f64), suffix: &str) -> Ticks {
     match (choice, scale) {
-        (TickChoice::Count(n), YScale::Linear) => {
+        (TickChoice::Count(n), Scale::Linear) => {
             let step = ticks::nice_step(lo, hi, *n, &ticks::NICE_MANTISSAS);
             ticks::labelled(ticks::multiples(lo, hi, step), step, suffix)
         }
-        (TickChoice::Count(n), YScale::Log) => ticks::log(lo, hi, *n as f64),
-        (TickChoice::At(values), YScale::Linear) => {
+        (TickChoice::Count(n), Scale::Log) => ticks::log(lo, hi, *n as f64),
+        (TickChoice::At(values), Scale::Linear) => {
             let inside: Vec<f64> = values
                 .iter()
                 .copied()
@@ -194,7 +199,7 @@ fn chosen(choice: &TickChoice, scale: YScale, (lo, hi): (f64, f64), suffix: &str
                 .fold(hi - lo, f64::min);
             ticks::labelled(inside, step, suffix)
         }
-        (TickChoice::At(values), YScale::Log) => {
+        (TickChoice::At(values), Scale::Log) => {
             let inside: Vec<f64> = values
                 .iter()
                 .copied()
@@ -202,7 +207,7 @@ fn chosen(choice: &TickChoice, scale: YScale, (lo, hi): (f64, f64), suffix: &str
                 .collect();
             Ticks {
                 major: inside.iter().map(|v| v.log10()).collect(),
-                labels: inside.iter().map(|&v| crate::curve::pretty(v)).collect(),
+                labels: ticks::given_log_labels(&inside),
                 minor: Vec::new(),
             }
         }
@@ -233,14 +238,15 @@ impl Ranged for Axis {
     }
 }
 
-/// θ (radians) in display units, if finite.
-pub(super) fn x_display(theta: f64, unit: XUnit) -> Option<f64> {
-    let x = match unit {
+/// θ (radians; the plain value on a plain axis) in the display units of `axes`: in its unit
+/// (degrees, tan θ), then log₁₀ on a log axis; `None` when it cannot be drawn.
+pub(super) fn x_display(theta: f64, axes: &Axes) -> Option<f64> {
+    let x = match axes.x_unit {
         XUnit::Degrees => theta.to_degrees(),
         XUnit::Slope => theta.tan(),
         XUnit::Radians | XUnit::Plain => theta,
     };
-    x.is_finite().then_some(x)
+    axes.x_scale.display(x)
 }
 
 /// The x range shown when a panel has no data: 0 to π/2; a slope axis' range when none is
@@ -272,11 +278,11 @@ pub(super) fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
 }
 
 /// The median gap between the distinct x values of `series` (display units), if it has two.
-pub(super) fn median_spacing(series: &Series, unit: XUnit) -> Option<f64> {
+pub(super) fn median_spacing(series: &Series, axes: &Axes) -> Option<f64> {
     let mut xs: Vec<f64> = series
         .points
         .iter()
-        .filter_map(|&(theta, _)| x_display(theta, unit))
+        .filter_map(|&(theta, _)| x_display(theta, axes))
         .collect();
     xs.sort_by(f64::total_cmp);
     let mut gaps: Vec<f64> = xs
@@ -297,11 +303,29 @@ mod tests {
 
     #[test]
     fn degree_axes_tick_at_angles() {
-        let axis = Axis::x(&panel(XUnit::Degrees, YScale::Linear, vec![]), 10.0);
+        let axis = Axis::x(&panel(XUnit::Degrees, Scale::Linear, vec![]), 10.0);
         assert_eq!(axis.ticks, [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 90.0]);
         assert_eq!(axis.label(45.0), "45°");
-        let narrow = Axis::x(&panel(XUnit::Degrees, YScale::Linear, vec![]), 4.0);
+        let narrow = Axis::x(&panel(XUnit::Degrees, Scale::Linear, vec![]), 4.0);
         assert_eq!(narrow.ticks, [0.0, 30.0, 60.0, 90.0]);
+    }
+
+    #[test]
+    fn log_x_axes_tick_at_decades_in_the_axis_unit() {
+        let curve = vec![series("s", RED, 1.0, Dash::Solid, vec![(1e-3, 1.0), (1.0, 0.1)])];
+        let mut p = panel(XUnit::Radians, Scale::Linear, curve);
+        p.axes.x_scale = Scale::Log;
+        p.axes.x_range = Some((1e-3, 1.0));
+        let axis = Axis::x(&p, 8.0);
+        assert!((axis.lo + 3.0).abs() < 1e-12 && axis.hi.abs() < 1e-12);
+        assert_eq!(axis.ticks, [-3.0, -2.0, -1.0, 0.0]);
+        assert_eq!(axis.labels, ["10⁻³", "10⁻²", "10⁻¹", "10⁰"]);
+        assert_eq!(axis.minor.len(), 3 * 8, "2…9 × 10ᵏ in each decade");
+        // θ = 0 cannot be drawn on it.
+        assert_eq!(x_display(0.0, &p.axes), None);
+        assert_eq!(x_display(0.1, &p.axes), Some(-1.0));
+        p.axes.x_unit = XUnit::Degrees;
+        assert!((x_display(10f64.to_radians(), &p.axes).unwrap() - 1.0).abs() < 1e-15);
     }
 
     #[test]
@@ -313,7 +337,7 @@ mod tests {
             Dash::Solid,
             vec![(0.0, 1.0), (1.5, 0.1)],
         )];
-        let mut p = panel(XUnit::Slope, YScale::Linear, curve);
+        let mut p = panel(XUnit::Slope, Scale::Linear, curve);
         let automatic = Axis::x(&p, 6.0);
         assert_eq!((automatic.lo, automatic.hi), (0.0, 4.0));
         assert_eq!(automatic.ticks, [0.0, 1.0, 2.0, 3.0, 4.0]);
@@ -334,7 +358,7 @@ mod tests {
                 .collect();
             vec![series("s", RED, 1.0, Dash::Solid, points)]
         };
-        let linear = |v: &[f64]| Axis::y(&panel(XUnit::Radians, YScale::Linear, values(v)), 8.0);
+        let linear = |v: &[f64]| Axis::y(&panel(XUnit::Radians, Scale::Linear, values(v)), 8.0);
         let positive = linear(&[1.0, 3.0, 2.0]);
         assert_eq!(positive.lo, 0.0);
         assert!((positive.hi - 3.0 * (1.0 + AUTO_MARGIN)).abs() < 1e-12);
@@ -346,7 +370,7 @@ mod tests {
         assert!(zero.lo < 0.0 && zero.hi > 0.0);
 
         let log = Axis::y(
-            &panel(XUnit::Radians, YScale::Log, values(&[0.0, 2e-3, 40.0])),
+            &panel(XUnit::Radians, Scale::Log, values(&[0.0, 2e-3, 40.0])),
             8.0,
         );
         assert_eq!((log.lo, log.hi), (-3.0, 2.0));

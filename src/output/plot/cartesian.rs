@@ -16,7 +16,7 @@ use super::{PlotError, draw_err, outline};
 use crate::figure::{Panel, Series};
 use crate::layout::AXIS_LABEL_EM;
 use crate::layout::DEFAULT_ASPECT_RATIO;
-use crate::look::{LegendPlace, Mark, YScale};
+use crate::look::{LegendPlace, Mark, Scale};
 
 /// Bar width as a fraction of the median spacing of a series' x values.
 pub(super) const BAR_FRACTION: f64 = 0.6;
@@ -557,7 +557,7 @@ pub(super) fn visible_points(
         .points
         .iter()
         .filter_map(|&(theta, v)| {
-            x_display(theta, panel.axes.x_unit).zip(panel.axes.y_scale.display(v))
+            x_display(theta, &panel.axes).zip(panel.axes.y_scale.display(v))
         })
         .filter(|&(vx, vy)| (x.lo..=x.hi).contains(&vx) && (y.lo..=y.hi).contains(&vy))
         .collect()
@@ -571,17 +571,17 @@ pub(super) fn visible_bars(
     x: &Axis,
     y: &Axis,
 ) -> Vec<[(f64, f64); 2]> {
-    let width = median_spacing(series, panel.axes.x_unit)
+    let width = median_spacing(series, &panel.axes)
         .map_or(LONE_BAR_FRACTION * (x.hi - x.lo), |gap| BAR_FRACTION * gap);
     let base = match panel.axes.y_scale {
-        YScale::Linear => 0.0f64.clamp(y.lo, y.hi),
-        YScale::Log => y.lo,
+        Scale::Linear => 0.0f64.clamp(y.lo, y.hi),
+        Scale::Log => y.lo,
     };
     series
         .points
         .iter()
         .filter_map(|&(theta, v)| {
-            x_display(theta, panel.axes.x_unit).zip(panel.axes.y_scale.display(v))
+            x_display(theta, &panel.axes).zip(panel.axes.y_scale.display(v))
         })
         .filter_map(|(centre, top)| {
             let (x0, x1) = (
@@ -607,7 +607,7 @@ mod tests {
             series("s", RED, 1.0, Dash::Solid, points),
             Mark::Bars,
         )];
-        let axis = Axis::x(&panel(XUnit::Plain, YScale::Linear, bars), 12.0);
+        let axis = Axis::x(&panel(XUnit::Plain, Scale::Linear, bars), 12.0);
         assert!((axis.lo + 0.95).abs() < 1e-12 && (axis.hi - 19.95).abs() < 1e-12);
         assert_eq!(axis.ticks, [0.0, 5.0, 10.0, 15.0]);
         assert_eq!(axis.label(5.0), "5");
@@ -615,7 +615,7 @@ mod tests {
             series("s", RED, 1.0, Dash::Solid, vec![(1.0, 1.0), (2.0, -1.0)]),
             Mark::Bars,
         )];
-        let p = panel(XUnit::Plain, YScale::Linear, two);
+        let p = panel(XUnit::Plain, Scale::Linear, two);
         let (x, y) = (Axis::x(&p, 8.0), Axis::y(&p, 8.0));
         assert_eq!((x.lo, x.hi), (0.5, 2.5));
         assert!(y.lo < -1.0 && y.hi > 0.0);

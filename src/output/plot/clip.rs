@@ -15,7 +15,7 @@ pub(super) fn visible_pieces(
     let points = series
         .points
         .iter()
-        .map(|&(theta, v)| x_display(theta, panel.axes.x_unit).zip(panel.axes.y_scale.display(v)));
+        .map(|&(theta, v)| x_display(theta, &panel.axes).zip(panel.axes.y_scale.display(v)));
     pieces(points, [x.lo, x.hi, y.lo, y.hi])
 }
 
@@ -118,7 +118,7 @@ pub(super) fn clip(a: (f64, f64), b: (f64, f64), [x0, x1, y0, y1]: [f64; 4]) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::look::{Dash, XUnit, YScale};
+    use crate::look::{Dash, XUnit, Scale};
     use crate::output::plot::fixtures::{RED, panel, series};
 
     #[test]
@@ -132,7 +132,7 @@ mod tests {
             (0.5, 2.0),
         ];
         let s = series("s", RED, 1.0, Dash::Solid, points);
-        let mut p = panel(XUnit::Radians, YScale::Log, vec![s.clone()]);
+        let mut p = panel(XUnit::Radians, Scale::Log, vec![s.clone()]);
         p.axes.y_range = Some((0.5, 10.0));
         let (x, y) = (Axis::x(&p, 8.0), Axis::y(&p, 8.0));
         let pieces = visible_pieces(&s, &p, &x, &y);

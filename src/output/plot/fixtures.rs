@@ -5,7 +5,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
 use crate::figure::{Figure, Panel, Series};
-use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, YScale};
+use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, Scale};
 use crate::provenance::Provenance;
 
 /// The spec text the test figures claim to come from.
@@ -69,7 +69,7 @@ fn beckmann(alpha_b: f64) -> Vec<(f64, f64)> {
     })
 }
 
-pub(super) fn panel(x_unit: XUnit, y_scale: YScale, series: Vec<Series>) -> Panel {
+pub(super) fn panel(x_unit: XUnit, y_scale: Scale, series: Vec<Series>) -> Panel {
     Panel {
         axes: Axes::cartesian("θ", "D(θ)", x_unit, y_scale),
         series,
@@ -98,7 +98,7 @@ pub(super) fn figure(panels: Vec<Panel>) -> Figure {
 pub(super) fn sample() -> Figure {
     let mut log = panel(
         XUnit::Radians,
-        YScale::Log,
+        Scale::Log,
         vec![
             series("α_b = 0.4", RED, 1.0, Dash::Dashed, beckmann(0.4)),
             series("α_b = 0.8", BLUE, 1.0, Dash::Solid, beckmann(0.8)),
@@ -108,7 +108,7 @@ pub(super) fn sample() -> Figure {
     let schlick = |f0: f64| sampled(move |theta| f0 + (1.0 - f0) * (1.0 - theta.cos()).powi(5));
     let mut fresnel = panel(
         XUnit::Degrees,
-        YScale::Linear,
+        Scale::Linear,
         vec![
             series("F₀ = 0.04", ORANGE, 2.0, Dash::Solid, schlick(0.04)),
             series("F₀ = 0.5", RED, 1.0, Dash::Dotted, schlick(0.5)),
@@ -194,7 +194,7 @@ pub(super) fn fresnel_sample() -> Figure {
         .collect();
     let mut spectrum = panel(
         XUnit::Plain,
-        YScale::Linear,
+        Scale::Linear,
         vec![
             marked(series("sₖ / Σs", STEEL, 1.0, Dash::Solid, bars), Mark::Bars),
             marked(
@@ -218,7 +218,7 @@ pub(super) fn fresnel_sample() -> Figure {
     let conductor = manifold_edge(1.0);
     let mut scatter = panel(
         XUnit::Plain,
-        YScale::Linear,
+        Scale::Linear,
         vec![
             marked(
                 series("", STEEL, 1.0, Dash::Solid, xy(&manifold_grid(50))),
@@ -237,7 +237,7 @@ pub(super) fn fresnel_sample() -> Figure {
     let grid = manifold_grid(20);
     let mut surface = panel(
         XUnit::Plain,
-        YScale::Linear,
+        Scale::Linear,
         vec![
             in_3d(
                 series("manifold", STEEL, 1.0, Dash::Solid, xy(&grid)),
@@ -308,8 +308,8 @@ pub(super) fn polar_sample() -> Figure {
         series("α_p = 100", ORANGE, 1.0, Dash::Solid, phong(100.0)),
     ];
     let mut figure = figure(vec![
-        polar("Beckmann", XUnit::Degrees, YScale::Linear, beckmann),
-        polar("Phong, log radius", XUnit::Radians, YScale::Log, phong),
+        polar("Beckmann", XUnit::Degrees, Scale::Linear, beckmann),
+        polar("Phong, log radius", XUnit::Radians, Scale::Log, phong),
     ]);
     figure.title = "Lobes in the plane of incidence".to_owned();
     figure.canvas.width_px = 900;

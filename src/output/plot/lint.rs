@@ -203,7 +203,7 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::look::{Dash, XUnit, YScale};
+    use crate::look::{Dash, XUnit, Scale};
     use crate::output::plot::fixtures::{RED, figure, panel, sample, series};
 
     #[test]
@@ -234,8 +234,8 @@ mod tests {
     fn each_rule_is_reported() {
         let line = |label: &str| series(label, RED, 1.0, Dash::Solid, vec![(0.0, 1.0), (1.0, 2.0)]);
         let mut twin = figure(vec![
-            panel(XUnit::Radians, YScale::Linear, vec![line("a"), line("a")]),
-            panel(XUnit::Radians, YScale::Linear, vec![line("b")]),
+            panel(XUnit::Radians, Scale::Linear, vec![line("a"), line("a")]),
+            panel(XUnit::Radians, Scale::Linear, vec![line("b")]),
         ]);
         (twin.rows, twin.cols) = (1, 2);
         let text = |label: &str, rect: Rect| DrawnText {

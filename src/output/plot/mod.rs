@@ -371,7 +371,7 @@ where
 mod tests {
     use super::*;
     use crate::figure::Series;
-    use crate::look::{Dash, Mark, PanelKind, Theme, XUnit, YScale};
+    use crate::look::{Dash, Mark, PanelKind, Theme, XUnit, Scale};
     use crate::output::plot::fixtures::{
         BLACK, BLUE, ORANGE, RED, SPEC, STEEL, decode, draw_png, figure, fresnel_sample, in_3d,
         manifold_edge, manifold_grid, marked, panel, polylines_in, sample, sampled, series,
@@ -483,34 +483,34 @@ mod tests {
         let zeros = series("zero", RED, 1.0, Dash::Solid, sampled(|_| 0.0));
         let nan = series("nan", RED, 1.0, Dash::Dotted, sampled(|_| f64::NAN));
         let empty = series("", RED, 1.0, Dash::Solid, Vec::new());
-        let mut clipped = panel(XUnit::Degrees, YScale::Linear, vec![flat.clone()]);
+        let mut clipped = panel(XUnit::Degrees, Scale::Linear, vec![flat.clone()]);
         clipped.axes.y_range = Some((0.5, 0.1));
         clipped.axes.x_range = Some((0.2, 0.2));
         let figures = [
             figure(vec![panel(
                 XUnit::Degrees,
-                YScale::Linear,
+                Scale::Linear,
                 vec![flat.clone()],
             )]),
-            figure(vec![panel(XUnit::Radians, YScale::Log, vec![flat])]),
+            figure(vec![panel(XUnit::Radians, Scale::Log, vec![flat])]),
             figure(vec![panel(
                 XUnit::Radians,
-                YScale::Linear,
+                Scale::Linear,
                 vec![single.clone()],
             )]),
-            figure(vec![panel(XUnit::Degrees, YScale::Log, vec![single])]),
+            figure(vec![panel(XUnit::Degrees, Scale::Log, vec![single])]),
             figure(vec![panel(
                 XUnit::Degrees,
-                YScale::Log,
+                Scale::Log,
                 vec![zeros.clone()],
             )]),
             figure(vec![panel(
                 XUnit::Radians,
-                YScale::Linear,
+                Scale::Linear,
                 vec![zeros, nan],
             )]),
-            figure(vec![panel(XUnit::Degrees, YScale::Log, vec![empty])]),
-            figure(vec![panel(XUnit::Degrees, YScale::Linear, Vec::new())]),
+            figure(vec![panel(XUnit::Degrees, Scale::Log, vec![empty])]),
+            figure(vec![panel(XUnit::Degrees, Scale::Linear, Vec::new())]),
             figure(vec![clipped]),
             figure(Vec::new()),
         ];
@@ -654,7 +654,7 @@ mod tests {
     fn degenerate_surfaces_and_marks_render() {
         let grid = manifold_grid(5);
         let surface = |series: Vec<Series>| {
-            let mut p = panel(XUnit::Plain, YScale::Linear, series);
+            let mut p = panel(XUnit::Plain, Scale::Linear, series);
             p.axes.kind = surface_kind(None);
             figure(vec![p])
         };
@@ -710,12 +710,12 @@ mod tests {
                 Some((2, 2)),
             )]),
             surface(Vec::new()),
-            figure(vec![panel(XUnit::Plain, YScale::Linear, vec![lone_bar])]),
-            figure(vec![panel(XUnit::Plain, YScale::Log, vec![log_bars])]),
-            figure(vec![panel(XUnit::Degrees, YScale::Linear, vec![nan_dots])]),
+            figure(vec![panel(XUnit::Plain, Scale::Linear, vec![lone_bar])]),
+            figure(vec![panel(XUnit::Plain, Scale::Log, vec![log_bars])]),
+            figure(vec![panel(XUnit::Degrees, Scale::Linear, vec![nan_dots])]),
             figure(vec![panel(
                 XUnit::Plain,
-                YScale::Linear,
+                Scale::Linear,
                 vec![marked(
                     series("none", RED, 1.0, Dash::Solid, Vec::new()),
                     Mark::Points,
@@ -734,7 +734,7 @@ mod tests {
         let grid = manifold_grid(4);
         let mut p = panel(
             XUnit::Plain,
-            YScale::Linear,
+            Scale::Linear,
             vec![series("no z", STEEL, 1.0, Dash::Solid, xy(&grid))],
         );
         p.axes.kind = surface_kind(None);
@@ -786,7 +786,7 @@ mod tests {
                 })
                 .collect()
         };
-        let cartesian = || panel(XUnit::Radians, YScale::Linear, sweep(10));
+        let cartesian = || panel(XUnit::Radians, Scale::Linear, sweep(10));
         let polar = || {
             let mut p = cartesian();
             p.axes.kind = PanelKind::Polar;

@@ -26,7 +26,7 @@ use super::theme::Look;
 use super::{PlotError, draw_err};
 use crate::figure::Panel;
 use crate::layout::AXIS_LABEL_EM;
-use crate::look::{Mark, XUnit, YScale};
+use crate::look::{Mark, XUnit, Scale};
 
 /// Angle steps tried for spokes and labels, in degrees, finest first.
 const ANGLE_STEPS_DEG: [f64; 4] = [15.0, 30.0, 45.0, 90.0];
@@ -360,7 +360,7 @@ fn theta_range(panel: &Panel) -> (f64, f64) {
 
 /// The radius coordinate of value `v` on `scale`: its display value, or `floor` (the centre)
 /// when it is below the floor or, on a log scale, ≤ 0; `None` when it is not finite.
-fn radial_value(v: f64, scale: YScale, floor: f64) -> Option<f64> {
+fn radial_value(v: f64, scale: Scale, floor: f64) -> Option<f64> {
     if !v.is_finite() {
         return None;
     }
@@ -439,7 +439,7 @@ mod tests {
     }
 
     /// A one-panel polar figure of `series`.
-    fn polar(series: Vec<Series>, y_scale: YScale, y_range: Option<(f64, f64)>) -> Figure {
+    fn polar(series: Vec<Series>, y_scale: Scale, y_range: Option<(f64, f64)>) -> Figure {
         let mut p = panel(XUnit::Degrees, y_scale, series);
         p.axes.kind = PanelKind::Polar;
         p.axes.y_range = y_range;
@@ -452,7 +452,7 @@ mod tests {
         // r = cos θ on a radius range [0, 1]: the peak touches the rim at the top.
         let lobe = series("cos", BLUE, 1.0, Dash::Solid, sampled(f64::cos));
         let text =
-            String::from_utf8(svg(&polar(vec![lobe], YScale::Linear, Some((0.0, 1.0)))).unwrap())
+            String::from_utf8(svg(&polar(vec![lobe], Scale::Linear, Some((0.0, 1.0)))).unwrap())
                 .unwrap();
         let curve = polylines(&text, BLUE);
         assert_eq!(curve.len(), 1, "one path through the normal");
@@ -480,7 +480,7 @@ mod tests {
         let baseline = first.1;
         let half = series("half", RED, 1.0, Dash::Solid, sampled(|_| 0.5));
         let half_text =
-            String::from_utf8(svg(&polar(vec![half], YScale::Linear, Some((0.0, 1.0)))).unwrap())
+            String::from_utf8(svg(&polar(vec![half], Scale::Linear, Some((0.0, 1.0)))).unwrap())
                 .unwrap();
         let arc = &polylines(&half_text, RED)[0];
         let radius = f64::from(baseline - top(arc).1);
@@ -504,9 +504,9 @@ mod tests {
         let p = polar_sample().panels[1].clone();
         let axis = Axis::radius(&p, 8.0);
         assert_eq!((axis.lo, axis.hi), (-3.0, 2.0));
-        assert_eq!(radial_value(0.0, YScale::Log, axis.lo), Some(-3.0));
-        assert_eq!(radial_value(1e-9, YScale::Log, axis.lo), Some(-3.0));
-        assert_eq!(radial_value(f64::NAN, YScale::Log, axis.lo), None);
+        assert_eq!(radial_value(0.0, Scale::Log, axis.lo), Some(-3.0));
+        assert_eq!(radial_value(1e-9, Scale::Log, axis.lo), Some(-3.0));
+        assert_eq!(radial_value(f64::NAN, Scale::Log, axis.lo), None);
     }
 
     #[test]
@@ -515,19 +515,19 @@ mod tests {
             series("bars", RED, 1.0, Dash::Solid, sampled(f64::cos)),
             Mark::Bars,
         );
-        let refused = svg(&polar(vec![bars], YScale::Linear, None));
+        let refused = svg(&polar(vec![bars], Scale::Linear, None));
         assert!(matches!(refused, Err(PlotError::Series { label, .. }) if label == "bars"));
         let dots = marked(
             series("dots", RED, 1.0, Dash::Dotted, sampled(f64::cos)),
             Mark::LinePoints,
         );
         let zeros = series("zeros", BLUE, 1.0, Dash::Solid, sampled(|_| 0.0));
-        let mut narrow = polar(vec![dots.clone()], YScale::Linear, None);
+        let mut narrow = polar(vec![dots.clone()], Scale::Linear, None);
         narrow.panels[0].axes.x_range = Some((0.2, 0.6));
         for figure in [
-            polar(vec![zeros.clone()], YScale::Log, None),
-            polar(vec![zeros, dots], YScale::Linear, Some((2.0, 3.0))),
-            polar(Vec::new(), YScale::Log, None),
+            polar(vec![zeros.clone()], Scale::Log, None),
+            polar(vec![zeros, dots], Scale::Linear, Some((2.0, 3.0))),
+            polar(Vec::new(), Scale::Log, None),
             narrow,
         ] {
             svg(&figure).unwrap();

@@ -145,7 +145,7 @@ where
                 .iter()
                 .zip(zs.iter())
                 .map(|(&(x, y), &z)| {
-                    let shown = x_display(x, panel.axes.x_unit).zip(panel.axes.y_scale.display(y));
+                    let shown = x_display(x, &panel.axes).zip(panel.axes.y_scale.display(y));
                     match shown {
                         Some((x, y)) if z.is_finite() => {
                             let v = [x, y, z];

@@ -213,7 +213,7 @@ fn lighten(colour: Rgb) -> Rgb {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::look::{XUnit, YScale};
+    use crate::look::{XUnit, Scale};
     use crate::output::plot::fixtures::{BLACK, BLUE, RED, figure, panel, sample, series};
 
     #[test]
@@ -232,7 +232,7 @@ mod tests {
         let line = |hex, dash| series("s", hex, 1.0, dash, vec![(0.0, 1.0), (1.0, 2.0)]);
         let first = panel(
             XUnit::Radians,
-            YScale::Linear,
+            Scale::Linear,
             vec![
                 line(RED, Dash::Solid),
                 line(BLUE, Dash::Solid),
@@ -241,7 +241,7 @@ mod tests {
         );
         let second = panel(
             XUnit::Radians,
-            YScale::Linear,
+            Scale::Linear,
             vec![line(BLUE, Dash::Solid), line(0x123456, Dash::Solid)],
         );
         let mut figure = figure(vec![first, second]);
@@ -262,7 +262,7 @@ mod tests {
     fn colour_blind_looks_are_distinct_for_the_first_32_colours() {
         let line = |hex| series("s", hex, 1.0, Dash::Solid, vec![(0.0, 1.0), (1.0, 2.0)]);
         let colours = (0..32u32).map(|k| line(0x010101 * (k + 1))).collect();
-        let mut figure = figure(vec![panel(XUnit::Radians, YScale::Linear, colours)]);
+        let mut figure = figure(vec![panel(XUnit::Radians, Scale::Linear, colours)]);
         figure.theme = Theme::ColourBlind;
         let looks = &looks(&figure)[0];
         for (i, a) in looks.iter().enumerate() {

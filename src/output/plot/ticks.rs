@@ -25,6 +25,8 @@ pub(super) const PLAIN_MIN: f64 = 1e-4;
 pub(super) const PLAIN_MAX: f64 = 1e5;
 /// Mantissas of "nice" linear steps.
 pub(super) const NICE_MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 5.0, 10.0];
+/// Most unlabelled decade lines on a log axis that labels every n-th decade.
+const MAX_DECADE_LINES: usize = 24;
 /// Mantissas of the strides between labelled decades (whole numbers of decades).
 const DECADE_STRIDES: [f64; 4] = [1.0, 2.0, 5.0, 10.0];
 /// Slack in units of the step when deciding whether a multiple lies inside a range.
@@ -151,6 +153,41 @@ fn plain(m: u32, k: i64) -> String {
     }
 }
 
+/// The labels of log ticks at `m × 10ᵏ` on an axis spanning `decades`, all in one format: plain
+/// decimals when fewer than [`FEW_DECADES`] show and every value lies within
+/// [`PLAIN_MIN`]…[`PLAIN_MAX`], powers of ten otherwise.
+fn log_labels(values: &[(u32, i64)], decades: f64) -> Vec<String> {
+    let all_plain = values.iter().all(|&(m, k)| {
+        let v = f64::from(m) * 10f64.powi(k as i32);
+        (PLAIN_MIN..=PLAIN_MAX).contains(&v)
+    });
+    let plain_labels = decades < FEW_DECADES && all_plain;
+    values
+        .iter()
+        .map(|&(m, k)| if plain_labels { plain(m, k) } else { scientific(m, k) })
+        .collect()
+}
+
+/// Labels for ticks a spec placed at `values` (> 0) on a log axis: in the format of [`log`]'s own
+/// labels for the decades the values span when every value is m × 10ᵏ with m ∈ 1…9 (to 1e-9),
+/// else each value in its shortest form.
+pub(super) fn given_log_labels(values: &[f64]) -> Vec<String> {
+    let decade_form = |v: f64| {
+        let k = v.log10().floor();
+        let m = v / 10f64.powf(k);
+        let whole = m.round();
+        ((m - whole).abs() < 1e-9 && (1.0..=9.0).contains(&whole)).then_some((whole as u32, k as i64))
+    };
+    match values.iter().map(|&v| decade_form(v)).collect::<Option<Vec<_>>>() {
+        Some(forms) => {
+            let decade = |pick: fn(i64, i64) -> i64| forms.iter().map(|f| f.1).reduce(pick);
+            let span = decade(i64::max).zip(decade(i64::min)).map_or(0, |(hi, lo)| hi - lo);
+            log_labels(&forms, span as f64)
+        }
+        None => values.iter().map(|&v| crate::curve::pretty(v)).collect(),
+    }
+}
+
 /// Log ticks over exponents `[lo, hi]` (display units of a log axis).
 pub(super) fn log(lo: f64, hi: f64, room: f64) -> Ticks {
     let most = limit(room, MAX_LOG_TICKS);
@@ -179,24 +216,14 @@ pub(super) fn log(lo: f64, hi: f64, room: f64) -> Ticks {
             .map(|v| (1, v.round() as i64))
             .collect()
     };
-    let all_plain = labelled_values.iter().all(|&(m, k)| {
-        let v = f64::from(m) * 10f64.powi(k as i32);
-        (PLAIN_MIN..=PLAIN_MAX).contains(&v)
-    });
-    let plain_labels = decades < FEW_DECADES && all_plain;
-    let labels = labelled_values
-        .iter()
-        .map(|&(m, k)| {
-            if plain_labels {
-                plain(m, k)
-            } else {
-                scientific(m, k)
-            }
-        })
-        .collect();
+    let labels = log_labels(&labelled_values, decades);
     let major: Vec<f64> = labelled_values.iter().map(|&p| at(p)).collect();
     let minor = if stride > 1.0 && decades >= FEW_DECADES {
-        multiples(lo, hi, 1.0)
+        // Every decade, or every n-th where that many lines would grey the plot over.
+        let step = nice_step(0.0, decades, MAX_DECADE_LINES, &DECADE_STRIDES)
+            .max(1.0)
+            .min(stride);
+        multiples(lo, hi, step)
             .into_iter()
             .filter(|v| !major.iter().any(|m| (m - v).abs() < EDGE_SLACK))
             .collect()
@@ -220,6 +247,18 @@ pub(super) fn log(lo: f64, hi: f64, room: f64) -> Ticks {
 mod tests {
     use super::*;
     use std::f64::consts::FRAC_PI_2;
+
+    #[test]
+    fn many_decades_get_a_bounded_number_of_unlabelled_lines() {
+        // 300 decades (a Beckmann tail): labels every 100, lines every 20, not 300 of them.
+        let t = log(-300.0, 0.0, 6.0);
+        assert_eq!(t.major, [-300.0, -200.0, -100.0, 0.0]);
+        assert!((5..=MAX_DECADE_LINES).contains(&t.minor.len()), "{:?}", t.minor);
+        assert!(t.minor.contains(&-20.0) && !t.minor.contains(&-1.0));
+        // A few decades labelled every other one keep a line at each decade.
+        let t = log(-8.0, 2.0, 6.0);
+        assert!(t.minor.contains(&-7.0));
+    }
 
     #[test]
     fn linear_axes_get_four_to_eight_nice_ticks_in_one_format() {
