@@ -7,7 +7,9 @@
 //!
 //! Run: `cargo bench --bench fit_batch`.
 
-use std::io::Write;
+#[path = "../tests/common/mod.rs"]
+mod common;
+
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
@@ -45,24 +47,20 @@ fn main() {
 
 /// One `fit --target - --format jsonl` process fed `jsonl` on stdin.
 fn batch(jsonl: &str, by: &str) -> Duration {
+    let args = [
+        &["fit", "--target", "-", "--by", by, "--format", "jsonl"][..],
+        &FIT,
+    ]
+    .concat();
     let start = Instant::now();
-    let mut child = Command::new(NDFPLOT)
-        .args(["fit", "--target", "-", "--by", by, "--format", "jsonl"])
-        .args(FIT)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .expect("the binary runs");
-    child
-        .stdin
-        .take()
-        .expect("stdin is piped")
-        .write_all(jsonl.as_bytes())
-        .expect("the fit reads its targets");
-    let status = child.wait().expect("the fit ends");
-    assert_eq!(status.code(), Some(2), "only the uniform target fails");
-    start.elapsed()
+    let output = common::ndfplot_stdin(&args, jsonl);
+    let elapsed = start.elapsed();
+    assert_eq!(
+        output.status.code(),
+        Some(2),
+        "only the uniform target fails"
+    );
+    elapsed
 }
 
 /// `sh -c 'for a in …; do ndfplot fit --target …; done'`: one process per target, as a script would.
