@@ -23,7 +23,7 @@ pub enum Command {
     Coeffs(CoeffsArgs),
     /// Compare two curves of the same kind: max_abs, max_rel, l2_projected, l2_grid, peaks.
     Compare(CompareArgs),
-    /// Fit the free parameter of an NDF family to a target curve; prints the fitted curve.
+    /// Fit the free parameters of an NDF family to target curves; prints the fitted curves.
     Fit(FitArgs),
     /// Audit the normalization of every curve in scenes (or the built-in catalogue).
     Check(CheckArgs),
@@ -264,25 +264,40 @@ pub struct CompareArgs {
 #[command(after_long_help = "Methods:\n  \
     peak  D_fit(0) = D_target(0), the value at the normal (the notebook's manual peak matching)\n  \
     max   max over theta of D_fit = the target's maximum (differs for lobes peaking off the normal)\n  \
-    l2    minimize l2_projected between the fit and the target\n\n\
-    stdout: the fitted curve as one line of canonical curve JSON (feed it to eval);\n\
-    stderr: residual=<x> (d0_rel | dmax_rel | l2_projected).\n\
-    Exit 2 when the family cannot reach the target within its parameter domain.\n\n\
+    l2    minimize l2_projected between the fit and the target\n\
+    peak and max match one number: all parameters but one must be fixed. l2 fits every parameter\n\
+    not fixed (Nelder-Mead in log coordinates within the family's domain, from several starts).\n\n\
+    Output without --format: per target, the fitted curve as one line of canonical curve JSON on\n\
+    stdout (feed it to eval) and residual=<x> (d0_rel | dmax_rel | l2_projected) on stderr.\n\
+    --format jsonl: per target {\"target\": <curve>, \"fit\": <curve>, \"residual\": <x>, \"metric\": <name>};\n\
+    --format csv: columns target,fit,residual,metric. Targets are fitted in parallel and written in\n\
+    input order. A target that cannot be fitted is one error line naming it (stdin:<line> for\n\
+    --target -); the others are still written, and the exit code is 2.\n\n\
     Examples:\n  \
     ndfplot fit --target '{\"ndf\":\"trowbridge_reitz\",\"alpha_tr\":0.3}' --family abc --fix alpha_abc2=1.75\n  \
+    ndfplot fit --target '{\"ndf\":\"trowbridge_reitz\",\"alpha_tr\":0.3}' --family abc --by l2\n  \
+    cat targets.jsonl | ndfplot fit --target - --family abc --fix alpha_abc2=1.75 --format csv > fits.csv\n  \
     ndfplot eval --curve \"$(ndfplot fit --target @phong.json --family torrance_sparrow --by l2)\" --theta 0:1.5707963267948966:5")]
 pub struct FitArgs {
-    /// The target NDF: inline JSON, @FILE or - (one curve on stdin).
-    #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
-    pub target: String,
+    /// A target NDF: inline JSON, @FILE or - (one curve per line on stdin, JSON Lines). Repeatable.
+    #[arg(
+        long,
+        value_name = "JSON|@FILE|-",
+        allow_hyphen_values = true,
+        required = true
+    )]
+    pub target: Vec<String>,
     #[arg(long, value_name = "NAME", help = family_help())]
     pub family: String,
-    /// Fix a parameter of the family as key=value; all but one parameter must be fixed. Repeatable.
+    /// Fix a parameter of the family as key=value; the others are fitted. Repeatable.
     #[arg(long, value_name = "KEY=VALUE", allow_hyphen_values = true)]
     pub fix: Vec<String>,
     /// What to match: peak (D(0)), max (the maxima) or l2 (least l2_projected).
     #[arg(long, value_name = "METHOD", default_value = "peak")]
     pub by: String,
+    /// Write one record per target with its fit and residual: jsonl or csv (nothing on stderr).
+    #[arg(long, value_name = "FORMAT", value_parser = ["jsonl", "csv"])]
+    pub format: Option<String>,
 }
 
 /// Arguments of `ndfplot check`.

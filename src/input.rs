@@ -107,9 +107,49 @@ fn parse_curve(text: &str, source: &str) -> std::result::Result<CurveSpec, Probl
     })
 }
 
-/// Loads the curves named by `--curve` arguments, in order: `{…}` inline JSON, `@path` a file
-/// holding one curve, `-` one curve per non-blank line of `stdin` (JSON Lines); validated, not
-/// resolved.
+/// Reads the curves named by curve arguments, in order, each with the source name its problems carry:
+/// `{…}` inline JSON (`flag`, or `flag[i]` among several arguments), `@path` a file holding one curve
+/// (the path), `-` one curve per non-blank line of `stdin` (JSON Lines, `stdin:<line>`). Each curve is
+/// validated on its own, not resolved; only reading a file or stdin, or finding no curve at all, fails
+/// the whole call.
+pub fn read_curves(
+    args: &[String],
+    flag: &str,
+    stdin: impl FnOnce() -> std::io::Result<String>,
+) -> Result<Vec<(String, std::result::Result<CurveSpec, Problems>)>> {
+    let mut curves = Vec::new();
+    let mut stdin = Some(stdin);
+    for (i, arg) in args.iter().enumerate() {
+        if arg == "-" {
+            let read = stdin
+                .take()
+                .ok_or_else(|| Error::Usage(format!("{flag} - may be given only once")))?;
+            let text = read().map_err(|e| Error::io("stdin", e))?;
+            for (line_no, line) in text.lines().enumerate() {
+                if !line.trim().is_empty() {
+                    let source = format!("stdin:{}", line_no + 1);
+                    curves.push((source.clone(), parse_curve(line, &source)));
+                }
+            }
+        } else if let Some(path) = arg.strip_prefix('@') {
+            curves.push((path.to_string(), parse_curve(&read_file(path)?, path)));
+        } else {
+            let source = if args.len() == 1 {
+                flag.to_string()
+            } else {
+                format!("{flag}[{i}]")
+            };
+            curves.push((source.clone(), parse_curve(arg, &source)));
+        }
+    }
+    if curves.is_empty() {
+        return Err(Error::Usage(format!("{flag}: no curve given")));
+    }
+    Ok(curves)
+}
+
+/// Loads the curves named by `--curve` arguments ([`read_curves`]), in order, validated, not resolved;
+/// every problem of every curve is reported together.
 /// `flag` is the argument name used in messages (`--curve`).
 pub fn load_curves(
     args: &[String],
@@ -118,38 +158,14 @@ pub fn load_curves(
 ) -> Result<Vec<CurveSpec>> {
     let mut curves = Vec::new();
     let mut problems = Vec::new();
-    let mut stdin = Some(stdin);
-    let mut accept = |result: std::result::Result<CurveSpec, Problems>| match result {
-        Ok(curve) => curves.push(curve),
-        Err(p) => problems.push(p),
-    };
-    for (i, arg) in args.iter().enumerate() {
-        let source = if args.len() == 1 {
-            flag.to_string()
-        } else {
-            format!("{flag}[{i}]")
-        };
-        if arg == "-" {
-            let read = stdin
-                .take()
-                .ok_or_else(|| Error::Usage(format!("{flag} - may be given only once")))?;
-            let text = read().map_err(|e| Error::io("stdin", e))?;
-            for (line_no, line) in text.lines().enumerate() {
-                if !line.trim().is_empty() {
-                    accept(parse_curve(line, &format!("stdin:{}", line_no + 1)));
-                }
-            }
-        } else if let Some(path) = arg.strip_prefix('@') {
-            accept(parse_curve(&read_file(path)?, path));
-        } else {
-            accept(parse_curve(arg, &source));
+    for (_, result) in read_curves(args, flag, stdin)? {
+        match result {
+            Ok(curve) => curves.push(curve),
+            Err(p) => problems.push(p),
         }
     }
     if !problems.is_empty() {
         return Err(Error::Input(problems));
-    }
-    if curves.is_empty() {
-        return Err(Error::Usage(format!("{flag}: no curve given")));
     }
     Ok(curves)
 }

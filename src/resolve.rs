@@ -267,7 +267,8 @@ fn fitted(fitted: &Fitted) -> std::result::Result<(Curve, FitOutcome), Problem> 
                 format!("fit to {target_label}: {}: {}", e.key, e.message),
             )
         })?
-        .value;
+        .free[0]
+        .1;
     let mut values: Vec<f64> = fitted.fixed.iter().map(|(_, v)| *v).collect();
     values.insert(fitted.free, value);
     let ndf = fitted

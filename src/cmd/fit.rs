@@ -1,13 +1,16 @@
-//! `ndfplot fit`: the fitted curve on stdout (one line of canonical curve JSON, ready for `eval`) and
-//! `residual=<x> (<metric>)` on stderr (CONTRACTS.md).
+//! `ndfplot fit` (CONTRACTS.md): per target, without `--format`, the fitted curve on stdout (one line of
+//! canonical curve JSON, ready for `eval`) and `residual=<x> (<metric>)` on stderr; with `--format jsonl`
+//! or `csv`, one record per target holding target, fit, residual and metric. A target that cannot be
+//! fitted becomes a problem of its source; the others are still written.
 //!
-//! Owns the reading of `--family`, `--fix` and `--by` and the mapping of fit errors to their argument;
-//! the fitting itself is [`crate::fit`]'s.
+//! Owns the reading of `--family`, `--fix`, `--by` and `--format`, the mapping of fit errors to their
+//! argument or target, and the text of the output; the fitting itself is [`crate::fit`]'s.
 
 use crate::curve::Curve;
 use crate::error::{Error, Result};
-use crate::fit::{By, Fit, FitError, Subject, fit};
+use crate::fit::{By, Fit, FitError, FitSpec, Subject};
 use crate::ndf::Family;
+use crate::output::csv::Table;
 use crate::problem::{Problem, Problems, suggestion};
 
 fn usage(source: &str, at: &str, message: String) -> Error {
@@ -77,26 +80,142 @@ pub fn parse_fixed(args: &[String]) -> Result<Vec<(String, f64)>> {
     }
 }
 
-/// Maps a fit error to `error: --target|--fix: <key>: <message>`.
-pub fn fit_error(e: FitError) -> Error {
+/// Maps a fit error about `--fix` or the method to `error: --fix: <key>: <message>`, one about a
+/// target to `error: <source>: <key>: <message>` with the target's source name (`--target`,
+/// `--target[2]`, `stdin:7`).
+fn fit_problems(e: FitError, target_source: &str) -> Problems {
     let source = match e.subject {
-        Subject::Target => "--target",
+        Subject::Target => target_source,
         Subject::Fixed => "--fix",
     };
-    usage(source, &e.key, e.message)
+    Problems {
+        source: source.into(),
+        list: vec![Problem::new(e.key, e.message)],
+    }
 }
 
-/// Runs the fit.
-pub fn run(target: &Curve, family: Family, fixed: &[(String, f64)], by: By) -> Result<Fit> {
-    fit(target, family, fixed, by).map_err(fit_error)
+/// Maps a fit error to its argument: `error: --target|--fix: <key>: <message>`.
+pub fn fit_error(e: FitError) -> Error {
+    Error::input(fit_problems(e, "--target"))
 }
 
-/// The stdout line: the fitted curve's canonical JSON, newline-terminated.
-pub fn stdout_line(fit: &Fit) -> String {
-    format!("{}\n", fit.curve.canonical_json())
+/// How `ndfplot fit` writes its results.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// Per target, the fitted curve's line on stdout and its residual line on stderr.
+    Curves,
+    /// Per target, `{"target": <curve>, "fit": <curve>, "residual": <x>, "metric": "<name>"}`.
+    Jsonl,
+    /// CSV with columns `target,fit,residual,metric`, curves as canonical JSON.
+    Csv,
 }
 
-/// The stderr line: `residual=<x> (<metric>)`.
-pub fn residual_line(fit: &Fit, by: By) -> String {
+impl Format {
+    /// The format of `--format` (`jsonl`, `csv`; `None` for none given).
+    pub fn parse(name: Option<&str>) -> Result<Format> {
+        match name {
+            None => Ok(Format::Curves),
+            Some("jsonl") => Ok(Format::Jsonl),
+            Some("csv") => Ok(Format::Csv),
+            Some(other) => Err(usage(
+                "--format",
+                other,
+                format!("unknown format (got \"{other}\", expected jsonl or csv)"),
+            )),
+        }
+    }
+}
+
+/// A target as read: the name of its source and its curve, or the problems that kept it from being
+/// read.
+pub type Target = (String, std::result::Result<Curve, Problems>);
+
+/// What a fit run writes: the text for stdout and for stderr, and the problems of the targets that
+/// could not be fitted (the run exits 2 when there are any).
+#[derive(Debug)]
+pub struct Report {
+    /// Standard output.
+    pub stdout: String,
+    /// Standard error before the problems: the residual lines of [`Format::Curves`].
+    pub stderr: String,
+    /// One entry per failed target, in input order.
+    pub problems: Vec<Problems>,
+}
+
+/// Fits every readable target (in parallel, [`FitSpec::fit_all`]) and writes the results in input order
+/// in `format`.
+pub fn run(spec: &FitSpec, targets: Vec<Target>, format: Format) -> Report {
+    let curves: Vec<Curve> = targets
+        .iter()
+        .filter_map(|(_, curve)| curve.as_ref().ok().cloned())
+        .collect();
+    let mut fits = spec.fit_all(&curves).into_iter();
+    let mut fitted = Vec::with_capacity(targets.len());
+    let mut problems = Vec::new();
+    for (source, target) in targets {
+        let result = target.and_then(|curve| {
+            let fit = fits.next().expect("one fit per readable target");
+            fit.map(|fit| (curve, fit))
+                .map_err(|e| fit_problems(e, &source))
+        });
+        match result {
+            Ok(pair) => fitted.push(pair),
+            Err(p) => problems.push(p),
+        }
+    }
+    let by = spec.by();
+    let (stdout, stderr) = match format {
+        Format::Curves => (
+            fitted
+                .iter()
+                .map(|(_, fit)| format!("{}\n", fit.curve.canonical_json()))
+                .collect(),
+            fitted
+                .iter()
+                .map(|(_, fit)| format!("{}\n", residual_line(fit, by)))
+                .collect(),
+        ),
+        Format::Jsonl => (jsonl(&fitted, by), String::new()),
+        Format::Csv => (csv(&fitted, by), String::new()),
+    };
+    Report {
+        stdout,
+        stderr,
+        problems,
+    }
+}
+
+/// `residual=<x> (<metric>)`.
+fn residual_line(fit: &Fit, by: By) -> String {
     format!("residual={:?} ({})", fit.residual, by.residual_name())
+}
+
+/// One line per fit: `{"target":<curve>,"fit":<curve>,"residual":<x>,"metric":"<name>"}`, curves as
+/// canonical curve JSON objects, the residual in shortest round-trip form.
+fn jsonl(fitted: &[(Curve, Fit)], by: By) -> String {
+    fitted
+        .iter()
+        .map(|(target, fit)| {
+            format!(
+                "{{\"target\":{},\"fit\":{},\"residual\":{:?},\"metric\":\"{}\"}}\n",
+                target.canonical_json(),
+                fit.curve.canonical_json(),
+                fit.residual,
+                by.residual_name()
+            )
+        })
+        .collect()
+}
+
+/// CSV `target,fit,residual,metric`, one row per fit, curves as canonical curve JSON (quoted).
+fn csv(fitted: &[(Curve, Fit)], by: By) -> String {
+    let mut table = Table::new(["target", "fit", "residual", "metric"], 160 * fitted.len());
+    for (target, fit) in fitted {
+        table.text(&target.canonical_json());
+        table.text(&fit.curve.canonical_json());
+        table.number(fit.residual);
+        table.text(by.residual_name());
+        table.end_row();
+    }
+    table.into_string()
 }

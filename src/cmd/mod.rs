@@ -107,18 +107,6 @@ fn load_operand(arg: &str, flag: &str, allow_read: &[PathBuf]) -> Result<(Operan
     }
 }
 
-/// Loads exactly one curve from a curve argument (inline JSON, @FILE or - for one line on stdin).
-fn load_one_curve(arg: &str, flag: &str) -> Result<Curve> {
-    let mut curves = load_curves(&[arg.to_string()], flag)?;
-    if curves.len() != 1 {
-        return Err(Error::Usage(format!(
-            "{flag}: expected one curve (got {})",
-            curves.len()
-        )));
-    }
-    Ok(curves.remove(0))
-}
-
 fn run_compare(args: CompareArgs) -> Result<()> {
     let bounds: Vec<compare::Bound> = args
         .max_error
@@ -141,12 +129,36 @@ fn run_fit(args: FitArgs) -> Result<()> {
     let family = fit::parse_family(&args.family)?;
     let by = fit::parse_by(&args.by)?;
     let fixed = fit::parse_fixed(&args.fix)?;
-    let target = load_one_curve(&args.target, "--target")?;
-    let fitted = fit::run(&target, family, &fixed, by)?;
-    stdout::print(&fit::stdout_line(&fitted))?;
+    let format = fit::Format::parse(args.format.as_deref())?;
+    let spec = crate::fit::FitSpec::new(family, &fixed, by).map_err(fit::fit_error)?;
+    let targets = load_targets(&args.target, "--target")?;
+    let report = fit::run(&spec, targets, format);
+    stdout::print(&report.stdout)?;
     // stderr is informative only: a closed or full stderr does not fail the fit.
-    let _ = writeln!(std::io::stderr(), "{}", fit::residual_line(&fitted, by));
-    Ok(())
+    let _ = write!(std::io::stderr(), "{}", report.stderr);
+    if report.problems.is_empty() {
+        Ok(())
+    } else {
+        Err(Error::Input(report.problems))
+    }
+}
+
+/// The curves of a curve argument ([`input::read_curves`]), each resolved on its own, with its source
+/// name: one bad curve does not keep the others from being used.
+fn load_targets(args: &[String], flag: &str) -> Result<Vec<fit::Target>> {
+    let targets = input::read_curves(args, flag, read_stdin)?
+        .into_iter()
+        .map(|(source, spec)| {
+            let curve = spec.and_then(|spec| {
+                resolve::curve(&spec).map_err(|p| Problems {
+                    source: source.clone(),
+                    list: vec![p],
+                })
+            });
+            (source, curve)
+        })
+        .collect();
+    Ok(targets)
 }
 
 fn run_check(args: CheckArgs) -> Result<()> {

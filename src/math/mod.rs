@@ -4,9 +4,11 @@
 //!   gamma function e^x Γ(s, x) for every real s, which no available crate computes for s ≤ 0.
 //! - [`quad`]: adaptive Gauss–Kronrod (7, 15) quadrature that resolves narrow lobes.
 //! - [`roots`]: Brent's safeguarded bracketing root finder and a log-scale bracket expansion.
+//! - [`simplex`]: Nelder–Mead minimization within a box, for fits of several parameters.
 //! - [`tolerance`]: every accuracy target of the crate's numerical tests, with its reason.
 
 pub mod quad;
 pub mod roots;
+pub mod simplex;
 pub mod special;
 pub mod tolerance;

@@ -1,12 +1,14 @@
 //! The integration tests that run the real `ndfplot` binary or its render pipeline: the command
-//! line and its contracts, robustness against bad input and interruption, the JSON Schema, panel
-//! views, sampling, the lazily computed Fresnel basis, and interactive pages in a browser.
+//! line and its contracts, batch and multi-parameter fits, robustness against bad input and
+//! interruption, the JSON Schema, panel views, sampling, the lazily computed Fresnel basis, and
+//! interactive pages in a browser.
 
 #[path = "../common/mod.rs"]
 mod common;
 
 mod browser;
 mod cli;
+mod fit;
 mod lazy_basis;
 mod lint;
 mod robustness;

@@ -26,8 +26,14 @@ pub fn ndfplot(args: &[&str]) -> Output {
 
 /// Runs the real binary with `args`, `stdin` written to its standard input.
 pub fn ndfplot_stdin(args: &[&str], stdin: &str) -> Output {
+    ndfplot_stdin_env(args, stdin, &[])
+}
+
+/// [`ndfplot_stdin`] with the environment variables `env` set.
+pub fn ndfplot_stdin_env(args: &[&str], stdin: &str, env: &[(&str, &str)]) -> Output {
     let mut child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
         .args(args)
+        .envs(env.iter().copied())
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())

@@ -46,13 +46,13 @@ fn peak_fits_match_the_mpmath_reference() {
             .collect();
         let expected = number(&record, 4);
         let got = fit(&target, family, &fixed, By::Peak).unwrap();
-        assert_eq!(got.key, &record[3]);
-        let rel = (got.value / expected - 1.0).abs();
+        assert_eq!(got.free[0].0, &record[3]);
+        let rel = (got.free[0].1 / expected - 1.0).abs();
         assert!(
             rel <= PEAK_FIT_REL_TOL,
             "{}: got {:?}, expected {expected:?}",
             &record[0],
-            got.value
+            got.free[0].1
         );
         worst = worst.max(rel);
         rows += 1;
@@ -80,9 +80,9 @@ fn peak_fits_reproduce_the_exact_matches_of_math_md() {
         )
         .unwrap();
         assert!(
-            (got.value - expected).abs() <= 5e-5,
+            (got.free[0].1 - expected).abs() <= 5e-5,
             "α_tr = {alpha_tr}: {}",
-            got.value
+            got.free[0].1
         );
         assert!(metrics::relative_difference(got.curve.eval(0.0), target.eval(0.0)) <= 1e-14);
     }
@@ -96,9 +96,9 @@ fn peak_fits_reproduce_the_exact_matches_of_math_md() {
         )
         .unwrap();
         assert!(
-            (got.value - expected).abs() <= half_unit,
+            (got.free[0].1 - expected).abs() <= half_unit,
             "α_b = {alpha_b}: {}",
-            got.value
+            got.free[0].1
         );
     }
     for (alpha_b, manual) in [(0.2, 0.2027), (0.3, 0.3097), (0.4, 0.425), (0.5, 0.552)] {
@@ -110,9 +110,9 @@ fn peak_fits_reproduce_the_exact_matches_of_math_md() {
         )
         .unwrap();
         assert!(
-            (got.value / manual - 1.0).abs() <= 0.01,
+            (got.free[0].1 / manual - 1.0).abs() <= 0.01,
             "α_b = {alpha_b}: {}",
-            got.value
+            got.free[0].1
         );
     }
 }
@@ -125,18 +125,18 @@ fn a_family_fitted_to_itself_returns_the_parameter() {
         // L2 minima are located to ~1e-8 (the distance is flat there); roots to rounding.
         let tol = if by == By::L2 { 1e-6 } else { 1e-14 };
         assert!(
-            (got.value / 0.37 - 1.0).abs() <= tol,
+            (got.free[0].1 / 0.37 - 1.0).abs() <= tol,
             "{by:?}: {}",
-            got.value
+            got.free[0].1
         );
     }
     // A linear parameter (SGD's a₂, which may be negative) and Phong's lower bound α_p = 0.
     let sgd = ndf(Family::Sgd, &[0.5, -0.3]);
     let got = fit(&sgd, Family::Sgd, &fixed(&[("alpha_sgd1", 0.5)]), By::Peak).unwrap();
-    assert!((got.value + 0.3).abs() <= 1e-13, "{}", got.value);
+    assert!((got.free[0].1 + 0.3).abs() <= 1e-13, "{}", got.free[0].1);
     let uniform = ndf(Family::Phong, &[0.0]);
     assert_eq!(
-        fit(&uniform, Family::Phong, &[], By::Peak).unwrap().value,
+        fit(&uniform, Family::Phong, &[], By::Peak).unwrap().free[0].1,
         0.0
     );
 }
@@ -149,9 +149,9 @@ fn gtr_fits_either_parameter_and_meets_trowbridge_reitz_at_gamma_2() {
         let got = fit(&target, Family::Gtr, &fixed(&[("gamma_gtr", 2.0)]), by).unwrap();
         let tol = if by == By::L2 { 1e-6 } else { 1e-13 };
         assert!(
-            (got.value / 0.37 - 1.0).abs() <= tol,
+            (got.free[0].1 / 0.37 - 1.0).abs() <= tol,
             "{by:?}: {}",
-            got.value
+            got.free[0].1
         );
     }
     // γ fitted with α fixed recovers the γ of a GTR target, on both sides of Berry's γ = 1.
@@ -165,9 +165,9 @@ fn gtr_fits_either_parameter_and_meets_trowbridge_reitz_at_gamma_2() {
         )
         .unwrap();
         assert!(
-            (got.value / gamma - 1.0).abs() <= 1e-12,
+            (got.free[0].1 / gamma - 1.0).abs() <= 1e-12,
             "γ = {gamma}: {}",
-            got.value
+            got.free[0].1
         );
     }
 }
@@ -201,10 +201,10 @@ fn max_fits_equate_the_maxima_where_peak_fits_do_not() {
         "{fitted_max:?}"
     );
     assert!(
-        (by_max.value / by_peak.value - 1.0).abs() > 0.01,
+        (by_max.free[0].1 / by_peak.free[0].1 - 1.0).abs() > 0.01,
         "{} vs {}",
-        by_max.value,
-        by_peak.value
+        by_max.free[0].1,
+        by_peak.free[0].1
     );
 }
 
@@ -214,17 +214,17 @@ fn l2_fits_are_local_minima_and_differ_from_peak_fits() {
     let l2 = fit(&target, Family::TorranceSparrow, &[], By::L2).unwrap();
     let peak = fit(&target, Family::TorranceSparrow, &[], By::Peak).unwrap();
     let at = |x: f64| metrics::l2_projected(&ndf(Family::TorranceSparrow, &[x]), &target).unwrap();
-    assert_eq!(l2.residual, at(l2.value));
+    assert_eq!(l2.residual, at(l2.free[0].1));
     for factor in [1.0 - 1e-4, 1.0 + 1e-4] {
-        assert!(at(l2.value * factor) >= l2.residual, "{factor}");
+        assert!(at(l2.free[0].1 * factor) >= l2.residual, "{factor}");
     }
     assert!(
-        at(peak.value) > l2.residual * 1.01,
+        at(peak.free[0].1) > l2.residual * 1.01,
         "peak {} vs l2 {}",
-        at(peak.value),
+        at(peak.free[0].1),
         l2.residual
     );
-    assert!((l2.value / peak.value - 1.0).abs() > 1e-3);
+    assert!((l2.free[0].1 / peak.free[0].1 - 1.0).abs() > 1e-3);
 }
 
 #[test]
