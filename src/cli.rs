@@ -21,7 +21,8 @@ pub enum Command {
     Render(RenderArgs),
     /// Belcour–Bati–Barla coefficients c0..c3 and L2 error of materials; prints CSV.
     Coeffs(CoeffsArgs),
-    /// Compare two curves of the same kind: max_abs, max_rel, l2_projected, l2_grid, peaks.
+    /// Compare two curves of the same kind: max_abs, max_rel, max_log_ratio, l2_projected, l2_grid,
+    /// peaks.
     Compare(CompareArgs),
     /// Fit the free parameter of an NDF family to a target curve; prints the fitted curve.
     Fit(FitArgs),
@@ -79,10 +80,13 @@ pub struct CompletionsArgs {
 
 /// Arguments of `ndfplot coeffs`.
 #[derive(Debug, Args)]
-#[command(after_long_help = "Output: CSV c0,c1,c2,c3,l2, one row per curve.\n\n\
+#[command(
+    after_long_help = "Output: CSV c0,c1,c2,c3,l2, one row per curve; with --format json a JSON array of\n\
+    objects with the same names, one per curve.\n\n\
     Examples:\n  \
     ndfplot coeffs --curve '{\"fresnel\":\"belcour\",\"eta\":0.29,\"kappa\":2.86}'\n  \
-    ndfplot coeffs --curve '{\"fresnel\":\"belcour\",\"r\":0.5,\"g\":0.2,\"g_remap\":true}'")]
+    ndfplot coeffs --curve '{\"fresnel\":\"belcour\",\"r\":0.5,\"g\":0.2,\"g_remap\":true}'"
+)]
 pub struct CoeffsArgs {
     /// A material as a Fresnel curve: '{"fresnel":"belcour","eta":1.5,"kappa":0}' (or r/g, or an
     /// "exact" curve), @FILE, or - for JSON Lines on stdin. Repeat for several rows.
@@ -93,6 +97,9 @@ pub struct CoeffsArgs {
         allow_hyphen_values = true
     )]
     pub curve: Vec<String>,
+    /// Output: CSV, or a JSON array of one object per curve.
+    #[arg(long, value_name = "FORMAT", default_value = "csv", value_parser = ["csv", "json"])]
+    pub format: String,
 }
 
 /// Arguments of `ndfplot render`.
@@ -227,15 +234,22 @@ const FRESNEL_HELP: &str = "  fresnel exact        eta in [1e-150, 1e150], kappa
 /// Arguments of `ndfplot compare`.
 #[derive(Debug, Args)]
 #[command(
-    after_long_help = "Metrics over theta in [0, pi/2] (CONTRACTS.md):\n  \
-    max_abs       max |a - b|, with the theta where it is reached\n  \
-    max_rel       max |a - b| / max(|a|, |b|) (0 where both are 0), with its theta\n  \
-    l2_projected  sqrt(2 pi integral (a - b)^2 sin cos dtheta), adaptive quadrature\n  \
-    l2_grid       Euclidean norm of a - b on theta_i = arccos(linspace(0, 1, 1000))\n  \
-    a_peak/b_peak the maxima of a and b, with their theta\n\n\
-    Exit 1 when a --max-error bound is exceeded, 2 on bad input (an NDF against a Fresnel curve).\n\n\
+    after_long_help = "Metrics over theta in [0, pi/2], or in --theta-range (CONTRACTS.md):\n  \
+    max_abs        max |a - b|, with the theta where it is reached\n  \
+    max_rel        max |a - b| / max(|a|, |b|) (0 where both are 0), with its theta\n  \
+    max_log_ratio  max |ln(a/b)| where both a and b exceed 1e-300, with its theta; undefined\n                 \
+    (JSON null, empty CSV field) when they never both do\n  \
+    l2_projected   sqrt(2 pi integral (a - b)^2 sin cos dtheta), adaptive quadrature\n  \
+    l2_grid        Euclidean norm of a - b on theta_i = arccos(linspace(0, 1, 1000))\n  \
+    a_peak/b_peak  the maxima of a and b, with their theta\n\n\
+    --format json prints one object and --format csv one header and one row, with a, b, theta_from,\n\
+    theta_to and each number by name (max_abs, max_abs_theta, ...); --metric NAME prints only that\n\
+    number. With --degrees every theta is read and printed in degrees and named *_deg.\n\n\
+    Exit 1 when a --max-error bound is exceeded (or bounds an undefined max_log_ratio), 2 on bad\n\
+    input (an NDF against a Fresnel curve, an unknown --metric name).\n\n\
     Examples:\n  \
     ndfplot compare --a '{\"ndf\":\"trowbridge_reitz\",\"alpha_tr\":0.3}' --b '{\"ndf\":\"abc\",\"alpha_abc1\":23.5,\"alpha_abc2\":1.75}'\n  \
+    ndfplot compare --a @a.json --b @b.json --theta-range 0:50 --degrees --metric max_log_ratio\n  \
     ndfplot compare --a @a.json --b @b.json --format json --max-error max_rel=1e-3 --max-error l2_projected=0.01"
 )]
 pub struct CompareArgs {
@@ -246,9 +260,20 @@ pub struct CompareArgs {
     /// The second side; two curves must be of the same kind.
     #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
     pub b: String,
-    /// Output: a readable table, or one JSON object for scripts.
-    #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = ["table", "json"])]
+    /// Take every metric (and the peaks) over A ≤ theta ≤ B only: radians (pi/4 and other multiples
+    /// of pi as --theta of eval reads them), or degrees with --degrees.
+    #[arg(long = "theta-range", value_name = "A:B")]
+    pub theta_range: Option<String>,
+    /// Read --theta-range in degrees, and print every theta in degrees (named *_deg).
+    #[arg(long)]
+    pub degrees: bool,
+    /// Output: a readable table, one JSON object, or CSV (a header and one row) for scripts.
+    #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = ["table", "json", "csv"])]
     pub format: String,
+    /// Print only this number (max_abs, max_rel_theta, max_log_ratio, l2_projected, a_peak, …;
+    /// any name of --format json); exit 2 when it is undefined.
+    #[arg(long, value_name = "NAME", conflicts_with = "format")]
+    pub metric: Option<String>,
     /// Fail (exit 1) when a metric exceeds a bound, as <metric>=<number>; repeatable.
     #[arg(long = "max-error", value_name = "METRIC=X")]
     pub max_error: Vec<String>,
@@ -291,10 +316,13 @@ pub struct FitArgs {
     after_long_help = "For every distinct NDF of the scenes: 2 pi integral D sin cos dtheta over [0, pi/2] by\n\
     adaptive quadrature, with its error estimate and |integral - 1|; for every Fresnel curve the\n\
     hemispherical average 2 integral_0^1 F(c) c dc (reported, not checked). Difference series are skipped.\n\
+    --format json prints a JSON array of one object per row and --format csv CSV, with the table's\n\
+    column names (deviation null or empty for a Fresnel average, curve as JSON).\n\
     Exit 1 when an NDF is off by more than --tolerance.\n\n\
     Examples:\n  \
     ndfplot check\n  \
-    ndfplot check configs/abc-vs-tr.json my-scenes/ --tolerance 1e-12"
+    ndfplot check configs/abc-vs-tr.json my-scenes/ --tolerance 1e-12\n  \
+    ndfplot check --format csv > normalization.csv"
 )]
 pub struct CheckArgs {
     /// Scene spec files, or folders whose *.json are checked in name order. None: the built-in catalogue.
@@ -303,6 +331,9 @@ pub struct CheckArgs {
     /// Largest accepted |2 pi integral D sin cos dtheta - 1|.
     #[arg(long, value_name = "X", default_value_t = crate::audit::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
+    /// Output: a readable table, a JSON array of one object per row, or CSV.
+    #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = ["table", "json", "csv"])]
+    pub format: String,
     /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
     /// inside the folder of the spec naming it. Repeatable.
     #[arg(long = "allow-read", value_name = "DIR")]

@@ -57,14 +57,20 @@ fn read_stdin() -> std::io::Result<String> {
 }
 
 fn run_eval(args: EvalArgs) -> Result<()> {
-    let thetas = eval::parse_theta_list(&args.theta, args.degrees)?;
+    let unit = crate::angle::AngleUnit::of(args.degrees);
+    let thetas = eval::parse_theta_list(&args.theta, unit)?;
     let curves = load_curves(&args.curve, "--curve")?;
-    stdout::print(&eval::table(&curves, &thetas)?)
+    stdout::print(&eval::table(&curves, &thetas, unit)?)
 }
 
 fn run_coeffs(args: CoeffsArgs) -> Result<()> {
     let curves = load_curves(&args.curve, "--curve")?;
-    stdout::print(&coeffs::table(&curves)?)
+    let report = coeffs::report(&curves)?;
+    stdout::print(&if args.format == "json" {
+        report.json_array()
+    } else {
+        report.csv()
+    })
 }
 
 /// The curves of a curve argument ([`input::load_curves`]), resolved.
@@ -125,16 +131,26 @@ fn run_compare(args: CompareArgs) -> Result<()> {
         .iter()
         .map(|b| compare::parse_bound(b))
         .collect::<Result<_>>()?;
+    let span = compare::parse_span(
+        args.theta_range.as_deref(),
+        crate::angle::AngleUnit::of(args.degrees),
+    )?;
+    let field = args
+        .metric
+        .as_deref()
+        .map(|name| compare::Field::from_name(name, span.unit))
+        .transpose()?;
     let (a, a_name) = load_operand(&args.a, "--a", &args.allow_read)?;
     let (b, b_name) = load_operand(&args.b, "--b", &args.allow_read)?;
-    let metrics = compare::metrics(&a, &b)?;
-    let report = if args.format == "json" {
-        compare::json(&a_name, &b_name, &metrics)
-    } else {
-        compare::table(&a_name, &b_name, &metrics)
+    let metrics = compare::metrics(&a, &b, span.range)?;
+    let report = match (field, args.format.as_str()) {
+        (Some(field), _) => compare::one_number(field, &metrics, &span)?,
+        (None, "json") => compare::report(&a_name, &b_name, &metrics, &span).json_object(),
+        (None, "csv") => compare::report(&a_name, &b_name, &metrics, &span).csv(),
+        (None, _) => compare::table(&a_name, &b_name, &metrics, &span),
     };
     stdout::print(&report)?;
-    compare::check_bounds(&metrics, &bounds)
+    compare::check_bounds(&metrics, &bounds, &span)
 }
 
 fn run_fit(args: FitArgs) -> Result<()> {
@@ -155,6 +171,10 @@ fn run_check(args: CheckArgs) -> Result<()> {
         source::CanvasOverride::default(),
     ))?;
     let audits = crate::audit::audit_scenes(&scenes)?;
-    stdout::print(&check::table(&audits, args.tolerance))?;
+    stdout::print(&match args.format.as_str() {
+        "json" => check::report(&audits, args.tolerance).json_array(),
+        "csv" => check::report(&audits, args.tolerance).csv(),
+        _ => check::table(&audits, args.tolerance),
+    })?;
     check::verdict(&audits, args.tolerance)
 }

@@ -7,6 +7,7 @@ mod common;
 
 mod browser;
 mod cli;
+mod compare;
 mod lazy_basis;
 mod lint;
 mod robustness;
