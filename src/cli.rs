@@ -7,6 +7,10 @@ use std::path::PathBuf;
 #[derive(Debug, Parser)]
 #[command(name = "ndfplot", version, about, propagate_version = true)]
 pub struct Cli {
+    /// No progress bar or notes on stderr (errors and warnings are always printed); works with
+    /// every command.
+    #[arg(short, long, global = true)]
+    pub quiet: bool,
     /// The subcommand to run.
     #[command(subcommand)]
     pub command: Command,
@@ -106,23 +110,32 @@ pub struct CoeffsArgs {
 #[derive(Debug, Args)]
 #[command(
     after_long_help = "Every spec is validated before anything is evaluated or written; files are written as\n\
-    hidden temporaries and renamed into place. With --check nothing is written: the CSVs and SVGs are\n\
+    hidden temporaries and renamed into place (with -o -, the one output goes to stdout). A spec read\n\
+    from stdin (-) resolves its data paths against the working directory. With --check nothing is written: the CSVs and SVGs are\n\
     re-rendered and compared with DIR's, every CSV cell and, for figures whose values match, the\n\
     drawing of the stored SVG (exit 1 on any difference, a missing or an extra CSV).\n\n\
     Examples:\n  \
     ndfplot render\n  \
     ndfplot render configs/abc-vs-tr.json my-scenes/ -o out --format svg,csv\n  \
     ndfplot render configs/beckmann-vs-phong.json -o out --format pdf\n  \
+    ndfplot show gtr-gamma | ndfplot render - -o - --format svg --theme dark > gtr-gamma-dark.svg\n  \
     ndfplot render --check plots\n  \
     ndfplot render configs/ --check plots --tolerance 1e-9"
 )]
 pub struct RenderArgs {
-    /// Scene spec files, or folders whose *.json are rendered in name order. None: the built-in
-    /// catalogue of notebook figures.
-    #[arg(value_name = "SPEC.json|DIR")]
+    /// Scene spec files, folders whose *.json are rendered in name order, catalogue ids, or - for a
+    /// spec on stdin. None: the built-in catalogue of notebook figures.
+    #[arg(value_name = "SPEC.json|DIR|ID|-")]
     pub paths: Vec<PathBuf>,
-    /// Output folder (created if missing); files are <DIR>/<id>.<ext>.
-    #[arg(short, long, value_name = "DIR", default_value = "plots")]
+    /// Output folder (created if missing); files are <DIR>/<id>.<ext>. - writes the one figure in
+    /// the one --format to stdout instead (exit 2 for several figures or formats).
+    #[arg(
+        short,
+        long,
+        value_name = "DIR|-",
+        default_value = "plots",
+        allow_hyphen_values = true
+    )]
     pub out: PathBuf,
     /// Formats to write, comma-separated, from svg, png, pdf, csv, html; html only for scenes
     /// with sliders, pdf only when listed.
@@ -147,9 +160,9 @@ pub struct RenderArgs {
     /// Largest accepted relative difference of a CSV value under --check.
     #[arg(long, value_name = "X", requires = "check", default_value_t = crate::check_outputs::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
-    /// No progress bar on stderr.
-    #[arg(short, long)]
-    pub quiet: bool,
+    /// Override every scene's theme: notebook, colour-blind (or color-blind) or dark.
+    #[arg(long, value_name = "NAME", value_parser = clap::builder::PossibleValuesParser::new(crate::scene::THEMES))]
+    pub theme: Option<String>,
     /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
     /// inside the folder of the spec naming it. Repeatable.
     #[arg(long = "allow-read", value_name = "DIR")]

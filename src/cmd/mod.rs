@@ -21,14 +21,15 @@ use crate::{input, resolve, source, stdout};
 use std::io::{Read, Write};
 use std::path::PathBuf;
 
-/// Runs a parsed command line.
-pub fn run(command: Command) -> Result<()> {
+/// Runs a parsed command line; `quiet` (`-q`) leaves progress and notes off stderr (never errors or
+/// warnings).
+pub fn run(command: Command, quiet: bool) -> Result<()> {
     match command {
         Command::Eval(args) => run_eval(args),
-        Command::Render(args) => render::run(args),
+        Command::Render(args) => render::run(args, quiet),
         Command::Coeffs(args) => run_coeffs(args),
         Command::Compare(args) => run_compare(args),
-        Command::Fit(args) => run_fit(args),
+        Command::Fit(args) => run_fit(args, quiet),
         Command::Check(args) => run_check(args),
         Command::List => stdout::print(&crate::catalogue::listing()),
         Command::Show(args) => run_show(&args.id),
@@ -153,7 +154,7 @@ fn run_compare(args: CompareArgs) -> Result<()> {
     compare::check_bounds(&metrics, &bounds, &span)
 }
 
-fn run_fit(args: FitArgs) -> Result<()> {
+fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {
     let family = fit::parse_family(&args.family)?;
     let by = fit::parse_by(&args.by)?;
     let fixed = fit::parse_fixed(&args.fix)?;
@@ -161,7 +162,9 @@ fn run_fit(args: FitArgs) -> Result<()> {
     let fitted = fit::run(&target, family, &fixed, by)?;
     stdout::print(&fit::stdout_line(&fitted))?;
     // stderr is informative only: a closed or full stderr does not fail the fit.
-    let _ = writeln!(std::io::stderr(), "{}", fit::residual_line(&fitted, by));
+    if !quiet {
+        let _ = writeln!(std::io::stderr(), "{}", fit::residual_line(&fitted, by));
+    }
     Ok(())
 }
 

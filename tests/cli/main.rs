@@ -8,6 +8,7 @@ mod common;
 mod browser;
 mod cli;
 mod compare;
+mod conventions;
 mod lazy_basis;
 mod lint;
 mod robustness;
