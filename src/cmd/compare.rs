@@ -187,10 +187,18 @@ impl Field {
         }
     }
 
-    /// The field's value in `c` over `span`, angles in its unit; `None` for an undefined
-    /// `max_log_ratio` and its θ.
+    /// The field's value in `c` over `span`, angles in its unit (an end of the range as given);
+    /// `None` for an undefined `max_log_ratio` and its θ.
     pub fn of(self, c: &Comparison, span: &Span) -> Option<f64> {
-        let angle = |theta: f64| Some(span.unit.from_radians(theta));
+        let angle = |theta: f64| {
+            Some(if theta == span.range.lo() {
+                span.given[0]
+            } else if theta == span.range.hi() {
+                span.given[1]
+            } else {
+                span.unit.from_radians(theta)
+            })
+        };
         match self {
             Field::ThetaFrom => Some(span.given[0]),
             Field::ThetaTo => Some(span.given[1]),
