@@ -197,7 +197,7 @@ pub struct EvalArgs {
     /// unless --degrees. Use --theta=-1 for negatives.
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub theta: String,
-    /// Read the angles in degrees (θ = d·π/180).
+    /// Read the angles in degrees (θ = d·π/180) and print them as given, in a column named theta_deg.
     #[arg(long)]
     pub degrees: bool,
 }
@@ -224,7 +224,8 @@ fn eval_help() -> String {
     }
     text.push_str(FRESNEL_HELP);
     text.push_str(
-        "\nOutput: CSV with header theta,value (one curve) or theta,<curve JSON>... (several);\n\
+        "\nOutput: CSV with header theta,value (one curve) or theta,<curve JSON>... (several), theta_deg\n\
+         instead of theta with --degrees;\n\
          numbers in shortest round-trip form. Exit 2 on bad input, with one error line per problem.\n\n\
          Examples:\n  \
          ndfplot eval --curve '{\"ndf\":\"beckmann\",\"alpha_b\":0.5}' --theta 0:1.5707963267948966:5\n  \
