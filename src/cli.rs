@@ -7,6 +7,10 @@ use std::path::PathBuf;
 #[derive(Debug, Parser)]
 #[command(name = "ndfplot", version, about, propagate_version = true)]
 pub struct Cli {
+    /// No progress bar or notes on stderr (errors and warnings are always printed); works with
+    /// every command.
+    #[arg(short, long, global = true)]
+    pub quiet: bool,
     /// The subcommand to run.
     #[command(subcommand)]
     pub command: Command,
@@ -21,7 +25,8 @@ pub enum Command {
     Render(RenderArgs),
     /// Belcour–Bati–Barla coefficients c0..c3 and L2 error of materials; prints CSV.
     Coeffs(CoeffsArgs),
-    /// Compare two curves of the same kind: max_abs, max_rel, l2_projected, l2_grid, peaks.
+    /// Compare two curves of the same kind: max_abs, max_rel, max_log_ratio, l2_projected, l2_grid,
+    /// peaks.
     Compare(CompareArgs),
     /// Fit the free parameters of an NDF family to target curves; prints the fitted curves.
     Fit(FitArgs),
@@ -79,10 +84,13 @@ pub struct CompletionsArgs {
 
 /// Arguments of `ndfplot coeffs`.
 #[derive(Debug, Args)]
-#[command(after_long_help = "Output: CSV c0,c1,c2,c3,l2, one row per curve.\n\n\
+#[command(
+    after_long_help = "Output: CSV c0,c1,c2,c3,l2, one row per curve; with --format json a JSON array of\n\
+    objects with the same names, one per curve.\n\n\
     Examples:\n  \
     ndfplot coeffs --curve '{\"fresnel\":\"belcour\",\"eta\":0.29,\"kappa\":2.86}'\n  \
-    ndfplot coeffs --curve '{\"fresnel\":\"belcour\",\"r\":0.5,\"g\":0.2,\"g_remap\":true}'")]
+    ndfplot coeffs --curve '{\"fresnel\":\"belcour\",\"r\":0.5,\"g\":0.2,\"g_remap\":true}'"
+)]
 pub struct CoeffsArgs {
     /// A material as a Fresnel curve: '{"fresnel":"belcour","eta":1.5,"kappa":0}' (or r/g, or an
     /// "exact" curve), @FILE, or - for JSON Lines on stdin. Repeat for several rows.
@@ -93,29 +101,41 @@ pub struct CoeffsArgs {
         allow_hyphen_values = true
     )]
     pub curve: Vec<String>,
+    /// Output: CSV, or a JSON array of one object per curve.
+    #[arg(long, value_name = "FORMAT", default_value = "csv", value_parser = ["csv", "json"])]
+    pub format: String,
 }
 
 /// Arguments of `ndfplot render`.
 #[derive(Debug, Args)]
 #[command(
     after_long_help = "Every spec is validated before anything is evaluated or written; files are written as\n\
-    hidden temporaries and renamed into place. With --check nothing is written: the CSVs and SVGs are\n\
+    hidden temporaries and renamed into place (with -o -, the one output goes to stdout). A spec read\n\
+    from stdin (-) resolves its data paths against the working directory. With --check nothing is written: the CSVs and SVGs are\n\
     re-rendered and compared with DIR's, every CSV cell and, for figures whose values match, the\n\
     drawing of the stored SVG (exit 1 on any difference, a missing or an extra CSV).\n\n\
     Examples:\n  \
     ndfplot render\n  \
     ndfplot render configs/abc-vs-tr.json my-scenes/ -o out --format svg,csv\n  \
     ndfplot render configs/beckmann-vs-phong.json -o out --format pdf\n  \
+    ndfplot show gtr-gamma | ndfplot render - -o - --format svg --theme dark > gtr-gamma-dark.svg\n  \
     ndfplot render --check plots\n  \
     ndfplot render configs/ --check plots --tolerance 1e-9"
 )]
 pub struct RenderArgs {
-    /// Scene spec files, or folders whose *.json are rendered in name order. None: the built-in
-    /// catalogue of notebook figures.
-    #[arg(value_name = "SPEC.json|DIR")]
+    /// Scene spec files, folders whose *.json are rendered in name order, catalogue ids, or - for a
+    /// spec on stdin. None: the built-in catalogue of notebook figures.
+    #[arg(value_name = "SPEC.json|DIR|ID|-")]
     pub paths: Vec<PathBuf>,
-    /// Output folder (created if missing); files are <DIR>/<id>.<ext>.
-    #[arg(short, long, value_name = "DIR", default_value = "plots")]
+    /// Output folder (created if missing); files are <DIR>/<id>.<ext>. - writes the one figure in
+    /// the one --format to stdout instead (exit 2 for several figures or formats).
+    #[arg(
+        short,
+        long,
+        value_name = "DIR|-",
+        default_value = "plots",
+        allow_hyphen_values = true
+    )]
     pub out: PathBuf,
     /// Formats to write, comma-separated, from svg, png, pdf, csv, html; html only for scenes
     /// with sliders, pdf only when listed.
@@ -140,9 +160,9 @@ pub struct RenderArgs {
     /// Largest accepted relative difference of a CSV value under --check.
     #[arg(long, value_name = "X", requires = "check", default_value_t = crate::check_outputs::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
-    /// No progress bar on stderr.
-    #[arg(short, long)]
-    pub quiet: bool,
+    /// Override every scene's theme: notebook, colour-blind (or color-blind) or dark.
+    #[arg(long, value_name = "NAME", value_parser = clap::builder::PossibleValuesParser::new(crate::scene::THEMES))]
+    pub theme: Option<String>,
     /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
     /// inside the folder of the spec naming it. Repeatable.
     #[arg(long = "allow-read", value_name = "DIR")]
@@ -177,7 +197,7 @@ pub struct EvalArgs {
     /// unless --degrees. Use --theta=-1 for negatives.
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub theta: String,
-    /// Read the angles in degrees (θ = d·π/180).
+    /// Read the angles in degrees (θ = d·π/180) and print them as given, in a column named theta_deg.
     #[arg(long)]
     pub degrees: bool,
 }
@@ -204,7 +224,8 @@ fn eval_help() -> String {
     }
     text.push_str(FRESNEL_HELP);
     text.push_str(
-        "\nOutput: CSV with header theta,value (one curve) or theta,<curve JSON>... (several);\n\
+        "\nOutput: CSV with header theta,value (one curve) or theta,<curve JSON>... (several), theta_deg\n\
+         instead of theta with --degrees;\n\
          numbers in shortest round-trip form. Exit 2 on bad input, with one error line per problem.\n\n\
          Examples:\n  \
          ndfplot eval --curve '{\"ndf\":\"beckmann\",\"alpha_b\":0.5}' --theta 0:1.5707963267948966:5\n  \
@@ -227,15 +248,22 @@ const FRESNEL_HELP: &str = "  fresnel exact        eta in [1e-150, 1e150], kappa
 /// Arguments of `ndfplot compare`.
 #[derive(Debug, Args)]
 #[command(
-    after_long_help = "Metrics over theta in [0, pi/2] (CONTRACTS.md):\n  \
-    max_abs       max |a - b|, with the theta where it is reached\n  \
-    max_rel       max |a - b| / max(|a|, |b|) (0 where both are 0), with its theta\n  \
-    l2_projected  sqrt(2 pi integral (a - b)^2 sin cos dtheta), adaptive quadrature\n  \
-    l2_grid       Euclidean norm of a - b on theta_i = arccos(linspace(0, 1, 1000))\n  \
-    a_peak/b_peak the maxima of a and b, with their theta\n\n\
-    Exit 1 when a --max-error bound is exceeded, 2 on bad input (an NDF against a Fresnel curve).\n\n\
+    after_long_help = "Metrics over theta in [0, pi/2], or in --theta-range (CONTRACTS.md):\n  \
+    max_abs        max |a - b|, with the theta where it is reached\n  \
+    max_rel        max |a - b| / max(|a|, |b|) (0 where both are 0), with its theta\n  \
+    max_log_ratio  max |ln(a/b)| where both a and b exceed 1e-300, with its theta; undefined\n                 \
+    (JSON null, empty CSV field) when they never both do\n  \
+    l2_projected   sqrt(2 pi integral (a - b)^2 sin cos dtheta), adaptive quadrature\n  \
+    l2_grid        Euclidean norm of a - b on theta_i = arccos(linspace(0, 1, 1000))\n  \
+    a_peak/b_peak  the maxima of a and b, with their theta\n\n\
+    --format json prints one object and --format csv one header and one row, with a, b, theta_from,\n\
+    theta_to and each number by name (max_abs, max_abs_theta, ...); --metric NAME prints only that\n\
+    number. With --degrees every theta is read and printed in degrees and named *_deg.\n\n\
+    Exit 1 when a --max-error bound is exceeded (or bounds an undefined max_log_ratio), 2 on bad\n\
+    input (an NDF against a Fresnel curve, an unknown --metric name).\n\n\
     Examples:\n  \
     ndfplot compare --a '{\"ndf\":\"trowbridge_reitz\",\"alpha_tr\":0.3}' --b '{\"ndf\":\"abc\",\"alpha_abc1\":23.5,\"alpha_abc2\":1.75}'\n  \
+    ndfplot compare --a @a.json --b @b.json --theta-range 0:50 --degrees --metric max_log_ratio\n  \
     ndfplot compare --a @a.json --b @b.json --format json --max-error max_rel=1e-3 --max-error l2_projected=0.01"
 )]
 pub struct CompareArgs {
@@ -246,9 +274,20 @@ pub struct CompareArgs {
     /// The second side; two curves must be of the same kind.
     #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
     pub b: String,
-    /// Output: a readable table, or one JSON object for scripts.
-    #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = ["table", "json"])]
+    /// Take every metric (and the peaks) over A ≤ theta ≤ B only: radians (pi/4 and other multiples
+    /// of pi as --theta of eval reads them), or degrees with --degrees.
+    #[arg(long = "theta-range", value_name = "A:B")]
+    pub theta_range: Option<String>,
+    /// Read --theta-range in degrees, and print every theta in degrees (named *_deg).
+    #[arg(long)]
+    pub degrees: bool,
+    /// Output: a readable table, one JSON object, or CSV (a header and one row) for scripts.
+    #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = ["table", "json", "csv"])]
     pub format: String,
+    /// Print only this number (max_abs, max_rel_theta, max_log_ratio, l2_projected, a_peak, …;
+    /// any name of --format json); exit 2 when it is undefined.
+    #[arg(long, value_name = "NAME", conflicts_with = "format")]
+    pub metric: Option<String>,
     /// Fail (exit 1) when a metric exceeds a bound, as <metric>=<number>; repeatable.
     #[arg(long = "max-error", value_name = "METRIC=X")]
     pub max_error: Vec<String>,
@@ -306,10 +345,13 @@ pub struct FitArgs {
     after_long_help = "For every distinct NDF of the scenes: 2 pi integral D sin cos dtheta over [0, pi/2] by\n\
     adaptive quadrature, with its error estimate and |integral - 1|; for every Fresnel curve the\n\
     hemispherical average 2 integral_0^1 F(c) c dc (reported, not checked). Difference series are skipped.\n\
+    --format json prints a JSON array of one object per row and --format csv CSV, with the table's\n\
+    column names (deviation null or empty for a Fresnel average, curve as JSON).\n\
     Exit 1 when an NDF is off by more than --tolerance.\n\n\
     Examples:\n  \
     ndfplot check\n  \
-    ndfplot check configs/abc-vs-tr.json my-scenes/ --tolerance 1e-12"
+    ndfplot check configs/abc-vs-tr.json my-scenes/ --tolerance 1e-12\n  \
+    ndfplot check --format csv > normalization.csv"
 )]
 pub struct CheckArgs {
     /// Scene spec files, or folders whose *.json are checked in name order. None: the built-in catalogue.
@@ -318,6 +360,9 @@ pub struct CheckArgs {
     /// Largest accepted |2 pi integral D sin cos dtheta - 1|.
     #[arg(long, value_name = "X", default_value_t = crate::audit::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
+    /// Output: a readable table, a JSON array of one object per row, or CSV.
+    #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = ["table", "json", "csv"])]
+    pub format: String,
     /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
     /// inside the folder of the spec naming it. Repeatable.
     #[arg(long = "allow-read", value_name = "DIR")]

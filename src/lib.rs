@@ -8,6 +8,7 @@
 //! scenes for `ndfplot check`.
 
 pub mod adaptive;
+pub mod angle;
 pub mod audit;
 pub mod bench;
 pub mod catalogue;

@@ -15,7 +15,7 @@ fn main() -> ExitCode {
         let _ = writeln!(std::io::stderr(), "error: {message}");
         return ExitCode::from(2);
     }
-    match ndfplot::cmd::run(cli.command) {
+    match ndfplot::cmd::run(cli.command, cli.quiet) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
             // A closed or full stderr must not turn an error into a panic.

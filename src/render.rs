@@ -151,9 +151,61 @@ type Files = Vec<(String, Vec<u8>)>;
 
 /// Every output of `options` as (file name, bytes), sorted by name, without writing anything.
 fn encode_outputs(options: &RenderOptions, quiet: bool) -> Result<(Files, RenderStats)> {
-    let start = std::time::Instant::now();
+    encode_sources(
+        &sources(&options.paths, &options.allow_read)?,
+        options,
+        quiet,
+    )
+}
+
+/// `render -o -`: the one output of `options` — one figure in one format — as bytes, for standard
+/// output. Several formats, several figures, or no output (`html` for a scene without sliders) is a
+/// usage error (exit 2) before anything is written.
+pub fn to_stdout(options: &RenderOptions, quiet: bool) -> Result<Vec<u8>> {
+    let refuse = |what: String| {
+        Err(Error::Usage(format!(
+            "-o -: writes one figure in one format to stdout ({what})"
+        )))
+    };
+    if let [_, _, ..] = options.formats[..] {
+        let names: Vec<&str> = options.formats.iter().map(|f| f.extension()).collect();
+        return refuse(format!(
+            "got {} formats: {}; expected one, e.g. --format svg",
+            names.len(),
+            names.join(",")
+        ));
+    }
     let sources = sources(&options.paths, &options.allow_read)?;
-    let scenes = resolve::scenes(load_scenes(&sources, options.canvas))?;
+    if sources.len() != 1 {
+        return refuse(format!(
+            "got {} specs; expected one spec file, catalogue id or -",
+            sources.len()
+        ));
+    }
+    let (mut outputs, _) = encode_sources(&sources, options, quiet)?;
+    match outputs.pop() {
+        Some((_, bytes)) if outputs.is_empty() => Ok(bytes),
+        _ => refuse(format!(
+            "{} has no output in --format {}: html is written only for scenes with sliders",
+            sources[0].0,
+            options
+                .formats
+                .iter()
+                .map(|f| f.extension())
+                .collect::<Vec<_>>()
+                .join(",")
+        )),
+    }
+}
+
+/// [`encode_outputs`] of spec `sources` already read.
+fn encode_sources(
+    sources: &[crate::source::Source],
+    options: &RenderOptions,
+    quiet: bool,
+) -> Result<(Files, RenderStats)> {
+    let start = std::time::Instant::now();
+    let scenes = resolve::scenes(load_scenes(sources, options.canvas))?;
     let provenance: Vec<Provenance> = sources
         .iter()
         .map(|(_, text, _)| Provenance::of_spec(text.as_bytes()))

@@ -166,7 +166,7 @@ fn extra_key(key: &str) -> Value {
         "style" => {
             json!({ "anyOf": [strings(scene::STYLE_WORDS), { "type": "array", "items": strings(scene::STYLE_WORDS) }] })
         }
-        "colour" => json!({ "type": "string", "pattern": "^#[0-9A-Fa-f]{6}$" }),
+        "colour" | "color" => json!({ "type": "string", "pattern": "^#[0-9A-Fa-f]{6}$" }),
         "label" => json!({ "type": "string" }),
         "mark" => strings(scene::MARKS),
         "width" => {
@@ -265,7 +265,7 @@ fn signature(
 fn data_key(kind: &str, key: &str) -> Value {
     match (kind, key) {
         (_, "data") => json!({ "const": kind }),
-        (_, "style" | "colour" | "label" | "mark") => extra_key(key),
+        (_, "style" | "colour" | "color" | "label" | "mark") => extra_key(key),
         ("spectrum", "quantity") => strings(&names(&SpectrumQuantity::NAMES)),
         ("spectrum", "count") => json!({ "type": "integer", "minimum": 1, "maximum": 100 }),
         ("gulbrandsen", "x" | "y" | "z") => strings(&names(&Coefficient::NAMES)),

@@ -9,12 +9,14 @@ use crate::catalogue::CATALOGUE;
 use crate::datafile::DataScope;
 use crate::error::{Error, Result};
 use crate::input::{parse_json, read_file};
+use crate::look::Theme;
 use crate::problem::Problem;
 use crate::scene::{self, Invalid, Scene, Spec};
+use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-/// Command-line overrides of every scene's canvas.
+/// Command-line overrides of every scene's canvas and theme.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct CanvasOverride {
     /// Figure width in CSS pixels; the height follows proportionally unless also given.
@@ -25,15 +27,21 @@ pub struct CanvasOverride {
     pub png_scale: Option<f64>,
     /// Base font size in CSS pixels.
     pub font_px: Option<f64>,
+    /// The theme, instead of the spec's `theme` (`render --theme`).
+    pub theme: Option<Theme>,
 }
+
+/// The name of the spec read from standard input (`render -`), as problems name it.
+pub const STDIN_SOURCE: &str = "stdin";
 
 /// A spec's source name, text, and where its data files may be read from (`None` for the
 /// built-in catalogue).
 pub type Source = (String, String, Option<DataScope>);
 
-/// The spec sources named by `paths` (files, folders whose `*.json` are taken sorted by name, or
-/// catalogue ids: a path that exists wins over an id), or the whole built-in catalogue when `paths`
-/// is empty. A spec's data files may be read from its folder and from the folders `allow_read`.
+/// The spec sources named by `paths` (files, folders whose `*.json` are taken sorted by name,
+/// catalogue ids — a path that exists wins over an id — or `-` once, for a spec on standard input),
+/// or the whole built-in catalogue when `paths` is empty. A spec's data files may be read from its
+/// folder (the working directory for stdin) and from the folders `allow_read`.
 pub fn sources(paths: &[PathBuf], allow_read: &[PathBuf]) -> Result<Vec<Source>> {
     let allowed: Arc<[PathBuf]> = Arc::from(allow_read);
     let scope = |folder: PathBuf| Some(DataScope::new(folder, allowed.clone()));
@@ -43,9 +51,21 @@ pub fn sources(paths: &[PathBuf], allow_read: &[PathBuf]) -> Result<Vec<Source>>
             .map(|(name, text)| (format!("configs/{name}"), text.to_string(), None))
             .collect());
     }
+    let stdin_count = paths.iter().filter(|p| p.as_os_str() == "-").count();
+    if stdin_count > 1 {
+        return Err(Error::Usage(format!(
+            "-: stdin holds one spec and is read once (got - {stdin_count} times, expected at most once)"
+        )));
+    }
     let mut sources = Vec::new();
     for path in paths {
-        if path.is_dir() {
+        if path.as_os_str() == "-" {
+            let mut text = String::new();
+            std::io::stdin()
+                .read_to_string(&mut text)
+                .map_err(|e| Error::io(STDIN_SOURCE, e))?;
+            sources.push((STDIN_SOURCE.to_string(), text, scope(PathBuf::from("."))));
+        } else if path.is_dir() {
             let entries =
                 std::fs::read_dir(path).map_err(|e| Error::io(path.display().to_string(), e))?;
             let mut files: Vec<PathBuf> = entries
@@ -138,6 +158,7 @@ fn apply_override(
     canvas.height_px = height.round().max(16.0) as u32;
     canvas.png_scale = over.png_scale.unwrap_or(canvas.png_scale);
     canvas.font_px = over.font_px.unwrap_or(canvas.font_px);
+    scene.theme = over.theme.unwrap_or(scene.theme);
     scene::check_canvas(canvas).map_err(|message| Problem::new("", message))?;
     Ok(scene)
 }

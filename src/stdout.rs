@@ -8,8 +8,14 @@ use std::io::{ErrorKind, Write};
 
 /// Writes `text` to standard output and flushes it; a closed pipe counts as success.
 pub fn print(text: &str) -> Result<()> {
+    write_bytes(text.as_bytes())
+}
+
+/// Writes `bytes` (a figure's SVG, PNG, PDF, CSV or HTML for `render -o -`) to standard output and
+/// flushes it; a closed pipe counts as success.
+pub fn write_bytes(bytes: &[u8]) -> Result<()> {
     let mut out = std::io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+    match out.write_all(bytes).and_then(|()| out.flush()) {
         Err(e) if e.kind() != ErrorKind::BrokenPipe => Err(Error::io("stdout", e)),
         _ => Ok(()),
     }

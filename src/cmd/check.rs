@@ -3,20 +3,45 @@
 
 use crate::audit::Audit;
 use crate::error::{Error, Result};
+use crate::output::report::{Cell, Report};
+
+/// The columns of the table and of `--format json|csv`.
+const COLUMNS: [&str; 7] = [
+    "status",
+    "quantity",
+    "integral",
+    "error_estimate",
+    "deviation",
+    "scene",
+    "curve",
+];
+
+/// An audit's status: `ok`, `FAIL` (off by more than `tolerance`), or `-` for a Fresnel average.
+fn status(audit: &Audit, tolerance: f64) -> &'static str {
+    match audit.deviation() {
+        Some(d) if d > tolerance => "FAIL",
+        Some(_) => "ok",
+        None => "-",
+    }
+}
 
 /// The table: a header, then per curve its status (`ok`, `FAIL`, or `-` for a Fresnel average), the
 /// quantity, the integral, its error estimate, |integral − 1|, the scene and the curve.
 pub fn table(audits: &[Audit], tolerance: f64) -> String {
+    let [
+        status_name,
+        quantity,
+        integral,
+        error,
+        deviation,
+        scene,
+        curve,
+    ] = COLUMNS;
     let mut out = format!(
-        "{:<7}{:<23}{:<21}{:<25}{:<25}{:<22}{}\n",
-        "status", "quantity", "integral", "error_estimate", "deviation", "scene", "curve"
+        "{status_name:<7}{quantity:<23}{integral:<21}{error:<25}{deviation:<25}{scene:<22}{curve}\n"
     );
     for a in audits {
-        let status = match a.deviation() {
-            Some(d) if d > tolerance => "FAIL",
-            Some(_) => "ok",
-            None => "-",
-        };
+        let status = status(a, tolerance);
         let deviation = a
             .deviation()
             .map_or_else(|| "-".to_string(), |d| format!("{d:?}"));
@@ -31,6 +56,25 @@ pub fn table(audits: &[Audit], tolerance: f64) -> String {
         ));
     }
     out
+}
+
+/// The rows of the table for `--format json|csv`, one per curve: the table's columns, numbers in
+/// round-trip form, `deviation` missing (JSON `null`, empty CSV field) for a Fresnel average and
+/// `curve` as JSON.
+pub fn report(audits: &[Audit], tolerance: f64) -> Report {
+    let mut report = Report::new(COLUMNS);
+    for a in audits {
+        report.push(vec![
+            Cell::Text(status(a, tolerance).into()),
+            Cell::Text(a.quantity.name().into()),
+            Cell::Number(a.integral.value),
+            Cell::Number(a.integral.error),
+            a.deviation().map_or(Cell::Missing, Cell::Number),
+            Cell::Text(a.scene.clone()),
+            Cell::Json(a.curve.clone()),
+        ]);
+    }
+    report
 }
 
 /// `Err(CheckFailed)` (exit 1) when an NDF's normalization is off by more than `tolerance`.

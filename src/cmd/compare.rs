@@ -1,15 +1,16 @@
-//! `ndfplot compare`: the metrics of two curves of the same kind (CONTRACTS.md), as a readable table or
-//! one JSON object, and the `--max-error` bounds that turn them into a CI gate (exit 1 when exceeded).
+//! `ndfplot compare`: the metrics of two curves of the same kind (CONTRACTS.md) over the whole hemisphere
+//! or a `--theta-range`, as a readable table, one JSON object, one CSV row or the one number `--metric`
+//! names, and the `--max-error` bounds that turn them into a CI gate (exit 1 when exceeded).
 //!
 //! Owns the formatting and the bound checks only; the metrics are [`crate::metrics`]'s.
 
+use crate::angle::AngleUnit;
 use crate::curve::Curve;
 use crate::error::{Error, Result};
 use crate::metrics::sampled::{Operand, compare_operands};
-use crate::metrics::{Comparison, Metric};
+use crate::metrics::{Comparison, LOG_RATIO_FLOOR, Metric, ThetaRange};
+use crate::output::report::{Cell, Report};
 use crate::problem::{Problem, Problems, suggestion};
-use serde::Serialize;
-use serde_json::value::RawValue;
 
 /// A `--max-error <metric>=<x>` bound.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -76,91 +77,266 @@ pub fn check_kinds(a: &Curve, b: &Curve) -> Result<()> {
     }))
 }
 
-/// The metrics of `a` against `b` (two curves of one kind, or a sampled series against anything); a
-/// side that is not finite somewhere, an integral that does not converge or two series with no θ in
-/// common is an error (exit 2).
-pub fn metrics(a: &Operand, b: &Operand) -> Result<Comparison> {
+/// The metrics of `a` against `b` (two curves of one kind, or a sampled series against anything) over
+/// `range`; a side that is not finite somewhere, an integral that does not converge, a series with no
+/// sample in the range or two series with no θ in common is an error (exit 2).
+pub fn metrics(a: &Operand, b: &Operand, range: ThetaRange) -> Result<Comparison> {
     if let (Operand::Curve(a), Operand::Curve(b)) = (a, b) {
         check_kinds(a, b)?;
     }
-    compare_operands(a, b).map_err(|e| Error::Numerics(format!("compare: {e}")))
+    compare_operands(a, b, range).map_err(|e| Error::Numerics(format!("compare: {e}")))
 }
 
-/// The readable report: the two sides (canonical JSON), then one row per metric with the θ where it
-/// is reached.
-pub fn table(a: &str, b: &str, c: &Comparison) -> String {
-    let rows: [(&str, f64, Option<f64>); 6] = [
-        ("max_abs", c.max_abs, Some(c.max_abs_theta)),
-        ("max_rel", c.max_rel, Some(c.max_rel_theta)),
-        ("l2_projected", c.l2_projected, None),
-        ("l2_grid", c.l2_grid, None),
-        ("a_peak", c.a_peak.value, Some(c.a_peak.theta)),
-        ("b_peak", c.b_peak.value, Some(c.b_peak.theta)),
+/// Where the metrics are taken (`--theta-range`) and the unit θ is read and printed in (`--degrees`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Span {
+    /// The θ range, in radians.
+    pub range: ThetaRange,
+    /// Its ends as given, in `unit` (0 and π/2, or 0 and 90, without `--theta-range`).
+    pub given: [f64; 2],
+    /// The unit of `--theta-range` and of every θ printed.
+    pub unit: AngleUnit,
+}
+
+/// Parses `--theta-range A:B` in `unit` (radians may be multiples of π, as `--theta` reads them):
+/// 0 ≤ A < B ≤ π/2 (or 90 degrees). `None` is the whole [0, π/2].
+pub fn parse_span(text: Option<&str>, unit: AngleUnit) -> Result<Span> {
+    let bad = |what: String| Error::Usage(format!("--theta-range: {what}"));
+    let Some(text) = text else {
+        return Ok(Span {
+            range: ThetaRange::FULL,
+            given: [0.0, unit.from_radians(ThetaRange::FULL.hi())],
+            unit,
+        });
+    };
+    let Some((a, b)) = text.split_once(':') else {
+        return Err(bad(format!(
+            "expected A:B (got \"{}\", expected e.g. 0:pi/4, or 0:50 with --degrees)",
+            crate::problem::excerpt(text)
+        )));
+    };
+    let end = |s: &str| -> Result<(f64, f64)> {
+        let given = unit.parse(s).map_err(bad)?;
+        Ok((given, unit.check(given).map_err(bad)?))
+    };
+    let ((from, lo), (to, hi)) = (end(a)?, end(b)?);
+    let range = ThetaRange::new(lo, hi).ok_or_else(|| {
+        bad(format!(
+            "the range is empty (got {from:?}:{to:?}, expected A < B)"
+        ))
+    })?;
+    Ok(Span {
+        range,
+        given: [from, to],
+        unit,
+    })
+}
+
+/// A number of the report, by name (`--metric`, the JSON members and CSV columns, in this order).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Field {
+    /// The start of the θ range.
+    ThetaFrom,
+    /// The end of the θ range.
+    ThetaTo,
+    /// A metric's value.
+    Value(Metric),
+    /// The θ where a maximum metric is reached.
+    Theta(Metric),
+    /// The maximum of side a.
+    APeak,
+    /// θ of a's maximum.
+    APeakTheta,
+    /// The maximum of side b.
+    BPeak,
+    /// θ of b's maximum.
+    BPeakTheta,
+}
+
+impl Field {
+    /// Every field, in report order.
+    pub const ALL: [Field; 14] = [
+        Field::ThetaFrom,
+        Field::ThetaTo,
+        Field::Value(Metric::MaxAbs),
+        Field::Theta(Metric::MaxAbs),
+        Field::Value(Metric::MaxRel),
+        Field::Theta(Metric::MaxRel),
+        Field::Value(Metric::MaxLogRatio),
+        Field::Theta(Metric::MaxLogRatio),
+        Field::Value(Metric::L2Projected),
+        Field::Value(Metric::L2Grid),
+        Field::APeak,
+        Field::APeakTheta,
+        Field::BPeak,
+        Field::BPeakTheta,
     ];
-    let mut out = format!(
-        "a  {a}\nb  {b}\n\n{:<14}{:<25}{}\n",
-        "metric", "value", "theta"
-    );
+
+    /// The field's name with θ in `unit`: a metric's name, `<metric>_theta`, `a_peak`, `a_peak_theta`,
+    /// `theta_from`, …; every angle's name ends in `_deg` in degrees.
+    pub fn name(self, unit: AngleUnit) -> String {
+        match self {
+            Field::ThetaFrom => unit.name("theta_from"),
+            Field::ThetaTo => unit.name("theta_to"),
+            Field::Value(m) => m.name().to_string(),
+            Field::Theta(m) => unit.name(&format!("{}_theta", m.name())),
+            Field::APeak => "a_peak".into(),
+            Field::APeakTheta => unit.name("a_peak_theta"),
+            Field::BPeak => "b_peak".into(),
+            Field::BPeakTheta => unit.name("b_peak_theta"),
+        }
+    }
+
+    /// The field's value in `c` over `span`, angles in its unit (an end of the range as given);
+    /// `None` for an undefined `max_log_ratio` and its θ.
+    pub fn of(self, c: &Comparison, span: &Span) -> Option<f64> {
+        let angle = |theta: f64| {
+            Some(if theta == span.range.lo() {
+                span.given[0]
+            } else if theta == span.range.hi() {
+                span.given[1]
+            } else {
+                span.unit.from_radians(theta)
+            })
+        };
+        match self {
+            Field::ThetaFrom => Some(span.given[0]),
+            Field::ThetaTo => Some(span.given[1]),
+            Field::Value(m) => m.of(c),
+            Field::Theta(Metric::MaxAbs) => angle(c.max_abs_theta),
+            Field::Theta(Metric::MaxRel) => angle(c.max_rel_theta),
+            Field::Theta(Metric::MaxLogRatio) => c.max_log_ratio.and_then(|m| angle(m.theta)),
+            Field::Theta(Metric::L2Projected | Metric::L2Grid) => None,
+            Field::APeak => Some(c.a_peak.value),
+            Field::APeakTheta => angle(c.a_peak.theta),
+            Field::BPeak => Some(c.b_peak.value),
+            Field::BPeakTheta => angle(c.b_peak.theta),
+        }
+    }
+
+    /// The field named `name` in `unit`; an unknown name is a usage error under `--metric` listing
+    /// every name.
+    pub fn from_name(name: &str, unit: AngleUnit) -> Result<Field> {
+        let names: Vec<String> = Field::ALL.iter().map(|f| f.name(unit)).collect();
+        match Field::ALL.into_iter().find(|f| f.name(unit) == name) {
+            Some(field) => Ok(field),
+            None => Err(Error::Usage(format!(
+                "--metric: unknown name (got \"{}\", expected one of: {}){}",
+                crate::problem::excerpt(name),
+                names.join(", "),
+                suggestion(name, names.iter().map(String::as_str))
+            ))),
+        }
+    }
+}
+
+/// Why `max_log_ratio` has no value, for messages and the table.
+fn log_ratio_undefined(span: &Span) -> String {
+    format!(
+        "no theta in {:?}:{:?} where both sides exceed {LOG_RATIO_FLOOR:e}",
+        span.given[0], span.given[1]
+    )
+}
+
+/// `--metric NAME`: the field's number and a newline; an undefined `max_log_ratio` is an error
+/// (exit 2) saying why.
+pub fn one_number(field: Field, c: &Comparison, span: &Span) -> Result<String> {
+    field
+        .of(c, span)
+        .map(|v| format!("{v:?}\n"))
+        .ok_or_else(|| {
+            Error::Numerics(format!(
+                "compare: {} is undefined: {}",
+                field.name(span.unit),
+                log_ratio_undefined(span)
+            ))
+        })
+}
+
+/// The readable report: the two sides (canonical JSON), the θ range when it is not the whole
+/// hemisphere, then one row per metric with the θ where it is reached (`theta_deg` with `--degrees`);
+/// an undefined `max_log_ratio` reads `undefined` and why.
+pub fn table(a: &str, b: &str, c: &Comparison, span: &Span) -> String {
+    let mut out = format!("a  {a}\nb  {b}\n");
+    if span.range != ThetaRange::FULL {
+        out.push_str(&format!(
+            "{}  {:?}:{:?}\n",
+            span.unit.name("theta"),
+            span.given[0],
+            span.given[1]
+        ));
+    }
+    out.push_str(&format!(
+        "\n{:<14}{:<25}{}\n",
+        "metric",
+        "value",
+        span.unit.name("theta")
+    ));
+    let rows = Metric::ALL
+        .map(|m| (m.name(), Field::Value(m), Some(Field::Theta(m))))
+        .into_iter()
+        .chain([
+            ("a_peak", Field::APeak, Some(Field::APeakTheta)),
+            ("b_peak", Field::BPeak, Some(Field::BPeakTheta)),
+        ]);
     for (name, value, theta) in rows {
-        let theta = theta.map_or_else(String::new, |t| format!("{t:?}"));
-        out.push_str(format!("{name:<14}{:<25}{theta}", format!("{value:?}")).trim_end());
+        let theta = theta.and_then(|t| t.of(c, span));
+        let (value, theta) = match value.of(c, span) {
+            Some(v) => (
+                format!("{v:?}"),
+                theta.map_or_else(String::new, |t| format!("{t:?}")),
+            ),
+            None => (
+                "undefined".into(),
+                format!("({})", log_ratio_undefined(span)),
+            ),
+        };
+        out.push_str(format!("{name:<14}{value:<25}{theta}").trim_end());
         out.push('\n');
     }
     out
 }
 
-/// The members of `compare --format json`, in order.
-#[derive(Serialize)]
-struct Report<'a> {
-    a: &'a RawValue,
-    b: &'a RawValue,
-    max_abs: f64,
-    max_abs_theta: f64,
-    max_rel: f64,
-    max_rel_theta: f64,
-    l2_projected: f64,
-    l2_grid: f64,
-    a_peak: f64,
-    a_peak_theta: f64,
-    b_peak: f64,
-    b_peak_theta: f64,
+/// The report of `--format json` and `csv`: columns `a`, `b` (each side's canonical JSON), then every
+/// [`Field`] by name; one row. An undefined number is JSON `null` and an empty CSV field.
+pub fn report(a: &str, b: &str, c: &Comparison, span: &Span) -> Report {
+    let mut report = Report::new(
+        ["a".to_string(), "b".to_string()]
+            .into_iter()
+            .chain(Field::ALL.iter().map(|f| f.name(span.unit))),
+    );
+    report.push(
+        [Cell::Json(a.into()), Cell::Json(b.into())]
+            .into_iter()
+            .chain(
+                Field::ALL
+                    .iter()
+                    .map(|f| f.of(c, span).map_or(Cell::Missing, Cell::Number)),
+            )
+            .collect(),
+    );
+    report
 }
 
-/// One JSON object and a newline: `a` and `b` (each side's canonical JSON, given as JSON text),
-/// each metric by name, `max_abs_theta`, `max_rel_theta`, `a_peak`, `a_peak_theta`, `b_peak`,
-/// `b_peak_theta`; numbers in round-trip form.
-pub fn json(a: &str, b: &str, c: &Comparison) -> String {
-    let raw = |text| serde_json::from_str::<&RawValue>(text).expect("canonical JSON is JSON");
-    let report = Report {
-        a: raw(a),
-        b: raw(b),
-        max_abs: c.max_abs,
-        max_abs_theta: c.max_abs_theta,
-        max_rel: c.max_rel,
-        max_rel_theta: c.max_rel_theta,
-        l2_projected: c.l2_projected,
-        l2_grid: c.l2_grid,
-        a_peak: c.a_peak.value,
-        a_peak_theta: c.a_peak.theta,
-        b_peak: c.b_peak.value,
-        b_peak_theta: c.b_peak.theta,
-    };
-    crate::json::to_string(&report) + "\n"
-}
-
-/// `Err(CheckFailed)` (exit 1) listing every exceeded bound, one line each.
-pub fn check_bounds(c: &Comparison, bounds: &[Bound]) -> Result<()> {
+/// `Err(CheckFailed)` (exit 1) listing every exceeded bound, one line each; a bound on an undefined
+/// `max_log_ratio` cannot be met and fails too.
+pub fn check_bounds(c: &Comparison, bounds: &[Bound], span: &Span) -> Result<()> {
     let exceeded: Vec<String> = bounds
         .iter()
-        .filter(|b| b.metric.of(c) > b.limit)
-        .map(|b| {
-            format!(
-                "compare: {} = {:?} exceeds --max-error {}={:?}",
-                b.metric.name(),
-                b.metric.of(c),
-                b.metric.name(),
-                b.limit
-            )
+        .filter_map(|b| {
+            let name = b.metric.name();
+            match b.metric.of(c) {
+                Some(v) if v > b.limit => Some(format!(
+                    "compare: {name} = {v:?} exceeds --max-error {name}={:?}",
+                    b.limit
+                )),
+                Some(_) => None,
+                None => Some(format!(
+                    "compare: {name} is undefined ({}), so --max-error {name}={:?} is not met",
+                    log_ratio_undefined(span),
+                    b.limit
+                )),
+            }
         })
         .collect();
     if exceeded.is_empty() {

@@ -1,51 +1,29 @@
 //! `ndfplot eval`: a curve's values at given angles, as CSV on standard output (CONTRACTS.md).
 
+use crate::angle::AngleUnit;
 use crate::curve::Curve;
 use crate::error::{Error, Result};
 use crate::grid::linspace;
 use crate::output::csv::Table;
-use std::f64::consts::FRAC_PI_2;
 
 /// Largest θ count of a `start:stop:count` list (CONTRACTS.md).
 pub const MAX_THETA_COUNT: u64 = 10_000_000;
 
-/// A multiple of π written `pi`, `π`, `pi/2`, `3pi/4` or `0.5pi`: k·π/n with k and n positive
-/// numbers (1 when absent), computed as (k·π)/n, so `pi/2` is the double nearest π/2. `None` when
-/// `s` is not of that form.
-pub fn pi_multiple(s: &str) -> Option<f64> {
-    let s = s.trim();
-    let (before, after) = s.split_once("pi").or_else(|| s.split_once('π'))?;
-    let k: f64 = if before.is_empty() {
-        1.0
-    } else {
-        before.trim_end_matches('*').parse().ok()?
-    };
-    let n: f64 = match after {
-        "" => 1.0,
-        rest => rest.strip_prefix('/')?.parse().ok()?,
-    };
-    (k > 0.0 && n > 0.0).then(|| k * std::f64::consts::PI / n)
+/// One angle of a θ list: the value as given (radians or degrees) and θ in radians.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Angle {
+    /// The value in the unit it was given in, as printed in the θ column.
+    pub given: f64,
+    /// θ in radians, where the curves are evaluated.
+    pub radians: f64,
 }
 
-/// Parses a θ list: comma-separated numbers or `start:stop:count` (numpy linspace), in radians
-/// (any value may be a multiple of π, [`pi_multiple`]), or in degrees when `degrees`
-/// (θ = d·π/180). Every θ must lie in [0, π/2].
-pub fn parse_theta_list(text: &str, degrees: bool) -> Result<Vec<f64>> {
+/// Parses a θ list: comma-separated numbers or `start:stop:count` (numpy linspace, taken in the unit
+/// given), in `unit` (radians may be multiples of π, [`crate::angle::pi_multiple`]; degrees are
+/// converted as θ = d·π/180). Every θ must lie in [0, π/2].
+pub fn parse_theta_list(text: &str, unit: AngleUnit) -> Result<Vec<Angle>> {
     let bad = |what: String| Error::Usage(format!("--theta: {what}"));
-    let number = |s: &str| -> Result<f64> {
-        if !degrees && let Some(v) = pi_multiple(s) {
-            return Ok(v);
-        }
-        let v: f64 = s
-            .trim()
-            .parse()
-            .map_err(|_| bad(format!("not a number (got \"{}\")", s.trim())))?;
-        if v.is_finite() {
-            Ok(v)
-        } else {
-            Err(bad(format!("not a finite number (got \"{}\")", s.trim())))
-        }
-    };
+    let number = |s: &str| unit.parse(s).map_err(bad);
     let raw: Vec<f64> = if text.contains(':') {
         if text.contains(',') {
             return Err(bad(format!(
@@ -80,39 +58,32 @@ pub fn parse_theta_list(text: &str, degrees: bool) -> Result<Vec<f64>> {
         items.into_iter().map(number).collect::<Result<_>>()?
     };
     raw.into_iter()
-        .map(|v| {
-            let theta = if degrees {
-                v * std::f64::consts::PI / 180.0
-            } else {
-                v
-            };
-            if (0.0..=FRAC_PI_2).contains(&theta) {
-                Ok(theta)
-            } else {
-                let unit = if degrees {
-                    "degrees, expected 0 to 90"
-                } else {
-                    "radians, expected 0 to 1.5707963267948966"
-                };
-                Err(bad(format!("angle out of range (got {v:?} {unit})")))
-            }
+        .map(|given| {
+            let radians = unit.check(given).map_err(bad)?;
+            Ok(Angle { given, radians })
         })
         .collect()
 }
 
 /// The CSV table: `theta,value` for one curve, else `theta,<canonical curve JSON>…`; one row per θ
-/// in input order, numbers in shortest round-trip form.
-pub fn table(curves: &[Curve], thetas: &[f64]) -> Result<String> {
+/// in input order, numbers in shortest round-trip form. The θ column holds the angles as given, in
+/// `unit`, and is named `theta` for radians, `theta_deg` for degrees.
+pub fn table(curves: &[Curve], thetas: &[Angle], unit: AngleUnit) -> Result<String> {
+    let theta_name = unit.name("theta");
     let header: Vec<String> = if let [_] = curves {
-        vec!["theta".into(), "value".into()]
+        vec![theta_name, "value".into()]
     } else {
-        std::iter::once("theta".to_string())
+        std::iter::once(theta_name)
             .chain(curves.iter().map(Curve::canonical_json))
             .collect()
     };
     let mut table = Table::new(header, thetas.len() * 24 * (curves.len() + 1));
-    for &theta in thetas {
-        table.number(theta);
+    for &Angle {
+        given,
+        radians: theta,
+    } in thetas
+    {
+        table.number(given);
         for curve in curves {
             let value = curve.eval(theta);
             if !value.is_finite() {
@@ -131,44 +102,37 @@ pub fn table(curves: &[Curve], thetas: &[f64]) -> Result<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
-    #[test]
-    fn multiples_of_pi_are_read_in_any_position() {
-        use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
-        assert_eq!(pi_multiple("pi"), Some(PI));
-        assert_eq!(pi_multiple("π/2"), Some(FRAC_PI_2));
-        assert_eq!(pi_multiple(" pi/4 "), Some(FRAC_PI_4));
-        assert_eq!(pi_multiple("3pi/8"), Some(3.0 * PI / 8.0));
-        assert_eq!(pi_multiple("0.5*pi"), Some(0.5 * PI));
-        for not in ["p", "pi/", "pi/0", "-pi", "2pie", "x"] {
-            assert_eq!(pi_multiple(not), None, "{not}");
-        }
-        assert_eq!(
-            parse_theta_list("0,pi/4,pi/2", false).unwrap(),
-            [0.0, FRAC_PI_4, FRAC_PI_2]
-        );
-        assert_eq!(
-            parse_theta_list("0:pi/2:3", false).unwrap(),
-            [0.0, FRAC_PI_4, FRAC_PI_2]
-        );
-        assert!(parse_theta_list("pi", false).is_err());
-        assert!(
-            parse_theta_list("pi/4", true).is_err(),
-            "degrees take numbers only"
-        );
+    fn radians(text: &str, unit: AngleUnit) -> Result<Vec<f64>> {
+        parse_theta_list(text, unit).map(|list| list.iter().map(|a| a.radians).collect())
     }
 
     #[test]
     fn theta_lists() {
+        let rad = AngleUnit::Radians;
         assert_eq!(
-            parse_theta_list("0,0.1, 1.5707963267948966", false).unwrap(),
+            radians("0,0.1, 1.5707963267948966", rad).unwrap(),
             [0.0, 0.1, FRAC_PI_2]
         );
         assert_eq!(
-            parse_theta_list("0:90:3", true).unwrap(),
-            [0.0, std::f64::consts::FRAC_PI_4, FRAC_PI_2]
+            radians("0,pi/4,pi/2", rad).unwrap(),
+            [0.0, FRAC_PI_4, FRAC_PI_2]
         );
-        assert_eq!(parse_theta_list("90", true).unwrap(), [FRAC_PI_2]);
+        assert_eq!(
+            radians("0:pi/2:3", rad).unwrap(),
+            [0.0, FRAC_PI_4, FRAC_PI_2]
+        );
+        assert!(radians("pi", rad).is_err());
+        let degrees = parse_theta_list("0:90:3", AngleUnit::Degrees).unwrap();
+        assert_eq!(
+            degrees
+                .iter()
+                .map(|a| (a.given, a.radians))
+                .collect::<Vec<_>>(),
+            [(0.0, 0.0), (45.0, FRAC_PI_4), (90.0, FRAC_PI_2)]
+        );
+        assert!(radians("pi/4", AngleUnit::Degrees).is_err());
         for bad in [
             "abc",
             "0:1:0",
@@ -181,7 +145,7 @@ mod tests {
             "",
             "inf",
         ] {
-            assert!(parse_theta_list(bad, false).is_err(), "{bad}");
+            assert!(radians(bad, rad).is_err(), "{bad}");
         }
     }
 
@@ -197,10 +161,19 @@ mod tests {
             crate::resolve::curve(&spec).unwrap()
         })
         .collect();
+        let zero = [Angle {
+            given: 0.0,
+            radians: 0.0,
+        }];
         assert_eq!(
-            table(&curves, &[0.0]).unwrap(),
+            table(&curves, &zero, AngleUnit::Radians).unwrap(),
             "theta,\"{\"\"ndf\"\":\"\"phong\"\",\"\"alpha_p\"\":1.0}\",\"{\"\"fresnel\"\":\"\"schlick\"\",\"\"f0\"\":0.04}\"\n\
              0.0,0.477464829275686,0.04\n"
+        );
+        assert!(
+            table(&curves[..1], &zero, AngleUnit::Degrees)
+                .unwrap()
+                .starts_with("theta_deg,value\n")
         );
     }
 }

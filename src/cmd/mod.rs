@@ -21,14 +21,15 @@ use crate::{input, resolve, source, stdout};
 use std::io::{Read, Write};
 use std::path::PathBuf;
 
-/// Runs a parsed command line.
-pub fn run(command: Command) -> Result<()> {
+/// Runs a parsed command line; `quiet` (`-q`) leaves progress and notes off stderr (never errors or
+/// warnings).
+pub fn run(command: Command, quiet: bool) -> Result<()> {
     match command {
         Command::Eval(args) => run_eval(args),
-        Command::Render(args) => render::run(args),
+        Command::Render(args) => render::run(args, quiet),
         Command::Coeffs(args) => run_coeffs(args),
         Command::Compare(args) => run_compare(args),
-        Command::Fit(args) => run_fit(args),
+        Command::Fit(args) => run_fit(args, quiet),
         Command::Check(args) => run_check(args),
         Command::List => stdout::print(&crate::catalogue::listing()),
         Command::Show(args) => run_show(&args.id),
@@ -57,14 +58,20 @@ fn read_stdin() -> std::io::Result<String> {
 }
 
 fn run_eval(args: EvalArgs) -> Result<()> {
-    let thetas = eval::parse_theta_list(&args.theta, args.degrees)?;
+    let unit = crate::angle::AngleUnit::of(args.degrees);
+    let thetas = eval::parse_theta_list(&args.theta, unit)?;
     let curves = load_curves(&args.curve, "--curve")?;
-    stdout::print(&eval::table(&curves, &thetas)?)
+    stdout::print(&eval::table(&curves, &thetas, unit)?)
 }
 
 fn run_coeffs(args: CoeffsArgs) -> Result<()> {
     let curves = load_curves(&args.curve, "--curve")?;
-    stdout::print(&coeffs::table(&curves)?)
+    let report = coeffs::report(&curves)?;
+    stdout::print(&if args.format == "json" {
+        report.json_array()
+    } else {
+        report.csv()
+    })
 }
 
 /// The curves of a curve argument ([`input::load_curves`]), resolved.
@@ -113,19 +120,29 @@ fn run_compare(args: CompareArgs) -> Result<()> {
         .iter()
         .map(|b| compare::parse_bound(b))
         .collect::<Result<_>>()?;
+    let span = compare::parse_span(
+        args.theta_range.as_deref(),
+        crate::angle::AngleUnit::of(args.degrees),
+    )?;
+    let field = args
+        .metric
+        .as_deref()
+        .map(|name| compare::Field::from_name(name, span.unit))
+        .transpose()?;
     let (a, a_name) = load_operand(&args.a, "--a", &args.allow_read)?;
     let (b, b_name) = load_operand(&args.b, "--b", &args.allow_read)?;
-    let metrics = compare::metrics(&a, &b)?;
-    let report = if args.format == "json" {
-        compare::json(&a_name, &b_name, &metrics)
-    } else {
-        compare::table(&a_name, &b_name, &metrics)
+    let metrics = compare::metrics(&a, &b, span.range)?;
+    let report = match (field, args.format.as_str()) {
+        (Some(field), _) => compare::one_number(field, &metrics, &span)?,
+        (None, "json") => compare::report(&a_name, &b_name, &metrics, &span).json_object(),
+        (None, "csv") => compare::report(&a_name, &b_name, &metrics, &span).csv(),
+        (None, _) => compare::table(&a_name, &b_name, &metrics, &span),
     };
     stdout::print(&report)?;
-    compare::check_bounds(&metrics, &bounds)
+    compare::check_bounds(&metrics, &bounds, &span)
 }
 
-fn run_fit(args: FitArgs) -> Result<()> {
+fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {
     let family = fit::parse_family(&args.family)?;
     let by = fit::parse_by(&args.by)?;
     let fixed = fit::parse_fixed(&args.fix)?;
@@ -135,7 +152,9 @@ fn run_fit(args: FitArgs) -> Result<()> {
     let report = fit::run(&spec, targets, format);
     stdout::print(&report.stdout)?;
     // stderr is informative only: a closed or full stderr does not fail the fit.
-    let _ = write!(std::io::stderr(), "{}", report.stderr);
+    if !quiet {
+        let _ = write!(std::io::stderr(), "{}", report.stderr);
+    }
     if report.problems.is_empty() {
         Ok(())
     } else {
@@ -167,6 +186,10 @@ fn run_check(args: CheckArgs) -> Result<()> {
         source::CanvasOverride::default(),
     ))?;
     let audits = crate::audit::audit_scenes(&scenes)?;
-    stdout::print(&check::table(&audits, args.tolerance))?;
+    stdout::print(&match args.format.as_str() {
+        "json" => check::report(&audits, args.tolerance).json_array(),
+        "csv" => check::report(&audits, args.tolerance).csv(),
+        _ => check::table(&audits, args.tolerance),
+    })?;
     check::verdict(&audits, args.tolerance)
 }

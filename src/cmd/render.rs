@@ -1,4 +1,5 @@
-//! `ndfplot render`: the command line's options to one [`crate::render`] call.
+//! `ndfplot render`: the command line's options to one [`crate::render`] call (files, `--check`, or
+//! `-o -` to standard output).
 
 use crate::cli::RenderArgs;
 use crate::error::Result;
@@ -6,8 +7,9 @@ use crate::output::Format;
 use crate::render::{self, RenderOptions};
 use crate::source::CanvasOverride;
 
-/// Runs `ndfplot render` (or `render --check DIR`) with the parsed `args`.
-pub fn run(args: RenderArgs) -> Result<()> {
+/// Runs `ndfplot render` (or `render --check DIR`, or `render -o -` to stdout) with the parsed
+/// `args`; `quiet` turns the progress bar off.
+pub fn run(args: RenderArgs, quiet: bool) -> Result<()> {
     let options = RenderOptions {
         paths: args.paths,
         out: args.out,
@@ -17,11 +19,15 @@ pub fn run(args: RenderArgs) -> Result<()> {
             height: args.height,
             png_scale: args.png_scale,
             font_px: args.font_px,
+            theme: args.theme.as_deref().map(crate::scene::theme_named),
         },
         allow_read: args.allow_read,
     };
     match &args.check {
-        Some(dir) => render::check(&options, dir, args.tolerance, args.quiet),
-        None => render::run_with_progress(&options, args.quiet).map(|_| ()),
+        Some(dir) => render::check(&options, dir, args.tolerance, quiet),
+        None if options.out.as_os_str() == "-" => {
+            crate::stdout::write_bytes(&render::to_stdout(&options, quiet)?)
+        }
+        None => render::run_with_progress(&options, quiet).map(|_| ()),
     }
 }

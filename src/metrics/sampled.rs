@@ -5,9 +5,11 @@
 //! span); a sampled side is read between its samples by linear interpolation in θ, the way the plot
 //! draws it. No I/O.
 
-use super::{Comparison, Extremum, L2_GRID_NODES, MetricError, peak, relative_difference};
+use super::{
+    Comparison, Extremum, MetricError, ThetaRange, l2_grid_nodes, log_ratio, peak_over,
+    relative_difference,
+};
 use crate::curve::Curve;
-use crate::grid::linspace;
 use std::f64::consts::PI;
 
 /// Values at θ, sorted by θ: one side of a comparison that was measured rather than computed.
@@ -55,19 +57,19 @@ impl Samples {
         self.value[i - 1] + w * (self.value[i] - self.value[i - 1])
     }
 
-    /// The largest sample and its θ (the first one on ties).
-    pub fn peak(&self) -> Extremum {
-        let best = (0..self.value.len()).fold(0, |best, i| {
-            if self.value[i] > self.value[best] {
-                i
-            } else {
-                best
-            }
-        });
-        Extremum {
-            theta: self.theta[best],
-            value: self.value[best],
-        }
+    /// The largest sample inside `range` and its θ (the first one on ties); `None` when no sample is
+    /// inside it.
+    pub fn peak_over(&self, range: ThetaRange) -> Option<Extremum> {
+        (0..self.value.len())
+            .filter(|&i| range.contains(self.theta[i]))
+            .fold(None, |best: Option<usize>, i| match best {
+                Some(b) if self.value[b] >= self.value[i] => Some(b),
+                _ => Some(i),
+            })
+            .map(|i| Extremum {
+                theta: self.theta[i],
+                value: self.value[i],
+            })
     }
 }
 
@@ -88,31 +90,49 @@ impl Operand {
         }
     }
 
-    fn peak(&self) -> Result<Extremum, MetricError> {
+    fn peak(&self, range: ThetaRange) -> Result<Extremum, MetricError> {
         match self {
-            Operand::Curve(curve) => peak(curve),
-            Operand::Samples(samples) => Ok(samples.peak()),
+            Operand::Curve(curve) => peak_over(curve, range),
+            Operand::Samples(samples) => samples.peak_over(range).ok_or(MetricError::OutsideRange),
         }
     }
 }
 
-/// Every metric of `a` against `b`: [`super::compare`] for two curves; otherwise, over the nodes (the
-/// sampled side's θ, or `a`'s θ inside `b`'s span when both are sampled):
-/// `max_abs`, `max_rel` and their θ at the nodes; `l2_projected` = sqrt(2π ∫ (a − b)² sin θ cos θ dθ) by
-/// the trapezoidal rule over the nodes; `l2_grid` over the c-grid nodes θ_i = arccos c_i inside the nodes'
-/// span; each peak the curve's maximum over [0, π/2] or the largest sample. No nodes in common is
-/// [`MetricError::Disjoint`].
-pub fn compare_operands(a: &Operand, b: &Operand) -> Result<Comparison, MetricError> {
+/// Every metric of `a` against `b` over `range`: [`super::compare`] for two curves; otherwise, over the
+/// nodes (the sampled side's θ inside `range`, or `a`'s θ inside `range` and `b`'s span when both are
+/// sampled): `max_abs`, `max_rel`, `max_log_ratio` and their θ at the nodes; `l2_projected` =
+/// sqrt(2π ∫ (a − b)² sin θ cos θ dθ) by the trapezoidal rule over the nodes; `l2_grid` over the c-grid
+/// nodes θ_i = arccos c_i inside the nodes' span; each peak the curve's maximum over `range` or the
+/// largest sample inside it. No series sample inside `range` is [`MetricError::OutsideRange`]; two
+/// series with no node in common, [`MetricError::Disjoint`].
+pub fn compare_operands(
+    a: &Operand,
+    b: &Operand,
+    range: ThetaRange,
+) -> Result<Comparison, MetricError> {
+    let in_range = |s: &Samples| -> Result<Vec<f64>, MetricError> {
+        let nodes: Vec<f64> = s
+            .theta
+            .iter()
+            .copied()
+            .filter(|&t| range.contains(t))
+            .collect();
+        if nodes.is_empty() {
+            Err(MetricError::OutsideRange)
+        } else {
+            Ok(nodes)
+        }
+    };
     let nodes: Vec<f64> = match (a, b) {
-        (Operand::Curve(a), Operand::Curve(b)) => return super::compare(a, b),
+        (Operand::Curve(a), Operand::Curve(b)) => return super::compare(a, b, range),
         (Operand::Samples(s), Operand::Curve(_)) | (Operand::Curve(_), Operand::Samples(s)) => {
-            s.theta.clone()
+            in_range(s)?
         }
         (Operand::Samples(sa), Operand::Samples(sb)) => {
+            in_range(sb)?;
             let (lo, hi) = sb.span();
-            sa.theta
-                .iter()
-                .copied()
+            in_range(sa)?
+                .into_iter()
                 .filter(|t| (lo..=hi).contains(t))
                 .collect()
         }
@@ -153,6 +173,15 @@ pub fn compare_operands(a: &Operand, b: &Operand) -> Result<Comparison, MetricEr
     };
     let abs = largest(&|p, q| (p - q).abs());
     let rel = largest(&relative_difference);
+    let max_log_ratio = (0..nodes.len())
+        .filter_map(|i| log_ratio(values[i].0, values[i].1).map(|v| (i, v)))
+        .fold(None, |best: Option<Extremum>, (i, v)| match best {
+            Some(b) if b.value >= v => Some(b),
+            _ => Some(Extremum {
+                theta: nodes[i],
+                value: v,
+            }),
+        });
     let weighted = |i: usize| {
         let t = nodes[i];
         let d = values[i].0 - values[i].1;
@@ -163,28 +192,28 @@ pub fn compare_operands(a: &Operand, b: &Operand) -> Result<Comparison, MetricEr
         .sum();
     let (lo, hi) = (nodes[0], nodes[nodes.len() - 1]);
     let mut grid_sum = 0.0;
-    for c in linspace(0.0, 1.0, L2_GRID_NODES) {
-        let theta = c.acos();
-        if (lo..=hi).contains(&theta) {
-            let (va, vb) = difference(theta)?;
-            grid_sum += (va - vb) * (va - vb);
-        }
+    for theta in l2_grid_nodes(range).filter(|t| (lo..=hi).contains(t)) {
+        let (va, vb) = difference(theta)?;
+        grid_sum += (va - vb) * (va - vb);
     }
     Ok(Comparison {
+        range,
         max_abs: abs.value,
         max_abs_theta: abs.theta,
         max_rel: rel.value,
         max_rel_theta: rel.theta,
+        max_log_ratio,
         l2_projected: (2.0 * PI * integral).sqrt(),
         l2_grid: grid_sum.sqrt(),
-        a_peak: a.peak()?,
-        b_peak: b.peak()?,
+        a_peak: a.peak(range)?,
+        b_peak: b.peak(range)?,
     })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::grid::linspace;
     use crate::ndf::Family;
     use std::f64::consts::FRAC_PI_2;
 
@@ -205,7 +234,7 @@ mod tests {
         assert_eq!(s.at(0.05), 1.5);
         assert_eq!(s.at(0.1), 2.0);
         assert_eq!(
-            s.peak(),
+            s.peak_over(ThetaRange::FULL).unwrap(),
             Extremum {
                 theta: 0.2,
                 value: 3.0
@@ -220,6 +249,7 @@ mod tests {
         let c = compare_operands(
             &Operand::Samples(sampled(&curve, 401, 1.0)),
             &Operand::Curve(curve.clone()),
+            ThetaRange::FULL,
         )
         .unwrap();
         assert_eq!((c.max_abs, c.max_rel, c.l2_projected), (0.0, 0.0, 0.0));
@@ -240,6 +270,7 @@ mod tests {
         let c = compare_operands(
             &Operand::Curve(curve.clone()),
             &Operand::Samples(sampled(&curve, 20001, 1.01)),
+            ThetaRange::FULL,
         )
         .unwrap();
         assert!((c.max_abs - 0.01 * curve.eval(0.0)).abs() < 1e-12);
@@ -256,14 +287,49 @@ mod tests {
     fn two_sampled_sides_meet_on_the_overlap_only() {
         let a = Samples::new(&[0.0, 0.5, 1.0, 1.5], &[1.0, 1.0, 1.0, 1.0]).unwrap();
         let b = Samples::new(&[0.4, 1.2], &[2.0, 4.0]).unwrap();
-        let c = compare_operands(&Operand::Samples(a), &Operand::Samples(b)).unwrap();
+        let c =
+            compare_operands(&Operand::Samples(a), &Operand::Samples(b), ThetaRange::FULL).unwrap();
         // Nodes 0.5 and 1.0, where b = 2.25 and 3.5.
         assert_eq!((c.max_abs, c.max_abs_theta), (2.5, 1.0));
         let far = Samples::new(&[1.3], &[1.0]).unwrap();
         let near = Samples::new(&[0.0, 0.1], &[1.0, 1.0]).unwrap();
         assert_eq!(
-            compare_operands(&Operand::Samples(near), &Operand::Samples(far)),
+            compare_operands(
+                &Operand::Samples(near),
+                &Operand::Samples(far),
+                ThetaRange::FULL
+            ),
             Err(MetricError::Disjoint)
+        );
+    }
+
+    #[test]
+    fn a_theta_range_keeps_the_samples_inside_it() {
+        let s = Samples::new(&[0.0, 0.5, 1.0, 1.5], &[4.0, 2.0, 1.0, 0.0]).unwrap();
+        let flat = Samples::new(&[0.0, 0.8, 1.5], &[1.0, 1.0, 1.0]).unwrap();
+        let range = ThetaRange::new(0.4, 1.2).unwrap();
+        let c =
+            compare_operands(&Operand::Samples(s.clone()), &Operand::Samples(flat), range).unwrap();
+        // Nodes 0.5 and 1.0: a = 2 and 1 against b = 1.
+        assert_eq!((c.max_abs, c.max_abs_theta), (1.0, 0.5));
+        assert_eq!(
+            c.max_log_ratio,
+            Some(Extremum {
+                theta: 0.5,
+                value: 2f64.ln()
+            })
+        );
+        assert_eq!(
+            c.a_peak,
+            Extremum {
+                theta: 0.5,
+                value: 2.0
+            }
+        );
+        let outside = ThetaRange::new(1.51, FRAC_PI_2).unwrap();
+        assert_eq!(
+            compare_operands(&Operand::Samples(s), &Operand::Curve(phong(1.0)), outside),
+            Err(MetricError::OutsideRange)
         );
     }
 }

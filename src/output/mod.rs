@@ -1,5 +1,6 @@
 //! Exporters: pure serializers from an evaluated [`Figure`] to bytes — SVG, PNG, PDF, CSV and the
-//! interactive HTML page — and [`write`], the one place that writes files.
+//! interactive HTML page, the machine-readable command reports of [`report`] — and [`write`], the one
+//! place that writes files.
 //!
 //! Nothing here evaluates a curve or decides what to compute: every value written comes from the
 //! figure it is handed.
@@ -9,6 +10,7 @@ pub mod html;
 pub mod pdf;
 pub mod plot;
 pub mod plot3d;
+pub mod report;
 pub mod svg_tree;
 pub mod write;
 

@@ -7,7 +7,7 @@
 //! `{"data": "csv", "path": "renderer.csv", "x": "theta", "y": "value", "degrees": false}` — θ and
 //! values of a CSV file next to the spec, to overlay on analytic curves; the file is named here
 //! ([`CsvFile`]) and read by [`crate::resolve`].
-//! Every entry also takes `label`, `style`, `colour` and `mark`.
+//! Every entry also takes `label`, `style`, `colour` (or `color`) and `mark`.
 
 use super::reader::{Object, Reader};
 use super::sweep;
@@ -23,7 +23,7 @@ use crate::look::Rgb;
 pub const MAX_DATA_POINTS: usize = 250_000;
 
 /// Keys every data entry accepts besides its own.
-pub const COMMON_KEYS: [&str; 5] = ["data", "label", "style", "colour", "mark"];
+pub const COMMON_KEYS: [&str; 6] = ["data", "label", "style", "colour", "color", "mark"];
 /// The kinds of data entry (`"data": <kind>`).
 pub const KINDS: &[&str] = &["spectrum", "gulbrandsen", "table", "csv"];
 

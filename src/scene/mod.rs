@@ -58,8 +58,9 @@ pub const SCENE_KEYS: &[&str] = &[
     "panels",
     "interactive",
 ];
-/// Names of the themes (`theme`), in [`Theme`] order.
-pub const THEMES: &[&str] = &["notebook", "colour-blind", "dark"];
+/// Names of the themes (`theme`), in [`Theme`] order; `color-blind` is the other spelling of
+/// `colour-blind`.
+pub const THEMES: &[&str] = &["notebook", "colour-blind", "color-blind", "dark"];
 /// Keys of `layout`.
 pub const LAYOUT_KEYS: &[&str] = &["rows", "cols"];
 /// Keys of `sampling` (exactly one of them).
@@ -98,10 +99,10 @@ pub const Z_KEYS: &[&str] = &["range", "label"];
 pub const CAMERA_KEYS: &[&str] = &["elevation", "azimuth"];
 /// Keys of a panel's `y` axis.
 pub const Y_KEYS: &[&str] = &["scale", "range", "label", "ticks"];
-/// Scales of a `y` axis.
+/// Scales of an axis.
 pub const SCALES: &[&str] = &["linear", "log"];
-/// Keys of a scene curve beyond its model parameters.
-pub const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "label", "mark", "width"];
+/// Keys of a scene curve beyond its model parameters (`color` is the other spelling of `colour`).
+pub const CURVE_EXTRA_KEYS: &[&str] = &["style", "colour", "color", "label", "mark", "width"];
 /// Places a panel's `legend` may name, besides `true` and `false`.
 pub const LEGEND_PLACES: &[&str] = &[
     "best",
@@ -364,7 +365,7 @@ fn read_theme(reader: &mut Reader, object: &reader::Object) -> Theme {
 /// The theme called `name`, one of [`THEMES`].
 pub fn theme_named(name: &str) -> Theme {
     match name {
-        "colour-blind" => Theme::ColourBlind,
+        "colour-blind" | "color-blind" => Theme::ColourBlind,
         "dark" => Theme::Dark,
         _ => Theme::Notebook,
     }
@@ -1169,7 +1170,8 @@ fn default_colour(model: Model) -> Rgb {
     }
 }
 
-/// Reads `style` (words from [`STYLE_WORDS`]), `colour` (#RRGGBB) and `mark` of a series entry.
+/// Reads `style` (words from [`STYLE_WORDS`]), `colour` or `color` (#RRGGBB; not both) and `mark` of a
+/// series entry.
 pub(crate) fn read_style(
     reader: &mut Reader,
     entry: &reader::Object,
@@ -1240,11 +1242,22 @@ pub(crate) fn read_style(
         Some("bars") => style.mark = Mark::Bars,
         _ => {}
     }
-    if let Some(text) = reader.string(entry, "colour") {
+    let colour_key = match (entry.get("colour"), entry.get("color")) {
+        (Some(_), Some(_)) => {
+            reader.report(
+                entry.path_of("color"),
+                "colour given twice (got both \"colour\" and \"color\", expected one of the two spellings)",
+            );
+            "colour"
+        }
+        (None, Some(_)) => "color",
+        _ => "colour",
+    };
+    if let Some(text) = reader.string(entry, colour_key) {
         match parse_hex_colour(&text) {
             Some(colour) => style.colour = colour,
             None => reader.report(
-                entry.path_of("colour"),
+                entry.path_of(colour_key),
                 format!(
                     "invalid colour (got \"{}\", expected #RRGGBB)",
                     crate::problem::excerpt(&text)

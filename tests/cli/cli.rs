@@ -59,19 +59,12 @@ fn eval_linspace_degrees_and_several_curves() {
     let mut rows = text.lines();
     assert_eq!(
         rows.next().unwrap(),
-        r#"theta,"{""ndf"":""trowbridge_reitz"",""alpha_tr"":1.0}","{""ndf"":""beckmann"",""alpha_b"":0.5}""#
+        r#"theta_deg,"{""ndf"":""trowbridge_reitz"",""alpha_tr"":1.0}","{""ndf"":""beckmann"",""alpha_b"":0.5}""#
     );
     let thetas: Vec<f64> = rows
         .map(|r| r.split(',').next().unwrap().parse().unwrap())
         .collect();
-    assert_eq!(
-        thetas,
-        [
-            0.0,
-            std::f64::consts::FRAC_PI_4,
-            std::f64::consts::FRAC_PI_2
-        ]
-    );
+    assert_eq!(thetas, [0.0, 45.0, 90.0]);
 }
 
 #[test]
@@ -1083,8 +1076,7 @@ fn compare_takes_a_csv_series_as_either_side() {
     assert_eq!(eval.status.code(), Some(0), "{}", text(&eval.stderr));
     let mut table = String::from("deg,D\n");
     for line in text(&eval.stdout).lines().skip(1) {
-        let (theta, value) = line.split_once(',').unwrap();
-        let degrees = theta.parse::<f64>().unwrap().to_degrees();
+        let (degrees, value) = line.split_once(',').unwrap();
         table.push_str(&format!(
             "{degrees},{}\n",
             1.02 * value.parse::<f64>().unwrap()

@@ -8,6 +8,8 @@ mod common;
 
 mod browser;
 mod cli;
+mod compare;
+mod conventions;
 mod fit;
 mod lazy_basis;
 mod lint;

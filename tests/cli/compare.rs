@@ -1,0 +1,318 @@
+//! `compare` focused on a θ range (`--theta-range`, `--degrees`), the `max_log_ratio` metric for lobes
+//! that fall to 0, `--metric NAME`, and the machine-readable `--format json|csv` of `compare`, `check`
+//! and `coeffs`.
+
+use crate::common::{ndfplot, text};
+use std::process::Output;
+
+/// GGX α = 0.3 and its peak-matched Beckmann (`fit --family beckmann --by peak` gives α_b = 0.3 too):
+/// Beckmann underflows to 0 towards grazing, so `max_rel` is 1 over the whole hemisphere.
+const GGX: &str = r#"{"ndf":"ggx","alpha_tr":0.3}"#;
+const BECKMANN: &str = r#"{"ndf":"beckmann","alpha_b":0.3}"#;
+
+fn ok(output: &Output) -> String {
+    assert_eq!(output.status.code(), Some(0), "{}", text(&output.stderr));
+    text(&output.stdout)
+}
+
+/// Asserts exit 2, nothing on stdout, and `needle` in the one `error:` line.
+fn usage_error(output: &Output, needle: &str) {
+    let err = text(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{err}");
+    assert!(output.stdout.is_empty(), "{}", text(&output.stdout));
+    assert!(
+        err.starts_with("error: ") && err.contains(needle),
+        "{needle:?} in {err}"
+    );
+}
+
+fn compare(extra: &[&str]) -> Output {
+    let mut args = vec!["compare", "--a", GGX, "--b", BECKMANN];
+    args.extend(extra);
+    ndfplot(&args)
+}
+
+fn number(text: &str) -> f64 {
+    text.trim()
+        .parse()
+        .unwrap_or_else(|e| panic!("{text:?}: {e}"))
+}
+
+#[test]
+fn compare_max_log_ratio_is_finite_where_max_rel_saturates() {
+    let whole = ok(&compare(&["--metric", "max_rel"]));
+    assert_eq!(number(&whole), 1.0, "Beckmann reaches 0 before grazing");
+    let focused: serde_json::Value = serde_json::from_str(&ok(&compare(&[
+        "--theta-range",
+        "0:50",
+        "--degrees",
+        "--format",
+        "json",
+    ])))
+    .unwrap();
+    let log = focused["max_log_ratio"].as_f64().unwrap();
+    // At 50°: ln(D_GGX/D_Beckmann), both evaluated by eval.
+    let at_50 = |curve: &str| {
+        let csv = ok(&ndfplot(&[
+            "eval",
+            "--curve",
+            curve,
+            "--theta",
+            "50",
+            "--degrees",
+        ]));
+        number(csv.lines().nth(1).unwrap().split(',').nth(1).unwrap())
+    };
+    let expected = (at_50(GGX) / at_50(BECKMANN)).ln();
+    assert!((log / expected - 1.0).abs() < 1e-12, "{log} vs {expected}");
+    assert_eq!(focused["max_log_ratio_theta_deg"], 50.0);
+    assert_eq!(focused["theta_from_deg"], 0.0);
+    assert_eq!(focused["theta_to_deg"], 50.0);
+    assert!(focused["max_rel"].as_f64().unwrap() < 1.0, "{focused}");
+    assert!(
+        focused.get("max_rel_theta").is_none(),
+        "angles are named _deg: {focused}"
+    );
+}
+
+#[test]
+fn a_theta_range_in_radians_accepts_multiples_of_pi_and_limits_every_metric() {
+    let whole: serde_json::Value =
+        serde_json::from_str(&ok(&compare(&["--format", "json"]))).unwrap();
+    let focused: serde_json::Value = serde_json::from_str(&ok(&compare(&[
+        "--theta-range",
+        "pi/8:pi/4",
+        "--format",
+        "json",
+    ])))
+    .unwrap();
+    let (lo, hi) = (std::f64::consts::PI / 8.0, std::f64::consts::FRAC_PI_4);
+    assert_eq!(
+        (focused["theta_from"].as_f64(), focused["theta_to"].as_f64()),
+        (Some(lo), Some(hi))
+    );
+    for name in [
+        "max_abs_theta",
+        "max_rel_theta",
+        "max_log_ratio_theta",
+        "a_peak_theta",
+        "b_peak_theta",
+    ] {
+        let theta = focused[name].as_f64().unwrap();
+        assert!((lo..=hi).contains(&theta), "{name} = {theta}");
+    }
+    assert_eq!(
+        focused["a_peak_theta"].as_f64(),
+        Some(lo),
+        "D falls off the normal"
+    );
+    for name in ["l2_projected", "l2_grid", "max_abs"] {
+        assert!(
+            focused[name].as_f64() < whole[name].as_f64(),
+            "{name}: {focused} vs {whole}"
+        );
+    }
+    let table = ok(&compare(&["--theta-range", "0:pi/4"]));
+    assert!(
+        table.contains("\ntheta  0.0:0.7853981633974483\n"),
+        "{table}"
+    );
+    assert!(
+        table.lines().any(|l| l.starts_with("max_log_ratio ")),
+        "{table}"
+    );
+}
+
+#[test]
+fn an_undefined_log_ratio_is_reported_not_invented() {
+    // Beckmann α_b = 0.001 is exp(−tan²θ / α_b²) = 0 from well before 60°.
+    let narrow = r#"{"ndf":"beckmann","alpha_b":0.001}"#;
+    let args = |extra: &[&'static str]| {
+        let mut args = vec![
+            "compare",
+            "--a",
+            narrow,
+            "--b",
+            GGX,
+            "--theta-range",
+            "60:90",
+            "--degrees",
+        ];
+        args.extend_from_slice(extra);
+        ndfplot(&args)
+    };
+    let table = ok(&args(&[]));
+    let row = table
+        .lines()
+        .find(|l| l.starts_with("max_log_ratio"))
+        .unwrap();
+    assert!(
+        row.contains("undefined")
+            && row.contains("no theta in 60.0:90.0 where both sides exceed 1e-300"),
+        "{table}"
+    );
+    let json: serde_json::Value = serde_json::from_str(&ok(&args(&["--format", "json"]))).unwrap();
+    assert!(
+        json["max_log_ratio"].is_null() && json["max_log_ratio_theta_deg"].is_null(),
+        "{json}"
+    );
+    let csv = ok(&args(&["--format", "csv"]));
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let column = header.iter().position(|&h| h == "max_log_ratio").unwrap();
+    let row = csv::ReaderBuilder::new()
+        .from_reader(csv.as_bytes())
+        .records()
+        .next()
+        .unwrap()
+        .unwrap();
+    assert_eq!(&row[column], "", "{csv}");
+    usage_error(
+        &args(&["--metric", "max_log_ratio"]),
+        "compare: max_log_ratio is undefined",
+    );
+    let gated = args(&["--max-error", "max_log_ratio=1"]);
+    assert_eq!(gated.status.code(), Some(1));
+    assert!(
+        text(&gated.stderr).contains("max_log_ratio is undefined"),
+        "{}",
+        text(&gated.stderr)
+    );
+}
+
+#[test]
+fn metric_prints_one_number_and_an_unknown_name_lists_the_names() {
+    let json: serde_json::Value =
+        serde_json::from_str(&ok(&compare(&["--format", "json"]))).unwrap();
+    for name in [
+        "max_abs",
+        "max_abs_theta",
+        "max_log_ratio",
+        "l2_projected",
+        "b_peak",
+    ] {
+        let out = ok(&compare(&["--metric", name]));
+        assert_eq!(out.lines().count(), 1, "{out}");
+        assert_eq!(number(&out), json[name].as_f64().unwrap(), "{name}");
+    }
+    usage_error(
+        &compare(&["--metric", "max_relative"]),
+        "--metric: unknown name (got \"max_relative\", expected one of: theta_from, theta_to, max_abs, max_abs_theta, max_rel, max_rel_theta, max_log_ratio, max_log_ratio_theta, l2_projected, l2_grid, a_peak, a_peak_theta, b_peak, b_peak_theta)",
+    );
+    usage_error(
+        &compare(&["--metric", "max_abs_theta", "--degrees"]),
+        "max_abs_theta_deg",
+    );
+    let both = compare(&["--metric", "max_abs", "--format", "json"]);
+    assert_eq!(
+        both.status.code(),
+        Some(2),
+        "--metric prints one number, not a format"
+    );
+}
+
+#[test]
+fn bad_theta_ranges_exit_2_naming_the_flag_and_value() {
+    for (range, degrees, needle) in [
+        (
+            "0:100",
+            true,
+            "--theta-range: angle out of range (got 100.0 degrees, expected 0 to 90)",
+        ),
+        (
+            "0.5:0.5",
+            false,
+            "--theta-range: the range is empty (got 0.5:0.5, expected A < B)",
+        ),
+        ("1:0", false, "the range is empty (got 1.0:0.0"),
+        ("0:2", false, "angle out of range (got 2.0 radians"),
+        ("0", false, "--theta-range: expected A:B (got \"0\""),
+        ("0:x", false, "--theta-range: not a number (got \"x\")"),
+        ("0:pi/4", true, "--theta-range: not a number (got \"pi/4\")"),
+        ("0:nan", false, "not a finite number"),
+    ] {
+        let mut args = vec!["--theta-range", range];
+        if degrees {
+            args.push("--degrees");
+        }
+        usage_error(&compare(&args), needle);
+    }
+}
+
+#[test]
+fn compare_csv_is_one_row_with_the_json_names() {
+    let json: serde_json::Value =
+        serde_json::from_str(&ok(&compare(&["--format", "json"]))).unwrap();
+    let csv = ok(&compare(&["--format", "csv"]));
+    let mut reader = csv::Reader::from_reader(csv.as_bytes());
+    let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
+    let names: Vec<&String> = json.as_object().unwrap().keys().collect();
+    let mut sorted = header.clone();
+    sorted.sort();
+    assert_eq!(sorted.iter().collect::<Vec<_>>(), names, "same names");
+    let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), 1);
+    assert_eq!(&rows[0][0], r#"{"ndf":"trowbridge_reitz","alpha_tr":0.3}"#);
+    for (name, cell) in header.iter().zip(rows[0].iter()).skip(2) {
+        assert_eq!(number(cell), json[name].as_f64().unwrap(), "{name}");
+    }
+}
+
+#[test]
+fn check_and_coeffs_print_json_and_csv_with_the_table_columns() {
+    let spec = crate::common::root().join("configs/fresnel-dielectrics.json");
+    let spec = spec.to_str().unwrap();
+    let table = ok(&ndfplot(&["check", spec]));
+    let rows = table.lines().count() - 1;
+    let json: serde_json::Value =
+        serde_json::from_str(&ok(&ndfplot(&["check", spec, "--format", "json"]))).unwrap();
+    let objects = json.as_array().unwrap();
+    assert_eq!(objects.len(), rows);
+    let first = &objects[0];
+    assert_eq!(first["status"], "-");
+    assert_eq!(first["quantity"], "hemispherical_average");
+    assert!(
+        first["deviation"].is_null() && first["curve"]["fresnel"].is_string(),
+        "{first}"
+    );
+    let csv = ok(&ndfplot(&["check", spec, "--format", "csv"]));
+    assert!(
+        csv.starts_with("status,quantity,integral,error_estimate,deviation,scene,curve\n"),
+        "{csv}"
+    );
+    assert_eq!(csv.lines().count(), rows + 1);
+    let ndfs = crate::common::root().join("configs/abc-vs-tr.json");
+    let json: serde_json::Value = serde_json::from_str(&ok(&ndfplot(&[
+        "check",
+        ndfs.to_str().unwrap(),
+        "--format",
+        "json",
+    ])))
+    .unwrap();
+    assert!(
+        json.as_array()
+            .unwrap()
+            .iter()
+            .all(|row| row["status"] == "ok" && row["deviation"].as_f64().unwrap() < 1e-9)
+    );
+
+    let material = r#"{"fresnel":"belcour","eta":0.29,"kappa":2.86}"#;
+    let csv = ok(&ndfplot(&[
+        "coeffs", "--curve", material, "--curve", material,
+    ]));
+    let json: serde_json::Value = serde_json::from_str(&ok(&ndfplot(&[
+        "coeffs", "--curve", material, "--curve", material, "--format", "json",
+    ])))
+    .unwrap();
+    let rows = json.as_array().unwrap();
+    assert_eq!(rows.len(), 2);
+    let line: Vec<f64> = csv.lines().nth(1).unwrap().split(',').map(number).collect();
+    let from_json: Vec<f64> = ["c0", "c1", "c2", "c3", "l2"]
+        .iter()
+        .map(|k| rows[0][k].as_f64().unwrap())
+        .collect();
+    assert_eq!(line, from_json);
+    usage_error(
+        &ndfplot(&["coeffs", "--curve", material, "--format", "table"]),
+        "--format",
+    );
+}
