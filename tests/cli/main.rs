@@ -9,6 +9,8 @@ mod browser;
 mod cli;
 mod lazy_basis;
 mod lint;
+mod man;
+mod published;
 mod robustness;
 mod sampling;
 mod schema;
