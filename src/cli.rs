@@ -53,11 +53,12 @@ pub enum Command {
     Schema,
     /// Print a shell completion script.
     Completions(CompletionsArgs),
-    /// Print the manual page (roff).
+    /// Print the manual page (roff), or write one page per subcommand with --dir.
     #[command(after_long_help = "Examples:\n  \
         ndfplot man > ndfplot.1 && man ./ndfplot.1\n  \
-        ndfplot man | gzip > /usr/local/share/man/man1/ndfplot.1.gz")]
-    Man,
+        ndfplot man --dir man && man -l man/ndfplot-render.1\n  \
+        ndfplot man --dir /usr/local/share/man/man1")]
+    Man(ManArgs),
     /// Measure run time against error (drawing, normalization routes, throughput); writes
     /// bench.csv, bench.svg and bench.png.
     Bench(BenchArgs),
@@ -68,6 +69,15 @@ pub enum Command {
 pub struct ShowArgs {
     /// The catalogue id (as `ndfplot list` prints it).
     pub id: String,
+}
+
+/// Arguments of `ndfplot man`.
+#[derive(Debug, Args)]
+pub struct ManArgs {
+    /// Write ndfplot.1 and one ndfplot-<subcommand>.1 per subcommand into DIR (created if needed)
+    /// instead of printing the top page.
+    #[arg(long, value_name = "DIR")]
+    pub dir: Option<std::path::PathBuf>,
 }
 
 /// Arguments of `ndfplot completions`.

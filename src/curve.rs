@@ -14,7 +14,8 @@ use crate::fresnel::{Fresnel, FresnelModel, Ior, SchlickF0};
 use crate::json::{Node, Value};
 use crate::keys::{self, Accepted};
 use crate::ndf::{Family, Ndf};
-use crate::problem::{Problem, join_key, suggestion};
+use crate::problem::{Problem, join_index, join_key, suggestion};
+use crate::published::{Channel, Preset, PresetError, Source};
 use crate::transform::Transform;
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
@@ -159,6 +160,8 @@ pub enum CurveSpec {
     Belcour(Ior),
     /// An NDF with one parameter fitted to a target curve; resolve runs the fit.
     Fitted(Box<Fitted>),
+    /// A published fit to a MERL material ([`crate::published`]); resolve looks its parameters up.
+    Published(Preset),
     /// A difference series of two curves of the same kind (see [`Curve::Difference`]).
     Difference {
         /// How the two values are combined.
@@ -184,13 +187,15 @@ impl CurveSpec {
             CurveSpec::Ready(curve) => curve.model(),
             CurveSpec::Belcour(_) => Model::Fresnel(FresnelModel::Belcour),
             CurveSpec::Fitted(fitted) => Model::Ndf(fitted.family),
+            CurveSpec::Published(preset) => Model::Ndf(preset.source().family()),
             CurveSpec::Difference { a, .. } => a.model(),
             CurveSpec::Transformed { curve, .. } => curve.model(),
         }
     }
 
     /// Canonical curve JSON of the description: that of the resolved curve
-    /// ([`Curve::canonical_json`]), a fitted parameter written as its `{"fit": …}` object.
+    /// ([`Curve::canonical_json`]; a published fit is its family curve), a fitted parameter written as
+    /// its `{"fit": …}` object.
     pub fn canonical_json(&self) -> String {
         crate::json::to_string(self)
     }
@@ -203,6 +208,7 @@ impl Serialize for CurveSpec {
             CurveSpec::Ready(curve) => curve.serialize(serializer),
             CurveSpec::Belcour(ior) => serialize_model(serializer, self.model(), &ior_params(ior)),
             CurveSpec::Fitted(fitted) => fitted.serialize(serializer),
+            CurveSpec::Published(preset) => Curve::Ndf(preset.ndf()).serialize(serializer),
             CurveSpec::Difference { op, a, b } => serialize_difference(serializer, *op, a, b),
             CurveSpec::Transformed { transform, curve } => {
                 serialize_transformed(serializer, *transform, curve)
@@ -846,6 +852,17 @@ pub fn scalar(node: &Node, kind: ParamKind, path: &str) -> Result<ParamValue, Pr
 /// difference `{"difference": "minus"|"ratio", "a": <curve>, "b": <curve>}` of two such curves,
 /// into its description ([`crate::resolve::curve`] makes it a [`Curve`]).
 pub fn parse(node: &Node, path: &str) -> Result<CurveSpec, Vec<Problem>> {
+    if is_published(node) {
+        return match published(node, path, &[])?.as_slice() {
+            [one] => Ok(CurveSpec::Published(one.preset)),
+            _ => Err(vec![Problem::new(
+                path,
+                format!(
+                    "a list of materials or channels sweeps in scenes only (got {node}, expected one published fit)"
+                ),
+            )]),
+        };
+    }
     if let Value::Object(members) = &node.value
         && members.iter().any(|(k, _)| k == TRANSFORM_KEY)
     {
@@ -881,6 +898,219 @@ pub fn parse(node: &Node, path: &str) -> Result<CurveSpec, Vec<Problem>> {
         return Err(problems);
     }
     resolved.build(&values, path).map_err(|p| vec![p])
+}
+
+/// The model key of a published fit: `{"published": <source>, "material": <MERL name>, "channel": …}`.
+pub const PUBLISHED_KEY: &str = "published";
+/// Keys of a published fit besides the caller's extra keys.
+pub const PUBLISHED_KEYS: &[&str] = &[PUBLISHED_KEY, "material", "channel"];
+
+/// Whether `node` is a published-fit object (has the key `"published"`).
+pub fn is_published(node: &Node) -> bool {
+    matches!(&node.value, Value::Object(members) if members.iter().any(|(k, _)| k == PUBLISHED_KEY))
+}
+
+/// One fit a published-fit object names, with its legend text.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PublishedChoice {
+    /// The fit.
+    pub preset: Preset,
+    /// `<source title>`, then the material when the object lists several, then the channel when
+    /// given: `Bagher 2012 SGD, red`.
+    pub label: String,
+}
+
+/// Checks the published-fit object `node` at `path` (keys [`PUBLISHED_KEYS`] plus `extra_keys`, which
+/// the caller handles) and names its fits: `material` and `channel` are each a name or a non-empty
+/// list of names, giving their product in document order, the later key varying fastest. A source that
+/// fits per channel requires `channel`, any other refuses it; unknown names get a "did you mean".
+/// Every problem is reported.
+pub fn published(
+    node: &Node,
+    path: &str,
+    extra_keys: &[&str],
+) -> Result<Vec<PublishedChoice>, Vec<Problem>> {
+    let (members, mut problems) =
+        keyed_object(node, path, PUBLISHED_KEYS, extra_keys, "a published fit")?;
+    let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, n)| n);
+    let source_names: Vec<&str> = Source::ALL.iter().map(|s| s.name()).collect();
+    let source = names_at(
+        get(PUBLISHED_KEY).expect("is_published() was checked"),
+        &join_key(path, PUBLISHED_KEY),
+        "source",
+        &source_names,
+        false,
+        &mut problems,
+    )
+    .and_then(|names| Source::from_name(names[0].0));
+    let material_path = join_key(path, "material");
+    let materials = match (source, get("material")) {
+        (_, None) => {
+            problems.push(Problem::new(
+                &material_path,
+                "missing the MERL material of the published fit (expected a name such as \"gold-metallic-paint\")",
+            ));
+            None
+        }
+        (Some(source), Some(node)) => {
+            let names: Vec<&str> = source.materials().collect();
+            names_at(
+                node,
+                &material_path,
+                "material",
+                &names,
+                true,
+                &mut problems,
+            )
+        }
+        (None, Some(_)) => None,
+    };
+    let channel_path = join_key(path, "channel");
+    let channel_names: Vec<&str> = Channel::ALL.iter().map(|c| c.name()).collect();
+    let channels = match (source, get("channel")) {
+        (Some(source), None) if source.per_channel() => {
+            problems.push(Problem::new(
+                &channel_path,
+                format!(
+                    "missing channel: \"{}\" fits each RGB channel separately (expected one of: {})",
+                    source.name(),
+                    channel_names.join(", ")
+                ),
+            ));
+            None
+        }
+        (Some(source), Some(node)) if !source.per_channel() => {
+            problems.push(Problem::new(
+                &channel_path,
+                format!(
+                    "\"{}\" fits one lobe per material, not per channel (got {node}, expected no \"channel\")",
+                    source.name()
+                ),
+            ));
+            None
+        }
+        (_, Some(node)) => names_at(
+            node,
+            &channel_path,
+            "channel",
+            &channel_names,
+            true,
+            &mut problems,
+        )
+        .map(|names| {
+            names
+                .into_iter()
+                .map(|(n, _)| Channel::from_name(n))
+                .collect()
+        }),
+        (_, None) => Some(vec![None]),
+    };
+    let (Some(source), Some(materials), Some(channels)) = (source, materials, channels) else {
+        return Err(problems);
+    };
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+    let materials_vary =
+        materials.len() > 1 || matches!(get("material").map(|n| &n.value), Some(Value::Array(_)));
+    let channel_first = match (get("channel"), get("material")) {
+        (Some(c), Some(m)) => (c.line, c.col) < (m.line, m.col),
+        _ => false,
+    };
+    let mut pairs = Vec::with_capacity(materials.len() * channels.len());
+    if channel_first {
+        for &channel in &channels {
+            pairs.extend(materials.iter().map(|&(m, _)| (m, channel)));
+        }
+    } else {
+        for &(m, _) in &materials {
+            pairs.extend(channels.iter().map(|&channel| (m, channel)));
+        }
+    }
+    pairs
+        .into_iter()
+        .map(|(material, channel)| {
+            let preset = Preset::new(source, material, channel).map_err(|e| {
+                let reason = match e {
+                    PresetError::UnknownMaterial => "unknown material",
+                    PresetError::ChannelRequired => "missing channel",
+                    PresetError::ChannelRefused => "channel refused",
+                };
+                vec![Problem::new(path, reason)]
+            })?;
+            let mut label = source.title().to_string();
+            if materials_vary {
+                label = format!("{label}, {material}");
+            }
+            if let Some(channel) = channel {
+                label = format!("{label}, {}", channel.name());
+            }
+            Ok(PublishedChoice { preset, label })
+        })
+        .collect()
+}
+
+/// The names `node` gives at `path`: one name, or (where `lists`) a non-empty list of names, each one
+/// of `known` (else a problem with a "did you mean"). `what` names the value in messages. Returns
+/// each name with its path, or `None` after recording the problems.
+fn names_at<'k>(
+    node: &Node,
+    path: &str,
+    what: &str,
+    known: &[&'k str],
+    lists: bool,
+    problems: &mut Vec<Problem>,
+) -> Option<Vec<(&'k str, String)>> {
+    let items: Vec<(&Node, String)> = match &node.value {
+        Value::Array(items) if lists && !items.is_empty() => items
+            .iter()
+            .enumerate()
+            .map(|(i, item)| (item, join_index(path, i)))
+            .collect(),
+        Value::String(_) => vec![(node, path.to_string())],
+        _ => {
+            let expected = if lists {
+                format!("a {what} name or a non-empty list of them")
+            } else {
+                format!("a {what} name")
+            };
+            problems.push(Problem::new(
+                path,
+                format!("expected {expected} (got {node})"),
+            ));
+            return None;
+        }
+    };
+    let before = problems.len();
+    let mut names = Vec::with_capacity(items.len());
+    for (item, at) in items {
+        let Value::String(name) = &item.value else {
+            problems.push(Problem::new(
+                at,
+                format!("expected a {what} name (got {item})"),
+            ));
+            continue;
+        };
+        match known.iter().find(|k| **k == name.as_str()) {
+            Some(&found) => names.push((found, at)),
+            None => {
+                let listed = if known.len() > 8 {
+                    format!("one of the {} names the source fits", known.len())
+                } else {
+                    format!("one of: {}", known.join(", "))
+                };
+                problems.push(Problem::new(
+                    at,
+                    format!(
+                        "unknown {what} (got \"{}\", expected {listed}){}",
+                        crate::problem::excerpt(name),
+                        suggestion(name, known.iter().copied())
+                    ),
+                ))
+            }
+        }
+    }
+    (problems.len() == before).then_some(names)
 }
 
 /// The model key of a difference series in the curve format.
@@ -922,6 +1152,32 @@ impl DiffOp {
     }
 }
 
+/// The members of the curve object `node` at `path` that accepts `keys` and `extra_keys` (which the
+/// caller handles), with the problems of its keys ([`keys::check`]; `object` names it in them); a
+/// value that is not an object is the one problem.
+fn keyed_object<'a>(
+    node: &'a Node,
+    path: &str,
+    keys: &[&str],
+    extra_keys: &[&str],
+    object: &str,
+) -> Result<(&'a [(String, Node)], Vec<Problem>), Vec<Problem>> {
+    let Value::Object(members) = &node.value else {
+        return Err(vec![Problem::new(
+            path,
+            format!("expected a curve object (got {node})"),
+        )]);
+    };
+    let allowed: Vec<&str> = keys.iter().chain(extra_keys).copied().collect();
+    let accepted = Accepted {
+        object: Some(object),
+        listed: &allowed,
+        unlisted: &[],
+    };
+    let problems = keys::check(members, path, Some(&accepted));
+    Ok((members, problems))
+}
+
 /// Whether `node` is a difference object (has the key `"difference"`).
 pub fn is_difference(node: &Node) -> bool {
     matches!(&node.value, Value::Object(members) if members.iter().any(|(k, _)| k == DIFFERENCE_KEY))
@@ -935,19 +1191,8 @@ pub fn difference_parts<'a>(
     path: &str,
     extra_keys: &[&str],
 ) -> Result<(DiffOp, &'a Node, &'a Node), Vec<Problem>> {
-    let Value::Object(members) = &node.value else {
-        return Err(vec![Problem::new(
-            path,
-            format!("expected a curve object (got {node})"),
-        )]);
-    };
-    let allowed: Vec<&str> = DIFFERENCE_KEYS.iter().chain(extra_keys).copied().collect();
-    let accepted = Accepted {
-        object: Some("a difference"),
-        listed: &allowed,
-        unlisted: &[],
-    };
-    let mut problems = keys::check(members, path, Some(&accepted));
+    let (members, mut problems) =
+        keyed_object(node, path, DIFFERENCE_KEYS, extra_keys, "a difference")?;
     let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, n)| n);
     let names: Vec<&str> = DiffOp::ALL.iter().map(|op| op.name()).collect();
     let op_node = get(DIFFERENCE_KEY).expect("is_difference() was checked");

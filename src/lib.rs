@@ -38,6 +38,7 @@ pub mod plan;
 pub mod problem;
 pub mod progress;
 pub mod provenance;
+pub mod published;
 pub mod render;
 pub mod resolve;
 pub mod sample;

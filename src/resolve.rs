@@ -99,12 +99,13 @@ pub fn scene(spec: Scene<Spec>) -> std::result::Result<Scene, Vec<Problem>> {
 }
 
 /// The curve a description stands for: a Belcour reconstruction's coefficients computed, a fit
-/// run. Only a fit can fail.
+/// run, a published fit's parameters looked up. Only a fit can fail.
 pub fn curve(spec: &CurveSpec) -> std::result::Result<Curve, Problem> {
     Ok(match spec {
         CurveSpec::Ready(curve) => curve.clone(),
         CurveSpec::Belcour(ior) => Curve::Fresnel(Fresnel::belcour(*ior)),
         CurveSpec::Fitted(fitted) => self::fitted(fitted)?.0,
+        CurveSpec::Published(preset) => Curve::Ndf(preset.ndf()),
         CurveSpec::Difference { op, a, b } => Curve::Difference {
             op: *op,
             a: Box::new(curve(a)?),

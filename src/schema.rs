@@ -11,12 +11,13 @@
 
 use crate::curve::By;
 use crate::curve::{
-    DIFFERENCE_KEY, DIFFERENCE_KEYS, DiffOp, Model, ParamKind, ParamSpec, TRANSFORM_KEY,
-    TRANSFORM_KEYS,
+    DIFFERENCE_KEY, DIFFERENCE_KEYS, DiffOp, Model, PUBLISHED_KEY, PUBLISHED_KEYS, ParamKind,
+    ParamSpec, TRANSFORM_KEY, TRANSFORM_KEYS,
 };
 use crate::dataset::{Coefficient, SpectrumQuantity};
 use crate::fresnel::FresnelModel;
 use crate::ndf::Family;
+use crate::published::{Channel, Source};
 use crate::scene::interactive::{
     INTERACTIVE_KEYS, MAX_POSITIONS_PER_SLIDER, MAX_SLIDERS, PARAM_KEYS, SLIDER_KEY,
 };
@@ -58,6 +59,41 @@ pub fn model_names(model: Model) -> Vec<&'static str> {
 /// format, `scene_curve_fresnel_exact_1` for scene curve entries.
 pub fn signature_def(prefix: &str, model: Model, signature: usize) -> String {
     format!("{prefix}_{}_{}_{signature}", model.key(), model.name())
+}
+
+/// The `$defs` name of a published source's curve: `curve_published_low2012-abc`.
+pub fn published_def(prefix: &str, source: Source) -> String {
+    format!("{prefix}_{PUBLISHED_KEY}_{}", source.name())
+}
+
+/// A published fit of `source`: its name, one of its materials (or, where `lists`, a non-empty list
+/// of them), and `channel` exactly when the source fits per channel; `extras` are the keys the
+/// context adds.
+fn published(source: Source, extras: &[&str], lists: bool) -> Value {
+    let name_or_list = |names: Vec<&str>| {
+        if lists {
+            json!({ "anyOf": [strings(&names), { "type": "array", "items": strings(&names), "minItems": 1 }] })
+        } else {
+            strings(&names)
+        }
+    };
+    let keys: Vec<&str> = PUBLISHED_KEYS
+        .iter()
+        .filter(|&&k| k != "channel" || source.per_channel())
+        .chain(extras)
+        .copied()
+        .collect();
+    let required: Vec<&str> = keys
+        .iter()
+        .copied()
+        .filter(|k| PUBLISHED_KEYS.contains(k))
+        .collect();
+    object(&keys, &required, |key| match key {
+        PUBLISHED_KEY => json!({ "const": source.name(), "description": source.title() }),
+        "material" => name_or_list(source.materials().collect()),
+        "channel" => name_or_list(Channel::ALL.iter().map(|c| c.name()).collect()),
+        extra => extra_key(extra),
+    })
 }
 
 /// The `$defs` name of a data entry of `kind` (`data_spectrum`).
@@ -437,13 +473,23 @@ pub fn schema() -> Value {
         reference("curve_transformed"),
     ]);
     scene_curves.push(reference("scene_curve_difference"));
+    for source in Source::ALL {
+        let name = published_def("curve", source);
+        def(&name, published(source, &[], false));
+        curves.push(reference(&name));
+        let name = published_def("scene_curve", source);
+        def(&name, published(source, scene::CURVE_EXTRA_KEYS, true));
+        scene_curves.push(reference(&name));
+    }
+    // The branches exclude one another (each requires its model key and names, and admits no other
+    // keys), so exactly one matches a valid curve.
     def(
         "curve",
-        json!({ "description": "the curve format of eval, compare and fit", "anyOf": curves }),
+        json!({ "description": "the curve format of eval, compare and fit", "oneOf": curves }),
     );
     def(
         "scene_curve",
-        json!({ "description": "a curve entry of a panel: a curve whose parameters may be swept or fitted", "anyOf": scene_curves }),
+        json!({ "description": "a curve entry of a panel: a curve whose parameters may be swept or fitted", "oneOf": scene_curves }),
     );
 
     let mut kinds = Vec::new();

@@ -35,7 +35,7 @@ pub fn run(command: Command, quiet: bool) -> Result<()> {
         Command::Show(args) => run_show(&args.id),
         Command::Schema => schema::run(),
         Command::Completions(args) => completions::completions(args.shell),
-        Command::Man => completions::man(),
+        Command::Man(args) => completions::man(args.dir.as_deref()),
         Command::Bench(args) => bench::run(&args.out).map(|_| ()),
     }
 }

@@ -1016,18 +1016,15 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
     if curve::is_difference(node) {
         return sweep::difference_entry(reader, node, path, out);
     }
-    let resolved = match curve::resolve(node, path, CURVE_EXTRA_KEYS) {
-        Ok(resolved) => resolved,
-        Err(problems) => {
-            reader.problems.extend(problems);
-            return;
-        }
-    };
-    let Value::Object(members) = &node.value else {
+    if curve::is_published(node) {
+        return sweep::published_entry(reader, node, path, out);
+    }
+    let Some(resolved) = reader.accept(curve::resolve(node, path, CURVE_EXTRA_KEYS)) else {
         return;
     };
-    let entry = reader::Object::from_members(members, path);
-    let label_template = reader.text(&entry, "label");
+    let Some((entry, label_template)) = entry_with_label(reader, node, path) else {
+        return;
+    };
     let base_style = read_style(reader, &entry, default_colour(resolved.model));
 
     // Per parameter, its values; absent keys take their defaults.
@@ -1147,6 +1144,20 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
             style: sweep_style(style, k, count),
         });
     }
+}
+
+/// A curve entry whose keys were checked, as an object, with its `label` text if it has one.
+fn entry_with_label<'a>(
+    reader: &mut Reader,
+    node: &'a Node,
+    path: &'a str,
+) -> Option<(reader::Object<'a>, Option<String>)> {
+    let Value::Object(members) = &node.value else {
+        return None;
+    };
+    let entry = reader::Object::from_members(members, path);
+    let label = reader.text(&entry, "label");
+    Some((entry, label))
 }
 
 /// The style of curve k of an entry's n: its shade of the entry's colour (the family's, or the one the

@@ -91,6 +91,13 @@ impl Reader {
         }
     }
 
+    /// The value of a check whose problems (if any) are recorded instead.
+    pub fn accept<T>(&mut self, checked: Result<T, Vec<Problem>>) -> Option<T> {
+        checked
+            .map_err(|problems| self.problems.extend(problems))
+            .ok()
+    }
+
     /// A string field that is drawn as text (a title, a label, a column name shown on an axis): a
     /// string without control characters, which no figure format can show (SVG's XML refuses most
     /// of them). `None` when absent, of the wrong type or holding one (reported).

@@ -9,7 +9,9 @@
 use super::reader::{self, Reader};
 use super::{Pending, SceneCurve, Spec, default_colour, read_curve_entry, read_style};
 use crate::curve::By;
-use crate::curve::{self, DiffOp, Fitted, Label, Model, ParamKind, ParamSpec, ParamValue, symbol};
+use crate::curve::{
+    self, CurveSpec, DiffOp, Fitted, Label, Model, ParamKind, ParamSpec, ParamValue, symbol,
+};
 use crate::grid;
 use crate::json::{Node, Value};
 use crate::problem::{join_index, join_key};
@@ -367,6 +369,51 @@ pub fn fit(
 }
 
 /// Expands a difference entry `{"difference": "minus"|"ratio", "a": …, "b": …}` at `path` into
+/// Expands a published-fit entry (`{"published": …, "material": …, "channel": …}`, material and
+/// channel each a name or a list, see [`curve::published`]) into `out`, one curve per fit. Labels
+/// name the source, the material when several are listed and the channel; a `label` may use
+/// `{source}`, `{material}` and `{channel}`.
+pub fn published_entry(
+    reader: &mut Reader,
+    node: &Node,
+    path: &str,
+    out: &mut Vec<SceneCurve<Spec>>,
+) {
+    let Some(choices) = reader.accept(curve::published(node, path, super::CURVE_EXTRA_KEYS)) else {
+        return;
+    };
+    let Some((entry, template)) = super::entry_with_label(reader, node, path) else {
+        return;
+    };
+    let Some(first) = choices.first() else { return };
+    let Some(style) = read_style(
+        reader,
+        &entry,
+        default_colour(Model::Ndf(first.preset.source().family())),
+    ) else {
+        return;
+    };
+    let count = choices.len();
+    for (k, choice) in choices.into_iter().enumerate() {
+        let preset = choice.preset;
+        let text = match &template {
+            Some(template) => template
+                .replace("{source}", preset.source().name())
+                .replace("{material}", preset.material())
+                .replace("{channel}", preset.channel().map_or("", |c| c.name())),
+            None => choice.label,
+        };
+        out.push(SceneCurve {
+            curve: CurveSpec::Published(preset),
+            label: Label::Template {
+                template: text,
+                values: vec![],
+            },
+            style: super::sweep_style(style, k, count),
+        });
+    }
+}
+
 /// `out`: a and b are curve entries (possibly swept) of the same kind, paired element-wise (equal
 /// numbers of curves, or one curve against a sweep). Labels are `<a> − <b>` or `<a> / <b>` unless
 /// the entry's `label` template says otherwise (`{a}` and `{b}` stand for the operands' labels).

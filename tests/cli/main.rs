@@ -13,6 +13,8 @@ mod conventions;
 mod fit;
 mod lazy_basis;
 mod lint;
+mod man;
+mod published;
 mod robustness;
 mod sampling;
 mod schema;
