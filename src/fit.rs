@@ -736,7 +736,7 @@ mod tests {
         let keys: Vec<&str> = both.free.iter().map(|f| f.0).collect();
         assert_eq!(keys, ["alpha_abc1", "alpha_abc2"]);
         // The residual is what `compare` reports for the fitted curve.
-        let compared = metrics::compare(&both.curve, &ggx).unwrap();
+        let compared = metrics::compare(&both.curve, &ggx, metrics::ThetaRange::FULL).unwrap();
         assert_eq!(compared.l2_projected, both.residual);
     }
 

@@ -45,15 +45,19 @@ impl fmt::Display for GridError {
 /// numpy's `linspace(start, stop, count)`: θ_i = start + i·(stop − start)/(count − 1) for
 /// i < count − 1 and the last value exactly `stop`; `count = 1` gives `[start]`.
 pub fn linspace(start: f64, stop: f64, count: usize) -> Vec<f64> {
-    match count {
-        0 => Vec::new(),
-        1 => vec![start],
-        _ => {
-            let step = (stop - start) / (count - 1) as f64;
-            let mut values: Vec<f64> = (0..count - 1).map(|i| start + i as f64 * step).collect();
-            values.push(stop);
-            values
-        }
+    (0..count).map(|i| linspace_at(start, stop, count, i)).collect()
+}
+
+/// The `i`-th of [`linspace`]`(start, stop, count)` (`i` < `count`) without the others:
+/// start + i·step with step = (stop − start)/(count − 1), the last exactly `stop`, the only one of
+/// a count of 1 `start`.
+pub fn linspace_at(start: f64, stop: f64, count: usize, i: usize) -> f64 {
+    if count == 1 {
+        start
+    } else if i + 1 == count {
+        stop
+    } else {
+        start + i as f64 * ((stop - start) / (count - 1) as f64)
     }
 }
 

@@ -20,3 +20,19 @@ pub fn write_bytes(bytes: &[u8]) -> Result<()> {
         _ => Ok(()),
     }
 }
+
+/// Writes `bytes` to standard output (without flushing: end with [`flush`]) for a command that
+/// writes as it computes: `Ok(false)` when the reader has closed the pipe, so the
+/// command can stop computing and succeed.
+pub fn stream(bytes: &[u8]) -> Result<bool> {
+    match std::io::stdout().lock().write_all(bytes) {
+        Ok(()) => Ok(true),
+        Err(e) if e.kind() == ErrorKind::BrokenPipe => Ok(false),
+        Err(e) => Err(Error::io("stdout", e)),
+    }
+}
+
+/// Flushes standard output; a closed pipe counts as success.
+pub fn flush() -> Result<()> {
+    write_bytes(&[])
+}

@@ -61,7 +61,8 @@ fn run_eval(args: EvalArgs) -> Result<()> {
     let unit = crate::angle::AngleUnit::of(args.degrees);
     let thetas = eval::parse_theta_list(&args.theta, unit)?;
     let curves = load_curves(&args.curve, "--curve")?;
-    stdout::print(&eval::table(&curves, &thetas, unit)?)
+    eval::write_table(&curves, &thetas, unit, &mut stdout::stream)?;
+    stdout::flush()
 }
 
 fn run_coeffs(args: CoeffsArgs) -> Result<()> {

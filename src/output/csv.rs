@@ -29,6 +29,15 @@ impl Table {
         }
     }
 
+    /// A table of rows only (no header), to be joined to one that has it, with room for about
+    /// `bytes` bytes.
+    pub fn rows(bytes: usize) -> Table {
+        Table {
+            writer: csv::Writer::from_writer(Vec::with_capacity(bytes)),
+            number: String::with_capacity(32),
+        }
+    }
+
     /// Appends `field` as text, quoted when it holds a comma, a quote or a line break.
     pub fn text(&mut self, field: &str) {
         self.writer

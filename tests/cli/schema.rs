@@ -294,6 +294,10 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
         "cross-field: camera is allowed only when the panel's kind is surface",
     ),
     (
+        "colour-both-spellings",
+        "cross-field: `colour` and `color` are one key in two spellings",
+    ),
+    (
         "data-csv-absolute-path",
         "the file system decides: where the path leads",
     ),
@@ -341,6 +345,10 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
     (
         "param-out-of-domain",
         "swept scene parameters carry no bounds in the schema yet",
+    ),
+    (
+        "png-over-raster-cap",
+        "computed: the product width × height × scale² against the cap",
     ),
     (
         "png-too-many-pixels",
@@ -406,6 +414,18 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
     (
         "width-too-big",
         "cross-field: the size cap depends on the unit (px, in, cm)",
+    ),
+    (
+        "x-log-polar",
+        "cross-field: the x scale against the panel's view",
+    ),
+    (
+        "x-log-range-from-zero",
+        "cross-field: the x scale decides whether the range may start at 0",
+    ),
+    (
+        "x-log-without-range",
+        "cross-field: a log θ axis needs the range key",
     ),
     (
         "x-range-degrees",
