@@ -76,6 +76,31 @@ pub struct Plan {
     pub pages: Option<Vec<Option<Vec<usize>>>>,
 }
 
+impl Plan {
+    /// Where job `job` is first used: its scene, and the panel and series it draws or tabulates
+    /// (`None` for the panel and series of a job that only feeds an interactive page).
+    pub fn first_use(&self, job: usize) -> Option<(usize, Option<(usize, usize)>)> {
+        let in_feeds = |feeds: &Feeds| {
+            feeds.iter().enumerate().find_map(|(scene, panels)| {
+                panels.iter().enumerate().find_map(|(panel, series)| {
+                    let s = series.iter().position(|&j| j == job)?;
+                    Some((scene, Some((panel, s))))
+                })
+            })
+        };
+        let in_pages = || {
+            self.pages.as_ref()?.iter().enumerate().find_map(|(scene, page)| {
+                page.as_ref()?.contains(&job).then_some((scene, None))
+            })
+        };
+        self.drawn
+            .as_ref()
+            .and_then(in_feeds)
+            .or_else(|| self.table.as_ref().and_then(in_feeds))
+            .or_else(in_pages)
+    }
+}
+
 /// Plans the evaluation of `scenes` for `outputs`, sharing identical jobs. Adaptive tolerances
 /// are judged at the finer of the SVG's and the PNG's pixel sizes whichever formats are asked
 /// for, so the requested formats never change a value written.

@@ -10,13 +10,14 @@ use crate::check_outputs;
 use crate::error::{Error, Result};
 use crate::figure::Figure;
 use crate::output::{Format, encode_all, html, write};
-use crate::plan::{Outputs, plan};
+use crate::plan::{Outputs, Plan, plan};
 use crate::progress::Progress;
 use crate::provenance::Provenance;
 use crate::resolve;
-use crate::sample::{Evaluated, evaluate_all};
+use crate::problem::{Problem, Problems};
+use crate::sample::{Evaluated, JobError, evaluate_all};
 use crate::scene::Scene;
-use crate::source::{CanvasOverride, load_scenes, sources};
+use crate::source::{CanvasOverride, Source, load_scenes, sources};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -136,7 +137,7 @@ pub fn drawn_figures(
         page: false,
     };
     let plan = plan(&scenes, outputs);
-    let evaluated = evaluate_all(&plan)?;
+    let evaluated = evaluate(&plan, &sources)?;
     let feeds = plan.drawn.as_ref().expect("drawn outputs were planned");
     Ok(scenes
         .iter()
@@ -144,6 +145,34 @@ pub fn drawn_figures(
         .zip(feeds)
         .map(|((s, p), f)| Figure::assemble(s, p, f, &evaluated))
         .collect())
+}
+
+/// Every job of `plan` evaluated ([`evaluate_all`]); a job that fails is reported against the
+/// spec it came from (`sources`, in scene order): its file, the JSON path of its panel (or of the
+/// interactive page it feeds) and its series there.
+fn evaluate(plan: &Plan, sources: &[Source]) -> Result<Vec<Evaluated>> {
+    evaluate_all(plan).map_err(|JobError { job, error }| {
+        let message = match error {
+            Error::Numerics(message) => message,
+            other => other.to_string(),
+        };
+        match plan.first_use(job) {
+            Some((scene, place)) => {
+                let (at, message) = match place {
+                    Some((panel, series)) => (
+                        format!("panels[{panel}]"),
+                        format!("series {series}: {message}"),
+                    ),
+                    None => ("interactive".to_owned(), message),
+                };
+                Error::Input(vec![Problems {
+                    source: sources[scene].0.clone(),
+                    list: vec![Problem::new(at, message)],
+                }])
+            }
+            None => Error::Numerics(message),
+        }
+    })
 }
 
 /// Output files as (file name, bytes).
@@ -227,7 +256,7 @@ fn encode_sources(
         quiet,
     );
     progress.stage("evaluating");
-    let evaluated = evaluate_all(&plan)?;
+    let evaluated = evaluate(&plan, &sources)?;
     progress.advance(plan.jobs.len() as u64);
     progress.stage("encoding");
     let mut stats = RenderStats {

@@ -94,8 +94,9 @@ enum Stage {
     },
 }
 
-/// Evaluates every job of `plan` in parallel; results are in job order.
-pub fn evaluate_all(plan: &Plan) -> Result<Vec<Evaluated>> {
+/// Evaluates every job of `plan` in parallel; results are in job order. A job that fails (a
+/// non-finite value) is reported with its index, so the caller can name the curve's spec.
+pub fn evaluate_all(plan: &Plan) -> std::result::Result<Vec<Evaluated>, JobError> {
     let mut stages: Vec<Stage> = plan
         .jobs
         .par_iter()
@@ -172,10 +173,12 @@ pub fn evaluate_all(plan: &Plan) -> Result<Vec<Evaluated>> {
     stages
         .into_iter()
         .zip(&plan.jobs)
-        .map(|(stage, job)| {
+        .enumerate()
+        .map(|(index, (stage, job))| {
+            let failed = |error| JobError { job: index, error };
             let evaluated = match stage {
                 Stage::Done(evaluated) => evaluated,
-                Stage::Failed(error) => return Err(error),
+                Stage::Failed(error) => return Err(failed(error)),
                 Stage::Refining { refined, .. } => Evaluated {
                     points: Arc::new(refined.points),
                     z: None,
@@ -184,9 +187,18 @@ pub fn evaluate_all(plan: &Plan) -> Result<Vec<Evaluated>> {
                     dyadic: None,
                 },
             };
-            check_finite(job, evaluated)
+            check_finite(job, evaluated).map_err(failed)
         })
         .collect()
+}
+
+/// Why the job at index `job` of a plan could not be evaluated.
+#[derive(Debug)]
+pub struct JobError {
+    /// The job's index in [`Plan::jobs`].
+    pub job: usize,
+    /// What went wrong.
+    pub error: Error,
 }
 
 /// The pixel map of every frame from the current points of its adaptive jobs.

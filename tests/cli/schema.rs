@@ -368,6 +368,10 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
         "a step of 0 inside a [a, b, s] triple is not in the schema yet",
     ),
     (
+        "ratio-zero-denominator",
+        "computed: the ratio's denominator reaches 0 inside the range",
+    ),
+    (
         "slope-range-negative",
         "cross-field: the x unit decides the range's domain",
     ),
