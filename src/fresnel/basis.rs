@@ -17,50 +17,35 @@
 //! - Spectrum check (step 6): singular values of the normalized curves of 100 dielectrics
 //!   η = linspace(1.01, 3, 100).
 //!
-//! The basis and the spectrum are each computed at most once per process, on first use, with faer,
-//! single-threaded so that the result is bit-reproducible: the basis from a partial SVD (the leading
-//! right singular vectors only, checked against the full thin SVD to ~1e-15), the spectrum from the
-//! thin SVD's singular values. Another SVD routine moves b₁…b₃ by ~1e-14 only (reference/README.md).
+//! The basis is computed with faer by `basis/compute.rs` (single-threaded partial SVDs: the
+//! leading right singular vectors only, checked against the full thin SVD to ~1e-15) and stored
+//! as a table that runs read ([`STORED`]); a test recomputes it and holds the table to it. The spectrum is computed
+//! at most once per process, on first use, from the thin SVD's singular values. Another SVD routine
+//! moves b₁…b₃ by ~1e-14 only (reference/README.md).
 //! Tabulated values between nodes are interpolated linearly in c (see [`Basis::interpolate`]). The
 //! reconstruction and the basis functions are approximations and basis vectors, not reflectances:
 //! they may leave [0, 1] and are never clamped.
 
 use std::sync::OnceLock;
 
-use rayon::prelude::*;
-
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::svd::{self, ComputeSvdVectors};
-use faer::matrix_free::eigen::{PartialEigenParams, partial_svd, partial_svd_scratch};
 use faer::prelude::default;
-use faer::{Col, Mat, Par};
+use faer::{Mat, Par};
 
 use super::exact::{Incidence, Index, normalized_reflectance, reflectance};
-use super::gulbrandsen;
 use crate::grid::linspace;
 
-mod numpy_f64;
+#[cfg(test)]
+mod compute;
 
 /// Number of grid nodes c_i (MATH.md step 1).
 pub const GRID_SIZE: usize = 1000;
-
-/// Number of materials in the training set (MATH.md step 2).
-const TRAINING_SIZE: usize = 1000;
-
-/// Share of the training set made of Gulbrandsen conductors (the notebook's `alpha = 0.01`).
-const CONDUCTOR_SHARE: f64 = 0.01;
-
-/// The notebook's offset keeping the conductors' reflectivity away from 0: r′ = r/(1 − δ) + δ, δ = 1e-5.
-const REFLECTIVITY_OFFSET: f64 = 1.0e-5;
 
 /// Index range of the dielectric training rows: η from 1.01 to 3.0 (the notebook's literals).
 const DIELECTRIC_ETA_MIN: f64 = 1.01;
 /// Upper end of the dielectric index range, for the training rows and the spectrum check.
 const DIELECTRIC_ETA_MAX: f64 = 3.0;
-/// First index of the `linspace(1.1, 3.0, 1000)` that the notebook starts its training set from;
-/// only row 0 keeps its value.
-const TRAINING_ETA_START: f64 = 1.1;
-
 /// Number of dielectrics in the spectrum check (MATH.md step 6).
 const SPECTRUM_SIZE: usize = 100;
 
@@ -84,40 +69,9 @@ pub fn normalized_curve(cos_theta: &[f64], index: Index) -> Vec<f64> {
         .collect()
 }
 
-/// The training materials (η, κ) of MATH.md step 2, built outside user validation (row k = 10 has
-/// η ≈ −9.99995e-6, κ ≈ 1), with the notebook's operation order.
-fn training_set() -> Vec<(f64, f64)> {
-    let mut materials = vec![(TRAINING_ETA_START, 0.0)];
-    for k in 1..TRAINING_SIZE {
-        let r = k as f64 / TRAINING_SIZE as f64;
-        materials.push(if r <= CONDUCTOR_SHARE {
-            let r = r / CONDUCTOR_SHARE / (1.0 - REFLECTIVITY_OFFSET) + REFLECTIVITY_OFFSET;
-            gulbrandsen::to_eta_kappa(r, 1.0)
-        } else {
-            let r = (r - CONDUCTOR_SHARE) / (1.0 - CONDUCTOR_SHARE);
-            (
-                DIELECTRIC_ETA_MIN + (DIELECTRIC_ETA_MAX - DIELECTRIC_ETA_MIN) * r,
-                0.0,
-            )
-        });
-    }
-    materials
-}
-
 /// Stacks `rows` (all of the same length) as the rows of a matrix.
 fn stack_rows(rows: &[Vec<f64>]) -> Mat<f64> {
     Mat::from_fn(rows.len(), rows[0].len(), |i, j| rows[i][j])
-}
-
-/// The training matrix: row k is the normalized curve of training material k, rounded as numpy
-/// rounds it (`numpy_f64`), so that the basis reproduces the published numpy reference. Rows are
-/// computed in parallel; each is the same whichever thread computes it.
-fn training_matrix(cos_theta: &[f64]) -> Mat<f64> {
-    let rows: Vec<Vec<f64>> = training_set()
-        .par_iter()
-        .map(|&(eta, kappa)| numpy_f64::training_row(cos_theta, eta, kappa))
-        .collect();
-    stack_rows(&rows)
 }
 
 /// Clears the upper halves of the AVX registers (`vzeroupper`) after a faer call.
@@ -176,84 +130,6 @@ fn thin_svd(matrix: &Mat<f64>, vectors: ComputeSvdVectors) -> (Vec<f64>, Option<
     ((0..size).map(|k| s[k]).collect(), v)
 }
 
-/// The first `count` right singular vectors of `matrix`, by decreasing singular value, from faer's
-/// full thin SVD.
-fn right_singular_vectors_full(matrix: &Mat<f64>, count: usize) -> Vec<Vec<f64>> {
-    let (_, v) = thin_svd(matrix, ComputeSvdVectors::Thin);
-    let v = v.expect("the SVD was asked for V");
-    (0..count)
-        .map(|k| v.col(k).iter().copied().collect())
-        .collect()
-}
-
-/// The first `count` right singular vectors of `matrix`, by decreasing singular value.
-///
-/// faer's partial SVD (thick-restart Lanczos bidiagonalization), single-threaded from the fixed
-/// start vector (1, …, 1), so bit-reproducible; ~8× faster than the full thin SVD for the two
-/// 1000 × 1000 training matrices. Converged to a residual ‖A v − s u‖ ≤ ε ‖A‖_F, i.e. each vector
-/// to ~ε ‖A‖_F / (singular value gap) ≈ 1e-15 here (s = 274, 26 for the curves; 39, 9.7, 2.0 for
-/// the residuals): it agrees with the full thin SVD to ~1e-15 (tested below), far inside the 1e-12
-/// that the reference tolerates. Falls back to the full thin SVD if it does not converge.
-fn right_singular_vectors(matrix: &Mat<f64>, count: usize) -> Vec<Vec<f64>> {
-    let (m, n) = matrix.shape();
-    let mut u = Mat::<f64>::zeros(m, count);
-    let mut v = Mat::<f64>::zeros(n, count);
-    let mut s = vec![0.0; count];
-    let start = Col::<f64>::from_fn(n, |_| 1.0);
-    let params = PartialEigenParams::default();
-    let mut buffer = MemBuffer::new(partial_svd_scratch::<f64>(
-        &matrix.as_ref(),
-        count,
-        Par::Seq,
-        params,
-    ));
-    let info = partial_svd(
-        u.as_mut(),
-        v.as_mut(),
-        &mut s,
-        &matrix.as_ref(),
-        start.as_ref(),
-        matrix.norm_l2() * f64::EPSILON,
-        Par::Seq,
-        MemStack::new(&mut buffer),
-        params,
-    );
-    clear_upper_simd_state();
-    let decreasing = s.windows(2).all(|pair| pair[0] >= pair[1]);
-    if info.n_converged_eigen < count || !decreasing {
-        return right_singular_vectors_full(matrix, count);
-    }
-    (0..count)
-        .map(|k| v.col(k).iter().copied().collect())
-        .collect()
-}
-
-/// `vector / max|vector|`, then negated if its largest-magnitude entry is negative, so that entry is +1.
-fn normalize_to_positive_peak(vector: &[f64]) -> Vec<f64> {
-    let peak = vector
-        .iter()
-        .copied()
-        .fold(0.0, |m: f64, v| if v.abs() > m.abs() { v } else { m });
-    let scale = peak.abs();
-    let scaled = vector.iter().map(|v| v / scale);
-    if peak < 0.0 {
-        scaled.map(|v| -v).collect()
-    } else {
-        scaled.collect()
-    }
-}
-
-/// numpy's `argmax`: the first index of the largest value.
-fn argmax(values: impl Iterator<Item = f64>) -> usize {
-    let mut best = (0, f64::NEG_INFINITY);
-    for (i, v) in values.enumerate() {
-        if v > best.1 {
-            best = (i, v);
-        }
-    }
-    best.0
-}
-
 /// The four basis functions on the grid and the two critical indices.
 #[derive(Debug, Clone)]
 pub struct Basis {
@@ -264,43 +140,66 @@ pub struct Basis {
 
 static BASIS: OnceLock<Basis> = OnceLock::new();
 
-/// The basis of MATH.md steps 1–4, computed on first call (two 1000 × 1000 SVDs) and shared.
+/// The basis as [`compute`] makes it, stored: a comment line, `critical i₁ i₂`, then `b1`, `b2`
+/// and `b3` each followed by its 1000 node values in shortest round-trip form (b₀ = 1). Reading
+/// it takes well under a millisecond where computing it takes two SVDs (~60 ms), and every machine
+/// gets the same bits; a test keeps it equal to the computation.
+const STORED: &str = include_str!("basis/stored.txt");
+
+/// The basis of MATH.md steps 1–4, read from [`STORED`] on first call and shared.
 pub fn basis() -> &'static Basis {
-    BASIS.get_or_init(Basis::compute)
+    BASIS.get_or_init(|| parse_stored(STORED))
 }
 
-/// Whether [`basis`] has been computed in this process: it is only when a curve needs it.
-pub fn basis_is_computed() -> bool {
+/// Whether [`basis`] has been read in this process: it is only when a curve needs it.
+pub fn basis_is_loaded() -> bool {
     BASIS.get().is_some()
 }
 
-impl Basis {
-    fn compute() -> Basis {
-        let cos_theta = grid();
-        let curves = training_matrix(&cos_theta);
-        let v = right_singular_vectors(&curves, 1);
-        let b1 = normalize_to_positive_peak(&v[0].iter().map(|x| x.abs()).collect::<Vec<f64>>());
-        let residuals = Mat::from_fn(curves.nrows(), curves.ncols(), |i, j| {
-            curves[(i, j)] - b1[j]
-        });
-        let v = right_singular_vectors(&residuals, 2);
-        let b2 = normalize_to_positive_peak(&v[0]);
-        let b3 = normalize_to_positive_peak(&v[1]);
-        let i1 = argmax(b2.iter().copied());
-        let i_plus = argmax(b3.iter().copied());
-        let i_minus = argmax(b3.iter().map(|v| -v));
-        let i2 = if i_plus.abs_diff(i1) > i_minus.abs_diff(i1) {
-            i_plus
-        } else {
-            i_minus
-        };
-        Basis {
-            cos_theta,
-            functions: [vec![1.0; GRID_SIZE], b1, b2, b3],
-            critical: [i1, i2],
+/// The basis written in `text` (the format of [`STORED`]). Panics on a malformed table: the only
+/// table read is the one compiled in, which the tests read.
+fn parse_stored(text: &str) -> Basis {
+    let mut critical = [0; 2];
+    let mut functions = [vec![1.0; GRID_SIZE], Vec::new(), Vec::new(), Vec::new()];
+    for line in text.lines().filter(|l| !l.starts_with('#')) {
+        let mut words = line.split_ascii_whitespace();
+        match words.next() {
+            Some("critical") => {
+                for (slot, word) in critical.iter_mut().zip(words) {
+                    *slot = word.parse().expect("a node index");
+                }
+            }
+            Some(name @ ("b1" | "b2" | "b3")) => {
+                let k = usize::from(name.as_bytes()[1] - b'0');
+                functions[k] = words.map(|w| w.parse().expect("a number")).collect();
+            }
+            _ => panic!("unexpected line in the stored basis: {line:.40}"),
         }
     }
+    assert!(functions.iter().all(|f| f.len() == GRID_SIZE), "1000 values per function");
+    Basis {
+        cos_theta: grid(),
+        functions,
+        critical,
+    }
+}
 
+/// `basis` in the format of [`STORED`].
+#[cfg(test)]
+fn stored_text(basis: &Basis) -> String {
+    let mut text = String::from(
+        "# The Belcour–Bati–Barla Fresnel basis b1…b3 on c_i = linspace(0, 1, 1000) and its critical \
+         nodes, as src/fresnel/basis/compute.rs computes it; shortest round-trip doubles.\n",
+    );
+    text.push_str(&format!("critical {} {}\n", basis.critical[0], basis.critical[1]));
+    for k in 1..4 {
+        let values: Vec<String> = basis.functions[k].iter().map(|v| format!("{v:?}")).collect();
+        text.push_str(&format!("b{k} {}\n", values.join(" ")));
+    }
+    text
+}
+
+impl Basis {
     /// The grid nodes c_i = numpy `linspace(0, 1, 1000)`.
     pub fn cos_theta(&self) -> &[f64] {
         &self.cos_theta
@@ -482,73 +381,5 @@ mod tests {
                 row[i]
             );
         }
-    }
-
-    #[test]
-    fn training_row_rounds_like_numpy() {
-        // The quirky row k = 10 (1 − F₀ = 2e-5) from numpy 2.4 float64/complex128 on x86-64
-        // (AVX-512), exactly. The accurate values (mpmath, see the test above) differ by up to 3e-11.
-        let (eta, kappa) = training_set()[10];
-        let row = numpy_f64::training_row(&grid(), eta, kappa);
-        let expected = [
-            (1, 0.9985843570347518),
-            (128, 0.8195432810768335),
-            (432, 0.41773762323416164),
-            (900, 0.017903384730395037),
-            (998, 2.0020008408735605e-6),
-        ];
-        for (i, value) in expected {
-            assert_eq!(row[i], value, "node {i}");
-        }
-        // A dielectric and a conductor row.
-        let (eta, kappa) = training_set()[0];
-        assert_eq!(
-            numpy_f64::training_row(&grid(), eta, kappa)[500],
-            0.010780166047259189
-        );
-        let (eta, kappa) = training_set()[5];
-        assert_eq!(
-            numpy_f64::training_row(&grid(), eta, kappa)[300],
-            0.5194079664326562
-        );
-    }
-
-    #[test]
-    fn partial_svd_agrees_with_the_full_thin_svd() {
-        let curves = training_matrix(&grid());
-        let residuals = Mat::from_fn(curves.nrows(), curves.ncols(), |i, j| {
-            curves[(i, j)] - basis().function(1)[j]
-        });
-        for (matrix, count) in [(&curves, 1), (&residuals, 2)] {
-            let partial = right_singular_vectors(matrix, count);
-            let full = right_singular_vectors_full(matrix, count);
-            for (p, f) in partial.iter().zip(&full) {
-                let dot: f64 = p.iter().zip(f).map(|(a, b)| a * b).sum();
-                let sign = dot.signum();
-                let err = p
-                    .iter()
-                    .zip(f)
-                    .map(|(a, b)| (sign * a - b).abs())
-                    .fold(0.0, f64::max);
-                // Measured: 4.4e-16 (curves), 7.3e-16 (residuals).
-                assert!(err < 1e-14, "partial vs full SVD: {err:e}");
-            }
-        }
-    }
-
-    #[test]
-    fn training_set_keeps_the_quirky_row() {
-        let materials = training_set();
-        assert_eq!(materials[0], (1.1, 0.0));
-        let (eta, kappa) = materials[10];
-        assert!(
-            (eta + 9.99995e-6).abs() < 1e-11 && (kappa - 1.0).abs() < 1e-4,
-            "{eta} {kappa}"
-        );
-        let (eta, kappa) = materials[11];
-        assert!(
-            kappa == 0.0 && eta > DIELECTRIC_ETA_MIN && eta < 1.02,
-            "{eta} {kappa}"
-        );
     }
 }

@@ -1,88 +1,171 @@
-//! Every CSV ndfplot writes goes through [`Table`]: the csv crate's writer (RFC 4180 quoting where
-//! a field needs it, `\n` line ends) with numbers in the shortest round-trip form of CONTRACTS.md.
-//! It also owns the figure CSV (CONTRACTS.md): long format, one row per sampled point,
-//! `panel,series,curve,x,y` (plus `z` when the figure has surface panels).
+//! Every CSV ndfplot writes goes through [`Table`]: RFC 4180 quoting where a field needs it (as
+//! the csv crate's writer quotes, which a test holds it to), `\n` line ends, numbers in the
+//! shortest round-trip form of CONTRACTS.md. It also owns the figure CSV (CONTRACTS.md): long
+//! format, one row per sampled point, `panel,series,curve,x,y` (plus `z` when the figure has
+//! surface panels).
 //!
 //! Pure serialization into memory: it never evaluates a curve or touches a file.
 
 use crate::figure::Figure;
-use std::fmt::Write;
+use std::io::Write;
 
 /// A CSV document being written into memory, one row at a time: fields are appended to the
 /// current row and [`Table::end_row`] ends it. Every row must have as many fields as the header.
 pub struct Table {
-    writer: csv::Writer<Vec<u8>>,
-    /// Reused text of the number being written, so a row costs no allocation.
-    number: String,
+    out: Vec<u8>,
+    /// Fields in the current row so far.
+    fields: usize,
 }
 
 impl Table {
     /// A table whose first row is `header`, with room for about `bytes` bytes.
     pub fn new<T: AsRef<[u8]>>(header: impl IntoIterator<Item = T>, bytes: usize) -> Table {
-        let mut writer = csv::Writer::from_writer(Vec::with_capacity(bytes));
-        writer
-            .write_record(header)
-            .expect("writing to memory cannot fail");
-        Table {
-            writer,
-            number: String::with_capacity(32),
+        let mut table = Table::rows(bytes);
+        for name in header {
+            table.text_bytes(name.as_ref());
         }
+        table.end_row();
+        table
     }
 
     /// A table of rows only (no header), to be joined to one that has it, with room for about
     /// `bytes` bytes.
     pub fn rows(bytes: usize) -> Table {
         Table {
-            writer: csv::Writer::from_writer(Vec::with_capacity(bytes)),
-            number: String::with_capacity(32),
+            out: Vec::with_capacity(bytes),
+            fields: 0,
         }
     }
 
-    /// Appends `field` as text, quoted when it holds a comma, a quote or a line break.
+    /// Appends `field` as text, quoted when it holds a comma, a quote or a line break (quotes
+    /// doubled inside), or when it is an empty row's only field.
     pub fn text(&mut self, field: &str) {
-        self.writer
-            .write_field(field)
-            .expect("writing to memory cannot fail");
+        self.text_bytes(field.as_bytes());
+    }
+
+    fn text_bytes(&mut self, field: &[u8]) {
+        self.separate();
+        self.out.extend_from_slice(&quoted(field));
+    }
+
+    /// Appends `fields` already written by [`quoted_fields`], counted as `count` fields: text that
+    /// repeats on many rows is quoted once.
+    pub fn quoted_fields(&mut self, fields: &QuotedFields) {
+        self.separate();
+        self.out.extend_from_slice(&fields.text);
+        self.fields += fields.count - 1;
     }
 
     /// Appends `value` in shortest round-trip form (`{:?}`: `1.0`, `0.1`, `1e-300`).
     pub fn number(&mut self, value: f64) {
-        self.formatted(format_args!("{value:?}"));
+        self.separate();
+        write!(self.out, "{value:?}").expect("writing to memory cannot fail");
+    }
+
+    /// Appends a number already written in shortest round-trip form.
+    fn formatted_number(&mut self, text: &[u8]) {
+        self.separate();
+        self.out.extend_from_slice(text);
     }
 
     /// Appends a whole number.
     pub fn count(&mut self, value: usize) {
-        self.formatted(format_args!("{value}"));
+        self.separate();
+        write!(self.out, "{value}").expect("writing to memory cannot fail");
     }
 
-    fn formatted(&mut self, text: std::fmt::Arguments) {
-        self.number.clear();
-        self.number
-            .write_fmt(text)
-            .expect("writing to a String cannot fail");
-        self.writer
-            .write_field(&self.number)
-            .expect("writing to memory cannot fail");
+    /// Starts a field: a comma unless it is the first of its row.
+    fn separate(&mut self) {
+        if self.fields > 0 {
+            self.out.push(b',');
+        }
+        self.fields += 1;
     }
 
-    /// Ends the current row.
+    /// Ends the current row. A row whose one field is empty text is written `""`, so that the
+    /// line is not read as blank.
     pub fn end_row(&mut self) {
-        self.writer
-            .write_record(None::<&[u8]>)
-            .expect("every row has as many fields as the header");
+        let one_empty_field = self.fields == 1 && matches!(self.out.last(), None | Some(b'\n'));
+        if one_empty_field {
+            self.out.extend_from_slice(b"\"\"");
+        }
+        self.out.push(b'\n');
+        self.fields = 0;
     }
 
     /// The CSV bytes.
     pub fn into_bytes(self) -> Vec<u8> {
-        self.writer
-            .into_inner()
-            .expect("writing to memory cannot fail")
+        self.out
     }
 
     /// The CSV text.
     pub fn into_string(self) -> String {
-        String::from_utf8(self.into_bytes()).expect("every field was UTF-8")
+        String::from_utf8(self.out).expect("every field was UTF-8")
     }
+}
+
+/// A list of numbers in shortest round-trip form, kept while the next list is the same.
+#[derive(Default)]
+struct FormattedGrid {
+    values: Vec<f64>,
+    text: Vec<u8>,
+    ends: Vec<usize>,
+}
+
+impl FormattedGrid {
+    /// Formats `values` unless they are (bit for bit) the ones already formatted.
+    fn format(&mut self, values: impl Iterator<Item = f64> + Clone) {
+        if values.clone().map(f64::to_bits).eq(self.values.iter().map(|v| v.to_bits())) {
+            return;
+        }
+        self.values.clear();
+        self.text.clear();
+        self.ends.clear();
+        for value in values {
+            write!(self.text, "{value:?}").expect("writing to memory cannot fail");
+            self.values.push(value);
+            self.ends.push(self.text.len());
+        }
+    }
+
+    /// The text of the `i`-th value.
+    fn text(&self, i: usize) -> &[u8] {
+        let start = if i == 0 { 0 } else { self.ends[i - 1] };
+        &self.text[start..self.ends[i]]
+    }
+}
+
+/// Several leading fields of a row, quoted once for many rows ([`Table::quoted_fields`]).
+pub struct QuotedFields {
+    text: Vec<u8>,
+    count: usize,
+}
+
+/// `fields` joined by commas, each quoted as [`Table::text`] quotes it.
+pub fn quoted_fields(fields: &[&str]) -> QuotedFields {
+    let quoted: Vec<Vec<u8>> = fields.iter().map(|f| quoted(f.as_bytes()).into_owned()).collect();
+    QuotedFields {
+        text: quoted.join(&b","[..]),
+        count: fields.len(),
+    }
+}
+
+/// `field` as a CSV field: as is, or in quotes with its quotes doubled when it holds a comma, a
+/// quote, `\r` or `\n`.
+fn quoted(field: &[u8]) -> std::borrow::Cow<'_, [u8]> {
+    if !field.iter().any(|b| matches!(b, b',' | b'"' | b'\r' | b'\n')) {
+        return std::borrow::Cow::Borrowed(field);
+    }
+    let mut out = Vec::with_capacity(field.len() + 8);
+    out.push(b'"');
+    for &b in field {
+        if b == b'"' {
+            out.push(b'"');
+        }
+        out.push(b);
+    }
+    out.push(b'"');
+    std::borrow::Cow::Owned(out)
 }
 
 /// The CSV bytes of a figure: header `panel,series,curve,x,y` (and `,z` when any series has z
@@ -106,15 +189,16 @@ pub fn figure_csv(figure: &Figure) -> Vec<u8> {
         &["panel", "series", "curve", "x", "y"]
     };
     let mut table = Table::new(header, 64 + points * 80);
+    // The series of a table panel usually share one x grid: it is formatted once.
+    let mut grid = FormattedGrid::default();
     for (p, panel) in figure.panels.iter().enumerate() {
         let p = p.to_string();
         for (s, series) in panel.series.iter().enumerate() {
-            let s = s.to_string();
-            for (i, &(x, y)) in series.points.iter().enumerate() {
-                table.text(&p);
-                table.text(&s);
-                table.text(&series.curve);
-                table.number(x);
+            let leading = quoted_fields(&[&p, &s.to_string(), &series.curve]);
+            grid.format(series.points.iter().map(|&(x, _)| x));
+            for (i, &(_, y)) in series.points.iter().enumerate() {
+                table.quoted_fields(&leading);
+                table.formatted_number(grid.text(i));
                 table.number(y);
                 match series.z.as_ref().map(|z| z[i]) {
                     Some(z) => table.number(z),
@@ -131,6 +215,39 @@ pub fn figure_csv(figure: &Figure) -> Vec<u8> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn text_fields_are_quoted_as_the_csv_crate_quotes_them() {
+        let fields = [
+            "", "plain", "a,b", "say \"hi\"", "line\nbreak", "cr\rhere", " spaced ", "{\"ndf\":\"phong\"}",
+            "θ_deg", "'single'", "tab\there", ";",
+        ];
+        for a in fields {
+            for b in fields {
+                let mut theirs = csv::WriterBuilder::new().flexible(true).from_writer(Vec::new());
+                theirs.write_record([a, b]).unwrap();
+                theirs.write_record([a]).unwrap();
+                let theirs = theirs.into_inner().unwrap();
+                let mut ours = Table::rows(0);
+                ours.text(a);
+                ours.text(b);
+                ours.end_row();
+                ours.text(a);
+                ours.end_row();
+                assert_eq!(ours.into_bytes(), theirs, "{a:?} {b:?}");
+                let mut joined = Table::rows(0);
+                joined.quoted_fields(&quoted_fields(&[a, b]));
+                joined.number(0.5);
+                joined.end_row();
+                let mut separate = Table::rows(0);
+                separate.text(a);
+                separate.text(b);
+                separate.number(0.5);
+                separate.end_row();
+                assert_eq!(joined.into_bytes(), separate.into_bytes());
+            }
+        }
+    }
 
     #[test]
     fn fields_are_quoted_only_where_needed_and_numbers_round_trip() {

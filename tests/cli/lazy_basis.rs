@@ -5,7 +5,7 @@
 
 use crate::common::scratch;
 use ndfplot::curve::CurveSpec;
-use ndfplot::fresnel::basis::basis_is_computed;
+use ndfplot::fresnel::basis::basis_is_loaded;
 use ndfplot::output::Format;
 use ndfplot::render::{self, RenderOptions};
 use ndfplot::resolve;
@@ -54,8 +54,8 @@ fn render(dir: &std::path::Path, spec: &str) {
 }
 
 #[test]
-fn the_basis_is_computed_only_for_a_figure_that_uses_it() {
-    if !alone("the_basis_is_computed_only_for_a_figure_that_uses_it") {
+fn the_basis_is_loaded_only_for_a_figure_that_uses_it() {
+    if !alone("the_basis_is_loaded_only_for_a_figure_that_uses_it") {
         return;
     }
     let dir = scratch("lazy-basis");
@@ -65,12 +65,12 @@ fn the_basis_is_computed_only_for_a_figure_that_uses_it() {
             {"curves": [{"ndf": "ggx", "alpha_tr": 0.3}, {"ndf": "beckmann", "alpha_b": 0.3}]},
             {"curves": [{"fresnel": "exact", "eta": 1.5, "kappa": 0.0}]}]}"#,
     );
-    assert!(!basis_is_computed(), "NDFs and exact Fresnel need no basis");
+    assert!(!basis_is_loaded(), "NDFs and exact Fresnel need no basis");
     render(
         &dir,
         r#"{"id": "belcour", "panels": [{"curves": [{"fresnel": "belcour", "eta": 1.5, "kappa": 0.0}]}]}"#,
     );
-    assert!(basis_is_computed(), "the decomposition needs the basis");
+    assert!(basis_is_loaded(), "the decomposition needs the basis");
 }
 
 #[test]
@@ -104,11 +104,11 @@ fn reading_a_spec_fits_nothing_computes_no_basis_and_reads_no_data_file() {
         scene.panels[1].curves[0].curve,
         CurveSpec::Belcour(_)
     ));
-    assert!(!basis_is_computed(), "validation computes no coefficients");
+    assert!(!basis_is_loaded(), "validation computes no coefficients");
 
     // Resolve runs the fits and reads the file; their problems name the file and the JSON path.
     let error = resolve::scenes(loaded.clone()).unwrap_err().to_string();
-    assert!(basis_is_computed(), "resolve computes the coefficients");
+    assert!(basis_is_loaded(), "resolve computes the coefficients");
     let source = spec.display();
     for needle in [
         format!(
