@@ -8,25 +8,70 @@ use crate::error::{Error, Result};
 use crate::json;
 use crate::problem::{Problem, Problems};
 use crate::scene::data::CsvFile;
+use std::io::Read;
 
-/// Reads a text file, naming it in the error. Only regular files are read: a FIFO or a device
-/// is refused before it is opened (opening a FIFO would block).
+/// Largest spec file, `@FILE` argument or standard input read, in bytes (16 MiB): far more than
+/// any scene within the curve caps needs, and small enough that parsing it stays well under 1 GiB.
+pub const MAX_INPUT_BYTES: u64 = 16 << 20;
+
+/// Reads a text file, naming it in the error. Only regular files of at most [`MAX_INPUT_BYTES`]
+/// are read: a FIFO or a device is refused before it is opened (opening a FIFO would block).
 pub fn read_file(path: &str) -> Result<String> {
     let meta = std::fs::metadata(path).map_err(|e| Error::io(path, e))?;
-    if !meta.is_file() {
+    let refuse = |what: String| {
         let kind = std::io::ErrorKind::InvalidInput;
-        return Err(Error::io(
-            path,
-            std::io::Error::new(kind, "not a regular file"),
-        ));
+        Err(Error::io(path, std::io::Error::new(kind, what)))
+    };
+    if !meta.is_file() {
+        return refuse("not a regular file".to_owned());
     }
-    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    if meta.len() > MAX_INPUT_BYTES {
+        return refuse(too_large(&meta.len().to_string()));
+    }
+    let file = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
+    let bytes = read_capped(file).map_err(|e| Error::io(path, e))?;
     String::from_utf8(bytes).map_err(|e| {
         let (line, column) = line_column(&e.as_bytes()[..e.utf8_error().valid_up_to()]);
         Error::Usage(format!(
             "{path}: {line}:{column}: not UTF-8 text (a byte sequence that is not UTF-8 starts here)"
         ))
     })
+}
+
+/// Standard input as text, at most [`MAX_INPUT_BYTES`] of it; more, or bytes that are not UTF-8,
+/// is an `InvalidData` error saying so.
+pub fn read_stdin() -> std::io::Result<String> {
+    let bytes = read_capped(std::io::stdin().lock())?;
+    String::from_utf8(bytes).map_err(|e| {
+        let (line, column) = line_column(&e.as_bytes()[..e.utf8_error().valid_up_to()]);
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!("{line}:{column}: not UTF-8 text (a byte sequence that is not UTF-8 starts here)"),
+        )
+    })
+}
+
+/// Everything `reader` gives, up to [`MAX_INPUT_BYTES`]; a longer input is an `InvalidData`
+/// error, found after reading one byte past the cap.
+fn read_capped(reader: impl Read) -> std::io::Result<Vec<u8>> {
+    let mut bytes = Vec::new();
+    reader.take(MAX_INPUT_BYTES + 1).read_to_end(&mut bytes)?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            too_large(&format!("more than {MAX_INPUT_BYTES}")),
+        ));
+    }
+    Ok(bytes)
+}
+
+/// The message for an input of `size` (a number of bytes, or a bound on it) beyond
+/// [`MAX_INPUT_BYTES`].
+fn too_large(size: &str) -> String {
+    format!(
+        "input too large (got {size} bytes, expected at most {} MiB)",
+        MAX_INPUT_BYTES >> 20
+    )
 }
 
 /// The 1-based line and column (in characters) just after `text`, valid UTF-8.

@@ -109,6 +109,7 @@ pub fn plan(scenes: &[Scene], outputs: Outputs) -> Plan {
         jobs: Vec::new(),
         frames: Vec::new(),
         index: HashMap::new(),
+        contexts: HashMap::new(),
     };
     let mut feeds_for = |pick: fn(Sampling) -> Sampling| -> Feeds {
         scenes
@@ -143,6 +144,9 @@ struct Planner {
     jobs: Vec<Job>,
     frames: Vec<Frame>,
     index: HashMap<String, usize>,
+    /// Distinct adaptive contexts (a frame and every curve of its panel), numbered, so that a
+    /// job's key names its context by number: a panel of n curves costs O(n) keys, not O(n²).
+    contexts: HashMap<String, usize>,
 }
 
 impl Planner {
@@ -174,10 +178,14 @@ impl Planner {
                     .iter()
                     .map(|c| c.curve.canonical_json())
                     .collect();
-                let context = format!("{frame:?} {neighbours:?}");
+                let next = self.contexts.len();
+                let context = *self
+                    .contexts
+                    .entry(format!("{frame:?} {neighbours:?}"))
+                    .or_insert(next);
                 let mut frame_index = None;
                 for shown in &panel.curves {
-                    let key = format!("adaptive {} {context}", shown.curve.canonical_json());
+                    let key = format!("adaptive {} in #{context}", shown.curve.canonical_json());
                     feed.push(self.intern(key, |frames| {
                         let index = *frame_index.get_or_insert_with(|| {
                             frames.push(frame.clone());

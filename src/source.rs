@@ -12,7 +12,6 @@ use crate::input::{parse_json, read_file};
 use crate::look::Theme;
 use crate::problem::Problem;
 use crate::scene::{self, Invalid, Scene, Spec};
-use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -60,10 +59,7 @@ pub fn sources(paths: &[PathBuf], allow_read: &[PathBuf]) -> Result<Vec<Source>>
     let mut sources = Vec::new();
     for path in paths {
         if path.as_os_str() == "-" {
-            let mut text = String::new();
-            std::io::stdin()
-                .read_to_string(&mut text)
-                .map_err(|e| Error::io(STDIN_SOURCE, e))?;
+            let text = crate::input::read_stdin().map_err(|e| Error::io(STDIN_SOURCE, e))?;
             sources.push((STDIN_SOURCE.to_string(), text, scope(PathBuf::from("."))));
         } else if path.is_dir() {
             let entries =

@@ -18,7 +18,7 @@ use crate::input::Side;
 use crate::metrics::sampled::{Operand, Samples};
 use crate::problem::{Problem, Problems};
 use crate::{input, resolve, source, stdout};
-use std::io::{Read, Write};
+use std::io::Write;
 use std::path::PathBuf;
 
 /// Runs a parsed command line; `quiet` (`-q`) leaves progress and notes off stderr (never errors or
@@ -51,12 +51,6 @@ fn run_show(id: &str) -> Result<()> {
     }
 }
 
-fn read_stdin() -> std::io::Result<String> {
-    let mut text = String::new();
-    std::io::stdin().read_to_string(&mut text)?;
-    Ok(text)
-}
-
 fn run_eval(args: EvalArgs) -> Result<()> {
     let unit = crate::angle::AngleUnit::of(args.degrees);
     let thetas = eval::parse_theta_list(&args.theta, unit)?;
@@ -77,7 +71,7 @@ fn run_coeffs(args: CoeffsArgs) -> Result<()> {
 
 /// The curves of a curve argument ([`input::load_curves`]), resolved.
 fn load_curves(args: &[String], flag: &str) -> Result<Vec<Curve>> {
-    input::load_curves(args, flag, read_stdin)?
+    input::load_curves(args, flag, input::read_stdin)?
         .iter()
         .map(|spec| resolve::curve(spec).map_err(|p| input_error(flag, p)))
         .collect()
@@ -94,7 +88,7 @@ fn input_error(source: &str, problem: Problem) -> Error {
 /// One side of `compare` ([`input::load_operand`]), resolved (a CSV series read), with its
 /// canonical JSON.
 fn load_operand(arg: &str, flag: &str, allow_read: &[PathBuf]) -> Result<(Operand, String)> {
-    let (source, side) = input::load_operand(arg, flag, allow_read, read_stdin)?;
+    let (source, side) = input::load_operand(arg, flag, allow_read, input::read_stdin)?;
     match side {
         Side::Curve(spec) => {
             let curve = resolve::curve(&spec).map_err(|p| input_error(&source, p))?;
@@ -166,7 +160,7 @@ fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {
 /// The curves of a curve argument ([`input::read_curves`]), each resolved on its own, with its source
 /// name: one bad curve does not keep the others from being used.
 fn load_targets(args: &[String], flag: &str) -> Result<Vec<fit::Target>> {
-    let targets = input::read_curves(args, flag, read_stdin)?
+    let targets = input::read_curves(args, flag, input::read_stdin)?
         .into_iter()
         .map(|(source, spec)| {
             let curve = spec.and_then(|spec| {

@@ -172,11 +172,12 @@ fn quoted(field: &[u8]) -> std::borrow::Cow<'_, [u8]> {
 /// values), then every point of every series, panels and series in order; `x` is θ in radians
 /// for curves. Series without z leave the z field empty.
 pub fn figure_csv(figure: &Figure) -> Vec<u8> {
-    let points: usize = figure
+    // Room for every row: its panel, series and curve, and up to 25 bytes per number.
+    let bytes: usize = figure
         .panels
         .iter()
         .flat_map(|p| &p.series)
-        .map(|s| s.points.len())
+        .map(|s| s.points.len() * (s.curve.len() * 2 + 16 + 3 * 25))
         .sum();
     let with_z = figure
         .panels
@@ -188,7 +189,7 @@ pub fn figure_csv(figure: &Figure) -> Vec<u8> {
     } else {
         &["panel", "series", "curve", "x", "y"]
     };
-    let mut table = Table::new(header, 64 + points * 80);
+    let mut table = Table::new(header, 64 + bytes);
     // The series of a table panel usually share one x grid: it is formatted once.
     let mut grid = FormattedGrid::default();
     for (p, panel) in figure.panels.iter().enumerate() {

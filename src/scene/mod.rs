@@ -32,9 +32,10 @@ use sweep::{MAX_CURVES_PER_SCENE, Sweep};
 /// Most samples one curve may have (CONTRACTS.md).
 pub const MAX_SAMPLES_PER_CURVE: usize = 10_000_000;
 /// Most points one scene's table may have, summed over its curves (curves × uniform samples) and
-/// data series: the default 1000 samples for the 10 000 curves of [`MAX_CURVES_PER_SCENE`], or one
-/// curve at [`MAX_SAMPLES_PER_CURVE`]; about 1 GB of CSV.
-pub const MAX_POINTS_PER_SCENE: usize = 10_000_000;
+/// data series: the default 1000 samples for 5000 curves (the 10 000 curves of
+/// [`MAX_CURVES_PER_SCENE`] at 500 samples). Its CSV is about 500 MB, and a run at the cap stays
+/// under 1 GiB.
+pub const MAX_POINTS_PER_SCENE: usize = 5_000_000;
 /// Default number of uniform samples per curve over the visible θ range.
 pub const DEFAULT_SAMPLES: usize = 1000;
 /// Largest figure side in CSS pixels; beyond it rasters exhaust memory for no visible gain.

@@ -746,3 +746,39 @@ fn a_spec_with_a_hundred_thousand_problems_prints_the_first_hundred_and_a_count(
         lines[100]
     );
 }
+
+/// Spec files, `@FILE` arguments and standard input larger than 16 MiB are refused (exit 2, the
+/// input named) before they are parsed, and an output is written for none of them.
+#[test]
+fn inputs_over_the_size_cap_are_refused_by_name() {
+    let dir = scratch("robustness-input-cap");
+    let big = dir.join("big.json");
+    // Valid JSON (one string) one byte over the cap.
+    let cap = ndfplot::input::MAX_INPUT_BYTES as usize;
+    let mut spec = vec![b'a'; cap - 1];
+    spec[0] = b'"';
+    spec.push(b'"');
+    spec.push(b' ');
+    std::fs::write(&big, &spec).unwrap();
+    let out = dir.join("out");
+    let path = big.to_str().unwrap();
+    let at_file = format!("@{path}");
+    for (args, stdin, source) in [
+        (vec!["render", path, "-o", out.to_str().unwrap()], None, path),
+        (vec!["eval", "--curve", at_file.as_str(), "--theta", "0"], None, path),
+        (vec!["eval", "--curve", "-", "--theta", "0"], Some(&spec), "stdin"),
+        (vec!["render", "-", "-o", out.to_str().unwrap()], Some(&spec), "stdin"),
+    ] {
+        let result = match stdin {
+            Some(bytes) => crate::common::ndfplot_stdin(&args, std::str::from_utf8(bytes).unwrap()),
+            None => ndfplot(&args),
+        };
+        let stderr = text(&result.stderr);
+        assert_eq!(result.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains(&format!("{source}: input too large")) && stderr.contains("16 MiB"),
+            "{args:?}: {stderr}"
+        );
+    }
+    assert!(files_in(&out).is_empty(), "nothing written");
+}

@@ -376,6 +376,10 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
         "cross-field: the x unit decides the range's domain",
     ),
     (
+        "sweep-at-curve-cap-over-points-cap",
+        "computed: curves × samples against the scene's point cap",
+    ),
+    (
         "sweep-product-over-cap",
         "computed: the product of the sweeps' sizes",
     ),
