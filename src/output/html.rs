@@ -9,6 +9,7 @@
 //! For Belcour reconstructions each frame also carries its coefficients c₀ … c₃ (and η, κ when
 //! the material is given by Gulbrandsen's r, g) for the page to print. Bytes are deterministic.
 
+mod maths;
 mod samples;
 
 use crate::curve::Curve;
