@@ -10,7 +10,6 @@ use crate::adaptive::{Frame, Geometry};
 use crate::curve::Curve;
 use crate::dataset::Dataset;
 use crate::look::PanelKind;
-use crate::scene::interactive::Interactive;
 use crate::scene::{Sampling, Scene, ScenePanel};
 use std::collections::HashMap;
 
@@ -33,14 +32,6 @@ pub enum Job {
         /// Index into [`Plan::frames`].
         frame: usize,
     },
-    /// A curve sampled on the dyadic grid of an interactive page over an interval
-    /// ([`crate::dyadic`]).
-    Dyadic {
-        /// The curve.
-        curve: Curve,
-        /// θ interval in radians.
-        theta_range: (f64, f64),
-    },
     /// A dataset computed once.
     Data(Dataset),
 }
@@ -56,8 +47,6 @@ pub struct Outputs {
     pub drawn: bool,
     /// Tables (CSV).
     pub table: bool,
-    /// Interactive pages (HTML).
-    pub page: bool,
 }
 
 /// The jobs, plus for each requested output kind the job feeding each scene, panel and series.
@@ -71,9 +60,6 @@ pub struct Plan {
     pub drawn: Option<Feeds>,
     /// Feeds of the tables, `None` when no table is written.
     pub table: Option<Feeds>,
-    /// Per scene, the jobs feeding its interactive page, every curve of every slider position in
-    /// order (`Interactive::curves`); `None` for a scene without a page, or when no page is made.
-    pub pages: Option<Vec<Option<Vec<usize>>>>,
 }
 
 /// Plans the evaluation of `scenes` for `outputs`, sharing identical jobs. Adaptive tolerances
@@ -98,18 +84,11 @@ pub fn plan(scenes: &[Scene], outputs: Outputs) -> Plan {
     };
     let drawn = outputs.drawn.then(|| feeds_for(Sampling::for_drawing));
     let table = outputs.table.then(|| feeds_for(Sampling::for_table));
-    let pages = outputs.page.then(|| {
-        scenes
-            .iter()
-            .map(|scene| Some(planner.page(scene, scene.interactive.as_ref()?)))
-            .collect()
-    });
     Plan {
         jobs: planner.jobs,
         frames: planner.frames,
         drawn,
         table,
-        pages,
     }
 }
 
@@ -189,23 +168,6 @@ impl Planner {
             }));
         }
         feed
-    }
-
-    /// The jobs feeding the interactive page of `scene`: every curve of every slider position,
-    /// on the dyadic grid over the first panel's θ range.
-    fn page(&mut self, scene: &Scene, interactive: &Interactive) -> Vec<usize> {
-        let theta_range = scene.panels[0].axes.theta_range();
-        let (a, b) = theta_range;
-        interactive
-            .curves()
-            .map(|shown| {
-                let key = format!("dyadic {} {a:?} {b:?}", shown.curve.canonical_json());
-                self.intern(key, |_| Job::Dyadic {
-                    curve: shown.curve.clone(),
-                    theta_range,
-                })
-            })
-            .collect()
     }
 }
 

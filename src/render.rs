@@ -14,7 +14,7 @@ use crate::plan::{Outputs, plan};
 use crate::progress::Progress;
 use crate::provenance::Provenance;
 use crate::resolve;
-use crate::sample::{Evaluated, evaluate_all};
+use crate::sample::evaluate_all;
 use crate::scene::Scene;
 use crate::source::{CanvasOverride, load_scenes, sources};
 use rayon::prelude::*;
@@ -35,22 +35,12 @@ pub struct RenderOptions {
     pub allow_read: Vec<PathBuf>,
 }
 
-/// The interactive page of every scene that has sliders, from its planned jobs `feeds`.
-fn pages(
-    scenes: &[Scene],
-    feeds: &[Option<Vec<usize>>],
-    evaluated: &[Evaluated],
-) -> Vec<(String, Vec<u8>)> {
+/// The interactive page of every scene that has sliders.
+fn pages(scenes: &[Scene]) -> Vec<(String, Vec<u8>)> {
     scenes
         .iter()
-        .zip(feeds)
-        .filter_map(|(scene, feed)| {
-            let page = html::page(
-                scene,
-                scene.interactive.as_ref()?,
-                feed.as_ref()?,
-                evaluated,
-            );
+        .filter_map(|scene| {
+            let page = html::page(scene, scene.interactive.as_ref()?);
             Some((format!("{}.html", scene.id), page))
         })
         .collect()
@@ -133,7 +123,6 @@ pub fn drawn_figures(
     let outputs = Outputs {
         drawn: true,
         table: false,
-        page: false,
     };
     let plan = plan(&scenes, outputs);
     let evaluated = evaluate_all(&plan)?;
@@ -214,7 +203,6 @@ fn encode_sources(
     let outputs = Outputs {
         drawn: has(Format::Svg) || has(Format::Png) || has(Format::Pdf),
         table: has(Format::Csv),
-        page: has(Format::Html),
     };
     let plan = plan(&scenes, outputs);
     let encoded_formats = options
@@ -274,8 +262,8 @@ fn encode_sources(
         }) += stage.elapsed();
     }
     let stage = std::time::Instant::now();
-    if let Some(feeds) = &plan.pages {
-        outputs.extend(pages(&scenes, feeds, &evaluated));
+    if has(Format::Html) {
+        outputs.extend(pages(&scenes));
     }
     outputs.sort_by(|a, b| a.0.cmp(&b.0));
     stats.encoding += stage.elapsed();

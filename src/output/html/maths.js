@@ -351,8 +351,9 @@ function ndfplotMaths(domains, basis) {
     return [-5 * (1 - f0), Math.min(h(lo), h(hi))];
   }
 
-  // ---- src/fresnel/basis.rs: the embedded basis, linear in c between the 1000 nodes ----
-  const GRID = basis.functions[0].length;
+  // ---- src/fresnel/basis.rs: the embedded basis (null on pages without Belcour curves), linear
+  // in c between its 1000 nodes ----
+  const GRID = basis ? basis.functions[0].length : 0;
   const cosGrid = Array.from({ length: GRID }, (_, i) => (i + 1 === GRID ? 1 : i * (1 / (GRID - 1))));
   function locate(c) {
     const last = GRID - 1;
@@ -464,6 +465,6 @@ function ndfplotMaths(domains, basis) {
     return Object.assign({ canonical }, FRESNELS[model](params));
   }
 
-  return { build, formatNumber, contains, phongFromBeckmann: (b) => 2 / (b * b) - 2 };
+  return { build, formatNumber, contains, integrate, phongFromBeckmann: (b) => 2 / (b * b) - 2 };
 }
 if (typeof module !== "undefined") module.exports = ndfplotMaths;
