@@ -99,7 +99,6 @@ fn spec(bytes: &[u8]) {
         Outputs {
             drawn: true,
             table: true,
-            page: false,
         },
     );
     let Ok(evaluated) = evaluate_all(&plan) else {

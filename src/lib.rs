@@ -2,7 +2,7 @@
 //!
 //! Data flows one way: spec sources (`source`) → validated scene descriptions (`scene`, `curve`,
 //! `look`) → resolved scenes, fits, coefficients and data files computed and read (`resolve`) →
-//! sampling plan (`plan`) → evaluated jobs (`sample`, `adaptive`, `dyadic`) → the figure
+//! sampling plan (`plan`) → evaluated jobs (`sample`, `adaptive`) → the figure
 //! (`figure`), placed by `layout` → bytes and files (`output`); `render` runs the whole chain.
 //! The maths (`ndf`, `fresnel`, `math`) is pure f64 code with no I/O; `audit` integrates the curves of
 //! scenes for `ndfplot check`.
@@ -19,7 +19,6 @@ pub mod curve;
 pub mod datafile;
 pub mod dataset;
 pub mod domain;
-pub mod dyadic;
 pub mod error;
 pub mod figure;
 pub mod fit;

@@ -10,7 +10,6 @@ use crate::adaptive::{Frame, Geometry};
 use crate::curve::Curve;
 use crate::dataset::Dataset;
 use crate::look::PanelKind;
-use crate::scene::interactive::Interactive;
 use crate::scene::{Sampling, Scene, ScenePanel};
 use std::collections::HashMap;
 
@@ -33,14 +32,6 @@ pub enum Job {
         /// Index into [`Plan::frames`].
         frame: usize,
     },
-    /// A curve sampled on the dyadic grid of an interactive page over an interval
-    /// ([`crate::dyadic`]).
-    Dyadic {
-        /// The curve.
-        curve: Curve,
-        /// θ interval in radians.
-        theta_range: (f64, f64),
-    },
     /// A dataset computed once.
     Data(Dataset),
 }
@@ -56,8 +47,6 @@ pub struct Outputs {
     pub drawn: bool,
     /// Tables (CSV).
     pub table: bool,
-    /// Interactive pages (HTML).
-    pub page: bool,
 }
 
 /// The jobs, plus for each requested output kind the job feeding each scene, panel and series.
@@ -71,33 +60,23 @@ pub struct Plan {
     pub drawn: Option<Feeds>,
     /// Feeds of the tables, `None` when no table is written.
     pub table: Option<Feeds>,
-    /// Per scene, the jobs feeding its interactive page, every curve of every slider position in
-    /// order (`Interactive::curves`); `None` for a scene without a page, or when no page is made.
-    pub pages: Option<Vec<Option<Vec<usize>>>>,
 }
 
 impl Plan {
-    /// Where job `job` is first used: its scene, and the panel and series it draws or tabulates
-    /// (`None` for the panel and series of a job that only feeds an interactive page).
-    pub fn first_use(&self, job: usize) -> Option<(usize, Option<(usize, usize)>)> {
+    /// Where job `job` is first used: its scene, and the panel and series it draws or tabulates.
+    pub fn first_use(&self, job: usize) -> Option<(usize, usize, usize)> {
         let in_feeds = |feeds: &Feeds| {
             feeds.iter().enumerate().find_map(|(scene, panels)| {
                 panels.iter().enumerate().find_map(|(panel, series)| {
                     let s = series.iter().position(|&j| j == job)?;
-                    Some((scene, Some((panel, s))))
+                    Some((scene, panel, s))
                 })
-            })
-        };
-        let in_pages = || {
-            self.pages.as_ref()?.iter().enumerate().find_map(|(scene, page)| {
-                page.as_ref()?.contains(&job).then_some((scene, None))
             })
         };
         self.drawn
             .as_ref()
             .and_then(in_feeds)
             .or_else(|| self.table.as_ref().and_then(in_feeds))
-            .or_else(in_pages)
     }
 }
 
@@ -124,18 +103,11 @@ pub fn plan(scenes: &[Scene], outputs: Outputs) -> Plan {
     };
     let drawn = outputs.drawn.then(|| feeds_for(Sampling::for_drawing));
     let table = outputs.table.then(|| feeds_for(Sampling::for_table));
-    let pages = outputs.page.then(|| {
-        scenes
-            .iter()
-            .map(|scene| Some(planner.page(scene, scene.interactive.as_ref()?)))
-            .collect()
-    });
     Plan {
         jobs: planner.jobs,
         frames: planner.frames,
         drawn,
         table,
-        pages,
     }
 }
 
@@ -222,23 +194,6 @@ impl Planner {
             }));
         }
         feed
-    }
-
-    /// The jobs feeding the interactive page of `scene`: every curve of every slider position,
-    /// on the dyadic grid over the first panel's θ range.
-    fn page(&mut self, scene: &Scene, interactive: &Interactive) -> Vec<usize> {
-        let theta_range = scene.panels[0].axes.theta_range();
-        let (a, b) = theta_range;
-        interactive
-            .curves()
-            .map(|shown| {
-                let key = format!("dyadic {} {a:?} {b:?}", shown.curve.canonical_json());
-                self.intern(key, |_| Job::Dyadic {
-                    curve: shown.curve.clone(),
-                    theta_range,
-                })
-            })
-            .collect()
     }
 }
 

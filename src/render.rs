@@ -36,22 +36,12 @@ pub struct RenderOptions {
     pub allow_read: Vec<PathBuf>,
 }
 
-/// The interactive page of every scene that has sliders, from its planned jobs `feeds`.
-fn pages(
-    scenes: &[Scene],
-    feeds: &[Option<Vec<usize>>],
-    evaluated: &[Evaluated],
-) -> Vec<(String, Vec<u8>)> {
+/// The interactive page of every scene that has sliders.
+fn pages(scenes: &[Scene]) -> Vec<(String, Vec<u8>)> {
     scenes
         .iter()
-        .zip(feeds)
-        .filter_map(|(scene, feed)| {
-            let page = html::page(
-                scene,
-                scene.interactive.as_ref()?,
-                feed.as_ref()?,
-                evaluated,
-            );
+        .filter_map(|scene| {
+            let page = html::page(scene, scene.interactive.as_ref()?);
             Some((format!("{}.html", scene.id), page))
         })
         .collect()
@@ -134,7 +124,6 @@ pub fn drawn_figures(
     let outputs = Outputs {
         drawn: true,
         table: false,
-        page: false,
     };
     let plan = plan(&scenes, outputs);
     let evaluated = evaluate(&plan, &sources)?;
@@ -148,8 +137,8 @@ pub fn drawn_figures(
 }
 
 /// Every job of `plan` evaluated ([`evaluate_all`]); a job that fails is reported against the
-/// spec it came from (`sources`, in scene order): its file, the JSON path of its panel (or of the
-/// interactive page it feeds) and its series there.
+/// spec it came from (`sources`, in scene order): its file, the JSON path of its panel and its
+/// series there.
 fn evaluate(plan: &Plan, sources: &[Source]) -> Result<Vec<Evaluated>> {
     evaluate_all(plan).map_err(|JobError { job, error }| {
         let message = match error {
@@ -157,19 +146,13 @@ fn evaluate(plan: &Plan, sources: &[Source]) -> Result<Vec<Evaluated>> {
             other => other.to_string(),
         };
         match plan.first_use(job) {
-            Some((scene, place)) => {
-                let (at, message) = match place {
-                    Some((panel, series)) => (
-                        format!("panels[{panel}]"),
-                        format!("series {series}: {message}"),
-                    ),
-                    None => ("interactive".to_owned(), message),
-                };
-                Error::Input(vec![Problems {
-                    source: sources[scene].0.clone(),
-                    list: vec![Problem::new(at, message)],
-                }])
-            }
+            Some((scene, panel, series)) => Error::Input(vec![Problems {
+                source: sources[scene].0.clone(),
+                list: vec![Problem::new(
+                    format!("panels[{panel}]"),
+                    format!("series {series}: {message}"),
+                )],
+            }]),
             None => Error::Numerics(message),
         }
     })
@@ -243,7 +226,6 @@ fn encode_sources(
     let outputs = Outputs {
         drawn: has(Format::Svg) || has(Format::Png) || has(Format::Pdf),
         table: has(Format::Csv),
-        page: has(Format::Html),
     };
     let plan = plan(&scenes, outputs);
     let encoded_formats = options
@@ -303,8 +285,8 @@ fn encode_sources(
         }) += stage.elapsed();
     }
     let stage = std::time::Instant::now();
-    if let Some(feeds) = &plan.pages {
-        outputs.extend(pages(&scenes, feeds, &evaluated));
+    if has(Format::Html) {
+        outputs.extend(pages(&scenes));
     }
     outputs.sort_by(|a, b| a.0.cmp(&b.0));
     stats.encoding += stage.elapsed();

@@ -14,7 +14,6 @@ use crate::fit;
 use crate::fresnel::Fresnel;
 use crate::problem::{Problem, Problems, excerpt, join_key};
 use crate::scene::data::{CsvFile, DataSpec, MAX_DATA_POINTS};
-use crate::scene::interactive::{self, Entry, Interactive};
 use crate::scene::{
     Invalid, MAX_POINTS_PER_SCENE, Pending, Sampling, Scene, SceneCurve, SceneData, ScenePanel,
     Spec,
@@ -76,9 +75,6 @@ pub fn scene(spec: Scene<Spec>) -> std::result::Result<Scene, Vec<Problem>> {
                 .collect(),
         })
         .collect();
-    let interactive = spec
-        .interactive
-        .and_then(|i| resolve_interactive(i).map_err(|p| problems.extend(p)).ok());
     if !problems.is_empty() {
         return Err(problems);
     }
@@ -94,7 +90,7 @@ pub fn scene(spec: Scene<Spec>) -> std::result::Result<Scene, Vec<Problem>> {
         sampling: spec.sampling,
         theme: spec.theme,
         panels,
-        interactive,
+        interactive: spec.interactive,
     })
 }
 
@@ -206,40 +202,6 @@ fn scene_data(spec: SceneData<Spec>) -> std::result::Result<SceneData, Problem> 
         label: spec.label,
         style: spec.style,
     })
-}
-
-/// Resolves every frame of every entry; an entry stops at its first frame with problems, each
-/// naming the sliders' values there.
-fn resolve_interactive(spec: Interactive<Spec>) -> std::result::Result<Interactive, Vec<Problem>> {
-    let mut problems = Vec::new();
-    let mut entries = Vec::with_capacity(spec.entries.len());
-    for entry in &spec.entries {
-        let mut frames = Vec::with_capacity(entry.frames.len());
-        for (frame, curves) in entry.frames.iter().enumerate() {
-            let mut found = Vec::new();
-            frames.push(resolve_curves(curves, &mut found));
-            if !found.is_empty() {
-                for problem in found {
-                    let problem =
-                        interactive::at_frame(problem, &spec.sliders, &entry.sliders, frame);
-                    push_once(&mut problems, problem);
-                }
-                break;
-            }
-        }
-        entries.push(Entry {
-            sliders: entry.sliders.clone(),
-            frames,
-        });
-    }
-    if problems.is_empty() {
-        Ok(Interactive {
-            sliders: spec.sliders,
-            entries,
-        })
-    } else {
-        Err(problems)
-    }
 }
 
 /// Resolves `specs` in order; the problems of those that fail go to `problems`.
@@ -508,22 +470,6 @@ mod tests {
                 .map(|p| format!("{}: {}", p.at, p.message))
                 .collect()
         })
-    }
-
-    #[test]
-    fn a_fit_failing_at_one_slider_position_names_it() {
-        let problems = resolve(
-            r#"{"id": "s", "interactive": {"params": [{"name": "a", "range": [0, 2, 1], "start": 1}]},
-                "panels": [{"curves": [{"ndf": "torrance_sparrow",
-                    "alpha_ts": {"fit": {"target": {"ndf": "phong", "alpha_p": {"slider": "a"}}}}}]}]}"#,
-        )
-        .unwrap_err();
-        assert_eq!(problems.len(), 1, "{problems:?}");
-        assert!(
-            problems[0].starts_with("panels[0].curves[0].alpha_ts: fit to α_p = 0: alpha_ts:")
-                && problems[0].ends_with(" (at slider a = 0.0)"),
-            "{problems:?}"
-        );
     }
 
     #[test]

@@ -9,7 +9,6 @@
 
 use crate::adaptive::{self, Frame, PixelMap, Refined};
 use crate::curve::Curve;
-use crate::dyadic;
 use crate::error::{Error, Result};
 use crate::grid::linspace;
 use crate::ndf::Ndf;
@@ -26,8 +25,6 @@ pub struct Evaluated {
     pub z: Option<Arc<Vec<f64>>>,
     /// Grid shape when the points form a row-major grid.
     pub grid: Option<(usize, usize)>,
-    /// The dyadic samples of a [`Job::Dyadic`], whose bisection tree the page encodes.
-    pub dyadic: Option<Arc<dyadic::Samples>>,
     /// Curve evaluations spent (the points, plus the midpoints adaptive sampling rejected); 0 for
     /// datasets.
     pub evaluations: usize,
@@ -56,27 +53,7 @@ fn uniform(curve: &Curve, theta_range: (f64, f64), samples: usize) -> Evaluated 
         points: Arc::new(points),
         z: None,
         grid: None,
-        dyadic: None,
     }
-}
-
-/// The dyadic samples of `curve` over `theta_range` (see [`crate::dyadic`]).
-fn dyadic_samples(curve: &Curve, theta_range: (f64, f64)) -> Result<Evaluated> {
-    let samples = dyadic::sample(&|t| curve.eval(t), theta_range)
-        .map_err(|e| Error::Numerics(format!("{}: {e}", curve.canonical_json())))?;
-    let points = samples
-        .ks
-        .iter()
-        .zip(&samples.values)
-        .map(|(&k, &y)| (dyadic::theta(theta_range, k), y))
-        .collect();
-    Ok(Evaluated {
-        evaluations: samples.values.len(),
-        points: Arc::new(points),
-        z: None,
-        grid: None,
-        dyadic: Some(Arc::new(samples)),
-    })
 }
 
 fn initial(curve: &Curve, theta_range: &(f64, f64)) -> Refined {
@@ -86,7 +63,6 @@ fn initial(curve: &Curve, theta_range: &(f64, f64)) -> Refined {
 /// A job's evaluation in progress: done, or an adaptive polyline still to refine.
 enum Stage {
     Done(Evaluated),
-    Failed(Error),
     Refining {
         curve: Curve,
         frame: usize,
@@ -113,13 +89,8 @@ pub fn evaluate_all(plan: &Plan) -> std::result::Result<Vec<Evaluated>, JobError
                     z: data.z.map(Arc::new),
                     grid: data.grid,
                     evaluations: 0,
-                    dyadic: None,
-                })
+                            })
             }
-            Job::Dyadic { curve, theta_range } => match dyadic_samples(curve, *theta_range) {
-                Ok(evaluated) => Stage::Done(evaluated),
-                Err(error) => Stage::Failed(error),
-            },
             Job::Adaptive { curve, frame } => {
                 let refined = initial(curve, &plan.frames[*frame].theta_range);
                 Stage::Refining {
@@ -178,13 +149,11 @@ pub fn evaluate_all(plan: &Plan) -> std::result::Result<Vec<Evaluated>, JobError
             let failed = |error| JobError { job: index, error };
             let evaluated = match stage {
                 Stage::Done(evaluated) => evaluated,
-                Stage::Failed(error) => return Err(failed(error)),
                 Stage::Refining { refined, .. } => Evaluated {
                     points: Arc::new(refined.points),
                     z: None,
                     grid: None,
                     evaluations: refined.evaluations,
-                    dyadic: None,
                 },
             };
             check_finite(job, evaluated).map_err(failed)
@@ -219,7 +188,7 @@ fn pixel_maps(frames: &[Frame], stages: &[Stage]) -> Vec<PixelMap> {
 /// A non-finite value is an error, never output.
 fn check_finite(job: &Job, evaluated: Evaluated) -> Result<Evaluated> {
     let name = match job {
-        Job::Uniform { curve, .. } | Job::Adaptive { curve, .. } | Job::Dyadic { curve, .. } => {
+        Job::Uniform { curve, .. } | Job::Adaptive { curve, .. } => {
             curve.canonical_json()
         }
         Job::Data(dataset) => dataset.canonical_json(),

@@ -19,7 +19,7 @@ use crate::fresnel::FresnelModel;
 use crate::ndf::Family;
 use crate::published::{Channel, Source};
 use crate::scene::interactive::{
-    INTERACTIVE_KEYS, MAX_POSITIONS_PER_SLIDER, MAX_SLIDERS, PARAM_KEYS, SLIDER_KEY,
+    INTERACTIVE_KEYS, MAX_SLIDERS, PARAM_KEYS, SCALES, SLIDER_KEY,
 };
 use crate::scene::sweep::{
     FIT_KEY, FIT_KEYS, FROM_BECKMANN_KEY, FROM_BECKMANN_PARAM, MAX_CURVES_PER_SCENE, SWEEP_KEYS,
@@ -387,16 +387,8 @@ pub fn schema() -> Value {
         object(PARAM_KEYS, &["name"], |key| match key {
             "name" => json!({ "type": "string", "pattern": "^[a-z][a-z0-9_]{0,31}$" }),
             "label" => json!({ "type": "string" }),
-            "range" => triple(
-                json!({ "type": "number" }),
-                json!({ "type": "number" }),
-                json!({ "type": "number" }),
-            ),
-            "geomspace" => triple(
-                json!({ "type": "number" }),
-                json!({ "type": "number" }),
-                json!({ "type": "integer", "minimum": 1, "maximum": MAX_POSITIONS_PER_SLIDER }),
-            ),
+            "range" => json!({ "type": "array", "items": { "type": "number" }, "minItems": 2, "maxItems": 2 }),
+            "scale" => json!({ "enum": SCALES }),
             "start" => json!({ "type": "number" }),
             other => panic!("no schema for the slider key {other:?}"),
         }),

@@ -1,81 +1,63 @@
-//! Interactive pages: one self-contained HTML file per interactive scene, with a slider per
-//! declared parameter, the plot redrawn as a slider moves, a legend, axis labels and a linear/log
-//! toggle for y.
+//! Interactive pages: one self-contained HTML file per interactive scene that computes its curves
+//! live in the browser, with a continuous slider and a number box per declared parameter, the
+//! plot redrawn as they change, a legend, axis labels, a y-axis lock, a linear/log toggle for y on
+//! NDF pages, "match peak" and "match L2" links on comparison pages, a permalink in the URL
+//! fragment, and `window.ndfplot` for scripts (CONTRACTS.md "Interactive page API").
 //!
-//! The page draws only values the pipeline sampled with `Curve::eval` (no formula exists in its
-//! script): every curve of every frame arrives as the dyadic samples of its plan job
-//! ([`crate::dyadic`]), is encoded compactly ([`samples`]), then embedded with the script (`html/page.js`), the styles (`html/page.css`) and the template
-//! (`html/page.html`) — no network, fonts or libraries are needed, and the file opens from disk.
-//! For Belcour reconstructions each frame also carries its coefficients c₀ … c₃ (and η, κ when
-//! the material is given by Gulbrandsen's r, g) for the page to print. Bytes are deterministic.
+//! The page evaluates each curve with `html/maths.js`, a port of the Rust definitions `eval` uses
+//! ([`maths`] embeds it with the parameter domains and the Fresnel basis, and tests their
+//! agreement). This module only serializes the scene — sliders, each curve's canonical JSON at the
+//! start values with the parameters its sliders drive, labels as templates, styles, axes — with the
+//! script (`html/page.js`), the styles (`html/page.css`) and the template (`html/page.html`); no
+//! network, fonts or libraries are needed, and the file opens from disk. With JavaScript off the
+//! page shows the static figure `<id>.png` beside it. Bytes are deterministic.
 
-mod samples;
+mod maths;
 
-use crate::curve::Curve;
-use crate::dyadic;
-use crate::fresnel::{Fresnel, Ior};
-use crate::look::{Dash, XUnit, Scale};
-use crate::sample::Evaluated;
+pub use maths::REL_TOL_PAGE;
+
+use crate::curve::{Curve, Model};
+use crate::fresnel::Fresnel;
+use crate::look::{Dash, LegendPlace, Scale, XUnit};
 use crate::scene::interactive::Interactive;
 use crate::scene::{Scene, SceneCurve};
 use serde_json::{Value, json};
-
-pub use samples::PRECISION;
 
 const TEMPLATE: &str = include_str!("html/page.html");
 const SCRIPT: &str = include_str!("html/page.js");
 const STYLES: &str = include_str!("html/page.css");
 
-/// The page of `scene` with its `interactive` part, from the dyadic samples `evaluated[job]` of
-/// each job of `feed`, one per curve of `interactive.curves()`, in that order.
-pub fn page(
-    scene: &Scene,
-    interactive: &Interactive,
-    feed: &[usize],
-    evaluated: &[Evaluated],
-) -> Vec<u8> {
+/// The page of `scene`, whose `interactive` part drives the curves of its one panel.
+pub fn page(scene: &Scene, interactive: &Interactive) -> Vec<u8> {
     let panel = &scene.panels[0];
-    let range = panel.axes.theta_range();
-    let encoded = feed.iter().map(|&job| {
-        let samples = evaluated[job]
-            .dyadic
-            .as_ref()
-            .expect("a page's jobs are dyadic");
-        samples::base64(&samples::encode(samples))
-    });
-    let mut encoded = encoded.into_iter();
-    let mut styles: Vec<Value> = Vec::new();
-    let entries: Vec<Value> = interactive
-        .entries
+    let curves: Vec<Value> = panel
+        .curves
         .iter()
-        .map(|entry| {
-            let frames: Vec<Value> = entry
-                .frames
+        .zip(&interactive.entries)
+        .map(|(shown, entry)| {
+            let bindings: Vec<Value> = entry
+                .bindings
                 .iter()
-                .map(|frame| {
-                    let curves: Vec<Value> = frame
-                        .iter()
-                        .map(|c| {
-                            let style = style_json(c);
-                            let index = styles.iter().position(|s| *s == style).unwrap_or_else(|| {
-                                styles.push(style);
-                                styles.len() - 1
-                            });
-                            json!({"label": c.label, "curve": c.curve.canonical_json(), "style": index, "data": encoded.next()})
-                        })
-                        .collect();
-                    let readout: Vec<String> = frame.iter().filter_map(|c| readout(&c.curve)).collect();
-                    if readout.is_empty() { json!({"curves": curves}) } else { json!({"curves": curves, "readout": readout.join("; ")}) }
-                })
+                .map(|b| json!({"param": b.param, "slider": b.slider, "from_beckmann": b.from_beckmann}))
                 .collect();
-            json!({"sliders": entry.sliders, "frames": frames})
+            json!({"curve": shown.curve.canonical_json(), "label": entry.label, "style": style_json(shown), "bindings": bindings})
         })
         .collect();
     let sliders: Vec<Value> = interactive
         .sliders
         .iter()
-        .map(|s| json!({"name": s.name, "label": s.label, "values": s.values, "start": s.start}))
+        .map(|s| json!({"name": s.name, "label": s.label, "min": s.min, "max": s.max, "start": s.start, "scale": scale_name(s.scale)}))
         .collect();
+    let uses_basis = panel.curves.iter().any(|c| {
+        matches!(
+            c.curve,
+            Curve::Fresnel(Fresnel::Belcour(..) | Fresnel::Basis(_))
+        )
+    });
+    let ndf_page = panel
+        .curves
+        .iter()
+        .all(|c| matches!(c.curve.model(), Model::Ndf(_)));
     let data = json!({
         "id": scene.id,
         "title": scene.title,
@@ -83,20 +65,19 @@ pub fn page(
         "x_label": panel.axes.x_label,
         "y_label": panel.axes.y_label,
         "degrees": panel.axes.x_unit == XUnit::Degrees,
-        "theta": [range.0, range.1],
-        "levels": [dyadic::COARSE_LEVELS, dyadic::FINE_LEVELS],
-        "log_step": samples::LOG_STEP,
-        "log_decades": dyadic::LOG_DECADES,
-        "precision": PRECISION,
-        "y_scale": if panel.axes.y_scale == Scale::Log { "log" } else { "linear" },
+        "theta": [panel.axes.theta_range().0, panel.axes.theta_range().1],
+        "y_scale": scale_name(panel.axes.y_scale),
+        "log_toggle": ndf_page || panel.axes.y_scale == Scale::Log,
         "y_range": panel.axes.y_range.map(|(a, b)| [a, b]),
         "width": scene.canvas.width_px,
         "height": scene.canvas.height_px,
         "font_px": scene.canvas.font_px,
-        "legend": panel.axes.legend != crate::look::LegendPlace::None,
+        "legend": panel.axes.legend != LegendPlace::None,
+        "tolerance": REL_TOL_PAGE,
         "sliders": sliders,
-        "styles": styles,
-        "entries": entries,
+        "curves": curves,
+        "domains": maths::domains(),
+        "basis": uses_basis.then(|| maths::basis_json(&|values| json!(base64_f64(values)))),
     });
     // Inside <script>, "</" could close the element early: escape every '<' the JSON way.
     let data = data.to_string().replace('<', "\\u003c");
@@ -108,10 +89,41 @@ pub fn page(
     fill(&[
         ("TITLE", &escape_html(title)),
         ("STYLES", STYLES),
+        ("IMAGE", &escape_html(&format!("{}.png", scene.id))),
         ("DATA", &data),
+        ("MATHS", maths::SCRIPT),
         ("SCRIPT", SCRIPT),
     ])
     .into_bytes()
+}
+
+fn scale_name(scale: Scale) -> &'static str {
+    match scale {
+        Scale::Linear => "linear",
+        Scale::Log => "log",
+    }
+}
+
+/// Standard base64 (RFC 4648, with padding) of the values' little-endian f64 bytes: exact, and a
+/// third the size of their decimal forms.
+fn base64_f64(values: &[f64]) -> String {
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let bytes: Vec<u8> = values.iter().flat_map(|v| v.to_le_bytes()).collect();
+    let mut text = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let n = chunk
+            .iter()
+            .enumerate()
+            .fold(0u32, |n, (i, &b)| n | u32::from(b) << (16 - 8 * i));
+        for i in 0..4 {
+            if i <= chunk.len() {
+                text.push(char::from(ALPHABET[(n >> (18 - 6 * i) & 0x3f) as usize]));
+            } else {
+                text.push('=');
+            }
+        }
+    }
+    text
 }
 
 /// The template with each `{{NAME}}` marker (each present once, in the given order) replaced; the
@@ -139,6 +151,7 @@ fn escape_html(text: &str) -> String {
         .replace('"', "&quot;")
 }
 
+/// The line style as the page draws it: colour, width (a multiple of the default) and dash.
 fn style_json(curve: &SceneCurve) -> Value {
     let c = curve.style.colour;
     let dash = match curve.style.dash {
@@ -149,20 +162,14 @@ fn style_json(curve: &SceneCurve) -> Value {
     json!({"colour": format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2), "width": curve.style.width, "dash": dash})
 }
 
-/// The coefficients of a Belcour reconstruction (with η, κ when given by r, g), as printed.
-fn readout(curve: &Curve) -> Option<String> {
-    let Curve::Fresnel(Fresnel::Belcour(ior, k)) = curve else {
-        return None;
-    };
-    let coefficients = format!(
-        "c₀ = {:.4}, c₁ = {:.4}, c₂ = {:.4}, c₃ = {:.4}",
-        k.c0, k.c1, k.c2, k.c3
-    );
-    Some(match ior {
-        Ior::Gulbrandsen { .. } => {
-            let (eta, kappa) = ior.complex();
-            format!("η = {eta:.4}, κ = {kappa:.4}; {coefficients}")
-        }
-        Ior::EtaKappa { .. } => coefficients,
-    })
+#[cfg(test)]
+mod tests {
+    use super::base64_f64;
+
+    #[test]
+    fn base64_matches_rfc_4648_on_the_f64_bytes() {
+        // 1.0 is 00 00 00 00 00 00 f0 3f little-endian.
+        assert_eq!(base64_f64(&[1.0]), "AAAAAAAA8D8=");
+        assert_eq!(base64_f64(&[]), "");
+    }
 }

@@ -1,88 +1,92 @@
 //! Interactive scenes: sliders declared under the scene's `interactive` key drive curve
-//! parameters written as slider references, and `render` precomputes every curve at every slider
-//! position for the HTML page (`crate::output::html`).
+//! parameters written as slider references; the page (`crate::output::html`) evaluates the curves
+//! live in the browser as the sliders move.
 //!
 //! ```json
-//! "interactive": {"params": [{"name": "a", "label": "α_b", "range": [0.1, 1.0, 0.01], "start": 0.3}]},
+//! "interactive": {"params": [{"name": "a", "label": "α_b", "range": [0.1, 1.0], "start": 0.3}]},
 //! "panels": [{"curves": [{"ndf": "beckmann", "alpha_b": {"slider": "a"}},
 //!                        {"ndf": "phong", "alpha_p": {"from_beckmann": {"slider": "a"}}}]}]
 //! ```
 //!
-//! A slider takes `range` ([`crate::grid::range`], exact like a sweep's) or `geomspace`
-//! (log-spaced, for parameters spanning decades) and may name a `start` position (default: the
-//! first). A reference `{"slider": "a"}` may stand for any number inside a curve entry, also inside
-//! a conversion or a fit target; it is resolved by substituting the slider's value into the
-//! document and reading the entry as usual, so the static outputs show the start positions and
-//! every position is validated (and reported with its JSON path) like a written number. This
-//! module owns the declaration, the references and the caps; it evaluates nothing.
+//! A slider is continuous over `range: [min, max]`, opens at `start` (default: min), and moves
+//! on a log scale where `scale` says so (default: log when 0 < min and max ≥ 10 min, i.e. the range
+//! spans a decade or more). A reference `{"slider": "a"}` stands for a curve parameter's value, or
+//! for α_b inside `from_beckmann`. The static outputs show the start values: references are
+//! resolved by substituting them into the document and reading it as usual. Every entry is also
+//! read at each corner of its sliders' ranges (every domain here is an interval, and α_p =
+//! 2/α_b² − 2 is monotone), so that the whole slider range is valid; what the page can evaluate
+//! (NDFs and the Fresnel models of `maths.js`) is checked here too. This module owns the
+//! declaration, the references and the bindings; it evaluates nothing.
 
 use super::reader::{Object, Reader};
-use super::{SceneCurve, ScenePanel, Spec, Stage, data, read_curve_entry, sweep};
+use super::{ScenePanel, SceneCurve, Spec, data, read_curve_entry};
+use crate::curve::{CurveSpec, Label, Model, symbol};
+use crate::fresnel::Fresnel;
 use crate::json::{Node, Number, Value};
-use crate::look::PanelKind;
+use crate::look::{PanelKind, Scale};
 use crate::problem::{Problem, join_index, join_key, suggestion};
+use crate::scene::sweep::FROM_BECKMANN_KEY;
 use std::borrow::Cow;
 
 /// Most sliders one scene may declare (the notebooks use up to four).
 pub const MAX_SLIDERS: usize = 6;
-/// Most positions one slider may have: a range input wider than ~1000 steps moves more than one
-/// step per screen pixel.
-pub const MAX_POSITIONS_PER_SLIDER: usize = 1001;
-/// Most curves one page may precompute, summed over its entries (curves per frame × the product of
-/// the positions of the entry's sliders); keeps a page near or below 1 MB.
-pub const MAX_PAGE_CURVES: usize = 2000;
-/// Significant digits `geomspace` positions are rounded to, so that round values such as 10 are
-/// positions exactly; 12 digits keep the spacing log-uniform to 1e-12.
-const GEOMSPACE_DIGITS: usize = 12;
-/// Relative tolerance for a `start` value to name a position (positions come from decimal
-/// arithmetic and rounding; their spacing is far wider than this).
-const START_TOLERANCE: f64 = 1e-9;
+/// A range spanning at least this ratio (a decade) moves on a log scale unless `scale` says otherwise.
+const LOG_SCALE_MIN_RATIO: f64 = 10.0;
 /// Keys of the scene's `interactive` object.
 pub const INTERACTIVE_KEYS: &[&str] = &["params"];
 /// Keys of one slider declaration.
-pub const PARAM_KEYS: &[&str] = &["name", "label", "range", "geomspace", "start"];
+pub const PARAM_KEYS: &[&str] = &["name", "label", "range", "start", "scale"];
+/// Accepted values of a slider's `scale`.
+pub const SCALES: &[&str] = &["linear", "log"];
 /// The key of a slider reference, `{"slider": "<name>"}`.
 pub const SLIDER_KEY: &str = "slider";
 
-/// One slider: its positions and the position the page opens at.
+/// One continuous slider.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Slider {
     /// Name used by references, `^[a-z][a-z0-9_]{0,31}$`.
     pub name: String,
     /// Text shown next to the slider (default: the name).
     pub label: String,
-    /// The positions' values, in slider order.
-    pub values: Vec<f64>,
-    /// Index of the start position.
-    pub start: usize,
+    /// The low end of the range.
+    pub min: f64,
+    /// The high end of the range (> min).
+    pub max: f64,
+    /// The value the page opens at, in [min, max].
+    pub start: f64,
+    /// How the slider's position maps to its value: linear, or log (then 0 < min).
+    pub scale: Scale,
 }
 
-/// One curve entry of the interactive panel, resolved at every combination of its sliders.
-#[derive(Debug, Clone)]
-pub struct Entry<S: Stage = super::Resolved> {
-    /// Indices (into [`Interactive::sliders`], ascending) of the sliders the entry references;
-    /// empty for a static entry.
-    pub sliders: Vec<usize>,
-    /// The entry's curves per combination of its sliders' positions, row-major (the last slider
-    /// varying fastest); one frame for a static entry.
-    pub frames: Vec<Vec<SceneCurve<S>>>,
+/// A curve parameter driven by a slider.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Binding {
+    /// The parameter's canonical name (a member of the curve's canonical JSON).
+    pub param: String,
+    /// Index into [`Interactive::sliders`].
+    pub slider: usize,
+    /// Whether the slider gives α_b and the parameter is α_p = 2/α_b² − 2 (`from_beckmann`).
+    pub from_beckmann: bool,
 }
 
-/// The interactive part of a scene: its sliders and its one panel's entries at every position.
-#[derive(Debug, Clone)]
-pub struct Interactive<S: Stage = super::Resolved> {
+/// One curve entry of the interactive panel: the curve it gives at the start values is the
+/// panel's curve of the same index.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Entry {
+    /// The parameters sliders drive; empty for a static curve.
+    pub bindings: Vec<Binding>,
+    /// The legend label as a template: `{param}` stands for a parameter's value, `{=slider}` for
+    /// a slider's value, `{l2}` for a Belcour reconstruction's `l2_grid` (two decimals).
+    pub label: String,
+}
+
+/// The interactive part of a scene: its sliders and its one panel's entries.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Interactive {
     /// Sliders in declaration order.
     pub sliders: Vec<Slider>,
-    /// Curve entries in panel order.
-    pub entries: Vec<Entry<S>>,
-}
-
-impl<S: Stage> Interactive<S> {
-    /// Every curve of every slider position: entries in order, each entry's positions in
-    /// order, each position's curves in order (the order the page lists them in).
-    pub fn curves(&self) -> impl Iterator<Item = &SceneCurve<S>> {
-        self.entries.iter().flat_map(|e| e.frames.iter().flatten())
-    }
+    /// Curve entries in panel order, one per curve of the panel.
+    pub entries: Vec<Entry>,
 }
 
 /// Reads the scene's `interactive` key: `None` when absent or invalid (reported).
@@ -157,138 +161,37 @@ fn read_slider(reader: &mut Reader, node: &Node, path: &str) -> Option<Slider> {
         }
     };
     let label = reader.text(&object, "label");
-    let values = match (object.get("range"), object.get("geomspace")) {
-        (Some(_), Some(_)) => {
+    if object.get("range").is_none() {
+        reader.report(path, "missing \"range\": [min, max], the values the slider spans");
+    }
+    let (min, max) = reader.interval(&object, "range", f64::is_finite, "both finite")?;
+    let scale = match reader.choice(&object, "scale", SCALES) {
+        Some("log") if min <= 0.0 => {
             reader.report(
-                path,
-                "a slider has either \"range\" or \"geomspace\", not both",
-            );
-            None
-        }
-        (Some(range), None) => sweep::range(
-            reader,
-            range,
-            &object.path_of("range"),
-            MAX_POSITIONS_PER_SLIDER,
-        ),
-        (None, Some(geom)) => geomspace(reader, geom, &object.path_of("geomspace")),
-        (None, None) => {
-            reader.report(
-                path,
-                "missing \"range\": [start, stop, step] (or \"geomspace\": [start, stop, count])",
-            );
-            None
-        }
-    };
-    let values = values.filter(|values| {
-        let enough = values.len() >= 2;
-        if !enough {
-            reader.report(
-                path,
-                format!("a slider needs at least 2 positions (got {})", values.len()),
-            );
-        }
-        enough
-    })?;
-    let start = match object.get("start").map(|n| &n.value) {
-        None => 0,
-        Some(Value::Number(n)) => start_position(reader, &values, n, &object.path_of("start"))?,
-        Some(_) => {
-            reader.report(
-                object.path_of("start"),
-                "expected a number: the value the page opens at",
+                object.path_of("scale"),
+                format!("a log slider needs 0 < min (got min {min:?})"),
             );
             return None;
         }
+        Some("log") => Scale::Log,
+        Some(_) => Scale::Linear,
+        None if min > 0.0 && max >= LOG_SCALE_MIN_RATIO * min => Scale::Log,
+        None => Scale::Linear,
+    };
+    let expected = format!("a value within the range [{min:?}, {max:?}]");
+    let start = match object.get("start") {
+        None => min,
+        Some(_) => reader.number(&object, "start", |v| (min..=max).contains(&v), &expected)?,
     };
     let name = name?;
     Some(Slider {
         label: label.unwrap_or_else(|| name.clone()),
         name,
-        values,
+        min,
+        max,
         start,
+        scale,
     })
-}
-
-/// numpy's `geomspace(start, stop, count)` for 0 < start, stop: log-uniform positions with both
-/// ends exact, rounded to [`GEOMSPACE_DIGITS`] significant digits.
-fn geomspace(reader: &mut Reader, node: &Node, path: &str) -> Option<Vec<f64>> {
-    let numbers = super::sweep::number_items(node);
-    let cap = MAX_POSITIONS_PER_SLIDER as f64;
-    match numbers[..] {
-        [start, stop, count]
-            if start > 0.0
-                && stop > 0.0
-                && start != stop
-                && count.fract() == 0.0
-                && (2.0..=cap).contains(&count) =>
-        {
-            let n = count as usize;
-            let (log_start, log_stop) = (start.log10(), stop.log10());
-            let round = |v: f64| {
-                format!("{v:.*e}", GEOMSPACE_DIGITS - 1)
-                    .parse()
-                    .unwrap_or(v)
-            };
-            let inner = (1..n - 1).map(|i| {
-                round(10f64.powf(log_start + (log_stop - log_start) * i as f64 / (n - 1) as f64))
-            });
-            Some(
-                std::iter::once(start)
-                    .chain(inner)
-                    .chain(std::iter::once(stop))
-                    .collect(),
-            )
-        }
-        [_, _, count] if count.fract() == 0.0 && count > cap => {
-            reader.report(path, format!("more slider positions than the cap (got {count}, expected at most {MAX_POSITIONS_PER_SLIDER})"));
-            None
-        }
-        _ => {
-            reader.report(path, format!("expected [start, stop, count] with 0 < start ≠ stop and a whole count from 2 to {MAX_POSITIONS_PER_SLIDER} (got {node})"));
-            None
-        }
-    }
-}
-
-/// The position whose value is `start` (to [`START_TOLERANCE`]); anything else is reported with
-/// the nearest positions.
-fn start_position(
-    reader: &mut Reader,
-    values: &[f64],
-    start: &Number,
-    path: &str,
-) -> Option<usize> {
-    let v = start.value;
-    let matches =
-        |p: f64| (p - v).abs() <= START_TOLERANCE * p.abs().max(v.abs()).max(f64::MIN_POSITIVE);
-    if let Some(i) = values.iter().position(|&p| matches(p)) {
-        return Some(i);
-    }
-    let (low, high) = (
-        values[0].min(values[values.len() - 1]),
-        values[0].max(values[values.len() - 1]),
-    );
-    let mut sorted: Vec<f64> = values.to_vec();
-    sorted.sort_by(f64::total_cmp);
-    let above = sorted.partition_point(|&p| p < v);
-    let near: Vec<String> = sorted[above.saturating_sub(1)..(above + 1).min(sorted.len())]
-        .iter()
-        .map(|p| format!("{p:?}"))
-        .collect();
-    let expected = if (low..=high).contains(&v) {
-        format!("a slider position; nearest: {}", near.join(" and "))
-    } else {
-        format!("a slider position within [{low:?}, {high:?}]")
-    };
-    reader.report(
-        path,
-        format!(
-            "not a slider position (got {}, expected {expected})",
-            start.literal
-        ),
-    );
-    None
 }
 
 /// The name under `slider` when `node` is a slider reference (an object with a `slider` key).
@@ -416,7 +319,7 @@ pub fn at_start<'a>(
     let start = substitute(node, "", &mut |reference_node, path| {
         found = true;
         let slider = check_reference(reader, reference_node, path, sliders)?;
-        sliders.map(|s| s[slider].values[s[slider].start])
+        sliders.map(|s| s[slider].start)
     });
     if found {
         Cow::Owned(start)
@@ -425,15 +328,16 @@ pub fn at_start<'a>(
     }
 }
 
-/// Resolves every curve entry of the (single) panel at every combination of its sliders'
-/// positions. `node` is the original scene document (with references), `panels` the panels as
-/// read at the start positions. `None` when the scene is not interactive or a problem was reported.
+/// The interactive part of a scene: every entry of the (single) panel with its bindings and label
+/// template, each read at every corner of its sliders' ranges. `node` is the original scene
+/// document (with references), `panels` the panels as read at the start values. `None` when the
+/// scene is not interactive or a problem was reported.
 pub fn read(
     reader: &mut Reader,
     node: &Node,
     sliders: Option<Vec<Slider>>,
     panels: Option<&[ScenePanel<Spec>]>,
-) -> Option<Interactive<Spec>> {
+) -> Option<Interactive> {
     let sliders = sliders?;
     let panels = panels?;
     if panels.len() != 1 || panels[0].axes.kind != PanelKind::Cartesian {
@@ -464,8 +368,7 @@ pub fn read(
     };
 
     let before = reader.problems.len();
-    let mut plans = Vec::with_capacity(items.len());
-    let mut total = 0usize;
+    let mut entries = Vec::with_capacity(items.len());
     for (i, item) in items.iter().enumerate() {
         let path = join_index("panels[0].curves", i);
         if data::is_data(item) {
@@ -475,139 +378,198 @@ pub fn read(
             );
             continue;
         }
-        let mut used = Vec::new();
-        substitute(item, &path, &mut |r, _| {
-            if let Some(Value::String(name)) = reference(r).map(|n| &n.value) {
-                used.extend(sliders.iter().position(|s| &s.name == name));
-            }
-            None
-        });
-        used.sort_unstable();
-        used.dedup();
-        let frames: usize = used.iter().map(|&s| sliders[s].values.len()).product();
-        total = total.saturating_add(frames);
-        plans.push((item, path, used, frames));
+        entries.extend(read_entry(reader, item, &path, &sliders));
     }
     for (i, slider) in sliders.iter().enumerate() {
-        if !plans.iter().any(|(_, _, used, _)| used.contains(&i)) {
+        let drives = entries
+            .iter()
+            .any(|e| e.bindings.iter().any(|b| b.slider == i));
+        if !drives && reader.problems.len() == before {
             reader.report(
                 join_index("interactive.params", i),
                 format!("slider \"{}\" drives no curve", slider.name),
             );
         }
     }
-    if total > MAX_PAGE_CURVES {
-        let sizes: Vec<String> = plans
-            .iter()
-            .map(|(_, _, _, frames)| frames.to_string())
-            .collect();
-        reader.report(
-            "interactive.params",
-            format!(
-                "the page would precompute up to {total} curves (positions per entry: {}; expected at most {MAX_PAGE_CURVES}: use fewer positions)",
-                sizes.join(", ")
-            ),
-        );
-    }
-    if reader.problems.len() > before {
-        return None;
-    }
-    let mut entries = Vec::with_capacity(plans.len());
-    let mut precomputed = 0;
-    for (item, path, used, frames) in plans {
-        let entry = read_entry(reader, item, &path, &sliders, used, frames)?;
-        precomputed += entry.frames.iter().map(Vec::len).sum::<usize>();
-        entries.push(entry);
-    }
-    if precomputed > MAX_PAGE_CURVES {
-        reader.report("interactive.params", format!("the page would precompute {precomputed} curves (expected at most {MAX_PAGE_CURVES})"));
-        return None;
-    }
-    Some(Interactive { sliders, entries })
+    (reader.problems.len() == before).then_some(Interactive { sliders, entries })
 }
 
-/// Reads one entry at each of its `frames` slider combinations; stops at the first combination
-/// with a problem and reports it with the slider values.
-fn read_entry(
+/// The slider a node refers to: `{"slider": name}` with a declared name.
+fn slider_of(node: &Node, sliders: &[Slider]) -> Option<usize> {
+    match &reference(node)?.value {
+        Value::String(name) => sliders.iter().position(|s| &s.name == name),
+        _ => None,
+    }
+}
+
+/// One entry: its bindings (a reference as a parameter's value, or as from_beckmann's α_b), its
+/// curve at the start values (exactly one, of a kind the page evaluates), its label template,
+/// and its reading at every corner of its sliders' ranges.
+fn read_entry(reader: &mut Reader, item: &Node, path: &str, sliders: &[Slider]) -> Option<Entry> {
+    let Value::Object(members) = &item.value else {
+        return None;
+    };
+    let mut bindings = Vec::new();
+    for (key, value) in members {
+        let from_beckmann = match &value.value {
+            Value::Object(inner) if inner.len() == 1 && inner[0].0 == FROM_BECKMANN_KEY => {
+                Some(&inner[0].1)
+            }
+            _ => None,
+        };
+        if let Some(slider) = slider_of(value, sliders) {
+            bindings.push(Binding { param: key.clone(), slider, from_beckmann: false });
+        } else if let Some(slider) = from_beckmann.and_then(|n| slider_of(n, sliders)) {
+            bindings.push(Binding { param: key.clone(), slider, from_beckmann: true });
+        } else if mentions_slider(value) {
+            reader.report(
+                join_key(path, key),
+                "a live page drives a parameter's value or from_beckmann's α_b with a slider, nothing nested deeper",
+            );
+            return None;
+        }
+    }
+    let curves = read_at(reader, item, path, sliders, &|s| sliders[s].start)?;
+    let [start] = &curves[..] else {
+        reader.report(
+            path,
+            format!("an interactive entry gives one curve (got {})", curves.len()),
+        );
+        return None;
+    };
+    if !bindings.is_empty() {
+        check_live(reader, start, &bindings, path)?;
+    }
+    let used: Vec<usize> = bindings.iter().map(|b| b.slider).collect();
+    for corner in 0..1usize << used.len() {
+        let value_of = |s: usize| match used.iter().position(|&u| u == s) {
+            Some(k) if corner >> k & 1 == 1 => sliders[s].max,
+            Some(_) => sliders[s].min,
+            None => sliders[s].start,
+        };
+        read_at(reader, item, path, sliders, &value_of)?;
+    }
+    Some(Entry {
+        label: label_template(start, members, sliders),
+        bindings,
+    })
+}
+
+/// Whether a slider reference appears anywhere inside `node`.
+fn mentions_slider(node: &Node) -> bool {
+    let mut found = false;
+    substitute(node, "", &mut |_, _| {
+        found = true;
+        None
+    });
+    found
+}
+
+/// The entry's curves with every slider `s` at `value_of(s)`; problems are reported with the
+/// sliders' values.
+fn read_at(
     reader: &mut Reader,
     item: &Node,
     path: &str,
     sliders: &[Slider],
-    used: Vec<usize>,
-    frames: usize,
-) -> Option<Entry<Spec>> {
-    let mut curves_per_frame = Vec::with_capacity(frames);
-    for frame in 0..frames {
-        let positions = positions(sliders, &used, frame);
-        let resolved = substitute(
-            item,
+    value_of: &dyn Fn(usize) -> f64,
+) -> Option<Vec<SceneCurve<Spec>>> {
+    let resolved = substitute(item, path, &mut |r, _| {
+        slider_of(r, sliders).map(value_of)
+    });
+    let mut scratch = Reader {
+        data: reader.data.clone(),
+        ..Reader::default()
+    };
+    let mut curves = Vec::new();
+    read_curve_entry(&mut scratch, &resolved, path, &mut curves);
+    reader.pending.append(&mut scratch.pending);
+    if scratch.problems.is_empty() {
+        return Some(curves);
+    }
+    let at: Vec<String> = sliders
+        .iter()
+        .enumerate()
+        .map(|(s, slider)| format!("{} = {:?}", slider.name, value_of(s)))
+        .collect();
+    reader.problems.extend(scratch.problems.into_iter().map(|p| {
+        Problem::new(p.at, format!("{} (at slider {})", p.message, at.join(", ")))
+    }));
+    None
+}
+
+/// Checks that the page can evaluate a slider-driven curve (an NDF, or a Fresnel model of
+/// `maths.js`, given by its parameters) and that every bound parameter is one of its members.
+fn check_live(reader: &mut Reader, curve: &SceneCurve<Spec>, bindings: &[Binding], path: &str) -> Option<()> {
+    let live = match &curve.curve {
+        CurveSpec::Ready(crate::curve::Curve::Ndf(_)) | CurveSpec::Belcour(_) => true,
+        CurveSpec::Ready(crate::curve::Curve::Fresnel(f)) => !matches!(f, Fresnel::Normalized(_)),
+        _ => false,
+    };
+    if !live {
+        reader.report(
             path,
-            &mut |r, _| match reference(r).map(|n| &n.value) {
-                Some(Value::String(name)) => sliders
-                    .iter()
-                    .position(|s| &s.name == name)
-                    .map(|s| sliders[s].values[positions[s]]),
-                _ => None,
-            },
+            format!("a live page evaluates NDF and Fresnel curves given by their parameters (got {})", curve.curve.canonical_json()),
         );
-        let mut scratch = Reader {
-            data: reader.data.clone(),
-            ..Reader::default()
-        };
-        let mut curves = Vec::new();
-        read_curve_entry(&mut scratch, &resolved, path, &mut curves);
-        reader.pending.append(&mut scratch.pending);
-        if !scratch.problems.is_empty() {
-            reader.problems.extend(
-                scratch
-                    .problems
-                    .into_iter()
-                    .map(|p| at_frame(p, sliders, &used, frame)),
+        return None;
+    }
+    let canonical = curve.curve.canonical_json();
+    for binding in bindings {
+        if !canonical.contains(&format!("\"{}\":", binding.param)) {
+            reader.report(
+                join_key(path, &binding.param),
+                format!("a slider drives a parameter of the curve (got \"{}\", the curve is {canonical})", binding.param),
             );
             return None;
         }
-        curves_per_frame.push(curves);
     }
-    Some(Entry {
-        sliders: used,
-        frames: curves_per_frame,
-    })
+    Some(())
 }
 
-/// The position of every slider at frame `frame` of an entry driven by the sliders `used`:
-/// row-major over them, the last varying fastest; the other sliders at their start.
-fn positions(sliders: &[Slider], used: &[usize], frame: usize) -> Vec<usize> {
-    let mut positions: Vec<usize> = sliders.iter().map(|s| s.start).collect();
-    let mut rest = frame;
-    for &s in used.iter().rev() {
-        positions[s] = rest % sliders[s].values.len();
-        rest /= sliders[s].values.len();
+/// The legend label of an entry as a template (see [`Entry::label`]): a `label` template as
+/// written, or the automatic label of the static figure with every written parameter's value
+/// replaced by its placeholder: the family prefix (an NDF's) or model name (a Fresnel curve's),
+/// then `symbol = {param}` per parameter in document order, then a Belcour reconstruction's L2.
+fn label_template(curve: &SceneCurve<Spec>, members: &[(String, Node)], sliders: &[Slider]) -> String {
+    if let Label::Template { template, .. } = &curve.label {
+        return template.clone();
     }
-    positions
-}
-
-/// `problem`, met at frame `frame` of an entry driven by the sliders `used` (see [`Entry`]), its
-/// message ending with the sliders' values there: `… (at slider a = 0.3, b = 2.0)`.
-pub fn at_frame(problem: Problem, sliders: &[Slider], used: &[usize], frame: usize) -> Problem {
-    let positions = positions(sliders, used, frame);
-    let at: Vec<String> = used
+    let canonical = curve.curve.canonical_json();
+    let parts: Vec<String> = members
         .iter()
-        .map(|&s| {
-            format!(
-                "{} = {:?}",
-                sliders[s].name, sliders[s].values[positions[s]]
-            )
+        .filter(|(key, _)| canonical.contains(&format!("\"{key}\":")) && !canonical.starts_with(&format!("{{\"{key}\":")))
+        .map(|(key, node)| {
+            let value = format!("{} = {{{key}}}", symbol(key));
+            match &node.value {
+                Value::Object(inner) if inner.len() == 1 && inner[0].0 == FROM_BECKMANN_KEY => {
+                    let alpha_b = match (&inner[0].1.value, slider_of(&inner[0].1, sliders)) {
+                        (_, Some(s)) => format!("{{={}}}", sliders[s].name),
+                        (Value::Number(n), None) => crate::curve::pretty(n.value),
+                        _ => String::new(),
+                    };
+                    format!("{value} (α_b = {alpha_b})")
+                }
+                _ => value,
+            }
         })
         .collect();
-    Problem::new(
-        problem.at,
-        format!("{} (at slider {})", problem.message, at.join(", ")),
-    )
+    let text = parts.join(", ");
+    match curve.curve.model() {
+        Model::Ndf(family) => match family.legend_prefix() {
+            Some(prefix) => format!("{prefix} {text}"),
+            None => text,
+        },
+        Model::Fresnel(model) => {
+            let l2 = if matches!(curve.curve, CurveSpec::Belcour(_)) { ", L2 = {l2}" } else { "" };
+            format!("{} {text}{l2}", crate::look::literal(model.name())).trim_end().to_string()
+        }
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use crate::json;
+    use crate::look::Scale;
 
     fn problems(text: &str) -> Vec<String> {
         let node = json::parse(text).unwrap();
@@ -628,10 +590,10 @@ mod tests {
     }
 
     #[test]
-    fn sliders_resolve_at_every_position_and_the_static_scene_at_the_start() {
+    fn sliders_bind_parameters_and_the_static_scene_shows_the_start() {
         let text = scene(
-            r#"{"params": [{"name": "a", "label": "α_b", "range": [0.2, 1.0, 0.1], "start": 0.3}]}"#,
-            r#"[{"ndf": "beckmann", "alpha_b": {"slider": "a"}}, {"ndf": "phong", "alpha_p": {"from_beckmann": {"slider": "a"}}}, {"ndf": "ggx", "alpha_tr": 0.5}]"#,
+            r#"{"params": [{"name": "a", "label": "α_b", "range": [0.05, 1.0], "start": 0.3}, {"name": "p", "range": [0, 200]}]}"#,
+            r#"[{"ndf": "beckmann", "alpha_b": {"slider": "a"}}, {"ndf": "phong", "alpha_p": {"from_beckmann": {"slider": "a"}}}, {"ndf": "ggx", "alpha_tr": 0.5}, {"ndf": "phong", "alpha_p": {"slider": "p"}, "label": "P {alpha_p}"}]"#,
         );
         let parsed = super::super::parse(&json::parse(&text).unwrap(), None).unwrap();
         assert_eq!(
@@ -639,43 +601,19 @@ mod tests {
             r#"{"ndf":"beckmann","alpha_b":0.3}"#
         );
         let interactive = parsed.interactive.unwrap();
-        assert_eq!(interactive.sliders[0].values.len(), 9);
-        assert_eq!(interactive.sliders[0].start, 1);
-        let [beckmann, phong, ggx] = &interactive.entries[..] else {
-            panic!()
-        };
-        assert_eq!(
-            (beckmann.frames.len(), phong.frames.len(), ggx.frames.len()),
-            (9, 9, 1)
-        );
-        assert_eq!(ggx.sliders, Vec::<usize>::new());
-        assert_eq!(
-            phong.frames[8][0].curve.canonical_json(),
-            r#"{"ndf":"phong","alpha_p":0.0}"#
-        );
-    }
-
-    #[test]
-    fn frames_are_row_major_over_the_sliders_an_entry_uses() {
-        let text = scene(
-            r#"{"params": [{"name": "a", "geomspace": [1, 1000, 4], "start": 10}, {"name": "b", "range": [0.5, 2.5, 1]}]}"#,
-            r#"[{"ndf": "abc", "alpha_abc1": {"slider": "a"}, "alpha_abc2": {"slider": "b"}}]"#,
-        );
-        let parsed = super::super::parse(&json::parse(&text).unwrap(), None).unwrap();
-        let interactive = parsed.interactive.unwrap();
-        assert_eq!(interactive.sliders[0].values, [1.0, 10.0, 100.0, 1000.0]);
-        let entry = &interactive.entries[0];
-        // a at position 2 (100), b at position 1 (1.5): frame 2 · 3 + 1.
-        assert_eq!(entry.frames.len(), 12);
-        assert_eq!(
-            entry.frames[7][0].curve.canonical_json(),
-            r#"{"ndf":"abc","alpha_abc1":100.0,"alpha_abc2":1.5}"#
-        );
+        let [a, p] = &interactive.sliders[..] else { panic!() };
+        assert_eq!((a.min, a.max, a.start, a.scale), (0.05, 1.0, 0.3, Scale::Log));
+        assert_eq!((p.start, p.scale), (0.0, Scale::Linear));
+        let labels: Vec<&str> = interactive.entries.iter().map(|e| e.label.as_str()).collect();
+        assert_eq!(labels, ["α_b = {alpha_b}", "α_p = {alpha_p} (α_b = {=a})", "α_{tr} = {alpha_tr}", "P {alpha_p}"]);
+        let phong = &interactive.entries[1].bindings[0];
+        assert_eq!((phong.param.as_str(), phong.slider, phong.from_beckmann), ("alpha_p", 0, true));
+        assert!(interactive.entries[2].bindings.is_empty());
     }
 
     #[test]
     fn bad_declarations_and_references_are_reported_at_their_path() {
-        let one = r#"{"params": [{"name": "a", "range": [0.2, 1.0, 0.1]}]}"#;
+        let one = r#"{"params": [{"name": "a", "range": [0.2, 1.0]}]}"#;
         let beckmann = r#"[{"ndf": "beckmann", "alpha_b": {"slider": "a"}}]"#;
         for (interactive, curves, needle) in [
             (
@@ -684,55 +622,45 @@ mod tests {
                 "panels[0].curves[0].alpha_b.slider: unknown slider (got \"b\"",
             ),
             (
-                r#"{"params": [{"name": "a", "range": [1.0, 0.2, 0.1]}]}"#,
+                r#"{"params": [{"name": "a", "range": [1.0, 0.2]}]}"#,
                 beckmann,
-                "interactive.params[0].range: step points away",
+                "interactive.params[0].range: invalid interval",
             ),
             (
-                r#"{"params": [{"name": "a", "range": [0, 1, 1e-5]}]}"#,
+                r#"{"params": [{"name": "a", "range": [0.2, 1.0], "start": 1.5}]}"#,
                 beckmann,
-                "interactive.params[0].range: 100001 values exceed the cap of 1001",
+                "start: out of range (got 1.5, expected a value within the range [0.2, 1.0])",
             ),
             (
-                r#"{"params": [{"name": "a", "geomspace": [1, 10, 5000]}]}"#,
+                r#"{"params": [{"name": "a", "range": [0, 1.0], "scale": "log"}]}"#,
                 beckmann,
-                "interactive.params[0].geomspace: more slider positions than the cap",
+                "scale: a log slider needs 0 < min",
             ),
             (
-                r#"{"params": [{"name": "a", "range": [0.2, 0.2, 0.1]}]}"#,
-                beckmann,
-                "at least 2 positions",
-            ),
-            (
-                r#"{"params": [{"name": "a", "range": [0.2, 1.0, 0.1], "start": 0.25}]}"#,
-                beckmann,
-                "start: not a slider position (got 0.25, expected a slider position; nearest: 0.2 and 0.3)",
-            ),
-            (
-                r#"{"params": [{"name": "a", "rnge": [0.2, 1.0, 0.1]}]}"#,
+                r#"{"params": [{"name": "a", "rnge": [0.2, 1.0]}]}"#,
                 beckmann,
                 "did you mean \"range\"",
             ),
             (
-                r#"{"params": [{"name": "A", "range": [0.2, 1.0, 0.1]}]}"#,
+                r#"{"params": [{"name": "A", "range": [0.2, 1.0]}]}"#,
                 beckmann,
                 "invalid slider name",
             ),
             (r#"{"params": []}"#, beckmann, "expected 1 to 6 sliders"),
             (
-                r#"{"params": [{"name": "a", "range": [0.2, 1.0, 0.1]}, {"name": "b", "range": [1, 2, 1]}]}"#,
+                r#"{"params": [{"name": "a", "range": [0.2, 1.0]}, {"name": "b", "range": [1, 2]}]}"#,
                 beckmann,
                 "interactive.params[1]: slider \"b\" drives no curve",
             ),
             (
-                r#"{"params": [{"name": "a", "range": [0.5, 1.2, 0.1]}]}"#,
+                r#"{"params": [{"name": "a", "range": [0.5, 1.2]}]}"#,
                 r#"[{"ndf": "phong", "alpha_p": {"from_beckmann": {"slider": "a"}}}]"#,
-                "0 < α_b ≤ 1 (got 1.1, α_p = 2/α_b² − 2 would be negative or infinite) (at slider a = 1.1)",
+                "0 < α_b ≤ 1 (got 1.2, α_p = 2/α_b² − 2 would be negative or infinite) (at slider a = 1.2)",
             ),
             (
-                r#"{"params": [{"name": "a", "range": [1, 1000, 1]}, {"name": "b", "range": [1, 3, 1]}]}"#,
-                r#"[{"ndf": "abc", "alpha_abc1": {"slider": "a"}, "alpha_abc2": {"slider": "b"}}]"#,
-                "up to 3000 curves",
+                r#"{"params": [{"name": "a", "range": [0.5, 1.2]}]}"#,
+                r#"[{"ndf": "abc", "alpha_abc1": {"fit": {"target": {"ndf": "ggx", "alpha_tr": {"slider": "a"}}}}, "alpha_abc2": 1.75}]"#,
+                "alpha_abc1: a live page drives a parameter's value or from_beckmann's α_b",
             ),
             (
                 one,
@@ -752,13 +680,13 @@ mod tests {
                 .iter()
                 .any(|p| p.contains("declares no \"interactive\" params"))
         );
-        let outside = r#"{"id": "s", "interactive": {"params": [{"name": "a", "range": [0.2, 1.0, 0.1]}]}, "width": {"slider": "a"}, "panels": [{"curves": [{"ndf": "beckmann", "alpha_b": {"slider": "a"}}]}]}"#;
+        let outside = r#"{"id": "s", "interactive": {"params": [{"name": "a", "range": [0.2, 1.0]}]}, "width": {"slider": "a"}, "panels": [{"curves": [{"ndf": "beckmann", "alpha_b": {"slider": "a"}}]}]}"#;
         assert!(
             problems(outside)
                 .iter()
                 .any(|p| p.starts_with("width: a slider can only drive a curve parameter"))
         );
-        let two_panels = r#"{"id": "s", "interactive": {"params": [{"name": "a", "range": [0.2, 1.0, 0.1]}]}, "panels": [{"curves": [{"ndf": "beckmann", "alpha_b": {"slider": "a"}}]}, {"curves": [{"ndf": "ggx", "alpha_tr": 0.1}]}]}"#;
+        let two_panels = r#"{"id": "s", "interactive": {"params": [{"name": "a", "range": [0.2, 1.0]}]}, "panels": [{"curves": [{"ndf": "beckmann", "alpha_b": {"slider": "a"}}]}, {"curves": [{"ndf": "ggx", "alpha_tr": 0.1}]}]}"#;
         assert!(
             problems(two_panels)
                 .iter()

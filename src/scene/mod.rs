@@ -253,8 +253,8 @@ pub struct Scene<S: Stage = Resolved> {
     pub theme: Theme,
     /// Panels, row-major.
     pub panels: Vec<ScenePanel<S>>,
-    /// Sliders and the curves at every position, for scenes with an `interactive` key.
-    pub interactive: Option<interactive::Interactive<S>>,
+    /// Sliders and the curves they drive, for scenes with an `interactive` key.
+    pub interactive: Option<interactive::Interactive>,
 }
 
 /// A spec with problems: the problems, and the fallible work (fits, data files) of the parts that
@@ -313,7 +313,7 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene<Spec>> {
     let sliders = reader
         .object(node, "", SCENE_KEYS)
         .and_then(|object| interactive::read_sliders(reader, &object));
-    // The figure at the sliders' start positions; `interactive::read` resolves the other positions.
+    // The figure at the sliders' start values; `interactive::read` checks their whole ranges.
     let at_start = interactive::at_start(reader, node, sliders.as_deref());
     let Value::Object(members) = &at_start.value else {
         return None;

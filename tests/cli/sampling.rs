@@ -89,7 +89,6 @@ fn default_sampling_draws_adaptively_and_tabulates_uniformly() {
         Outputs {
             drawn: true,
             table: true,
-            page: false,
         },
     );
     let drawn = plan.drawn.as_ref().unwrap();
@@ -127,7 +126,6 @@ fn polar_panels_are_drawn_adaptively_in_the_disc() {
     let outputs = Outputs {
         drawn: true,
         table: false,
-        page: false,
     };
     let p = plan(&scenes, outputs);
     let job = p.drawn.as_ref().unwrap()[0][0][0];
@@ -144,7 +142,6 @@ fn explicit_sampling_applies_to_tables_too() {
         Outputs {
             drawn: true,
             table: true,
-            page: false,
         },
     );
     assert_eq!(p.drawn, p.table);
@@ -162,7 +159,6 @@ fn explicit_sampling_applies_to_tables_too() {
         Outputs {
             drawn: true,
             table: true,
-            page: false,
         },
     );
     assert_eq!(p.drawn, p.table);
@@ -234,7 +230,6 @@ fn a_run_produces_only_the_requested_formats_and_needed_jobs() {
             Outputs {
                 drawn: false,
                 table: true,
-                page: false,
             },
         )
         .drawn
@@ -353,7 +348,6 @@ fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
     let outputs = Outputs {
         drawn: true,
         table: false,
-        page: false,
     };
     let planned = plan(&scenes, outputs);
     let evaluated = evaluate_all(&planned).unwrap();
