@@ -4,11 +4,14 @@
 //! The first byte picks the mode. Even: the rest is a scene spec, parsed, validated and, when it
 //! is small enough to keep the fuzzer fast, evaluated into its figure CSV, exactly as `render`
 //! does; it may be valid or not, but it must never panic, a rejected spec must carry at least one
-//! problem, and an accepted one must evaluate to finite numbers or a reported error. Odd: the rest
-//! picks a curve model, a signature and parameter values (domain edges and arbitrary doubles),
-//! which must either be rejected or give a finite value at every θ of [0, π/2], non-negative for
-//! an NDF and within [0, 1] for the exact, Schlick and Lazanyi Fresnel curves.
+//! problem, and an accepted one must evaluate to finite numbers or a reported error. 1 mod 4: the
+//! rest picks a curve model, a signature and parameter values (domain edges and arbitrary
+//! doubles), which must either be rejected or give a finite value at every θ of [0, π/2],
+//! non-negative for an NDF and within [0, 1] for the exact, Schlick and Lazanyi Fresnel curves.
+//! 3 mod 4: `eval`'s path, a θ list and a curve (see [`eval`]).
 
+use ndfplot::angle::AngleUnit;
+use ndfplot::cmd::eval::{parse_theta_list, write_table};
 use ndfplot::curve::{Curve, Model, ParamKind};
 use ndfplot::dataset::Dataset;
 use ndfplot::figure::Figure;
@@ -54,10 +57,54 @@ pub fn run(data: &[u8]) {
     let Some((&mode, rest)) = data.split_first() else {
         return;
     };
-    if mode % 2 == 0 {
-        spec(rest)
-    } else {
-        curve(rest)
+    match mode % 4 {
+        0 | 2 => spec(rest),
+        1 => curve(rest),
+        _ => eval(rest),
+    }
+}
+
+/// Most angles of a θ list that is evaluated; longer valid lists are only parsed.
+const MAX_FUZZ_THETAS: usize = 4096;
+
+/// `eval`'s path: the text up to the first line break is a `--theta` list (in degrees when the
+/// text starts with `d`), the rest a curve. A list must parse or be refused; a parsed list of a
+/// valid curve must stream a table of one header and one row per angle, each with the θ and one
+/// value, or report an error.
+fn eval(bytes: &[u8]) {
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        return;
+    };
+    let (theta, curve) = text.split_once('\n').unwrap_or((text, ""));
+    let (unit, theta) = match theta.strip_prefix('d') {
+        Some(rest) => (AngleUnit::Degrees, rest),
+        None => (AngleUnit::Radians, theta),
+    };
+    let Ok(thetas) = parse_theta_list(theta, unit) else {
+        return;
+    };
+    assert!(!thetas.is_empty(), "a parsed θ list has an angle");
+    let Ok(node) = ndfplot::json::parse(curve) else {
+        return;
+    };
+    let Ok(spec) = ndfplot::curve::parse(&node, "") else {
+        return;
+    };
+    let Ok(curve) = resolve::curve(&spec) else {
+        return;
+    };
+    if thetas.len() > MAX_FUZZ_THETAS {
+        return;
+    }
+    let mut table = Vec::new();
+    let written = write_table(&[curve], &thetas, unit, &mut |bytes| {
+        table.extend_from_slice(bytes);
+        Ok(true)
+    });
+    if written.is_ok() {
+        let text = String::from_utf8(table).expect("the table is UTF-8");
+        assert_eq!(text.lines().count(), thetas.len() + 1, "a row per angle");
+        assert!(text.lines().skip(1).all(|row| row.split(',').count() == 2));
     }
 }
 
