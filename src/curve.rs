@@ -10,7 +10,7 @@
 //! [`Resolved::build`] per combination.
 
 use crate::domain::DomainError;
-use crate::fresnel::{Fresnel, FresnelModel, Ior, SchlickF0};
+use crate::fresnel::{self, Fresnel, FresnelModel, Ior, SchlickF0};
 use crate::json::{Node, Value};
 use crate::keys::{self, Accepted};
 use crate::ndf::{Family, Ndf};
@@ -452,23 +452,23 @@ const fn number(name: &'static str) -> ParamSpec {
 }
 
 const ETA_KAPPA: &[ParamSpec] = &[
-    number("eta"),
+    number(fresnel::ETA.name),
     ParamSpec {
-        name: "kappa",
+        name: fresnel::KAPPA.name,
         kind: ParamKind::Number,
         default: Some(ParamValue::Number(0.0)),
     },
 ];
 const GULBRANDSEN: &[ParamSpec] = &[
-    number("r"),
-    number("g"),
+    number(fresnel::REFLECTIVITY.name),
+    number(fresnel::EDGE_TINT.name),
     ParamSpec {
         name: "g_remap",
         kind: ParamKind::Flag,
         default: Some(ParamValue::Flag(false)),
     },
 ];
-const F0: &[ParamSpec] = &[number("f0")];
+const F0: &[ParamSpec] = &[number(fresnel::F0.name)];
 
 impl Model {
     /// The model key of the curve format: `"ndf"` or `"fresnel"`.
@@ -499,9 +499,9 @@ impl Model {
                 FresnelModel::Schlick => {
                     vec![F0.to_vec(), ETA_KAPPA.to_vec(), GULBRANDSEN.to_vec()]
                 }
-                FresnelModel::Lazanyi => vec![vec![number("f0"), number("a")]],
+                FresnelModel::Lazanyi => vec![vec![number(fresnel::F0.name), number("a")]],
                 FresnelModel::LazanyiTerm => vec![vec![]],
-                FresnelModel::Basis => vec![vec![number("index")]],
+                FresnelModel::Basis => vec![vec![number(fresnel::BASIS_INDEX.name)]],
             },
         }
     }
@@ -556,9 +556,10 @@ impl Model {
     }
 }
 
-/// A basis index given as a JSON number: it must be a whole number (0, 1, 2 or 3).
+/// A basis index given as a JSON number: it must be a whole number in [`fresnel::BASIS_INDEX`]
+/// (0, 1, 2 or 3).
 fn whole_index(value: f64) -> Result<usize, DomainError> {
-    if value.fract() == 0.0 && (0.0..=3.0).contains(&value) {
+    if value.fract() == 0.0 && fresnel::BASIS_INDEX.contains(value) {
         Ok(value as usize)
     } else {
         Err(DomainError::new("index", value, "0, 1, 2 or 3"))
@@ -1261,22 +1262,15 @@ pub fn difference(
     })
 }
 
-/// The legend symbol of a parameter: an NDF parameter's as its family states it (`alpha_b` → `α_b`), a
-/// Fresnel parameter's Greek letter (`eta` → `η`), any other name as it is.
+/// The legend symbol of a parameter as its domain states it: an NDF family's (`alpha_b` → `α_b`) or a
+/// Fresnel one's (`eta` → `η`); any other name as it is.
 pub fn symbol(param: &str) -> &str {
-    if let Some(p) = Family::ALL
+    Family::ALL
         .iter()
         .flat_map(|family| family.params())
+        .chain(fresnel::PARAMS)
         .find(|p| p.name == param)
-    {
-        return p.symbol;
-    }
-    match param {
-        "eta" => "η",
-        "kappa" => "κ",
-        "f0" => "F₀",
-        other => other,
-    }
+        .map_or(param, |p| p.symbol)
 }
 
 /// A number for people: at most 6 significant digits, trailing zeros dropped (`10.499999999999998` → `10.5`).

@@ -19,7 +19,7 @@ pub mod gulbrandsen;
 pub use basis::Coefficients;
 pub use exact::{Incidence, Index};
 
-use crate::domain::{DomainError, check};
+use crate::domain::{Bound, DomainError, Param, check};
 
 /// Largest accepted η and κ: |η̃|² ≤ 2e300 stays below f64::MAX ≈ 1.8e308, so η̃² and every
 /// product the exact form takes (`exact`) are finite.
@@ -28,6 +28,75 @@ pub const INDEX_MAX: f64 = 1e150;
 /// Smallest accepted η: η² ≥ 1e-300 stays a normal double (≥ 2.2e-308), so η̃² never underflows to 0
 /// and the r_p denominator η̃² c + w never vanishes.
 pub const ETA_MIN: f64 = 1e-150;
+
+/// η's domain, [`ETA_MIN`] to [`INDEX_MAX`].
+pub const ETA: Param = Param {
+    name: "eta",
+    symbol: "η",
+    min: Bound::inclusive(
+        ETA_MIN,
+        "η² leaves the normal doubles and r_p's denominator may vanish",
+    ),
+    max: Bound::inclusive(INDEX_MAX, "|η̃|² overflows"),
+};
+
+/// κ's domain, 0 to [`INDEX_MAX`].
+pub const KAPPA: Param = Param {
+    name: "kappa",
+    symbol: "κ",
+    min: Bound::inclusive(0.0, "κ < 0 is a gain medium, not a reflector"),
+    max: Bound::inclusive(INDEX_MAX, "|η̃|² overflows"),
+};
+
+/// Gulbrandsen's reflectivity r, a normal-incidence reflectance short of 1.
+pub const REFLECTIVITY: Param = Param {
+    name: "r",
+    symbol: "r",
+    min: Bound::inclusive(0.0, "a reflectance is not negative"),
+    max: Bound::exclusive(1.0, "the map to (η, κ) is singular at r = 1"),
+};
+
+/// Gulbrandsen's edge tint g.
+pub const EDGE_TINT: Param = Param {
+    name: "g",
+    symbol: "g",
+    min: Bound::inclusive(0.0, "η = g n_min + (1 − g) n_max would pass n_max"),
+    max: Bound::inclusive(1.0, "η = g n_min + (1 − g) n_max would pass n_min"),
+};
+
+/// Schlick's and Lazanyi's F₀, a reflectance.
+pub const F0: Param = Param {
+    name: "f0",
+    symbol: "F₀",
+    min: Bound::inclusive(0.0, "a reflectance is not negative"),
+    max: Bound::inclusive(1.0, "a reflectance is at most 1"),
+};
+
+/// The index k of a basis function b_k, a whole number.
+pub const BASIS_INDEX: Param = Param {
+    name: "index",
+    symbol: "index",
+    min: Bound::inclusive(0.0, "b₀ is the first basis function"),
+    max: Bound::inclusive(3.0, "the basis has four functions, b₀ … b₃"),
+};
+
+/// Every Fresnel parameter whose domain is fixed: what the constructors below check and whatever
+/// shows a domain reads. Lazanyi's `a` has none of its own: its range depends on F₀
+/// ([`approx::lazanyi_a_range`]).
+pub const PARAMS: &[Param] = &[ETA, KAPPA, REFLECTIVITY, EDGE_TINT, F0, BASIS_INDEX];
+
+/// `value` if `param` contains it, else the error stating its interval (`in [0, 1)`) after `lead`.
+fn within(param: &Param, value: f64, lead: &str) -> Result<f64, DomainError> {
+    if param.contains(value) {
+        Ok(value)
+    } else {
+        Err(DomainError::new(
+            param.name,
+            value,
+            format!("{lead}{}", param.interval()),
+        ))
+    }
+}
 
 /// How a material's complex index is given.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,27 +121,18 @@ pub enum Ior {
 }
 
 impl Ior {
-    /// η̃ = η + iκ with η ∈ [1e-150, 1e150] ([`ETA_MIN`], [`INDEX_MAX`]) and κ ∈ [0, 1e150], both finite.
+    /// η̃ = η + iκ with η in [`ETA`] = [1e-150, 1e150] and κ in [`KAPPA`] = [0, 1e150].
     pub fn eta_kappa(eta: f64, kappa: f64) -> Result<Ior, DomainError> {
-        let eta = check(
-            "eta",
-            eta,
-            |v| (ETA_MIN..=INDEX_MAX).contains(&v),
-            "> 0, in [1e-150, 1e150]",
-        )?;
-        let kappa = check(
-            "kappa",
-            kappa,
-            |v| (0.0..=INDEX_MAX).contains(&v),
-            "≥ 0, in [0, 1e150]",
-        )?;
+        let eta = within(&ETA, eta, "> 0, ")?;
+        let kappa = within(&KAPPA, kappa, "≥ 0, ")?;
         Ok(Ior::EtaKappa { eta, kappa })
     }
 
-    /// Gulbrandsen's (r, g) with r ∈ [0, 1) (r = 1 is singular) and g ∈ [0, 1].
+    /// Gulbrandsen's (r, g) with r in [`REFLECTIVITY`] = [0, 1) (r = 1 is singular) and g in
+    /// [`EDGE_TINT`] = [0, 1].
     pub fn gulbrandsen(r: f64, g: f64, g_remap: bool) -> Result<Ior, DomainError> {
-        let r = check("r", r, |v| (0.0..1.0).contains(&v), "in [0, 1)")?;
-        let g = check("g", g, |v| (0.0..=1.0).contains(&v), "in [0, 1]")?;
+        let r = within(&REFLECTIVITY, r, "")?;
+        let g = within(&EDGE_TINT, g, "")?;
         Ok(Ior::Gulbrandsen { r, g, g_remap })
     }
 
@@ -157,14 +217,14 @@ impl FresnelModel {
 impl Fresnel {
     /// Schlick with a given F₀ ∈ [0, 1].
     pub fn schlick(f0: f64) -> Result<Fresnel, DomainError> {
-        let f0 = check("f0", f0, |v| (0.0..=1.0).contains(&v), "in [0, 1]")?;
+        let f0 = within(&F0, f0, "")?;
         Ok(Fresnel::Schlick(SchlickF0::F0(f0)))
     }
 
     /// Lazanyi–Schlick with F₀ ∈ [0, 1] and a ∈ [−5 (1 − F₀), a_max(F₀)] (`approx::lazanyi_a_range`):
     /// exactly the `a` for which F stays within [0, 1] at every θ (a_max(0) = 4, a_max(1) ≈ 17.65).
     pub fn lazanyi(f0: f64, a: f64) -> Result<Fresnel, DomainError> {
-        let f0 = check("f0", f0, |v| (0.0..=1.0).contains(&v), "in [0, 1]")?;
+        let f0 = within(&F0, f0, "")?;
         let (a_min, a_max) = approx::lazanyi_a_range(f0);
         let expected = format!("in [{a_min:?}, {a_max:?}] for f0 = {f0:?}, so that 0 ≤ F ≤ 1");
         let a = check("a", a, |v| (a_min..=a_max).contains(&v), &expected)?;
@@ -177,9 +237,9 @@ impl Fresnel {
         Fresnel::Belcour(ior, basis::coeffs(ior.index()))
     }
 
-    /// Basis function b_k, `index` ∈ 0..=3.
+    /// Basis function b_k, `index` in [`BASIS_INDEX`] = 0..=3.
     pub fn basis(index: usize) -> Result<Fresnel, DomainError> {
-        if index <= 3 {
+        if BASIS_INDEX.contains(index as f64) {
             Ok(Fresnel::Basis(index))
         } else {
             Err(DomainError::new("index", index as f64, "0, 1, 2 or 3"))

@@ -15,6 +15,7 @@ use super::{Pending, SceneData, Spec, read_style};
 use crate::curve::{ParamKind, pretty};
 use crate::datafile::DataScope;
 use crate::dataset::{Coefficient, Dataset, SpectrumQuantity};
+use crate::fresnel::{EDGE_TINT, REFLECTIVITY};
 use crate::json::{Node, Value};
 use crate::look::Rgb;
 
@@ -209,14 +210,15 @@ fn read_gulbrandsen(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
     let x = coefficient(reader, entry, "x");
     let y = coefficient(reader, entry, "y");
     let z = entry.get("z").and_then(|_| coefficient(reader, entry, "z"));
-    let r = values(reader, entry, "r", |v| (0.0..1.0).contains(&v), "in [0, 1)");
-    let g = values(
-        reader,
-        entry,
-        "g",
-        |v| (0.0..=1.0).contains(&v),
-        "in [0, 1]",
-    );
+    let [r, g] = [REFLECTIVITY, EDGE_TINT].map(|param| {
+        values(
+            reader,
+            entry,
+            param.name,
+            |v| param.contains(v),
+            &param.interval(),
+        )
+    });
     let g_remap = reader.boolean(entry, "g_remap").unwrap_or(false);
     if x.is_none() && entry.get("x").is_none() {
         reader.report(

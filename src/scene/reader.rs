@@ -7,6 +7,15 @@ use crate::json::{Node, Value};
 use crate::keys::{self, Accepted};
 use crate::problem::{Problem, join_key, suggestion};
 
+/// The characters a text field refuses, as inclusive ranges: Unicode's control characters (category
+/// Cc: C0, DEL and C1), which no figure format can show (SVG's XML refuses most of them), and the
+/// noncharacters U+FFFE and U+FFFF. The JSON Schema's text pattern is made from this table.
+pub const REFUSED_IN_TEXT: [(char, char); 3] = [
+    ('\u{0}', '\u{1f}'),
+    ('\u{7f}', '\u{9f}'),
+    ('\u{fffe}', '\u{ffff}'),
+];
+
 /// Collects the problems found while reading one document.
 #[derive(Debug, Default)]
 pub struct Reader {
@@ -99,14 +108,15 @@ impl Reader {
     }
 
     /// A string field that is drawn as text (a title, a label, a column name shown on an axis): a
-    /// string without control characters, which no figure format can show (SVG's XML refuses most
-    /// of them). `None` when absent, of the wrong type or holding one (reported).
+    /// string without the characters of [`REFUSED_IN_TEXT`]. `None` when absent, of the wrong type
+    /// or holding one (reported).
     pub fn text(&mut self, object: &Object, key: &str) -> Option<String> {
         let text = self.string(object, key)?;
-        match text
-            .chars()
-            .find(|&c| c.is_control() || matches!(c, '\u{fffe}' | '\u{ffff}'))
-        {
+        match text.chars().find(|c| {
+            REFUSED_IN_TEXT
+                .iter()
+                .any(|&(first, last)| (first..=last).contains(c))
+        }) {
             Some(bad) => {
                 self.report(
                     object.path_of(key),

@@ -1,9 +1,12 @@
 //! The JSON Schema of `ndfplot schema` against the validator: for every key table the schema's
-//! property set equals the validator's, the committed `schema/ndfplot.schema.json` is current, every
-//! config validates against it, and misspelt keys and names fail it as they fail the validator.
+//! property set equals the validator's, every key is described, the committed
+//! `schema/ndfplot.schema.json` is current, every config validates against it, misspelt keys and
+//! names fail it as they fail the validator, parameter domains and text fields refuse what the
+//! validator refuses, and every malformed spec it accepts is named with the reason.
 
 use crate::common::{ndfplot, root};
 use ndfplot::curve::{DIFFERENCE_KEYS, TRANSFORM_KEYS};
+use ndfplot::input::parse_json;
 use ndfplot::scene::interactive::{INTERACTIVE_KEYS, PARAM_KEYS, SLIDER_KEY};
 use ndfplot::scene::sweep::{FIT_KEY, FIT_KEYS, FROM_BECKMANN_KEY, SWEEP_KEYS};
 use ndfplot::scene::{self as scene, data};
@@ -182,6 +185,154 @@ fn every_key_table_equals_the_schema_properties() {
     );
 }
 
+/// The JSON paths of the properties without a non-empty description, under `at`.
+fn undescribed(schema: &Value, at: &str, missing: &mut Vec<String>) {
+    match schema {
+        Value::Object(members) => {
+            if let Some(Value::Object(properties)) = members.get("properties") {
+                for (key, property) in properties {
+                    if property["description"].as_str().is_none_or(str::is_empty) {
+                        missing.push(format!("{at}/properties/{key}"));
+                    }
+                }
+            }
+            for (key, member) in members {
+                undescribed(member, &format!("{at}/{key}"), missing);
+            }
+        }
+        Value::Array(items) => {
+            for (i, item) in items.iter().enumerate() {
+                undescribed(item, &format!("{at}/{i}"), missing);
+            }
+        }
+        _ => {}
+    }
+}
+
+#[test]
+fn every_property_has_a_description() {
+    let mut missing = Vec::new();
+    undescribed(&schema::schema(), "#", &mut missing);
+    assert!(missing.is_empty(), "undescribed: {missing:#?}");
+}
+
+/// Whether the validator accepts the scene `text`.
+fn validator_accepts(text: &str) -> bool {
+    let node = parse_json(text, "scene").unwrap();
+    scene::parse(&node, None).is_ok()
+}
+
+#[test]
+fn parameter_domains_bound_values_and_sweeps_as_the_validator_does() {
+    let validator = validator(&schema::schema(), None);
+    let scene_of = |entry: &str| format!(r#"{{"id": "x", "panels": [{{"curves": [{entry}]}}]}}"#);
+    // (curve entry, valid): every bound at its edge, each form of sweep, and the values a sweep
+    // need not take (a range's stop, a linspace's stop at count 1).
+    let cases = [
+        (r#"{"ndf": "beckmann", "alpha_b": [1e-150, 1e4]}"#, true),
+        (r#"{"ndf": "beckmann", "alpha_b": [0.5, 1.1e4]}"#, false),
+        (r#"{"ndf": "abc", "alpha_abc1": 0, "alpha_abc2": 1}"#, false),
+        (
+            r#"{"ndf": "trowbridge_reitz", "alpha_tr": {"range": [0.1, 10000.05, 1000]}}"#,
+            true,
+        ),
+        (
+            r#"{"ndf": "trowbridge_reitz", "alpha_tr": {"range": [0, 1, 0.5]}}"#,
+            false,
+        ),
+        (
+            r#"{"ndf": "beckmann", "alpha_b": {"range": [0.1, 1, -0.0]}}"#,
+            false,
+        ),
+        (
+            r#"{"ndf": "beckmann", "alpha_b": {"linspace": [1e-150, 1e4, 3]}}"#,
+            true,
+        ),
+        (
+            r#"{"ndf": "beckmann", "alpha_b": {"linspace": [0.5, 1e5, 1]}}"#,
+            true,
+        ),
+        (
+            r#"{"ndf": "beckmann", "alpha_b": {"linspace": [0.5, 1e5, 2]}}"#,
+            false,
+        ),
+        (
+            r#"{"ndf": "beckmann", "alpha_b": {"linspace": [0, 0.5, 2]}}"#,
+            false,
+        ),
+        (
+            r#"{"fresnel": "exact", "eta": 1e-150, "kappa": [0, 1e150]}"#,
+            true,
+        ),
+        (r#"{"fresnel": "exact", "eta": 1.5, "kappa": -0.1}"#, false),
+        (r#"{"fresnel": "exact", "eta": 1.1e150}"#, false),
+        (r#"{"fresnel": "belcour", "r": 0.999, "g": [0, 1]}"#, true),
+        (r#"{"fresnel": "normalized", "r": 0.5, "g": 1.5}"#, false),
+        (
+            r#"{"fresnel": "schlick", "f0": {"range": [0, 1, 0.25]}}"#,
+            true,
+        ),
+        (r#"{"fresnel": "lazanyi", "f0": 1.5, "a": 0}"#, false),
+        (r#"{"fresnel": "basis", "index": [0, 1.0, 3]}"#, true),
+        (r#"{"fresnel": "basis", "index": 4}"#, false),
+        (r#"{"fresnel": "basis", "index": -1}"#, false),
+        (
+            r#"{"data": "gulbrandsen", "x": "c0", "y": "c1", "r": {"linspace": [0, 0.9, 4]}, "g": 1}"#,
+            true,
+        ),
+        (
+            r#"{"data": "gulbrandsen", "x": "c0", "y": "c1", "r": [0.5, 1], "g": 1}"#,
+            false,
+        ),
+        (
+            r#"{"ndf": "ggx", "alpha_tr": 0.3, "label": "α = {alpha_tr} ✓ \u00a0😀"}"#,
+            true,
+        ),
+        (r#"{"ndf": "ggx", "alpha_tr": 0.3, "label": "a\u009fb"}"#, false),
+        (r#"{"ndf": "ggx", "alpha_tr": 0.3, "label": "a\ufffeb"}"#, false),
+        (
+            r#"{"data": "table", "x": [0, 1], "y": [0, 1], "label": "a\u007f"}"#,
+            false,
+        ),
+    ];
+    for (entry, valid) in cases {
+        let text = scene_of(entry);
+        assert_eq!(validator_accepts(&text), valid, "validator: {entry}");
+        let instance: Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(
+            validator.is_valid(&instance),
+            valid,
+            "schema: {entry}: {:?}",
+            errors(&validator, &instance)
+        );
+    }
+    let slider = |label: &str| {
+        format!(
+            r#"{{"id": "x", "interactive": {{"params": [{{"name": "a", "label": "{label}", "range": [0.1, 1]}}]}}, "panels": [{{"curves": [{{"ndf": "beckmann", "alpha_b": {{"slider": "a"}}}}]}}]}}"#
+        )
+    };
+    for (label, valid) in [("α_b", true), (r"α\u0000", false)] {
+        let text = slider(label);
+        assert_eq!(validator_accepts(&text), valid, "validator: {label}");
+        let instance: Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(validator.is_valid(&instance), valid, "schema: {label}");
+    }
+}
+
+#[test]
+fn text_fields_refuse_exactly_the_control_characters_and_u_fffe_u_ffff() {
+    let validator = validator(&schema::schema(), Some("text"));
+    let refused: Vec<char> = (0..=u32::from(char::MAX))
+        .filter_map(char::from_u32)
+        .filter(|&c| !validator.is_valid(&json!(format!("a{c}b"))))
+        .collect();
+    let control: Vec<char> = (0..=u32::from(char::MAX))
+        .filter_map(char::from_u32)
+        .filter(|&c| c.is_control() || matches!(c, '\u{fffe}' | '\u{ffff}'))
+        .collect();
+    assert_eq!(refused, control);
+}
+
 #[test]
 fn the_committed_schema_is_the_generated_one() {
     let out = ndfplot(&["schema"]);
@@ -281,14 +432,10 @@ fn misspelt_keys_and_names_fail_the_schema_as_they_fail_the_validator() {
     }
 }
 
-/// Malformed specs the schema accepts, each with the reason: cross-field and computed rules, the file
-/// system, and (marked "not … yet") rules the schema could state but does not; it rejects every
-/// other file of `tests/data/malformed/`.
+/// Malformed specs the schema accepts, each with the reason: cross-field and computed rules and the
+/// file system, which a JSON Schema cannot state; it rejects every other file of
+/// `tests/data/malformed/`.
 const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
-    (
-        "basis-index",
-        "a whole basis index 0..3 is not in the schema yet (the Fresnel domains are the validator's)",
-    ),
     (
         "camera-without-surface",
         "cross-field: camera is allowed only when the panel's kind is surface",
@@ -327,24 +474,12 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
         "a JSON parser keeps one value per key: the schema never sees the duplicate",
     ),
     (
-        "fresnel-eta-negative",
-        "Fresnel domains are not in the schema yet",
-    ),
-    (
         "from-beckmann-out-of-range",
         "the converted value's domain (2/α_b² − 2 ≥ 0) is a computed bound",
     ),
     (
-        "gulbrandsen-r-one",
-        "Fresnel domains are not in the schema yet",
-    ),
-    (
         "layout-too-small",
         "cross-field: rows × cols against the number of panels",
-    ),
-    (
-        "param-out-of-domain",
-        "swept scene parameters carry no bounds in the schema yet",
     ),
     (
         "png-over-raster-cap",
@@ -364,10 +499,6 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
         "cross-field: the sign of (b − a)/s",
     ),
     (
-        "range-zero-step",
-        "a step of 0 inside a [a, b, s] triple is not in the schema yet",
-    ),
-    (
         "ratio-zero-denominator",
         "computed: the ratio's denominator reaches 0 inside the range",
     ),
@@ -382,18 +513,6 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
     (
         "sweep-product-over-cap",
         "computed: the product of the sweeps' sizes",
-    ),
-    (
-        "sweep-range-and-linspace",
-        "a sweep object with both keys is not refused by the schema yet",
-    ),
-    (
-        "text-control-characters-axis",
-        "control characters in text are not refused by the schema yet",
-    ),
-    (
-        "text-control-characters",
-        "control characters in text are not refused by the schema yet",
     ),
     (
         "transform-fresnel",
