@@ -36,9 +36,30 @@
 //! - Rounding can put F an ulp above 1 near grazing incidence; the result is clamped to ≤ 1.
 //! - 1 − F is also offered without cancellation (`one_minus_reflectance`): the basis training set
 //!   divides by 1 − F₀ = 2e-5 for one material, which would amplify the rounding of F 5e4-fold.
-//! - The normalized curve (F − F₀)/(1 − F₀) (`normalized_reflectance`) takes the difference of
-//!   whichever of F or 1 − F is the smaller at normal incidence, so that neither a tiny F₀ (η̃ ≈ 1)
-//!   nor a tiny 1 − F₀ is lost against 1.
+//! - The normalized curve v = (F − F₀)/(1 − F₀) (`normalized_reflectance`) vanishes like θ⁴ at
+//!   normal incidence (the θ² terms of |r_s|² and |r_p|² cancel), so F − F₀ formed from two rounded
+//!   reflectances keeps a relative accuracy of only ~ε/θ⁴. With S = c + w, P = η̃c + w,
+//!   Q = η̃²c + w and r₀ = (1 − η̃)/(1 + η̃), the closed forms
+//!   r_s − r₀ = −2 sin²θ (η̃ − 1)/(S P), r_s + r₀ = 2(c − η̃w)/(S (1 + η̃)),
+//!   r_p + r₀ = −2η̃ sin²θ (η̃ − 1)/(Q P), r_p − r₀ = 2(η̃³c − w)/(Q (1 + η̃))
+//!   (from c η̃ − w = −sin²θ a/P) turn |r|² − |r₀|² = Re((r − r₀) conj(r + r₀)) into
+//!   |r_s|² − |r₀|² = 4 sin²θ |a|² (η + c Re w)/(|1 + η̃|² |S|² |P|²) and
+//!   |r_p|² − |r₀|² = −4 sin²θ |a|² (c|η̃|²(cη + Re w) − η sin²θ)/(|1 + η̃|² |Q|² |P|²). Writing
+//!   Q = η̃S − sin²θ (η̃ − 1)a/P, their sum cancels its θ² term exactly, and with
+//!   1 − F₀ = 4η/|1 + η̃|² and R = −(η̃ − 1)a/(P S):
+//!   v = sin⁴θ |a|² M / (2η |P|² |S|² |Q|²),
+//!   M/(|P|² |S|²) = η(|η̃|² + 1)/|P|² + (η + c Re w)(2 Re(η̃ R̄) + sin²θ |R|²)/|P|².
+//!   Every factor but M is a product of norms; M is a sum of two terms of either sign, whose
+//!   rounding is ε times the same sum with every term taken positive. Near grazing incidence on a
+//!   large |η̃|, M cancels ~min(1/cos θ, |η̃|²)-fold while |v| grows as large; there
+//!   v = 1 − (1 − F)/(1 − F₀) from `one_minus_reflectance`, rounded to ~ε|1 − v|, is the more
+//!   accurate, and whichever of the two bounds is the smaller decides. Left: real η = 2 ± √3,
+//!   where the θ⁴ coefficient (2η − (η − 1)²)/(2η³) F₀/(1 − F₀) vanishes and v ~ θ⁶ near θ = 0
+//!   (and likewise along a curve of complex indices): v is then ill-conditioned in η itself, its
+//!   relative error growing like ε η²/|2η − (η − 1)²| (~6e-13 at η = 3.73), whatever the
+//!   evaluation; and indices whose
+//!   1 − F₀ = 4η/|1 + η̃|² underflows (η ≲ |η̃|² 1e-308), where only the θ⁴ form is available and
+//!   its rounding grows like ε/cos θ near grazing incidence.
 
 use num_complex::Complex;
 
@@ -65,6 +86,11 @@ impl Index {
             eta_minus_one: eta - 1.0,
             kappa,
         }
+    }
+
+    /// |a| = |η̃² − 1| = |η̃ − 1| |η̃ + 1|, a product of norms: no cancellation near η̃ = 1.
+    fn abs_eta2_minus_one(&self) -> f64 {
+        self.eta_minus_one.hypot(self.kappa) * (self.eta + 1.0).hypot(self.kappa)
     }
 }
 
@@ -109,15 +135,14 @@ pub fn reflectance(incidence: Incidence, index: Index) -> f64 {
     match Interface::new(incidence, index) {
         Interface::Index1 => 0.0,
         Interface::TotalInternalReflection => 1.0,
-        Interface::General {
+        Interface::General(General {
             c,
             sin2_theta,
             eta2,
             w,
-        } => {
-            // |a| = |η̃ − 1| |η̃ + 1|: no cancellation near η̃ = 1.
-            let abs_a =
-                index.eta_minus_one.hypot(index.kappa) * (index.eta + 1.0).hypot(index.kappa);
+            ..
+        }) => {
+            let abs_a = index.abs_eta2_minus_one();
             let abs_s_den = (w + c).norm();
             let r_s = abs_a / abs_s_den / abs_s_den;
             let abs_p_den = (eta2 * c + w).norm();
@@ -137,7 +162,7 @@ pub fn one_minus_reflectance(incidence: Incidence, index: Index) -> f64 {
     match Interface::new(incidence, index) {
         Interface::Index1 => 1.0,
         Interface::TotalInternalReflection => 0.0,
-        Interface::General { c, eta2, w, .. } => {
+        Interface::General(General { c, eta2, w, .. }) => {
             let abs_s_den = (w + c).norm();
             let abs_p_den = (eta2 * c + w).norm();
             // Each factor divided by |denominator| separately: no overflow for |η̃| up to 1e150.
@@ -148,22 +173,82 @@ pub fn one_minus_reflectance(incidence: Incidence, index: Index) -> f64 {
     }
 }
 
-/// The normalized curve (F(c) − F₀)/(1 − F₀) of the basis training set, F₀ = F(1): for F₀ ≤ 1/2
-/// formed as (F − F₀)/(1 − F₀) from [`reflectance`], otherwise as 1 − (1 − F)/(1 − F₀) from
-/// [`one_minus_reflectance`], so the difference is always taken between the smaller quantities.
-/// 0 for η̃ = 1 and where 1 − F₀ underflows to 0.
+/// The normalized curve v = (F(c) − F₀)/(1 − F₀), F₀ = F(1), of the `normalized` curve model and
+/// the spectrum check, accurate to a few ulps relative at every θ (module documentation: except
+/// at small θ near η = 2 ± √3, where v is ill-conditioned in η, and where 1 − F₀ underflows):
+/// v = sin⁴θ |a|² M / (2η |P|² |S|² |Q|²) with S = c + w, P = η̃c + w, Q = η̃²c + w,
+/// R = −(η̃ − 1)a/(P S) and
+/// M/(|P|² |S|²) = η(|η̃|² + 1)/|P|² + (η + c Re w)(2 Re(η̃ R̄) + sin²θ |R|²)/|P|², or
+/// v = 1 − (1 − F)/(1 − F₀) from [`one_minus_reflectance`] where that is rounded less (near grazing
+/// incidence on a large |η̃|). 0 for η̃ = 1, 1 under total internal reflection. η < 0 (the basis
+/// training set's quirky row) is evaluated as |η| + iκ, which has the same F at every angle: F
+/// depends on η̃ only through η̃² and the moduli of conjugate-symmetric ratios.
 pub fn normalized_reflectance(incidence: Incidence, index: Index) -> f64 {
-    let f0 = reflectance(Incidence::NORMAL, index);
-    if f0 <= 0.5 {
-        (reflectance(incidence, index) - f0) / (1.0 - f0)
+    let index = if index.eta < 0.0 {
+        Index {
+            eta: -index.eta,
+            eta_minus_one: -index.eta - 1.0,
+            kappa: index.kappa,
+        }
     } else {
-        let one_minus_f0 = one_minus_reflectance(Incidence::NORMAL, index);
-        if one_minus_f0 == 0.0 {
-            0.0
-        } else {
-            1.0 - one_minus_reflectance(incidence, index) / one_minus_f0
+        index
+    };
+    match Interface::new(incidence, index) {
+        Interface::Index1 => 0.0,
+        Interface::TotalInternalReflection => 1.0,
+        Interface::General(general) => {
+            let (v, rounding) = normalized_quartic_form(index, general);
+            if rounding <= (1.0 - v).abs() {
+                return v;
+            }
+            let one_minus_f0 = one_minus_reflectance(Incidence::NORMAL, index);
+            if one_minus_f0 == 0.0 {
+                v
+            } else {
+                1.0 - one_minus_reflectance(incidence, index) / one_minus_f0
+            }
         }
     }
+}
+
+/// v = sin⁴θ |a|² M / (2η |P|² |S|² |Q|²) of [`normalized_reflectance`] for η ≥ 0 outside the
+/// guarded cases, and its rounding bound in units of ε: the same expression with every term of M
+/// taken positive. Each quotient is taken factor by factor: no overflow for |η̃| up to 1e150.
+fn normalized_quartic_form(index: Index, general: General) -> (f64, f64) {
+    let Index {
+        eta,
+        eta_minus_one,
+        kappa,
+    } = index;
+    let General {
+        c,
+        sin2_theta,
+        eta2,
+        a,
+        w,
+    } = general;
+    let eta_c = Complex::new(eta, kappa);
+    let s = w + c;
+    let p = eta_c * c + w;
+    let abs_p = p.norm();
+    let r = -(Complex::new(eta_minus_one, kappa) * divide(a, p));
+    let r = divide(r, s);
+    let positive = eta * ((eta_c.norm_sqr() + 1.0) / abs_p / abs_p);
+    let weight = (eta + c * w.re) / abs_p;
+    let (e_r_re, e_r_im) = (eta_c.re * r.re, eta_c.im * r.im);
+    let m = positive + weight * ((2.0 * (e_r_re + e_r_im) + sin2_theta * r.norm_sqr()) / abs_p);
+    let m_bound = positive
+        + weight * ((2.0 * (e_r_re.abs() + e_r_im.abs()) + sin2_theta * r.norm_sqr()) / abs_p);
+    let scale = sin2_theta * (index.abs_eta2_minus_one() / (eta2 * c + w).norm());
+    let scale = scale * scale / (2.0 * eta);
+    (scale * m, scale * m_bound)
+}
+
+/// z/d with both parts of z d̄ scaled by |d| before the division: no overflow where |z| |d|
+/// would exceed f64::MAX.
+fn divide(z: Complex<f64>, d: Complex<f64>) -> Complex<f64> {
+    let abs_d = d.norm();
+    z * (d.conj() / abs_d) / abs_d
 }
 
 /// The cases of the interface at one angle, with the shared quantities of the general case.
@@ -172,13 +257,19 @@ enum Interface {
     Index1,
     /// κ = 0 and η² ≤ sin²θ: w is purely imaginary and F = 1 exactly.
     TotalInternalReflection,
-    /// c = cos θ, sin²θ, η̃² and the principal root w = √(η̃² − sin²θ).
-    General {
-        c: f64,
-        sin2_theta: f64,
-        eta2: Complex<f64>,
-        w: Complex<f64>,
-    },
+    /// Any other interface.
+    General(General),
+}
+
+/// The quantities of an interface's general case: c = cos θ, sin²θ, η̃², a = η̃² − 1 and the
+/// principal root w = √(η̃² − sin²θ).
+#[derive(Clone, Copy)]
+struct General {
+    c: f64,
+    sin2_theta: f64,
+    eta2: Complex<f64>,
+    a: Complex<f64>,
+    w: Complex<f64>,
 }
 
 impl Interface {
@@ -211,12 +302,13 @@ impl Interface {
         if kappa == 0.0 && w2.re <= 0.0 {
             return Interface::TotalInternalReflection;
         }
-        Interface::General {
+        Interface::General(General {
             c,
             sin2_theta,
             eta2,
+            a,
             w: principal_sqrt(w2),
-        }
+        })
     }
 }
 

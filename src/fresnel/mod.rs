@@ -196,9 +196,9 @@ pub enum Fresnel {
     Belcour(Ior, Coefficients),
     /// Basis function b_k, k ∈ 0..=3; build with [`Fresnel::basis`].
     Basis(usize),
-    /// The exact Fresnel normalized as the basis training curves are: (F − F₀)/(1 − F₀), with the
-    /// difference taken between F and F₀ or between 1 − F and 1 − F₀, whichever pair is the smaller
-    /// (`exact::normalized_reflectance`); 0 where 1 − F₀ underflows to 0.
+    /// The exact Fresnel normalized as the basis training curves are: (F − F₀)/(1 − F₀), formed
+    /// with its factor sin⁴θ explicit, or as 1 − (1 − F)/(1 − F₀) near grazing incidence where that
+    /// rounds less (`exact::normalized_reflectance`): no cancellation at θ → 0.
     Normalized(Ior),
 }
 

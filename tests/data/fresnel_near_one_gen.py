@@ -21,9 +21,9 @@ Regimes (where eta~^2 - 1 is small and float64 loses it if it forms eta~^2 first
 - and, where sin^2 theta must be known relative to itself rather than from a rounded cos theta, tiny
   indices (|eta~| from 1e-8 to 1e-3) at theta from 1e-9 to 1e-3 (for kappa = 0 away from the critical
   angle asin(eta): |sin theta - eta| > eta / 2).
-Also Schlick with F0 from these indices, and the normalized curve (F - F0)/(1 - F0) at theta >= 0.5: below,
-F - F0 cancels in float64 (relative error ~ eps F0 / |F - F0|, and near the index 1 F - F0 ~ F0 theta^4, so
-~1e-12 at theta = 0.1).
+Also Schlick with F0 from these indices, and the normalized curve (F - F0)/(1 - F0) at the same angles
+(F - F0 ~ F0 theta^4 near theta = 0, which the 120 digits keep; fresnel_normalized_gen.py goes down to
+theta = 1e-12 for indices away from 1).
 
 Usage: python3 tests/data/fresnel_near_one_gen.py > tests/data/fresnel_near_one.csv   (needs mpmath >= 1.3)
 """
@@ -44,7 +44,6 @@ CRITICAL_ETAS = [1 - 1e-6, 1 - 1e-9, 1 - 1e-12]
 CRITICAL_T = [0.5, 1e-2, 1e-3, -1e-3, -0.5]
 SMALL = [(1e-8, 1e-8), (1e-6, 1e-6), (1e-4, 1e-4), (1e-3, 1e-6), (1e-3, 0.0)]
 SMALL_THETAS = [0.0, 1e-9, 1e-7, 3e-7, 1e-6, 1e-5, 1e-4, 5e-4, 1e-3, 0.5, HALF_PI]
-NORMALIZED_MIN_THETA = 0.5
 
 
 def gulbrandsen(r, g):
@@ -80,33 +79,38 @@ def double_theta(cos2):
     return float(mp.acos(mp.sqrt(cos2)))
 
 
-# (label, params for the curve JSON, eta, kappa, thetas)
-indices = []
-for i, n in enumerate(REAL_ETAS):
-    indices.append(("real-%02d" % i, {"eta": n, "kappa": 0.0}, mpf(n), mpf(0), THETAS))
-for i, (n, k) in enumerate(COMPLEX):
-    indices.append(("complex-%02d" % i, {"eta": n, "kappa": k}, mpf(n), mpf(k), THETAS))
-for i, r in enumerate(GULBRANDSEN_R):
-    for j, g in enumerate(GULBRANDSEN_G):
-        n, k = gulbrandsen(r, g)
-        assert abs(f0_closed(n, k) / mpf(r) - 1) < mpf("1e-90"), (r, g)
-        indices.append(("gulbrandsen-%d-%d" % (i, j), {"r": r, "g": g}, n, k, THETAS))
-for i, n in enumerate(CRITICAL_ETAS):
-    c2 = 1 - mpf(n) ** 2
-    ts = [0.0, 0.5, 1.0] + [double_theta((1 + mpf(t)) * c2) for t in CRITICAL_T]
-    indices.append(("critical-%d" % i, {"eta": n, "kappa": 0.0}, mpf(n), mpf(0), ts))
-for i, (n, k) in enumerate(SMALL):
-    ts = [t for t in SMALL_THETAS if k > 0 or abs(mp.sin(mpf(t)) - n) > n / 2]
-    indices.append(("small-%d" % i, {"eta": n, "kappa": k}, mpf(n), mpf(k), ts))
+def main():
+    # (label, params for the curve JSON, eta, kappa, thetas)
+    indices = []
+    for i, n in enumerate(REAL_ETAS):
+        indices.append(("real-%02d" % i, {"eta": n, "kappa": 0.0}, mpf(n), mpf(0), THETAS))
+    for i, (n, k) in enumerate(COMPLEX):
+        indices.append(("complex-%02d" % i, {"eta": n, "kappa": k}, mpf(n), mpf(k), THETAS))
+    for i, r in enumerate(GULBRANDSEN_R):
+        for j, g in enumerate(GULBRANDSEN_G):
+            n, k = gulbrandsen(r, g)
+            assert abs(f0_closed(n, k) / mpf(r) - 1) < mpf("1e-90"), (r, g)
+            indices.append(("gulbrandsen-%d-%d" % (i, j), {"r": r, "g": g}, n, k, THETAS))
+    for i, n in enumerate(CRITICAL_ETAS):
+        c2 = 1 - mpf(n) ** 2
+        ts = [0.0, 0.5, 1.0] + [double_theta((1 + mpf(t)) * c2) for t in CRITICAL_T]
+        indices.append(("critical-%d" % i, {"eta": n, "kappa": 0.0}, mpf(n), mpf(0), ts))
+    for i, (n, k) in enumerate(SMALL):
+        ts = [t for t in SMALL_THETAS if k > 0 or abs(mp.sin(mpf(t)) - n) > n / 2]
+        indices.append(("small-%d" % i, {"eta": n, "kappa": k}, mpf(n), mpf(k), ts))
 
-print("case_id,curve_json,theta,value")
-for label, params, n, k, thetas in indices:
-    f0 = fresnel(n, k, 0.0)
-    assert abs(f0 - f0_closed(n, k)) <= mpf("1e-100") * f0_closed(n, k), label
-    curves = [("exact", thetas, lambda t: fresnel(n, k, t)),
-              ("schlick", thetas, lambda t: f0 + (1 - f0) * (1 - mp.cos(mpf(t))) ** 5),
-              ("normalized", [t for t in thetas if t >= NORMALIZED_MIN_THETA], lambda t: (fresnel(n, k, t) - f0) / (1 - f0))]
-    for model, ts, value in curves:
-        cj = json.dumps({"fresnel": model, **params}, separators=(",", ":")).replace('"', '""')
-        for m, t in enumerate(ts):
-            print('fn-%s-%s-%02d,"%s",%s,%s' % (model, label, m, cj, repr(t), fmt(value(t))))
+    print("case_id,curve_json,theta,value")
+    for label, params, n, k, thetas in indices:
+        f0 = fresnel(n, k, 0.0)
+        assert abs(f0 - f0_closed(n, k)) <= mpf("1e-100") * f0_closed(n, k), label
+        curves = [("exact", thetas, lambda t: fresnel(n, k, t)),
+                  ("schlick", thetas, lambda t: f0 + (1 - f0) * (1 - mp.cos(mpf(t))) ** 5),
+                  ("normalized", thetas, lambda t: (fresnel(n, k, t) - f0) / (1 - f0))]
+        for model, ts, value in curves:
+            cj = json.dumps({"fresnel": model, **params}, separators=(",", ":")).replace('"', '""')
+            for m, t in enumerate(ts):
+                print('fn-%s-%s-%02d,"%s",%s,%s' % (model, label, m, cj, repr(t), fmt(value(t))))
+
+
+if __name__ == "__main__":
+    main()

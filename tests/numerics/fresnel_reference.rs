@@ -1,12 +1,14 @@
 //! Fresnel against the reference files of tests/data/reference (see its README.md): exact, Gulbrandsen
 //! and Schlick curves from mpmath at 50 digits, and the Belcour–Bati–Barla basis, coefficients and
-//! spectrum from numpy float64 following the notebook's procedure; and against
-//! tests/data/fresnel_near_one.csv: exact, Schlick and normalized curves near η̃ = 1 (mpmath).
+//! spectrum from numpy float64 following the notebook's procedure; against
+//! tests/data/fresnel_near_one.csv: exact, Schlick and normalized curves near η̃ = 1 (mpmath); and
+//! against tests/data/fresnel_normalized.csv: the normalized curve from θ = 1e-12 to π/2 (mpmath).
 
+use std::collections::BTreeMap;
 use std::time::Instant;
 
 use crate::common::{csv_records, number};
-use ndfplot::fresnel::{Fresnel, Index, Ior, SchlickF0, basis};
+use ndfplot::fresnel::{Fresnel, Incidence, Index, Ior, SchlickF0, basis, exact};
 use ndfplot::math::tolerance::{REL_TOL_FRESNEL, floored_relative_difference};
 /// The basis b₀…b₃, the coefficients c₀…c₃, `l2` and the normalized spectrum, absolute: a different
 /// SVD routine moves them by ~2e-14 (reference/README.md), given training rows rounded like numpy's
@@ -68,11 +70,53 @@ fn visible_curves_match_mpmath() {
 
 #[test]
 fn curves_near_index_one_match_mpmath() {
-    let worst = check_curves("tests/data/fresnel_near_one.csv", 1087);
+    let worst = check_curves("tests/data/fresnel_near_one.csv", 1224);
     println!(
         "fresnel_near_one: max relative error {:e} ({})",
         worst.0, worst.1
     );
+}
+
+/// The normalized curve of a `fresnel_normalized.csv` row at θ: through the curve model, or for
+/// the basis training set's η < 0 row, which the model refuses, `exact::normalized_reflectance`.
+fn normalized_value(json: &str, theta: f64) -> f64 {
+    let value: serde_json::Value = serde_json::from_str(json).expect("curve JSON");
+    let param = |key: &str| value.get(key).and_then(serde_json::Value::as_f64);
+    match (param("eta"), param("kappa")) {
+        (Some(eta), Some(kappa)) if eta < 0.0 => {
+            exact::normalized_reflectance(Incidence::from_theta(theta), Index::new(eta, kappa))
+        }
+        _ => curve(json).eval(theta),
+    }
+}
+
+#[test]
+fn normalized_curve_matches_mpmath_down_to_tiny_angles() {
+    let rows = csv_records("tests/data/fresnel_normalized.csv");
+    assert_eq!(rows.len(), 1357);
+    // Worst relative error and its case, per regime (the case id's second field).
+    let mut worst: BTreeMap<String, (f64, String)> = BTreeMap::new();
+    for row in &rows {
+        let (theta, expected) = (number(row, 2), number(row, 3));
+        let value = normalized_value(&row[1], theta);
+        let err = floored_relative_difference(value, expected);
+        assert!(
+            err <= REL_TOL_FRESNEL,
+            "{}: θ = {theta}: {value} vs {expected} (error {err:e})",
+            &row[0]
+        );
+        let regime = row[0]
+            .strip_prefix("nz-")
+            .and_then(|id| id.rsplitn(3, '-').nth(2))
+            .expect("case id nz-<regime>-<index>-<theta>");
+        let entry = worst.entry(regime.to_string()).or_default();
+        if err >= entry.0 {
+            *entry = (err, row[0].to_string());
+        }
+    }
+    for (regime, (err, case)) in &worst {
+        println!("fresnel_normalized {regime}: max relative error {err:e} ({case})");
+    }
 }
 
 #[test]
