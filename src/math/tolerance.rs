@@ -17,7 +17,7 @@ pub const REL_TOL_TROWBRIDGE_REITZ: f64 = 1e-13;
 pub const REL_TOL_NDF: f64 = 1e-12;
 
 /// Relative error allowed for exact Fresnel values and the curves built on it (Schlick's F₀ from an
-/// index, the normalized curve away from θ = 0): the cancellation-free forms of `fresnel::exact` take a
+/// index, the normalized curve (F − F₀)/(1 − F₀) at every angle): the cancellation-free forms of `fresnel::exact` take a
 /// complex square root and a few products and quotients, ~1e-15 in practice, also near η̃ = 1.
 pub const REL_TOL_FRESNEL: f64 = 1e-13;
 
