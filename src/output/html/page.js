@@ -424,7 +424,10 @@
         for (const [k, v] of [["x1", 1], ["y1", 5], ["x2", 29], ["y2", 5], ["stroke", s.style.colour], ["stroke-width", 1.5 * s.style.width]]) line.setAttribute(k, v);
         if (s.style.dash !== "solid") line.setAttribute("stroke-dasharray", dashes[s.style.dash].map((d) => d * s.style.width).join(" "));
         svg.append(line);
-        item.append(svg, mathNode(s.label));
+        // One flex item for the whole label, so its sub- and superscripts sit against their base.
+        const label = document.createElement("span");
+        label.append(mathNode(s.label));
+        item.append(svg, label);
         return item;
       })
     );
