@@ -84,12 +84,7 @@ impl Plan {
 /// are judged at the finer of the SVG's and the PNG's pixel sizes whichever formats are asked
 /// for, so the requested formats never change a value written.
 pub fn plan(scenes: &[Scene], outputs: Outputs) -> Plan {
-    let mut planner = Planner {
-        jobs: Vec::new(),
-        frames: Vec::new(),
-        index: HashMap::new(),
-        contexts: HashMap::new(),
-    };
+    let mut planner = Planner::default();
     let mut feeds_for = |pick: fn(Sampling) -> Sampling| -> Feeds {
         scenes
             .iter()
@@ -112,6 +107,7 @@ pub fn plan(scenes: &[Scene], outputs: Outputs) -> Plan {
 }
 
 /// Interns jobs and frames by a key naming everything their result depends on.
+#[derive(Default)]
 struct Planner {
     jobs: Vec<Job>,
     frames: Vec<Frame>,
@@ -216,4 +212,27 @@ fn frame(scene: &Scene, panel: &ScenePanel, tolerance_px: f64) -> Frame {
         (panel.axes.y_scale, panel.axes.y_range),
         tolerance_px,
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::source::{CanvasOverride, load_scenes};
+
+    /// A panel of n adaptive curves costs keys of O(n) bytes in all: each names its panel's
+    /// context by number (it held the JSON of every curve of the panel, O(n²) bytes: 4 GB at the
+    /// 10 000-curve cap).
+    #[test]
+    fn job_keys_grow_linearly_with_the_curves_of_a_panel() {
+        let spec = r#"{"id": "many", "panels": [{"curves": [
+            {"ndf": "beckmann", "alpha_b": {"linspace": [0.05, 1.0, 2000]}}]}]}"#;
+        let sources = [("many.json".to_owned(), spec.to_owned(), None)];
+        let scenes = crate::resolve::scenes(load_scenes(&sources, CanvasOverride::default())).unwrap();
+        let mut planner = Planner::default();
+        let feed = planner.panel(&scenes[0], 0, Sampling::Adaptive { tolerance_px: 0.25 });
+        assert_eq!(feed.len(), 2000);
+        let key_bytes: usize = planner.index.keys().map(String::len).sum();
+        assert!(key_bytes < 2000 * 200, "{key_bytes} bytes of keys");
+        assert_eq!(planner.contexts.len(), 1);
+    }
 }
