@@ -5,7 +5,7 @@
 //! Serialization only: nothing here evaluates a curve outside its test.
 
 use crate::domain::Param;
-use crate::fresnel::{INDEX_MAX, ETA_MIN, basis};
+use crate::fresnel::{self, basis};
 use crate::ndf::Family;
 use serde_json::{Map, Value, json};
 
@@ -35,8 +35,8 @@ fn param_domain(param: &Param) -> Value {
 }
 
 /// Every model's parameter domains, `{model: {param: domain}}`: the NDF families' from the registry,
-/// the Fresnel models' as `Ior` and `Fresnel` validate them (η ∈ [1e-150, 1e150], κ ∈ [0, 1e150],
-/// r ∈ [0, 1), g and f0 ∈ [0, 1]; Lazanyi's `a` depends on f0 and is checked by the page itself).
+/// the Fresnel models' from the constants `Ior` and `Fresnel` validate with (`fresnel::ETA`, …;
+/// Lazanyi's `a` depends on f0 and is checked by the page itself).
 pub fn domains() -> Value {
     let mut all = Map::new();
     for family in Family::ALL {
@@ -47,14 +47,25 @@ pub fn domains() -> Value {
             .collect();
         all.insert(family.name().to_string(), Value::Object(params));
     }
-    let ior = json!({
-        "eta": domain(ETA_MIN, true, INDEX_MAX, true, "> 0, in [1e-150, 1e150]".into()),
-        "kappa": domain(0.0, true, INDEX_MAX, true, "≥ 0, in [0, 1e150]".into()),
-        "r": domain(0.0, true, 1.0, false, "in [0, 1)".into()),
-        "g": domain(0.0, true, 1.0, true, "in [0, 1]".into()),
-        "f0": domain(0.0, true, 1.0, true, "in [0, 1]".into()),
-    });
-    for model in ["exact", "schlick", "lazanyi", "lazanyi_term", "belcour", "basis"] {
+    let ior: Map<String, Value> = [
+        fresnel::ETA,
+        fresnel::KAPPA,
+        fresnel::REFLECTIVITY,
+        fresnel::EDGE_TINT,
+        fresnel::F0,
+    ]
+    .iter()
+    .map(|p| (p.name.to_string(), param_domain(p)))
+    .collect();
+    let ior = Value::Object(ior);
+    for model in [
+        "exact",
+        "schlick",
+        "lazanyi",
+        "lazanyi_term",
+        "belcour",
+        "basis",
+    ] {
         all.insert(model.to_string(), ior.clone());
     }
     Value::Object(all)
@@ -117,7 +128,11 @@ process.stdout.write(JSON.stringify(out));
             (false, v) if v == 0.0 => 1e-300,
             (false, v) => v.next_up(),
         };
-        let hi = if param.max.is_open() { 1e300 } else { param.max.value };
+        let hi = if param.max.is_open() {
+            1e300
+        } else {
+            param.max.value
+        };
         let mut values = spread(lo, hi, 17);
         values.extend([0.0212, 0.0905, 0.3, 1.0, 1.75, 2.0, 23.5, 1000.0]);
         if param.max.is_open() {
@@ -154,7 +169,22 @@ process.stdout.write(JSON.stringify(out));
     /// Every Fresnel model over its domain: indices from 1e-150 to 1e150 (η near 1 included),
     /// Gulbrandsen's (r, g) with and without the remap, Schlick and Lazanyi over F₀ and a.
     fn fresnel_cases() -> Vec<Curve> {
-        let etas = [1e-150, 1e-3, 0.5, 0.99, 1.0, 1.0 + 1e-9, 1.01, 1.1, 1.5, 2.0, 3.0, 10.0, 1e3, 1e150];
+        let etas = [
+            1e-150,
+            1e-3,
+            0.5,
+            0.99,
+            1.0,
+            1.0 + 1e-9,
+            1.01,
+            1.1,
+            1.5,
+            2.0,
+            3.0,
+            10.0,
+            1e3,
+            1e150,
+        ];
         let kappas = [0.0, 1e-9, 0.25, 1.0, 2.86, 10.0, 1e150];
         let rs = [0.0, 1e-8, 0.04, 0.5, 0.9, 0.999];
         let gs = [0.0, 1e-6, 0.5, 1.0];
@@ -207,8 +237,11 @@ process.stdout.write(JSON.stringify(out));
 
     #[test]
     fn the_page_maths_agrees_with_eval_over_every_domain() {
-        if !matches!(Command::new("node").arg("--version").output(), Ok(out) if out.status.success()) {
-            eprintln!("SKIPPED the_page_maths_agrees_with_eval_over_every_domain: node is not installed");
+        if !matches!(Command::new("node").arg("--version").output(), Ok(out) if out.status.success())
+        {
+            eprintln!(
+                "SKIPPED the_page_maths_agrees_with_eval_over_every_domain: node is not installed"
+            );
             return;
         }
         let curves: Vec<Curve> = ndf_cases().into_iter().chain(fresnel_cases()).collect();
@@ -224,15 +257,28 @@ process.stdout.write(JSON.stringify(out));
         let (input_path, script_path) = (dir.join("input.json"), dir.join("run.js"));
         std::fs::write(&input_path, input.to_string()).unwrap();
         std::fs::write(&script_path, format!("{SCRIPT}\n{HARNESS}")).unwrap();
-        let out = Command::new("node").arg(&script_path).arg(&input_path).output().unwrap();
+        let out = Command::new("node")
+            .arg(&script_path)
+            .arg(&input_path)
+            .output()
+            .unwrap();
         std::fs::remove_dir_all(&dir).ok();
-        assert!(out.status.success(), "node: {}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "node: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let results: Vec<Value> = serde_json::from_slice(&out.stdout).unwrap();
 
         let mut worst: BTreeMap<String, (f64, String)> = BTreeMap::new();
         for (curve, result) in curves.iter().zip(&results) {
             let canonical = curve.canonical_json();
-            assert_eq!(result["canonical"], canonical.as_str(), "{:?}", result.get("problem"));
+            assert_eq!(
+                result["canonical"],
+                canonical.as_str(),
+                "{:?}",
+                result.get("problem")
+            );
             let values = result["values"].as_array().unwrap();
             let model = canonical.split('"').nth(3).unwrap().to_string();
             for (&theta, value) in thetas.iter().zip(values) {
