@@ -68,9 +68,13 @@ fn main() {
     }
 
     let mut catalogue = Command::new(ndfplot);
-    catalogue.args(["render", "-q", "-o"]).arg(dir.join("catalogue"));
+    catalogue
+        .args(["render", "-q", "-o"])
+        .arg(dir.join("catalogue"));
     let catalogue_median = interleaved_medians(&mut [("catalogue", catalogue)])[0];
-    println!("ndfplot, whole catalogue (svg, png, csv, html): median {catalogue_median:.3} s of {RUNS} runs");
+    println!(
+        "ndfplot, whole catalogue (svg, png, csv, html): median {catalogue_median:.3} s of {RUNS} runs"
+    );
     std::fs::remove_dir_all(&dir).ok();
 }
 

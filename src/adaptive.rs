@@ -14,7 +14,7 @@
 //! a third is 8/9 of the largest, so probes are held to 8/9 of the tolerance.
 
 use crate::layout;
-use crate::look::{PanelKind, XUnit, Scale};
+use crate::look::{PanelKind, Scale, XUnit};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 

@@ -45,7 +45,9 @@ impl fmt::Display for GridError {
 /// numpy's `linspace(start, stop, count)`: θ_i = start + i·(stop − start)/(count − 1) for
 /// i < count − 1 and the last value exactly `stop`; `count = 1` gives `[start]`.
 pub fn linspace(start: f64, stop: f64, count: usize) -> Vec<f64> {
-    (0..count).map(|i| linspace_at(start, stop, count, i)).collect()
+    (0..count)
+        .map(|i| linspace_at(start, stop, count, i))
+        .collect()
 }
 
 /// The `i`-th of [`linspace`]`(start, stop, count)` (`i` < `count`) without the others:

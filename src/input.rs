@@ -46,7 +46,9 @@ pub fn read_stdin() -> std::io::Result<String> {
         let (line, column) = line_column(&e.as_bytes()[..e.utf8_error().valid_up_to()]);
         std::io::Error::new(
             std::io::ErrorKind::InvalidData,
-            format!("{line}:{column}: not UTF-8 text (a byte sequence that is not UTF-8 starts here)"),
+            format!(
+                "{line}:{column}: not UTF-8 text (a byte sequence that is not UTF-8 starts here)"
+            ),
         )
     })
 }

@@ -227,7 +227,8 @@ mod tests {
         let spec = r#"{"id": "many", "panels": [{"curves": [
             {"ndf": "beckmann", "alpha_b": {"linspace": [0.05, 1.0, 2000]}}]}]}"#;
         let sources = [("many.json".to_owned(), spec.to_owned(), None)];
-        let scenes = crate::resolve::scenes(load_scenes(&sources, CanvasOverride::default())).unwrap();
+        let scenes =
+            crate::resolve::scenes(load_scenes(&sources, CanvasOverride::default())).unwrap();
         let mut planner = Planner::default();
         let feed = planner.panel(&scenes[0], 0, Sampling::Adaptive { tolerance_px: 0.25 });
         assert_eq!(feed.len(), 2000);

@@ -89,7 +89,7 @@ pub fn evaluate_all(plan: &Plan) -> std::result::Result<Vec<Evaluated>, JobError
                     z: data.z.map(Arc::new),
                     grid: data.grid,
                     evaluations: 0,
-                            })
+                })
             }
             Job::Adaptive { curve, frame } => {
                 let refined = initial(curve, &plan.frames[*frame].theta_range);
@@ -188,9 +188,7 @@ fn pixel_maps(frames: &[Frame], stages: &[Stage]) -> Vec<PixelMap> {
 /// A non-finite value is an error, never output.
 fn check_finite(job: &Job, evaluated: Evaluated) -> Result<Evaluated> {
     let name = match job {
-        Job::Uniform { curve, .. } | Job::Adaptive { curve, .. } => {
-            curve.canonical_json()
-        }
+        Job::Uniform { curve, .. } | Job::Adaptive { curve, .. } => curve.canonical_json(),
         Job::Data(dataset) => dataset.canonical_json(),
     };
     let finite_z = evaluated

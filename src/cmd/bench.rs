@@ -8,7 +8,7 @@ use crate::bench::{self, Row};
 use crate::error::{Error, Result};
 use crate::figure::{Figure, Panel, Series};
 use crate::look::{
-    Axes, Canvas, Dash, Mark, Rgb, Style, Theme, TickChoice, XUnit, Scale, literal, shade,
+    Axes, Canvas, Dash, Mark, Rgb, Scale, Style, Theme, TickChoice, XUnit, literal, shade,
 };
 use crate::ndf::Family;
 use crate::output::{plot, write};

@@ -213,7 +213,8 @@ mod tests {
     use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
     fn radians(text: &str, unit: AngleUnit) -> Result<Vec<f64>> {
-        parse_theta_list(text, unit).map(|list| (0..list.len()).map(|i| list.get(i).radians).collect())
+        parse_theta_list(text, unit)
+            .map(|list| (0..list.len()).map(|i| list.get(i).radians).collect())
     }
 
     fn curves(texts: &[&str]) -> Vec<Curve> {
@@ -280,7 +281,13 @@ mod tests {
     #[test]
     fn spaced_lists_are_numpy_linspace_without_being_stored() {
         let list = parse_theta_list("0.1:pi/2:10000000", AngleUnit::Radians).unwrap();
-        assert!(matches!(list, ThetaList::Spaced { count: 10_000_000, .. }));
+        assert!(matches!(
+            list,
+            ThetaList::Spaced {
+                count: 10_000_000,
+                ..
+            }
+        ));
         let small = parse_theta_list("0.1:1.5:7", AngleUnit::Radians).unwrap();
         let stored = linspace(0.1, 1.5, 7);
         assert!((0..7).all(|i| small.get(i).given == stored[i]));
@@ -322,7 +329,12 @@ mod tests {
             for (row, &theta) in rows.iter().zip(&grid) {
                 let fields: Vec<f64> = row.split(',').map(|f| f.parse().unwrap()).collect();
                 assert_eq!(fields[0], theta);
-                assert!(fields[1..].iter().zip(curves).all(|(&v, c)| v == c.eval(theta)));
+                assert!(
+                    fields[1..]
+                        .iter()
+                        .zip(curves)
+                        .all(|(&v, c)| v == c.eval(theta))
+                );
             }
         }
     }

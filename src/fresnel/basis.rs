@@ -176,7 +176,10 @@ fn parse_stored(text: &str) -> Basis {
             _ => panic!("unexpected line in the stored basis: {line:.40}"),
         }
     }
-    assert!(functions.iter().all(|f| f.len() == GRID_SIZE), "1000 values per function");
+    assert!(
+        functions.iter().all(|f| f.len() == GRID_SIZE),
+        "1000 values per function"
+    );
     Basis {
         cos_theta: grid(),
         functions,
@@ -191,9 +194,15 @@ fn stored_text(basis: &Basis) -> String {
         "# The Belcour–Bati–Barla Fresnel basis b1…b3 on c_i = linspace(0, 1, 1000) and its critical \
          nodes, as src/fresnel/basis/compute.rs computes it; shortest round-trip doubles.\n",
     );
-    text.push_str(&format!("critical {} {}\n", basis.critical[0], basis.critical[1]));
+    text.push_str(&format!(
+        "critical {} {}\n",
+        basis.critical[0], basis.critical[1]
+    ));
     for k in 1..4 {
-        let values: Vec<String> = basis.functions[k].iter().map(|v| format!("{v:?}")).collect();
+        let values: Vec<String> = basis.functions[k]
+            .iter()
+            .map(|v| format!("{v:?}"))
+            .collect();
         text.push_str(&format!("b{k} {}\n", values.join(" ")));
     }
     text

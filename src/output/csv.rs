@@ -115,7 +115,11 @@ struct FormattedGrid {
 impl FormattedGrid {
     /// Formats `values` unless they are (bit for bit) the ones already formatted.
     fn format(&mut self, values: impl Iterator<Item = f64> + Clone) {
-        if values.clone().map(f64::to_bits).eq(self.values.iter().map(|v| v.to_bits())) {
+        if values
+            .clone()
+            .map(f64::to_bits)
+            .eq(self.values.iter().map(|v| v.to_bits()))
+        {
             return;
         }
         self.values.clear();
@@ -143,7 +147,10 @@ pub struct QuotedFields {
 
 /// `fields` joined by commas, each quoted as [`Table::text`] quotes it.
 pub fn quoted_fields(fields: &[&str]) -> QuotedFields {
-    let quoted: Vec<Vec<u8>> = fields.iter().map(|f| quoted(f.as_bytes()).into_owned()).collect();
+    let quoted: Vec<Vec<u8>> = fields
+        .iter()
+        .map(|f| quoted(f.as_bytes()).into_owned())
+        .collect();
     QuotedFields {
         text: quoted.join(&b","[..]),
         count: fields.len(),
@@ -153,7 +160,10 @@ pub fn quoted_fields(fields: &[&str]) -> QuotedFields {
 /// `field` as a CSV field: as is, or in quotes with its quotes doubled when it holds a comma, a
 /// quote, `\r` or `\n`.
 fn quoted(field: &[u8]) -> std::borrow::Cow<'_, [u8]> {
-    if !field.iter().any(|b| matches!(b, b',' | b'"' | b'\r' | b'\n')) {
+    if !field
+        .iter()
+        .any(|b| matches!(b, b',' | b'"' | b'\r' | b'\n'))
+    {
         return std::borrow::Cow::Borrowed(field);
     }
     let mut out = Vec::with_capacity(field.len() + 8);
@@ -220,12 +230,24 @@ mod tests {
     #[test]
     fn text_fields_are_quoted_as_the_csv_crate_quotes_them() {
         let fields = [
-            "", "plain", "a,b", "say \"hi\"", "line\nbreak", "cr\rhere", " spaced ", "{\"ndf\":\"phong\"}",
-            "θ_deg", "'single'", "tab\there", ";",
+            "",
+            "plain",
+            "a,b",
+            "say \"hi\"",
+            "line\nbreak",
+            "cr\rhere",
+            " spaced ",
+            "{\"ndf\":\"phong\"}",
+            "θ_deg",
+            "'single'",
+            "tab\there",
+            ";",
         ];
         for a in fields {
             for b in fields {
-                let mut theirs = csv::WriterBuilder::new().flexible(true).from_writer(Vec::new());
+                let mut theirs = csv::WriterBuilder::new()
+                    .flexible(true)
+                    .from_writer(Vec::new());
                 theirs.write_record([a, b]).unwrap();
                 theirs.write_record([a]).unwrap();
                 let theirs = theirs.into_inner().unwrap();

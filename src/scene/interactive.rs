@@ -19,7 +19,7 @@
 //! declaration, the references and the bindings; it evaluates nothing.
 
 use super::reader::{Object, Reader};
-use super::{ScenePanel, SceneCurve, Spec, data, read_curve_entry};
+use super::{SceneCurve, ScenePanel, Spec, data, read_curve_entry};
 use crate::curve::{CurveSpec, Label, Model, symbol};
 use crate::fresnel::Fresnel;
 use crate::json::{Node, Number, Value};
@@ -162,7 +162,10 @@ fn read_slider(reader: &mut Reader, node: &Node, path: &str) -> Option<Slider> {
     };
     let label = reader.text(&object, "label");
     if object.get("range").is_none() {
-        reader.report(path, "missing \"range\": [min, max], the values the slider spans");
+        reader.report(
+            path,
+            "missing \"range\": [min, max], the values the slider spans",
+        );
     }
     let (min, max) = reader.interval(&object, "range", f64::is_finite, "both finite")?;
     let scale = match reader.choice(&object, "scale", SCALES) {
@@ -418,9 +421,17 @@ fn read_entry(reader: &mut Reader, item: &Node, path: &str, sliders: &[Slider]) 
             _ => None,
         };
         if let Some(slider) = slider_of(value, sliders) {
-            bindings.push(Binding { param: key.clone(), slider, from_beckmann: false });
+            bindings.push(Binding {
+                param: key.clone(),
+                slider,
+                from_beckmann: false,
+            });
         } else if let Some(slider) = from_beckmann.and_then(|n| slider_of(n, sliders)) {
-            bindings.push(Binding { param: key.clone(), slider, from_beckmann: true });
+            bindings.push(Binding {
+                param: key.clone(),
+                slider,
+                from_beckmann: true,
+            });
         } else if mentions_slider(value) {
             reader.report(
                 join_key(path, key),
@@ -433,7 +444,10 @@ fn read_entry(reader: &mut Reader, item: &Node, path: &str, sliders: &[Slider]) 
     let [start] = &curves[..] else {
         reader.report(
             path,
-            format!("an interactive entry gives one curve (got {})", curves.len()),
+            format!(
+                "an interactive entry gives one curve (got {})",
+                curves.len()
+            ),
         );
         return None;
     };
@@ -474,9 +488,7 @@ fn read_at(
     sliders: &[Slider],
     value_of: &dyn Fn(usize) -> f64,
 ) -> Option<Vec<SceneCurve<Spec>>> {
-    let resolved = substitute(item, path, &mut |r, _| {
-        slider_of(r, sliders).map(value_of)
-    });
+    let resolved = substitute(item, path, &mut |r, _| slider_of(r, sliders).map(value_of));
     let mut scratch = Reader {
         data: reader.data.clone(),
         ..Reader::default()
@@ -492,15 +504,23 @@ fn read_at(
         .enumerate()
         .map(|(s, slider)| format!("{} = {:?}", slider.name, value_of(s)))
         .collect();
-    reader.problems.extend(scratch.problems.into_iter().map(|p| {
-        Problem::new(p.at, format!("{} (at slider {})", p.message, at.join(", ")))
-    }));
+    reader.problems.extend(
+        scratch
+            .problems
+            .into_iter()
+            .map(|p| Problem::new(p.at, format!("{} (at slider {})", p.message, at.join(", ")))),
+    );
     None
 }
 
 /// Checks that the page can evaluate a slider-driven curve (an NDF, or a Fresnel model of
 /// `maths.js`, given by its parameters) and that every bound parameter is one of its members.
-fn check_live(reader: &mut Reader, curve: &SceneCurve<Spec>, bindings: &[Binding], path: &str) -> Option<()> {
+fn check_live(
+    reader: &mut Reader,
+    curve: &SceneCurve<Spec>,
+    bindings: &[Binding],
+    path: &str,
+) -> Option<()> {
     let live = match &curve.curve {
         CurveSpec::Ready(crate::curve::Curve::Ndf(_)) | CurveSpec::Belcour(_) => true,
         CurveSpec::Ready(crate::curve::Curve::Fresnel(f)) => !matches!(f, Fresnel::Normalized(_)),
@@ -509,7 +529,10 @@ fn check_live(reader: &mut Reader, curve: &SceneCurve<Spec>, bindings: &[Binding
     if !live {
         reader.report(
             path,
-            format!("a live page evaluates NDF and Fresnel curves given by their parameters (got {})", curve.curve.canonical_json()),
+            format!(
+                "a live page evaluates NDF and Fresnel curves given by their parameters (got {})",
+                curve.curve.canonical_json()
+            ),
         );
         return None;
     }
@@ -530,14 +553,21 @@ fn check_live(reader: &mut Reader, curve: &SceneCurve<Spec>, bindings: &[Binding
 /// written, or the automatic label of the static figure with every written parameter's value
 /// replaced by its placeholder: the family prefix (an NDF's) or model name (a Fresnel curve's),
 /// then `symbol = {param}` per parameter in document order, then a Belcour reconstruction's L2.
-fn label_template(curve: &SceneCurve<Spec>, members: &[(String, Node)], sliders: &[Slider]) -> String {
+fn label_template(
+    curve: &SceneCurve<Spec>,
+    members: &[(String, Node)],
+    sliders: &[Slider],
+) -> String {
     if let Label::Template { template, .. } = &curve.label {
         return template.clone();
     }
     let canonical = curve.curve.canonical_json();
     let parts: Vec<String> = members
         .iter()
-        .filter(|(key, _)| canonical.contains(&format!("\"{key}\":")) && !canonical.starts_with(&format!("{{\"{key}\":")))
+        .filter(|(key, _)| {
+            canonical.contains(&format!("\"{key}\":"))
+                && !canonical.starts_with(&format!("{{\"{key}\":"))
+        })
         .map(|(key, node)| {
             let value = format!("{} = {{{key}}}", symbol(key));
             match &node.value {
@@ -560,8 +590,14 @@ fn label_template(curve: &SceneCurve<Spec>, members: &[(String, Node)], sliders:
             None => text,
         },
         Model::Fresnel(model) => {
-            let l2 = if matches!(curve.curve, CurveSpec::Belcour(_)) { ", L2 = {l2}" } else { "" };
-            format!("{} {text}{l2}", crate::look::literal(model.name())).trim_end().to_string()
+            let l2 = if matches!(curve.curve, CurveSpec::Belcour(_)) {
+                ", L2 = {l2}"
+            } else {
+                ""
+            };
+            format!("{} {text}{l2}", crate::look::literal(model.name()))
+                .trim_end()
+                .to_string()
         }
     }
 }
@@ -601,13 +637,33 @@ mod tests {
             r#"{"ndf":"beckmann","alpha_b":0.3}"#
         );
         let interactive = parsed.interactive.unwrap();
-        let [a, p] = &interactive.sliders[..] else { panic!() };
-        assert_eq!((a.min, a.max, a.start, a.scale), (0.05, 1.0, 0.3, Scale::Log));
+        let [a, p] = &interactive.sliders[..] else {
+            panic!()
+        };
+        assert_eq!(
+            (a.min, a.max, a.start, a.scale),
+            (0.05, 1.0, 0.3, Scale::Log)
+        );
         assert_eq!((p.start, p.scale), (0.0, Scale::Linear));
-        let labels: Vec<&str> = interactive.entries.iter().map(|e| e.label.as_str()).collect();
-        assert_eq!(labels, ["α_b = {alpha_b}", "α_p = {alpha_p} (α_b = {=a})", "α_{tr} = {alpha_tr}", "P {alpha_p}"]);
+        let labels: Vec<&str> = interactive
+            .entries
+            .iter()
+            .map(|e| e.label.as_str())
+            .collect();
+        assert_eq!(
+            labels,
+            [
+                "α_b = {alpha_b}",
+                "α_p = {alpha_p} (α_b = {=a})",
+                "α_{tr} = {alpha_tr}",
+                "P {alpha_p}"
+            ]
+        );
         let phong = &interactive.entries[1].bindings[0];
-        assert_eq!((phong.param.as_str(), phong.slider, phong.from_beckmann), ("alpha_p", 0, true));
+        assert_eq!(
+            (phong.param.as_str(), phong.slider, phong.from_beckmann),
+            ("alpha_p", 0, true)
+        );
         assert!(interactive.entries[2].bindings.is_empty());
     }
 

@@ -20,8 +20,8 @@ use crate::dataset::Dataset;
 use crate::json::{Node, Value};
 use crate::layout;
 use crate::look::{
-    Axes, Canvas, Corner, Dash, LegendPlace, Mark, PanelKind, Rgb, Style, Theme, TickChoice, XUnit,
-    Scale, shade,
+    Axes, Canvas, Corner, Dash, LegendPlace, Mark, PanelKind, Rgb, Scale, Style, Theme, TickChoice,
+    XUnit, shade,
 };
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::transform::Transform;
@@ -817,25 +817,41 @@ fn read_x_range(
         XUnit::Degrees => range(
             reader,
             &|v| above(0.0)(v) && v <= 90.0,
-            if log { "degrees within (0, 90] on a log axis" } else { "degrees within [0, 90]" },
+            if log {
+                "degrees within (0, 90] on a log axis"
+            } else {
+                "degrees within [0, 90]"
+            },
         )
         .map(|(a, b)| (a.to_radians(), b.to_radians().min(FRAC_PI_2))),
         XUnit::Radians => range(
             reader,
             &|v| above(0.0)(v) && v <= FRAC_PI_2,
-            if log { "radians within (0, π/2] on a log axis" } else { "radians within [0, π/2]" },
+            if log {
+                "radians within (0, π/2] on a log axis"
+            } else {
+                "radians within [0, π/2]"
+            },
         ),
         XUnit::Slope => range(
             reader,
             &|v| v.is_finite() && above(0.0)(v),
-            if log { "slopes tan θ, finite and > 0 on a log axis" } else { "slopes tan θ, finite and ≥ 0" },
+            if log {
+                "slopes tan θ, finite and > 0 on a log axis"
+            } else {
+                "slopes tan θ, finite and ≥ 0"
+            },
         )
         .or((!log).then_some(DEFAULT_SLOPE_RANGE))
         .map(|(a, b)| (a.atan(), b.atan())),
         XUnit::Plain => range(
             reader,
             &|v| v.is_finite() && (!log || v > 0.0),
-            if log { "finite and > 0 on a log axis" } else { "finite" },
+            if log {
+                "finite and > 0 on a log axis"
+            } else {
+                "finite"
+            },
         ),
     };
     if let Some(x) = x.filter(|x| log && unit != XUnit::Plain && x.get("range").is_none()) {

@@ -9,8 +9,8 @@
 //! /usr/bin/chromium the browser part prints why it was skipped.
 
 use crate::common::{files_in, ndfplot, render_into, root, scratch};
-use ndfplot::curve::{CurveSpec, parse};
 use ndfplot::curve::Curve;
+use ndfplot::curve::{CurveSpec, parse};
 use ndfplot::fresnel::Fresnel;
 use ndfplot::math::tolerance::floored_relative_difference;
 use ndfplot::output::html::REL_TOL_PAGE;
@@ -51,12 +51,19 @@ const CHECK_SCRIPT: &str = r#"<script>
 
 /// Why the browser cannot run here, if it cannot.
 fn missing_browser() -> Option<String> {
-    (!Path::new(CHROMIUM).exists()).then(|| format!("{CHROMIUM} is not installed (apt-get install chromium)"))
+    (!Path::new(CHROMIUM).exists())
+        .then(|| format!("{CHROMIUM} is not installed (apt-get install chromium)"))
 }
 
 fn chromium(args: &[&str]) -> std::process::Output {
     Command::new(CHROMIUM)
-        .args(["--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars", "--virtual-time-budget=20000"])
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--hide-scrollbars",
+            "--virtual-time-budget=20000",
+        ])
         .args(args)
         .output()
         .unwrap()
@@ -76,7 +83,15 @@ fn eval_curve(canonical: &str) -> Curve {
 fn fit_by_peak(target: &str, fitted: &str, free: &str) -> f64 {
     let fitted: serde_json::Map<String, Value> = serde_json::from_str(fitted).unwrap();
     let family = fitted["ndf"].as_str().unwrap();
-    let mut args = vec!["fit".to_string(), "--target".into(), target.into(), "--family".into(), family.into(), "--by".into(), "peak".into()];
+    let mut args = vec![
+        "fit".to_string(),
+        "--target".into(),
+        target.into(),
+        "--family".into(),
+        family.into(),
+        "--by".into(),
+        "peak".into(),
+    ];
     for (k, v) in &fitted {
         if k != "ndf" && k != free {
             args.extend(["--fix".to_string(), format!("{k}={v}")]);
@@ -84,7 +99,11 @@ fn fit_by_peak(target: &str, fitted: &str, free: &str) -> f64 {
     }
     let args: Vec<&str> = args.iter().map(String::as_str).collect();
     let out = ndfplot(&args);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let line: Value = serde_json::from_slice(&out.stdout).unwrap();
     line[free].as_f64().unwrap()
 }
@@ -109,18 +128,36 @@ fn every_page_draws_values_equal_to_eval_at_every_setting() {
     let check_page = |id: &String| {
         let page = std::fs::read_to_string(dir.join(format!("{id}.html"))).unwrap();
         let checked = dir.join(format!("{id}-check.html"));
-        std::fs::write(&checked, page.replace("</body>", &format!("{CHECK_SCRIPT}</body>"))).unwrap();
+        std::fs::write(
+            &checked,
+            page.replace("</body>", &format!("{CHECK_SCRIPT}</body>")),
+        )
+        .unwrap();
         let out = chromium(&["--dump-dom", checked.to_str().unwrap()]);
         let dom = String::from_utf8_lossy(&out.stdout);
         let Some((_, rest)) = dom.split_once(r#"<pre id="check">"#) else {
-            panic!("{id}: the check did not run: {}", String::from_utf8_lossy(&out.stderr));
+            panic!(
+                "{id}: the check did not run: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
         };
-        let text = rest.split("</pre>").next().unwrap().replace("&quot;", "\"").replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&");
+        let text = rest
+            .split("</pre>")
+            .next()
+            .unwrap()
+            .replace("&quot;", "\"")
+            .replace("&lt;", "<")
+            .replace("&gt;", ">")
+            .replace("&amp;", "&");
         let states: Vec<Value> = serde_json::from_str(&text).unwrap();
         let mut worst = 0.0f64;
         for state in &states {
             let what = state["what"].as_str().unwrap();
-            assert!(state.get("problem").is_none(), "{id}: {what}: {}", state["problem"]);
+            assert!(
+                state.get("problem").is_none(),
+                "{id}: {what}: {}",
+                state["problem"]
+            );
             for curve in state["current"]["curves"].as_array().unwrap() {
                 let canonical = curve["curve"].as_str().unwrap();
                 let evaluated = eval_curve(canonical);
@@ -132,24 +169,45 @@ fn every_page_draws_values_equal_to_eval_at_every_setting() {
                     let (got, want) = (value.as_f64().unwrap_or(f64::NAN), evaluated.eval(theta));
                     let difference = floored_relative_difference(got, want);
                     worst = worst.max(difference);
-                    assert!(difference <= REL_TOL_PAGE, "{id}: {what}: {canonical} at θ = {theta:?}: page {got:?}, eval {want:?}");
+                    assert!(
+                        difference <= REL_TOL_PAGE,
+                        "{id}: {what}: {canonical} at θ = {theta:?}: page {got:?}, eval {want:?}"
+                    );
                 }
             }
             if what == "peak match" {
                 let curves = state["current"]["curves"].as_array().unwrap();
-                let (target, fitted) = (curves[0]["curve"].as_str().unwrap(), curves[1]["curve"].as_str().unwrap());
-                let fitted_map: serde_json::Map<String, Value> = serde_json::from_str(fitted).unwrap();
+                let (target, fitted) = (
+                    curves[0]["curve"].as_str().unwrap(),
+                    curves[1]["curve"].as_str().unwrap(),
+                );
+                let fitted_map: serde_json::Map<String, Value> =
+                    serde_json::from_str(fitted).unwrap();
                 let free = fitted_map.keys().nth(1).unwrap().clone();
                 let want = fit_by_peak(target, fitted, &free);
                 let got = fitted_map[&free].as_f64().unwrap();
-                assert!(floored_relative_difference(got, want) <= 1e-9, "{id}: page matched {free} = {got}, fit gives {want}");
+                assert!(
+                    floored_relative_difference(got, want) <= 1e-9,
+                    "{id}: page matched {free} = {got}, fit gives {want}"
+                );
             }
         }
-        println!("{id}: {} states, largest page-vs-eval difference {worst:.2e}", states.len());
+        println!(
+            "{id}: {} states, largest page-vs-eval difference {worst:.2e}",
+            states.len()
+        );
         for width in [360, 1280] {
             let shot = shots.join(format!("{id}-{width}.png"));
-            let out = chromium(&[&format!("--window-size={width},900"), &format!("--screenshot={}", shot.display()), dir.join(format!("{id}.html")).to_str().unwrap()]);
-            assert!(shot.exists(), "{id}: no screenshot: {}", String::from_utf8_lossy(&out.stderr));
+            let out = chromium(&[
+                &format!("--window-size={width},900"),
+                &format!("--screenshot={}", shot.display()),
+                dir.join(format!("{id}.html")).to_str().unwrap(),
+            ]);
+            assert!(
+                shot.exists(),
+                "{id}: no screenshot: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
         }
     };
     std::thread::scope(|scope| {
@@ -202,10 +260,15 @@ fn catalogue_pages_are_self_contained_small_and_deterministic() {
         let namespaces = text.matches("http://www.w3.org/2000/svg").count();
         assert_eq!(urls, namespaces, "{name} names a URL");
         // The one reference is the static figure beside the page, shown only without JavaScript.
-        let image = format!(r#"<img id="static" src="{}""#, name.replace(".html", ".png"));
+        let image = format!(
+            r#"<img id="static" src="{}""#,
+            name.replace(".html", ".png")
+        );
         assert!(text.contains(&image), "{name} has no static fallback");
         assert!(
-            text.matches(" src=").count() == 1 && !text.contains("@import") && !text.contains("url("),
+            text.matches(" src=").count() == 1
+                && !text.contains("@import")
+                && !text.contains("url("),
             "{name} loads a resource"
         );
     }

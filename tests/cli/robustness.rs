@@ -764,10 +764,26 @@ fn inputs_over_the_size_cap_are_refused_by_name() {
     let path = big.to_str().unwrap();
     let at_file = format!("@{path}");
     for (args, stdin, source) in [
-        (vec!["render", path, "-o", out.to_str().unwrap()], None, path),
-        (vec!["eval", "--curve", at_file.as_str(), "--theta", "0"], None, path),
-        (vec!["eval", "--curve", "-", "--theta", "0"], Some(&spec), "stdin"),
-        (vec!["render", "-", "-o", out.to_str().unwrap()], Some(&spec), "stdin"),
+        (
+            vec!["render", path, "-o", out.to_str().unwrap()],
+            None,
+            path,
+        ),
+        (
+            vec!["eval", "--curve", at_file.as_str(), "--theta", "0"],
+            None,
+            path,
+        ),
+        (
+            vec!["eval", "--curve", "-", "--theta", "0"],
+            Some(&spec),
+            "stdin",
+        ),
+        (
+            vec!["render", "-", "-o", out.to_str().unwrap()],
+            Some(&spec),
+            "stdin",
+        ),
     ] {
         let result = match stdin {
             Some(bytes) => crate::common::ndfplot_stdin(&args, std::str::from_utf8(bytes).unwrap()),

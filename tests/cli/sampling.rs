@@ -5,7 +5,7 @@
 use crate::common::scratch;
 use ndfplot::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
 use ndfplot::figure::Figure;
-use ndfplot::look::{Dash, PanelKind, Rgb, XUnit, Scale};
+use ndfplot::look::{Dash, PanelKind, Rgb, Scale, XUnit};
 use ndfplot::ndf::Family;
 use ndfplot::output::Format;
 use ndfplot::plan::{Job, Outputs, plan};

@@ -288,8 +288,14 @@ fn parameter_domains_bound_values_and_sweeps_as_the_validator_does() {
             r#"{"ndf": "ggx", "alpha_tr": 0.3, "label": "α = {alpha_tr} ✓ \u00a0😀"}"#,
             true,
         ),
-        (r#"{"ndf": "ggx", "alpha_tr": 0.3, "label": "a\u009fb"}"#, false),
-        (r#"{"ndf": "ggx", "alpha_tr": 0.3, "label": "a\ufffeb"}"#, false),
+        (
+            r#"{"ndf": "ggx", "alpha_tr": 0.3, "label": "a\u009fb"}"#,
+            false,
+        ),
+        (
+            r#"{"ndf": "ggx", "alpha_tr": 0.3, "label": "a\ufffeb"}"#,
+            false,
+        ),
         (
             r#"{"data": "table", "x": [0, 1], "y": [0, 1], "label": "a\u007f"}"#,
             false,

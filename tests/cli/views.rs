@@ -227,5 +227,8 @@ fn the_readme_style_example_is_the_file_and_its_committed_drawing() {
     render_into(&[&root.join("examples/paper-figure.json")], &out, "svg");
     let drawn = std::fs::read(out.join("paper-figure.svg")).unwrap();
     let committed = std::fs::read(root.join("plots/examples/paper-figure.svg")).unwrap();
-    assert!(drawn == committed, "re-render plots/examples (README shows the command)");
+    assert!(
+        drawn == committed,
+        "re-render plots/examples (README shows the command)"
+    );
 }

@@ -312,7 +312,13 @@ mod tests {
 
     #[test]
     fn log_x_axes_tick_at_decades_in_the_axis_unit() {
-        let curve = vec![series("s", RED, 1.0, Dash::Solid, vec![(1e-3, 1.0), (1.0, 0.1)])];
+        let curve = vec![series(
+            "s",
+            RED,
+            1.0,
+            Dash::Solid,
+            vec![(1e-3, 1.0), (1.0, 0.1)],
+        )];
         let mut p = panel(XUnit::Radians, Scale::Linear, curve);
         p.axes.x_scale = Scale::Log;
         p.axes.x_range = Some((1e-3, 1.0));

@@ -556,9 +556,7 @@ pub(super) fn visible_points(
     series
         .points
         .iter()
-        .filter_map(|&(theta, v)| {
-            x_display(theta, &panel.axes).zip(panel.axes.y_scale.display(v))
-        })
+        .filter_map(|&(theta, v)| x_display(theta, &panel.axes).zip(panel.axes.y_scale.display(v)))
         .filter(|&(vx, vy)| (x.lo..=x.hi).contains(&vx) && (y.lo..=y.hi).contains(&vy))
         .collect()
 }
@@ -580,9 +578,7 @@ pub(super) fn visible_bars(
     series
         .points
         .iter()
-        .filter_map(|&(theta, v)| {
-            x_display(theta, &panel.axes).zip(panel.axes.y_scale.display(v))
-        })
+        .filter_map(|&(theta, v)| x_display(theta, &panel.axes).zip(panel.axes.y_scale.display(v)))
         .filter_map(|(centre, top)| {
             let (x0, x1) = (
                 (centre - width / 2.0).max(x.lo),

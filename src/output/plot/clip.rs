@@ -118,7 +118,7 @@ pub(super) fn clip(a: (f64, f64), b: (f64, f64), [x0, x1, y0, y1]: [f64; 4]) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::look::{Dash, XUnit, Scale};
+    use crate::look::{Dash, Scale, XUnit};
     use crate::output::plot::fixtures::{RED, panel, series};
 
     #[test]

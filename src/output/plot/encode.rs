@@ -112,7 +112,11 @@ fn paint_opacity(document: &str) -> String {
         let after = &rest[at + OPACITY.len()..];
         let (value, tail) = after.split_once('"').unwrap_or((after, ""));
         if value != "1" {
-            let paint = if tail.starts_with(r#" stroke=""#) { "stroke" } else { "fill" };
+            let paint = if tail.starts_with(r#" stroke=""#) {
+                "stroke"
+            } else {
+                "fill"
+            };
             out.push_str(&format!(r#" {paint}-opacity="{value}""#));
         }
         rest = tail;

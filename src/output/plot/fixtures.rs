@@ -5,7 +5,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
 use crate::figure::{Figure, Panel, Series};
-use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Style, Theme, XUnit, Scale};
+use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Scale, Style, Theme, XUnit};
 use crate::provenance::Provenance;
 
 /// The spec text the test figures claim to come from.

@@ -203,7 +203,7 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::look::{Dash, XUnit, Scale};
+    use crate::look::{Dash, Scale, XUnit};
     use crate::output::plot::fixtures::{RED, figure, panel, sample, series};
 
     #[test]

@@ -371,7 +371,7 @@ where
 mod tests {
     use super::*;
     use crate::figure::Series;
-    use crate::look::{Dash, Mark, PanelKind, Theme, XUnit, Scale};
+    use crate::look::{Dash, Mark, PanelKind, Scale, Theme, XUnit};
     use crate::output::plot::fixtures::{
         BLACK, BLUE, ORANGE, RED, SPEC, STEEL, decode, draw_png, figure, fresnel_sample, in_3d,
         manifold_edge, manifold_grid, marked, panel, polylines_in, sample, sampled, series,
@@ -499,16 +499,8 @@ mod tests {
                 vec![single.clone()],
             )]),
             figure(vec![panel(XUnit::Degrees, Scale::Log, vec![single])]),
-            figure(vec![panel(
-                XUnit::Degrees,
-                Scale::Log,
-                vec![zeros.clone()],
-            )]),
-            figure(vec![panel(
-                XUnit::Radians,
-                Scale::Linear,
-                vec![zeros, nan],
-            )]),
+            figure(vec![panel(XUnit::Degrees, Scale::Log, vec![zeros.clone()])]),
+            figure(vec![panel(XUnit::Radians, Scale::Linear, vec![zeros, nan])]),
             figure(vec![panel(XUnit::Degrees, Scale::Log, vec![empty])]),
             figure(vec![panel(XUnit::Degrees, Scale::Linear, Vec::new())]),
             figure(vec![clipped]),

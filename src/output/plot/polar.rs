@@ -26,7 +26,7 @@ use super::theme::Look;
 use super::{PlotError, draw_err};
 use crate::figure::Panel;
 use crate::layout::AXIS_LABEL_EM;
-use crate::look::{Mark, XUnit, Scale};
+use crate::look::{Mark, Scale, XUnit};
 
 /// Angle steps tried for spokes and labels, in degrees, finest first.
 const ANGLE_STEPS_DEG: [f64; 4] = [15.0, 30.0, 45.0, 90.0];
@@ -403,10 +403,10 @@ mod tests {
     use super::*;
     use crate::figure::{Figure, Series};
     use crate::look::{Dash, PanelKind};
+    use crate::output::plot::fixtures::draw_png;
     use crate::output::plot::fixtures::{
         BLUE, RED, figure, marked, panel, polar_sample, sampled, series,
     };
-    use crate::output::plot::fixtures::draw_png;
     use crate::output::plot::svg;
 
     #[test]

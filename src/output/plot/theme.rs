@@ -213,7 +213,7 @@ fn lighten(colour: Rgb) -> Rgb {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::look::{XUnit, Scale};
+    use crate::look::{Scale, XUnit};
     use crate::output::plot::fixtures::{BLACK, BLUE, RED, figure, panel, sample, series};
 
     #[test]

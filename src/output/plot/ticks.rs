@@ -164,7 +164,13 @@ fn log_labels(values: &[(u32, i64)], decades: f64) -> Vec<String> {
     let plain_labels = decades < FEW_DECADES && all_plain;
     values
         .iter()
-        .map(|&(m, k)| if plain_labels { plain(m, k) } else { scientific(m, k) })
+        .map(|&(m, k)| {
+            if plain_labels {
+                plain(m, k)
+            } else {
+                scientific(m, k)
+            }
+        })
         .collect()
 }
 
@@ -176,12 +182,19 @@ pub(super) fn given_log_labels(values: &[f64]) -> Vec<String> {
         let k = v.log10().floor();
         let m = v / 10f64.powf(k);
         let whole = m.round();
-        ((m - whole).abs() < 1e-9 && (1.0..=9.0).contains(&whole)).then_some((whole as u32, k as i64))
+        ((m - whole).abs() < 1e-9 && (1.0..=9.0).contains(&whole))
+            .then_some((whole as u32, k as i64))
     };
-    match values.iter().map(|&v| decade_form(v)).collect::<Option<Vec<_>>>() {
+    match values
+        .iter()
+        .map(|&v| decade_form(v))
+        .collect::<Option<Vec<_>>>()
+    {
         Some(forms) => {
             let decade = |pick: fn(i64, i64) -> i64| forms.iter().map(|f| f.1).reduce(pick);
-            let span = decade(i64::max).zip(decade(i64::min)).map_or(0, |(hi, lo)| hi - lo);
+            let span = decade(i64::max)
+                .zip(decade(i64::min))
+                .map_or(0, |(hi, lo)| hi - lo);
             log_labels(&forms, span as f64)
         }
         None => values.iter().map(|&v| crate::curve::pretty(v)).collect(),
@@ -253,7 +266,11 @@ mod tests {
         // 300 decades (a Beckmann tail): labels every 100, lines every 20, not 300 of them.
         let t = log(-300.0, 0.0, 6.0);
         assert_eq!(t.major, [-300.0, -200.0, -100.0, 0.0]);
-        assert!((5..=MAX_DECADE_LINES).contains(&t.minor.len()), "{:?}", t.minor);
+        assert!(
+            (5..=MAX_DECADE_LINES).contains(&t.minor.len()),
+            "{:?}",
+            t.minor
+        );
         assert!(t.minor.contains(&-20.0) && !t.minor.contains(&-1.0));
         // A few decades labelled every other one keep a line at each decade.
         let t = log(-8.0, 2.0, 6.0);
