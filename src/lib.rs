@@ -4,7 +4,7 @@
 //! `look`) → resolved scenes, fits, coefficients and data files computed and read (`resolve`) →
 //! sampling plan (`plan`) → evaluated jobs (`sample`, `adaptive`) → the figure
 //! (`figure`), placed by `layout` → bytes and files (`output`); `render` runs the whole chain.
-//! The maths (`ndf`, `fresnel`, `math`) is pure f64 code with no I/O; `audit` integrates the curves of
+//! The maths (`ndf`, `masking`, `fresnel`, `math`) is pure f64 code with no I/O; `audit` integrates the curves of
 //! scenes for `ndfplot check`.
 
 pub mod adaptive;
@@ -29,6 +29,7 @@ pub mod json;
 pub mod keys;
 pub mod layout;
 pub mod look;
+pub mod masking;
 pub mod math;
 pub mod metrics;
 pub mod ndf;
