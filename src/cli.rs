@@ -25,8 +25,8 @@ pub enum Command {
     Render(RenderArgs),
     /// Belcour–Bati–Barla coefficients c0..c3 and L2 error of materials; prints CSV.
     Coeffs(CoeffsArgs),
-    /// Compare two curves of the same kind: max_abs, max_rel, max_log_ratio, l2_projected, l2_grid,
-    /// peaks.
+    /// Compare two curves of the same kind, or many pairs (--pairs): max_abs, max_rel, max_log_ratio,
+    /// l2_projected, l2_grid, peaks.
     Compare(CompareArgs),
     /// Fit the free parameters of an NDF family to target curves; prints the fitted curves.
     Fit(FitArgs),
@@ -269,21 +269,52 @@ const FRESNEL_HELP: &str = "  fresnel exact        eta in [1e-150, 1e150], kappa
     --format json prints one object and --format csv one header and one row, with a, b, theta_from,\n\
     theta_to and each number by name (max_abs, max_abs_theta, ...); --metric NAME prints only that\n\
     number. With --degrees every theta is read and printed in degrees and named *_deg.\n\n\
+    --pairs FILE|- compares every pair of a JSON Lines input ({\"a\": …, \"b\": …} or fit's\n\
+    {\"target\": …, \"fit\": …} records) in parallel and writes them in input order: --format json one\n\
+    object per line, --format csv a header and one row per pair, --metric one number per line, and\n\
+    by default a table of one row per pair (its source line, the five metrics, both sides). A line\n\
+    that cannot be read or compared is one error line naming it (stdin:<line> or <FILE>:<line>); the\n\
+    others are still written, and the exit code is 2.\n\n\
     Exit 1 when a --max-error bound is exceeded (or bounds an undefined max_log_ratio), 2 on bad\n\
     input (an NDF against a Fresnel curve, an unknown --metric name).\n\n\
     Examples:\n  \
     ndfplot compare --a '{\"ndf\":\"trowbridge_reitz\",\"alpha_tr\":0.3}' --b '{\"ndf\":\"abc\",\"alpha_abc1\":23.5,\"alpha_abc2\":1.75}'\n  \
     ndfplot compare --a @a.json --b @b.json --theta-range 0:50 --degrees --metric max_log_ratio\n  \
-    ndfplot compare --a @a.json --b @b.json --format json --max-error max_rel=1e-3 --max-error l2_projected=0.01"
+    ndfplot compare --a @a.json --b @b.json --format json --max-error max_rel=1e-3 --max-error l2_projected=0.01\n  \
+    ndfplot fit --target - --family abc --by l2 --format jsonl < targets.jsonl | ndfplot compare --pairs - --format csv"
 )]
 pub struct CompareArgs {
     /// The first side: a curve, or a CSV series {"data": "csv", "path": …, "x": …, "y": …}, as
     /// inline JSON, @FILE or - (one line on stdin).
-    #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
-    pub a: String,
+    #[arg(
+        long,
+        value_name = "JSON|@FILE|-",
+        allow_hyphen_values = true,
+        required_unless_present = "pairs",
+        requires = "b"
+    )]
+    pub a: Option<String>,
     /// The second side; two curves must be of the same kind.
-    #[arg(long, value_name = "JSON|@FILE|-", allow_hyphen_values = true)]
-    pub b: String,
+    #[arg(
+        long,
+        value_name = "JSON|@FILE|-",
+        allow_hyphen_values = true,
+        required_unless_present = "pairs",
+        requires = "a"
+    )]
+    pub b: Option<String>,
+    /// Compare many pairs instead of --a and --b: a JSON Lines file, or - for stdin, one pair per
+    /// line, {"a": <side>, "b": <side>} or a record of fit --format jsonl ({"target": …, "fit": …});
+    /// each side as --a takes it (a CSV path resolves against the file's folder, or the working
+    /// directory for -). One row (table row, JSON line, CSV row, --metric number) per pair, in input
+    /// order.
+    #[arg(
+        long,
+        value_name = "FILE|-",
+        allow_hyphen_values = true,
+        conflicts_with_all = ["a", "b"]
+    )]
+    pub pairs: Option<String>,
     /// Take every metric (and the peaks) over A ≤ theta ≤ B only: radians (pi/4 and other multiples
     /// of pi as --theta of eval reads them), or degrees with --degrees.
     #[arg(long = "theta-range", value_name = "A:B")]
@@ -291,19 +322,21 @@ pub struct CompareArgs {
     /// Read --theta-range in degrees, and print every theta in degrees (named *_deg).
     #[arg(long)]
     pub degrees: bool,
-    /// Output: a readable table, one JSON object, or CSV (a header and one row) for scripts.
+    /// Output: a readable table, one JSON object (per line, one per pair), or CSV (a header and one
+    /// row per pair) for scripts.
     #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = ["table", "json", "csv"])]
     pub format: String,
     /// Print only this number (max_abs, max_rel_theta, max_log_ratio, l2_projected, a_peak, …;
     /// any name of --format json); exit 2 when it is undefined.
     #[arg(long, value_name = "NAME", conflicts_with = "format")]
     pub metric: Option<String>,
-    /// Fail (exit 1) when a metric exceeds a bound, as <metric>=<number>; repeatable.
+    /// Fail (exit 1) when a metric exceeds a bound, as <metric>=<number> (for any pair of --pairs);
+    /// repeatable.
     #[arg(long = "max-error", value_name = "METRIC=X")]
     pub max_error: Vec<String>,
     /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
-    /// inside the folder it resolves against (an @FILE's folder, else the working
-    /// directory). Repeatable.
+    /// inside the folder it resolves against (an @FILE's or the --pairs file's folder, else the
+    /// working directory). Repeatable.
     #[arg(long = "allow-read", value_name = "DIR")]
     pub allow_read: Vec<PathBuf>,
 }

@@ -1,4 +1,5 @@
-//! Reading curve arguments: inline JSON, `@path` files and JSON Lines on standard input.
+//! Reading curve arguments (inline JSON, `@path` files and JSON Lines on standard input) and the
+//! pairs of `compare --pairs` (JSON Lines from a file or standard input).
 //!
 //! Every problem of every argument is collected before failing, so one run reports them all.
 
@@ -105,19 +106,27 @@ pub enum Side {
     Csv(CsvFile),
 }
 
-/// Parses one side of a comparison: a curve, or a `{"data": "csv", …}` series whose file is read
-/// from `scope`.
-fn parse_side(text: &str, source: &str, scope: DataScope) -> std::result::Result<Side, Problems> {
-    let node = parse_json(text, source)?;
-    let problems = |list| Problems {
-        source: source.to_string(),
-        list,
-    };
-    if crate::scene::data::is_data(&node) {
-        let file = crate::scene::data::parse_csv_series(&node, scope).map_err(problems)?;
-        return Ok(Side::Csv(file));
+/// Parses one side of a comparison at JSON path `path`: a curve, or a `{"data": "csv", …}` series
+/// whose file is to be read from `scope`.
+fn parse_side(
+    node: &json::Node,
+    path: &str,
+    scope: DataScope,
+) -> std::result::Result<Side, Vec<Problem>> {
+    if crate::scene::data::is_data(node) {
+        return crate::scene::data::parse_csv_series(node, path, scope).map(Side::Csv);
     }
-    curve::parse(&node, "").map(Side::Curve).map_err(problems)
+    curve::parse(node, path).map(Side::Curve)
+}
+
+/// The folder a data path given in `arg` resolves against: an `@path` file's folder, else the working
+/// directory.
+fn base_dir(arg: &str) -> &std::path::Path {
+    let here = std::path::Path::new(".");
+    match arg.strip_prefix('@') {
+        Some(path) => std::path::Path::new(path).parent().unwrap_or(here),
+        None => here,
+    }
 }
 
 /// Loads one side of `compare` from `arg`: inline JSON, `@path` or `-` (one line on `stdin`), holding a
@@ -131,19 +140,154 @@ pub fn load_operand(
     allow_read: &[std::path::PathBuf],
     stdin: impl FnOnce() -> std::io::Result<String>,
 ) -> Result<(String, Side)> {
-    let here = std::path::Path::new(".");
-    let (text, source, base_dir) = if arg == "-" {
-        let text = stdin().map_err(|e| Error::io("stdin", e))?;
-        (text, "stdin".to_string(), here)
+    let (text, source) = if arg == "-" {
+        (
+            stdin().map_err(|e| Error::io("stdin", e))?,
+            "stdin".to_string(),
+        )
     } else if let Some(path) = arg.strip_prefix('@') {
-        let folder = std::path::Path::new(path).parent().unwrap_or(here);
-        (read_file(path)?, path.to_string(), folder)
+        (read_file(path)?, path.to_string())
     } else {
-        (arg.to_string(), flag.to_string(), here)
+        (arg.to_string(), flag.to_string())
     };
-    let scope = DataScope::new(base_dir, std::sync::Arc::from(allow_read));
-    let side = parse_side(&text, &source, scope).map_err(|p| Error::Input(vec![p]))?;
+    let scope = DataScope::new(base_dir(arg), std::sync::Arc::from(allow_read));
+    let side = parse_json(&text, &source)
+        .and_then(|node| {
+            parse_side(&node, "", scope).map_err(|list| Problems {
+                source: source.clone(),
+                list,
+            })
+        })
+        .map_err(Error::input)?;
     Ok((source, side))
+}
+
+/// The two sides of one pair of `compare --pairs`, validated but not read, with the keys they were
+/// given under.
+#[derive(Debug, Clone)]
+pub struct Pair {
+    /// The first side and its key (`a`, or `target` in a record of `fit --format jsonl`).
+    pub a: (&'static str, Side),
+    /// The second side and its key (`b`, or `fit`).
+    pub b: (&'static str, Side),
+}
+
+/// The keys naming a pair's two sides: `{"a": …, "b": …}`, or `fit --format jsonl`'s
+/// `{"target": …, "fit": …}`.
+const PAIR_SIDES: [[&str; 2]; 2] = [["a", "b"], ["target", "fit"]];
+
+/// The other keys of a `fit --format jsonl` record, accepted in a pair and not read.
+const FIT_RECORD_KEYS: [&str; 2] = ["residual", "metric"];
+
+/// Parses one line of `compare --pairs`: a JSON object holding `a` and `b`, or `target` and `fit`
+/// (a record of `fit --format jsonl`, whose `residual` and `metric` are accepted and not read); each
+/// side a curve or a CSV series read from `scope`. Every problem of the line is reported.
+fn parse_pair(line: &str, source: &str, scope: &DataScope) -> std::result::Result<Pair, Problems> {
+    let problems = |list| Problems {
+        source: source.to_string(),
+        list,
+    };
+    let node = parse_json(line, source)?;
+    let expected = "expected {\"a\": <curve>, \"b\": <curve>} or a record of fit --format jsonl";
+    let json::Value::Object(members) = &node.value else {
+        return Err(problems(vec![Problem::new(
+            "",
+            format!("a pair must be an object (got {node}, {expected})"),
+        )]));
+    };
+    let listed: Vec<&str> = PAIR_SIDES
+        .iter()
+        .flatten()
+        .chain(&FIT_RECORD_KEYS)
+        .copied()
+        .collect();
+    let accepted = crate::keys::Accepted {
+        object: Some("a pair"),
+        listed: &listed,
+        unlisted: &[],
+    };
+    let mut list = crate::keys::check(members, "", Some(&accepted));
+    let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, v)| v);
+    let given: Vec<[&'static str; 2]> = PAIR_SIDES
+        .into_iter()
+        .filter(|keys| keys.iter().any(|k| get(k).is_some()))
+        .collect();
+    let [keys] = given[..] else {
+        list.push(Problem::new(
+            "",
+            format!(
+                "a pair needs its two sides under a and b, or target and fit (got {node}, {expected})"
+            ),
+        ));
+        return Err(problems(list));
+    };
+    let mut sides = keys.map(|key| match get(key) {
+        Some(side) => parse_side(side, key, scope.clone())
+            .map_err(|p| list.extend(p))
+            .ok(),
+        None => {
+            let other = keys.into_iter().find(|&k| k != key).unwrap_or_default();
+            list.push(Problem::new(
+                key,
+                format!("missing side (got only {other}, {expected})"),
+            ));
+            None
+        }
+    });
+    match (sides[0].take(), sides[1].take()) {
+        (Some(a), Some(b)) if list.is_empty() => Ok(Pair {
+            a: (keys[0], a),
+            b: (keys[1], b),
+        }),
+        _ => Err(problems(list)),
+    }
+}
+
+/// Reads the pairs of `compare --pairs`: `arg` a file path or `-` for `stdin`, holding one pair per
+/// non-blank line (JSON Lines, [`parse_pair`]), each named `<file>:<line>` or `stdin:<line>`. CSV
+/// paths resolve against the file's folder (the working directory for `-`) or lie inside one of
+/// `allow_read`. Each line is validated on its own; only reading the input, or finding no pair at
+/// all, fails the whole call.
+pub fn read_pairs(
+    arg: &str,
+    allow_read: &[std::path::PathBuf],
+    stdin: impl FnOnce() -> std::io::Result<String>,
+) -> Result<Vec<(String, std::result::Result<Pair, Problems>)>> {
+    let (text, name, folder) = if arg == "-" {
+        let text = stdin().map_err(|e| Error::io("stdin", e))?;
+        (text, "stdin", std::path::Path::new("."))
+    } else {
+        let folder = std::path::Path::new(arg)
+            .parent()
+            .unwrap_or(std::path::Path::new("."));
+        (read_file(arg)?, arg, folder)
+    };
+    let scope = DataScope::new(folder, std::sync::Arc::from(allow_read));
+    let pairs = json_lines(&text, name, |line, source| parse_pair(line, source, &scope));
+    if pairs.is_empty() {
+        return Err(Error::Usage(format!(
+            "--pairs: no pair given (got no line in {name}, expected one JSON object per line)"
+        )));
+    }
+    Ok(pairs)
+}
+
+/// The non-blank lines of the JSON Lines `text` read from `name` (`stdin` or a file path), in
+/// order, each with its source name `<name>:<line>` (1-based) and what `parse` makes of it.
+fn json_lines<T>(
+    text: &str,
+    name: &str,
+    parse: impl Fn(&str, &str) -> std::result::Result<T, Problems>,
+) -> Vec<(String, std::result::Result<T, Problems>)> {
+    text.lines()
+        .enumerate()
+        .filter(|(_, line)| !line.trim().is_empty())
+        .map(|(i, line)| {
+            let source = format!("{name}:{}", i + 1);
+            let parsed = parse(line, &source);
+            (source, parsed)
+        })
+        .collect()
 }
 
 fn parse_curve(text: &str, source: &str) -> std::result::Result<CurveSpec, Problems> {
@@ -172,12 +316,7 @@ pub fn read_curves(
                 .take()
                 .ok_or_else(|| Error::Usage(format!("{flag} - may be given only once")))?;
             let text = read().map_err(|e| Error::io("stdin", e))?;
-            for (line_no, line) in text.lines().enumerate() {
-                if !line.trim().is_empty() {
-                    let source = format!("stdin:{}", line_no + 1);
-                    curves.push((source.clone(), parse_curve(line, &source)));
-                }
-            }
+            curves.extend(json_lines(&text, "stdin", parse_curve));
         } else if let Some(path) = arg.strip_prefix('@') {
             curves.push((path.to_string(), parse_curve(&read_file(path)?, path)));
         } else {

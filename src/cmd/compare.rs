@@ -1,16 +1,19 @@
 //! `ndfplot compare`: the metrics of two curves of the same kind (CONTRACTS.md) over the whole hemisphere
 //! or a `--theta-range`, as a readable table, one JSON object, one CSV row or the one number `--metric`
-//! names, and the `--max-error` bounds that turn them into a CI gate (exit 1 when exceeded).
+//! names, and the `--max-error` bounds that turn them into a CI gate (exit 1 when exceeded). With
+//! `--pairs`, the same for every pair of a JSON Lines input, compared in parallel and written in input
+//! order, one row (JSON object, CSV row, number) per pair.
 //!
-//! Owns the formatting and the bound checks only; the metrics are [`crate::metrics`]'s.
+//! Owns the formatting, the bound checks and the batch run only; the metrics are [`crate::metrics`]'s.
 
 use crate::angle::AngleUnit;
 use crate::curve::Curve;
 use crate::error::{Error, Result};
 use crate::metrics::sampled::{Operand, compare_operands};
-use crate::metrics::{Comparison, LOG_RATIO_FLOOR, Metric, ThetaRange};
+use crate::metrics::{Comparison, LOG_RATIO_FLOOR, Metric, MetricError, ThetaRange};
 use crate::output::report::{Cell, Report};
-use crate::problem::{Problem, Problems, suggestion};
+use crate::problem::{Problem, Problems, join_key, suggestion};
+use rayon::prelude::*;
 
 /// A `--max-error <metric>=<x>` bound.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -55,36 +58,52 @@ pub fn parse_bound(text: &str) -> Result<Bound> {
     }
 }
 
-/// Checks that two curves are of the same kind (both NDFs or both Fresnel); the problem is reported
-/// under `--b`.
-pub fn check_kinds(a: &Curve, b: &Curve) -> Result<()> {
+/// Checks that two curves are of the same kind (both NDFs or both Fresnel); the problem is at the
+/// model key of `b`, given under the key `b_key` (`""` for a whole argument).
+fn check_kinds(a: &Curve, b: &Curve, b_key: &str) -> std::result::Result<(), Problem> {
     let (ma, mb) = (a.model(), b.model());
     if ma.key() == mb.key() {
         return Ok(());
     }
-    Err(Error::input(Problems {
-        source: "--b".into(),
-        list: vec![Problem::new(
+    Err(Problem::new(
+        join_key(b_key, mb.key()),
+        format!(
+            "compare needs two curves of the same kind (got {} \"{}\" against {} \"{}\", expected two NDFs or two Fresnel curves)",
             mb.key(),
-            format!(
-                "compare needs two curves of the same kind (got {} \"{}\" against {} \"{}\", expected two NDFs or two Fresnel curves)",
-                mb.key(),
-                mb.name(),
-                ma.key(),
-                ma.name()
-            ),
-        )],
-    }))
+            mb.name(),
+            ma.key(),
+            ma.name()
+        ),
+    ))
+}
+
+/// The metrics of `a` against `b` over `range` ([`compare_operands`]); the outer `Err` is two curves of
+/// different kinds ([`check_kinds`], at `b_key`), the inner one numerics that failed.
+fn compare_sides(
+    a: &Operand,
+    b: &Operand,
+    b_key: &str,
+    range: ThetaRange,
+) -> std::result::Result<std::result::Result<Comparison, MetricError>, Problem> {
+    if let (Operand::Curve(a), Operand::Curve(b)) = (a, b) {
+        check_kinds(a, b, b_key)?;
+    }
+    Ok(compare_operands(a, b, range))
 }
 
 /// The metrics of `a` against `b` (two curves of one kind, or a sampled series against anything) over
-/// `range`; a side that is not finite somewhere, an integral that does not converge, a series with no
-/// sample in the range or two series with no θ in common is an error (exit 2).
+/// `range`; curves of different kinds are a problem of `--b`, and a side that is not finite somewhere,
+/// an integral that does not converge, a series with no sample in the range or two series with no θ
+/// in common is an error (exit 2).
 pub fn metrics(a: &Operand, b: &Operand, range: ThetaRange) -> Result<Comparison> {
-    if let (Operand::Curve(a), Operand::Curve(b)) = (a, b) {
-        check_kinds(a, b)?;
-    }
-    compare_operands(a, b, range).map_err(|e| Error::Numerics(format!("compare: {e}")))
+    compare_sides(a, b, "", range)
+        .map_err(|p| {
+            Error::input(Problems {
+                source: "--b".into(),
+                list: vec![p],
+            })
+        })?
+        .map_err(|e| Error::Numerics(format!("compare: {e}")))
 }
 
 /// Where the metrics are taken (`--theta-range`) and the unit θ is read and printed in (`--degrees`).
@@ -238,34 +257,71 @@ fn log_ratio_undefined(span: &Span) -> String {
     )
 }
 
-/// `--metric NAME`: the field's number and a newline; an undefined `max_log_ratio` is an error
-/// (exit 2) saying why.
-pub fn one_number(field: Field, c: &Comparison, span: &Span) -> Result<String> {
+/// `--metric NAME`: the field's number and a newline; `Err` says why the number is undefined (an
+/// undefined `max_log_ratio` or its θ).
+pub fn one_number(
+    field: Field,
+    c: &Comparison,
+    span: &Span,
+) -> std::result::Result<String, String> {
     field
         .of(c, span)
         .map(|v| format!("{v:?}\n"))
         .ok_or_else(|| {
-            Error::Numerics(format!(
+            format!(
                 "compare: {} is undefined: {}",
                 field.name(span.unit),
                 log_ratio_undefined(span)
-            ))
+            )
         })
+}
+
+/// What `compare` prints: the readable table, JSON, CSV, or the one number of `--metric`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Output {
+    /// The readable table (the default).
+    Table,
+    /// One JSON object per line, one line per pair.
+    Json,
+    /// A header and one CSV row per pair.
+    Csv,
+    /// One number per line, one line per pair.
+    Metric(Field),
+}
+
+impl Output {
+    /// The output of `--format` (`table`, `json` or `csv`) or, when given, `--metric NAME` in `unit`
+    /// ([`Field::from_name`]).
+    pub fn parse(format: &str, metric: Option<&str>, unit: AngleUnit) -> Result<Output> {
+        Ok(match (metric, format) {
+            (Some(name), _) => Output::Metric(Field::from_name(name, unit)?),
+            (None, "json") => Output::Json,
+            (None, "csv") => Output::Csv,
+            (None, _) => Output::Table,
+        })
+    }
+}
+
+/// One compared pair: the name of its source (`stdin:3`, `pairs.jsonl:3`; empty for `--a`/`--b`),
+/// each side's canonical JSON, and the metrics.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Compared {
+    /// Where the pair was read.
+    pub source: String,
+    /// The first side's canonical JSON.
+    pub a: String,
+    /// The second side's canonical JSON.
+    pub b: String,
+    /// The metrics of a against b.
+    pub metrics: Comparison,
 }
 
 /// The readable report: the two sides (canonical JSON), the θ range when it is not the whole
 /// hemisphere, then one row per metric with the θ where it is reached (`theta_deg` with `--degrees`);
 /// an undefined `max_log_ratio` reads `undefined` and why.
-pub fn table(a: &str, b: &str, c: &Comparison, span: &Span) -> String {
-    let mut out = format!("a  {a}\nb  {b}\n");
-    if span.range != ThetaRange::FULL {
-        out.push_str(&format!(
-            "{}  {:?}:{:?}\n",
-            span.unit.name("theta"),
-            span.given[0],
-            span.given[1]
-        ));
-    }
+pub fn table(pair: &Compared, span: &Span) -> String {
+    let c = &pair.metrics;
+    let mut out = format!("a  {}\nb  {}\n{}", pair.a, pair.b, range_line(span));
     out.push_str(&format!(
         "\n{:<14}{:<25}{}\n",
         "metric",
@@ -297,52 +353,203 @@ pub fn table(a: &str, b: &str, c: &Comparison, span: &Span) -> String {
     out
 }
 
+/// The θ range line of the tables (`theta  0.0:0.7853981633974483`), or nothing over the whole
+/// hemisphere.
+fn range_line(span: &Span) -> String {
+    if span.range == ThetaRange::FULL {
+        return String::new();
+    }
+    format!(
+        "{}  {:?}:{:?}\n",
+        span.unit.name("theta"),
+        span.given[0],
+        span.given[1]
+    )
+}
+
+/// The readable report of `--pairs`: the θ range when it is not the whole hemisphere, then a header and
+/// one row per pair: its source, the value of every metric (`undefined` for an undefined
+/// `max_log_ratio`), and the two sides' canonical JSON; columns aligned, the θ of each maximum and the
+/// peaks left to `--format json|csv`.
+pub fn batch_table(pairs: &[Compared], span: &Span) -> String {
+    let header = std::iter::once("pair")
+        .chain(Metric::ALL.iter().map(|m| m.name()))
+        .chain(["a", "b"])
+        .map(String::from)
+        .collect();
+    let rows: Vec<Vec<String>> = std::iter::once(header)
+        .chain(pairs.iter().map(|pair| {
+            std::iter::once(pair.source.clone())
+                .chain(Metric::ALL.iter().map(|m| {
+                    m.of(&pair.metrics)
+                        .map_or_else(|| "undefined".into(), |v| format!("{v:?}"))
+                }))
+                .chain([pair.a.clone(), pair.b.clone()])
+                .collect()
+        }))
+        .collect();
+    let widths: Vec<usize> = (0..rows[0].len())
+        .map(|i| rows.iter().map(|r| r[i].chars().count()).max().unwrap_or(0))
+        .collect();
+    let mut out = range_line(span);
+    if !out.is_empty() {
+        out.push('\n');
+    }
+    for row in &rows {
+        let line: String = row
+            .iter()
+            .zip(&widths)
+            .map(|(cell, &width)| format!("{cell:<width$}  "))
+            .collect();
+        out.push_str(line.trim_end());
+        out.push('\n');
+    }
+    out
+}
+
 /// The report of `--format json` and `csv`: columns `a`, `b` (each side's canonical JSON), then every
-/// [`Field`] by name; one row. An undefined number is JSON `null` and an empty CSV field.
-pub fn report(a: &str, b: &str, c: &Comparison, span: &Span) -> Report {
+/// [`Field`] by name; one row per pair. An undefined number is JSON `null` and an empty CSV field.
+pub fn report(pairs: &[Compared], span: &Span) -> Report {
     let mut report = Report::new(
         ["a".to_string(), "b".to_string()]
             .into_iter()
             .chain(Field::ALL.iter().map(|f| f.name(span.unit))),
     );
-    report.push(
-        [Cell::Json(a.into()), Cell::Json(b.into())]
-            .into_iter()
-            .chain(
-                Field::ALL
-                    .iter()
-                    .map(|f| f.of(c, span).map_or(Cell::Missing, Cell::Number)),
-            )
-            .collect(),
-    );
+    for pair in pairs {
+        report.push(
+            [Cell::Json(pair.a.clone()), Cell::Json(pair.b.clone())]
+                .into_iter()
+                .chain(Field::ALL.iter().map(|f| {
+                    f.of(&pair.metrics, span)
+                        .map_or(Cell::Missing, Cell::Number)
+                }))
+                .collect(),
+        );
+    }
     report
 }
 
-/// `Err(CheckFailed)` (exit 1) listing every exceeded bound, one line each; a bound on an undefined
-/// `max_log_ratio` cannot be met and fails too.
-pub fn check_bounds(c: &Comparison, bounds: &[Bound], span: &Span) -> Result<()> {
-    let exceeded: Vec<String> = bounds
+/// One line per bound of `bounds` that `c` does not meet: `<metric> = <x> exceeds --max-error …`, or
+/// that a bound on an undefined `max_log_ratio` cannot be met.
+pub fn exceeded(c: &Comparison, bounds: &[Bound], span: &Span) -> Vec<String> {
+    bounds
         .iter()
         .filter_map(|b| {
             let name = b.metric.name();
             match b.metric.of(c) {
                 Some(v) if v > b.limit => Some(format!(
-                    "compare: {name} = {v:?} exceeds --max-error {name}={:?}",
+                    "{name} = {v:?} exceeds --max-error {name}={:?}",
                     b.limit
                 )),
                 Some(_) => None,
                 None => Some(format!(
-                    "compare: {name} is undefined ({}), so --max-error {name}={:?} is not met",
+                    "{name} is undefined ({}), so --max-error {name}={:?} is not met",
                     log_ratio_undefined(span),
                     b.limit
                 )),
             }
         })
+        .collect()
+}
+
+/// `Err(CheckFailed)` (exit 1) listing every exceeded bound, one `compare: …` line each
+/// ([`exceeded`]).
+pub fn check_bounds(c: &Comparison, bounds: &[Bound], span: &Span) -> Result<()> {
+    let lines: Vec<String> = exceeded(c, bounds, span)
+        .into_iter()
+        .map(|line| format!("compare: {line}"))
         .collect();
-    if exceeded.is_empty() {
+    if lines.is_empty() {
         Ok(())
     } else {
-        Err(Error::CheckFailed(exceeded.join("\n")))
+        Err(Error::CheckFailed(lines.join("\n")))
+    }
+}
+
+/// One side of a pair, ready to compare: the key it was given under (`a`, `fit`, …), the operand and
+/// its canonical JSON.
+#[derive(Debug, Clone)]
+pub struct ReadySide {
+    /// The pair's key of the side.
+    pub key: &'static str,
+    /// The curve or series.
+    pub operand: Operand,
+    /// Its canonical JSON.
+    pub json: String,
+}
+
+/// A pair as read: the name of its source and its two sides, or the problems that kept it from being
+/// read.
+pub type Pair = (String, std::result::Result<[ReadySide; 2], Problems>);
+
+/// What a `--pairs` run writes: the text for stdout, the `compare: <source>: …` line of every exceeded
+/// bound (the run exits 1 when there are any), and the problems of the pairs that could not be
+/// compared (it exits 2 when there are any).
+#[derive(Debug)]
+pub struct BatchReport {
+    /// Standard output.
+    pub stdout: String,
+    /// The exceeded bounds, in input order.
+    pub exceeded: Vec<String>,
+    /// One entry per failed pair, in input order.
+    pub problems: Vec<Problems>,
+}
+
+/// Compares every readable pair over `span` (in parallel) and writes the results in input order in
+/// `output`; a pair whose sides are of different kinds, whose numerics fail or whose `--metric` is
+/// undefined becomes a problem of its source, and the others are still written.
+pub fn run_pairs(pairs: Vec<Pair>, span: &Span, output: Output, bounds: &[Bound]) -> BatchReport {
+    let results: Vec<std::result::Result<Compared, Problems>> = pairs
+        .into_par_iter()
+        .map(|(source, sides)| {
+            let problem = |p: Problem| Problems {
+                source: source.clone(),
+                list: vec![p],
+            };
+            let [a, b] = sides?;
+            let metrics = compare_sides(&a.operand, &b.operand, b.key, span.range)
+                .map_err(problem)?
+                .map_err(|e| problem(Problem::new("", format!("compare: {e}"))))?;
+            if let Output::Metric(field) = output {
+                one_number(field, &metrics, span).map_err(|m| problem(Problem::new("", m)))?;
+            }
+            Ok(Compared {
+                source: source.clone(),
+                a: a.json,
+                b: b.json,
+                metrics,
+            })
+        })
+        .collect();
+    let mut compared = Vec::with_capacity(results.len());
+    let mut problems = Vec::new();
+    for result in results {
+        match result {
+            Ok(pair) => compared.push(pair),
+            Err(p) => problems.push(p),
+        }
+    }
+    let stdout = match output {
+        Output::Table => batch_table(&compared, span),
+        Output::Json => report(&compared, span).json_lines(),
+        Output::Csv => report(&compared, span).csv(),
+        Output::Metric(field) => compared
+            .iter()
+            .filter_map(|pair| one_number(field, &pair.metrics, span).ok())
+            .collect(),
+    };
+    let exceeded = compared
+        .iter()
+        .flat_map(|pair| {
+            exceeded(&pair.metrics, bounds, span)
+                .into_iter()
+                .map(|line| format!("compare: {}: {line}", pair.source))
+        })
+        .collect();
+    BatchReport {
+        stdout,
+        exceeded,
+        problems,
     }
 }
 

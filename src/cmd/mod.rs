@@ -16,7 +16,7 @@ use crate::dataset::Dataset;
 use crate::error::{Error, Result};
 use crate::input::Side;
 use crate::metrics::sampled::{Operand, Samples};
-use crate::problem::{Problem, Problems};
+use crate::problem::{Problem, Problems, join_key};
 use crate::{input, resolve, source, stdout};
 use std::io::Write;
 use std::path::PathBuf;
@@ -85,28 +85,61 @@ fn input_error(source: &str, problem: Problem) -> Error {
     }])
 }
 
-/// One side of `compare` ([`input::load_operand`]), resolved (a CSV series read), with its
-/// canonical JSON.
-fn load_operand(arg: &str, flag: &str, allow_read: &[PathBuf]) -> Result<(Operand, String)> {
-    let (source, side) = input::load_operand(arg, flag, allow_read, input::read_stdin)?;
+/// A side of `compare` as read ([`input::Side`]), resolved (a CSV series read), with its canonical
+/// JSON; problems name `source` and lie under `key` (the pair's key of the side, `""` for `--a`/`--b`).
+fn resolve_side(
+    source: &str,
+    key: &str,
+    side: Side,
+) -> std::result::Result<(Operand, String), Problems> {
+    let problems = |p: Problem| Problems {
+        source: source.to_string(),
+        list: vec![Problem::new(join_key(key, &p.at), p.message)],
+    };
     match side {
         Side::Curve(spec) => {
-            let curve = resolve::curve(&spec).map_err(|p| input_error(&source, p))?;
+            let curve = resolve::curve(&spec).map_err(problems)?;
             let name = curve.canonical_json();
             Ok((Operand::Curve(curve), name))
         }
         Side::Csv(file) => {
-            let series = resolve::csv(&file).map_err(|p| input_error(&source, p))?;
+            let series = resolve::csv(&file).map_err(problems)?;
             let samples = match &series {
                 Dataset::Csv { x, y, .. } => Samples::new(x, y),
                 _ => None,
             };
-            let samples = samples.ok_or_else(|| {
-                input_error(&source, Problem::new("data", "expected θ and values"))
-            })?;
+            let samples =
+                samples.ok_or_else(|| problems(Problem::new("data", "expected θ and values")))?;
             Ok((Operand::Samples(samples), series.canonical_json()))
         }
     }
+}
+
+/// One side of `compare` ([`input::load_operand`]), resolved, with its canonical JSON.
+fn load_operand(arg: &str, flag: &str, allow_read: &[PathBuf]) -> Result<(Operand, String)> {
+    let (source, side) = input::load_operand(arg, flag, allow_read, input::read_stdin)?;
+    resolve_side(&source, "", side).map_err(Error::input)
+}
+
+/// The pairs of `compare --pairs` ([`input::read_pairs`]), each side resolved on its own: one bad
+/// line does not keep the others from being compared.
+fn load_pairs(arg: &str, allow_read: &[PathBuf]) -> Result<Vec<compare::Pair>> {
+    let pairs = input::read_pairs(arg, allow_read, input::read_stdin)?
+        .into_iter()
+        .map(|(source, pair)| {
+            let sides =
+                pair.and_then(|pair| {
+                    let ready =
+                        |(key, side)| {
+                            resolve_side(&source, key, side)
+                                .map(|(operand, json)| compare::ReadySide { key, operand, json })
+                        };
+                    Ok([ready(pair.a)?, ready(pair.b)?])
+                });
+            (source, sides)
+        })
+        .collect();
+    Ok(pairs)
 }
 
 fn run_compare(args: CompareArgs) -> Result<()> {
@@ -119,22 +152,63 @@ fn run_compare(args: CompareArgs) -> Result<()> {
         args.theta_range.as_deref(),
         crate::angle::AngleUnit::of(args.degrees),
     )?;
-    let field = args
-        .metric
-        .as_deref()
-        .map(|name| compare::Field::from_name(name, span.unit))
-        .transpose()?;
-    let (a, a_name) = load_operand(&args.a, "--a", &args.allow_read)?;
-    let (b, b_name) = load_operand(&args.b, "--b", &args.allow_read)?;
-    let metrics = compare::metrics(&a, &b, span.range)?;
-    let report = match (field, args.format.as_str()) {
-        (Some(field), _) => compare::one_number(field, &metrics, &span)?,
-        (None, "json") => compare::report(&a_name, &b_name, &metrics, &span).json_object(),
-        (None, "csv") => compare::report(&a_name, &b_name, &metrics, &span).csv(),
-        (None, _) => compare::table(&a_name, &b_name, &metrics, &span),
+    let output = compare::Output::parse(&args.format, args.metric.as_deref(), span.unit)?;
+    let (a, b) = match (&args.pairs, args.a.as_deref(), args.b.as_deref()) {
+        (Some(pairs), None, None) => {
+            return run_compare_pairs(pairs, &args.allow_read, &span, output, &bounds);
+        }
+        (None, Some(a), Some(b)) => (a, b),
+        _ => {
+            return Err(Error::Usage(
+                "compare: give either --a and --b, or --pairs".into(),
+            ));
+        }
+    };
+    let (a, a_name) = load_operand(a, "--a", &args.allow_read)?;
+    let (b, b_name) = load_operand(b, "--b", &args.allow_read)?;
+    let compared = [compare::Compared {
+        source: String::new(),
+        a: a_name,
+        b: b_name,
+        metrics: compare::metrics(&a, &b, span.range)?,
+    }];
+    let report = match output {
+        compare::Output::Metric(field) => {
+            compare::one_number(field, &compared[0].metrics, &span).map_err(Error::Numerics)?
+        }
+        compare::Output::Json => compare::report(&compared, &span).json_lines(),
+        compare::Output::Csv => compare::report(&compared, &span).csv(),
+        compare::Output::Table => compare::table(&compared[0], &span),
     };
     stdout::print(&report)?;
-    compare::check_bounds(&metrics, &bounds, &span)
+    compare::check_bounds(&compared[0].metrics, &bounds, &span)
+}
+
+/// `compare --pairs`: every pair compared ([`compare::run_pairs`]), the output printed, then the exceeded
+/// bounds on stderr and the problems of the pairs that could not be compared (exit 2 when there are
+/// any, else exit 1 when a bound is exceeded).
+fn run_compare_pairs(
+    arg: &str,
+    allow_read: &[PathBuf],
+    span: &compare::Span,
+    output: compare::Output,
+    bounds: &[compare::Bound],
+) -> Result<()> {
+    let report = compare::run_pairs(load_pairs(arg, allow_read)?, span, output, bounds);
+    stdout::print(&report.stdout)?;
+    let exceeded = report.exceeded.join("\n");
+    if !report.problems.is_empty() {
+        if !exceeded.is_empty() {
+            // The problems decide the exit code; the exceeded bounds are still said.
+            let _ = writeln!(std::io::stderr(), "{exceeded}");
+        }
+        return Err(Error::Input(report.problems));
+    }
+    if exceeded.is_empty() {
+        Ok(())
+    } else {
+        Err(Error::CheckFailed(exceeded))
+    }
 }
 
 fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {

@@ -1,5 +1,5 @@
 //! The reports of the commands that print tables (`compare`, `check`, `coeffs`) in the machine-readable
-//! forms of `--format`: one JSON object, a JSON array of row objects, or CSV with a header row. A
+//! forms of `--format`: one JSON object per line, a JSON array of row objects, or CSV with a header row. A
 //! [`Report`] is named columns and rows of [`Cell`]s; numbers are written in the shortest round-trip
 //! form of CONTRACTS.md in every form.
 //!
@@ -85,12 +85,12 @@ impl Report {
         self.rows.push(row);
     }
 
-    /// The first row as one compact JSON object and a newline: `{"<column>": <cell>, …}` (`{}` when
-    /// there is no row).
-    pub fn json_object(&self) -> String {
-        let row = self.rows.first().map_or(&[][..], Vec::as_slice);
-        let columns = &self.columns[..row.len()];
-        crate::json::to_string(&Row(columns, row)) + "\n"
+    /// Every row as one compact JSON object and a newline (JSON Lines): `{"<column>": <cell>, …}`.
+    pub fn json_lines(&self) -> String {
+        self.rows
+            .iter()
+            .map(|row| crate::json::to_string(&Row(&self.columns, row)) + "\n")
+            .collect()
     }
 
     /// Every row as an object of a compact JSON array, and a newline: `[{"<column>": <cell>, …}, …]`.
@@ -132,8 +132,8 @@ mod tests {
         ]);
         report.push(vec![Cell::Text("x, y".into()), Cell::Number(1e-300)]);
         assert_eq!(
-            report.json_object(),
-            "{\"curve\":{\"ndf\":\"phong\",\"alpha_p\":1.0},\"value\":0.1,\"theta\":null}\n"
+            report.json_lines(),
+            "{\"curve\":{\"ndf\":\"phong\",\"alpha_p\":1.0},\"value\":0.1,\"theta\":null}\n{\"curve\":\"x, y\",\"value\":1e-300,\"theta\":null}\n"
         );
         assert_eq!(
             report.json_array(),

@@ -123,22 +123,23 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
     })
 }
 
-/// Validates a `{"data": "csv", …}` series given on its own (a `compare` side) at the root path, its
-/// file to be read from `scope` but not read. Other data kinds are not functions of θ and are
-/// reported.
+/// Validates a `{"data": "csv", …}` series given on its own (a `compare` side) at JSON path `path`
+/// (`""` for a whole argument), its file to be read from `scope` but not read. Other data kinds are
+/// not functions of θ and are reported.
 pub fn parse_csv_series(
     node: &Node,
+    path: &str,
     scope: DataScope,
 ) -> Result<CsvFile, Vec<crate::problem::Problem>> {
     let mut reader = Reader {
         data: Some(scope),
         ..Reader::default()
     };
-    let entry = read_entry(&mut reader, node, "");
+    let entry = read_entry(&mut reader, node, path);
     match entry.map(|e| e.dataset) {
         Some(DataSpec::Csv(csv)) if reader.problems.is_empty() => Ok(csv),
         Some(DataSpec::Ready(other)) => Err(vec![crate::problem::Problem::new(
-            "data",
+            crate::problem::join_key(path, "data"),
             format!(
                 "not a series of θ (got {}, expected {{\"data\": \"csv\", \"path\": …}})",
                 other.canonical_json()

@@ -1,8 +1,8 @@
 //! `compare` focused on a θ range (`--theta-range`, `--degrees`), the `max_log_ratio` metric for lobes
-//! that fall to 0, `--metric NAME`, and the machine-readable `--format json|csv` of `compare`, `check`
-//! and `coeffs`.
+//! that fall to 0, `--metric NAME`, many pairs at once (`--pairs`), and the machine-readable
+//! `--format json|csv` of `compare`, `check` and `coeffs`.
 
-use crate::common::{ndfplot, text};
+use crate::common::{ndfplot, ndfplot_stdin, scratch, text};
 use std::process::Output;
 
 /// GGX α = 0.3 and its peak-matched Beckmann (`fit --family beckmann --by peak` gives α_b = 0.3 too):
@@ -314,5 +314,239 @@ fn check_and_coeffs_print_json_and_csv_with_the_table_columns() {
     usage_error(
         &ndfplot(&["coeffs", "--curve", material, "--format", "table"]),
         "--format",
+    );
+}
+
+/// Pairs of every form `--pairs` reads: `a`/`b`, a record of `fit --format jsonl` (whose `residual` and
+/// `metric` are not read), Fresnel curves, and a CSV series; blank lines are skipped.
+fn pairs() -> Vec<(String, String)> {
+    let series = crate::common::root().join("examples/renderer-ggx.csv");
+    let series = format!(r#"{{"data":"csv","path":{:?}}}"#, series.to_str().unwrap());
+    [
+        (GGX, BECKMANN),
+        (
+            r#"{"ndf":"phong","alpha_p":20}"#,
+            r#"{"ndf":"ggx","alpha_tr":0.4}"#,
+        ),
+        (
+            r#"{"fresnel":"exact","eta":1.5}"#,
+            r#"{"fresnel":"schlick","eta":1.5}"#,
+        ),
+        (series.as_str(), GGX),
+    ]
+    .map(|(a, b)| (a.to_string(), b.to_string()))
+    .to_vec()
+}
+
+/// The JSON Lines input of [`pairs`], the second one as a `fit` record and a blank line after the
+/// first.
+fn pairs_input() -> String {
+    pairs()
+        .iter()
+        .enumerate()
+        .map(|(i, (a, b))| match i {
+            0 => format!("{{\"a\":{a},\"b\":{b}}}\n\n"),
+            1 => format!(
+                "{{\"target\":{a},\"fit\":{b},\"residual\":0.5,\"metric\":\"l2_projected\"}}\n"
+            ),
+            _ => format!("{{\"b\": {b}, \"a\": {a}}}\n"),
+        })
+        .collect()
+}
+
+/// `compare --a A --b B extra…` with the series' path allowed.
+fn single(a: &str, b: &str, extra: &[&str]) -> String {
+    let root = crate::common::root().to_str().unwrap().to_string();
+    let mut args = vec!["compare", "--a", a, "--b", b, "--allow-read", &root];
+    args.extend(extra);
+    ok(&ndfplot(&args))
+}
+
+/// `compare --pairs - extra…` on `input`, with the series' path allowed.
+fn batch(input: &str, extra: &[&str]) -> Output {
+    let root = crate::common::root().to_str().unwrap().to_string();
+    let mut args = vec!["compare", "--pairs", "-", "--allow-read", &root];
+    args.extend(extra);
+    ndfplot_stdin(&args, input)
+}
+
+#[test]
+fn every_pair_gives_the_row_of_its_single_compare_in_input_order() {
+    let input = pairs_input();
+    for extra in [
+        &["--format", "json"][..],
+        &["--format", "json", "--theta-range", "10:60", "--degrees"],
+        &["--metric", "l2_projected"],
+        &["--metric", "max_rel_theta", "--theta-range", "0:pi/4"],
+    ] {
+        let expected: String = pairs().iter().map(|(a, b)| single(a, b, extra)).collect();
+        assert_eq!(ok(&batch(&input, extra)), expected, "{extra:?}");
+    }
+    let csv = ok(&batch(&input, &["--format", "csv"]));
+    let mut expected = String::new();
+    for (i, (a, b)) in pairs().iter().enumerate() {
+        let one = single(a, b, &["--format", "csv"]);
+        let (header, row) = one.split_once('\n').unwrap();
+        if i == 0 {
+            expected = format!("{header}\n");
+        }
+        expected.push_str(row);
+    }
+    assert_eq!(csv, expected);
+}
+
+#[test]
+fn the_pairs_table_has_one_row_per_pair_named_by_its_line() {
+    let input = pairs_input();
+    let table = ok(&batch(&input, &[]));
+    let lines: Vec<&str> = table.lines().collect();
+    let header: Vec<&str> = lines[0].split_whitespace().collect();
+    assert_eq!(
+        header,
+        [
+            "pair",
+            "max_abs",
+            "max_rel",
+            "max_log_ratio",
+            "l2_projected",
+            "l2_grid",
+            "a",
+            "b"
+        ]
+    );
+    assert_eq!(lines.len(), 1 + pairs().len(), "{table}");
+    for ((line, source), (a, b)) in lines[1..]
+        .iter()
+        .zip(["stdin:1", "stdin:3", "stdin:4", "stdin:5"])
+        .zip(pairs())
+    {
+        let json: serde_json::Value =
+            serde_json::from_str(&single(&a, &b, &["--format", "json"])).unwrap();
+        let cells: Vec<&str> = line.split_whitespace().collect();
+        assert_eq!(cells[0], source, "{table}");
+        for (cell, name) in cells[1..6].iter().zip(&header[1..6]) {
+            assert_eq!(
+                number(cell),
+                json[*name].as_f64().unwrap(),
+                "{name}: {table}"
+            );
+        }
+        let one = single(&a, &b, &[]);
+        let sides: Vec<&str> = one.lines().take(2).collect();
+        assert_eq!(
+            sides,
+            [format!("a  {}", cells[6]), format!("b  {}", cells[7])]
+        );
+    }
+    let focused = ok(&batch(&input, &["--theta-range", "0:50", "--degrees"]));
+    assert!(
+        focused.starts_with("theta_deg  0.0:50.0\n\npair "),
+        "{focused}"
+    );
+}
+
+#[test]
+fn fit_records_pipe_into_pairs_and_l2_projected_equals_each_residual() {
+    let targets: String = [0.1, 0.3, 0.7]
+        .iter()
+        .map(|a| format!("{{\"ndf\":\"ggx\",\"alpha_tr\":{a}}}\n"))
+        .collect();
+    let fits = ok(&ndfplot_stdin(
+        &[
+            "fit", "--target", "-", "--family", "abc", "--by", "l2", "--format", "jsonl",
+        ],
+        &targets,
+    ));
+    let residuals: Vec<f64> = fits
+        .lines()
+        .map(|l| {
+            serde_json::from_str::<serde_json::Value>(l).unwrap()["residual"]
+                .as_f64()
+                .unwrap()
+        })
+        .collect();
+    let compared = ok(&batch(&fits, &["--metric", "l2_projected"]));
+    let values: Vec<f64> = compared.lines().map(number).collect();
+    assert_eq!(values, residuals);
+}
+
+#[test]
+fn a_bad_line_is_reported_by_its_line_and_the_others_are_still_compared() {
+    let good = format!("{{\"a\":{GGX},\"b\":{BECKMANN}}}");
+    let input = [
+        good.as_str(),
+        "not json",
+        r#"{"a":{"ndf":"ggx","alpha_tr":0.3},"c":{"ndf":"ggx","alpha_tr":0.2}}"#,
+        r#"{"a":{"ndf":"ggx","alpha_tr":0.3},"b":{"fresnel":"exact","eta":1.5}}"#,
+        r#"{"a":{"ndf":"ggx","alpha_tr":0.3},"fit":{"ndf":"ggx","alpha_tr":0.2}}"#,
+        r#"{"target":{"ndf":"ggx","alpha_tr":-1},"fit":{"ndf":"ggx","alpha_tr":0.2}}"#,
+        "[1]",
+        good.as_str(),
+    ]
+    .join("\n");
+    let out = batch(&input, &["--metric", "max_abs"]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
+    let value = single(GGX, BECKMANN, &["--metric", "max_abs"]);
+    assert_eq!(text(&out.stdout), format!("{value}{value}"));
+    let err = text(&out.stderr);
+    let lines: Vec<&str> = err.lines().collect();
+    let expected = [
+        "error: stdin:2: 1:1: invalid JSON",
+        "error: stdin:3: c: unknown key for a pair (got {\"ndf\":\"ggx\",\"alpha_tr\":0.2}, expected one of: a, b, target, fit, residual, metric)",
+        "error: stdin:3: b: missing side (got only a, expected {\"a\": <curve>, \"b\": <curve>} or a record of fit --format jsonl)",
+        "error: stdin:4: b.fresnel: compare needs two curves of the same kind",
+        "error: stdin:5: a pair needs its two sides under a and b, or target and fit",
+        "error: stdin:6: target.alpha_tr: ",
+        "error: stdin:7: a pair must be an object (got [1],",
+    ];
+    assert_eq!(lines.len(), expected.len(), "{err}");
+    for (line, start) in lines.iter().zip(expected) {
+        assert!(line.starts_with(start), "{start:?} in {err}");
+    }
+}
+
+#[test]
+fn pairs_read_a_file_gate_on_bounds_and_refuse_a_and_b() {
+    let dir = scratch("compare-pairs-file");
+    std::fs::copy(
+        crate::common::root().join("examples/renderer-ggx.csv"),
+        dir.join("renderer.csv"),
+    )
+    .unwrap();
+    let path = dir.join("pairs.jsonl");
+    std::fs::write(
+        &path,
+        format!(
+            "{{\"a\":{GGX},\"b\":{BECKMANN}}}\n{{\"a\":{{\"data\":\"csv\",\"path\":\"renderer.csv\"}},\"b\":{GGX}}}\n"
+        ),
+    )
+    .unwrap();
+    let path = path.to_str().unwrap();
+    let rows = ok(&ndfplot(&[
+        "compare", "--pairs", path, "--metric", "max_rel",
+    ]));
+    assert_eq!(
+        rows.lines().count(),
+        2,
+        "the CSV path resolves against the file's folder"
+    );
+    let gated = ndfplot(&["compare", "--pairs", path, "--max-error", "max_rel=0.5"]);
+    assert_eq!(gated.status.code(), Some(1));
+    let err = text(&gated.stderr);
+    assert!(
+        err.starts_with(&format!(
+            "compare: {path}:1: max_rel = 1.0 exceeds --max-error max_rel=0.5"
+        )) && err.lines().count() == 1,
+        "{err}"
+    );
+    assert_eq!(
+        ndfplot(&["compare", "--pairs", path, "--a", GGX, "--b", GGX])
+            .status
+            .code(),
+        Some(2)
+    );
+    usage_error(
+        &ndfplot_stdin(&["compare", "--pairs", "-"], "\n"),
+        "--pairs: no pair given",
     );
 }
