@@ -1,7 +1,7 @@
 //! The integration tests that run the real `ndfplot` binary or its render pipeline: the command
 //! line and its contracts, batch and multi-parameter fits, robustness against bad input and
-//! interruption, the JSON Schema, panel views, sampling, the lazily computed Fresnel basis, and
-//! interactive pages in a browser.
+//! interruption, the JSON Schema, panel views, sampling, the lazily computed Fresnel basis,
+//! interactive pages in a browser, and README's transcripts.
 
 #[path = "../common/mod.rs"]
 mod common;
@@ -15,6 +15,7 @@ mod lazy_basis;
 mod lint;
 mod man;
 mod published;
+mod readme;
 mod robustness;
 mod sampling;
 mod schema;
