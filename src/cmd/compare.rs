@@ -480,7 +480,7 @@ pub struct ReadySide {
 
 /// A pair as read: the name of its source and its two sides, or the problems that kept it from being
 /// read.
-pub type Pair = (String, std::result::Result<[ReadySide; 2], Problems>);
+pub type LoadedPair = (String, std::result::Result<[ReadySide; 2], Problems>);
 
 /// What a `--pairs` run writes: the text for stdout, the `compare: <source>: …` line of every exceeded
 /// bound (the run exits 1 when there are any), and the problems of the pairs that could not be
@@ -498,7 +498,12 @@ pub struct BatchReport {
 /// Compares every readable pair over `span` (in parallel) and writes the results in input order in
 /// `output`; a pair whose sides are of different kinds, whose numerics fail or whose `--metric` is
 /// undefined becomes a problem of its source, and the others are still written.
-pub fn run_pairs(pairs: Vec<Pair>, span: &Span, output: Output, bounds: &[Bound]) -> BatchReport {
+pub fn run_pairs(
+    pairs: Vec<LoadedPair>,
+    span: &Span,
+    output: Output,
+    bounds: &[Bound],
+) -> BatchReport {
     let results: Vec<std::result::Result<Compared, Problems>> = pairs
         .into_par_iter()
         .map(|(source, sides)| {

@@ -123,7 +123,7 @@ fn load_operand(arg: &str, flag: &str, allow_read: &[PathBuf]) -> Result<(Operan
 
 /// The pairs of `compare --pairs` ([`input::read_pairs`]), each side resolved on its own: one bad
 /// line does not keep the others from being compared.
-fn load_pairs(arg: &str, allow_read: &[PathBuf]) -> Result<Vec<compare::Pair>> {
+fn load_pairs(arg: &str, allow_read: &[PathBuf]) -> Result<Vec<compare::LoadedPair>> {
     let pairs = input::read_pairs(arg, allow_read, input::read_stdin)?
         .into_iter()
         .map(|(source, pair)| {

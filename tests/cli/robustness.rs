@@ -784,6 +784,8 @@ fn inputs_over_the_size_cap_are_refused_by_name() {
             Some(&spec),
             "stdin",
         ),
+        (vec!["compare", "--pairs", path], None, path),
+        (vec!["compare", "--pairs", "-"], Some(&spec), "stdin"),
     ] {
         let result = match stdin {
             Some(bytes) => crate::common::ndfplot_stdin(&args, std::str::from_utf8(bytes).unwrap()),
