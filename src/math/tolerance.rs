@@ -58,6 +58,23 @@ pub const NORMALIZATION_TOL: f64 = 1e-10;
 /// below [`NORMALIZATION_TOL`], still well above the ~1e-15 round-off of summing positive terms.
 pub const QUAD_REL_TOL: f64 = 1e-12;
 
+/// Relative error allowed for Smith's Λ by a closed form (Trowbridge–Reitz, Beckmann, Phong) against the
+/// 40-digit references: like D, each exponentiates or subtracts a computed value, Beckmann's bracket cancels
+/// by up to 2a² ≤ 128 below its asymptotic series and Λ's condition in θo reaches ~2a² ≈ 1400 in the far
+/// tail, so a few 1e-14 are expected and 1e-12 holds with margin.
+pub const REL_TOL_LAMBDA_CLOSED_FORM: f64 = 1e-12;
+
+/// Relative error allowed for Smith's Λ by MATH.md's 1D integral (`masking::lambda_integral`, the only route
+/// of Torrance–Sparrow, ABC, SGD and GTR): geometric panels of a fixed 16-point rule carry no error
+/// estimate, so the bound is set two orders above the worst error measured against the references
+/// (~1e-13), where a badly placed panel would show at once.
+pub const REL_TOL_LAMBDA_INTEGRAL: f64 = 1e-10;
+
+/// Allowed deviation from 1 of the weak white furnace G1 · A/cos θo (`masking::smith_furnace`), where Λ
+/// itself is at least this large: A is an adaptive quadrature to QUAD_REL_TOL and D's normalization holds to
+/// NORMALIZATION_TOL, so 1e-9 leaves room for both; below it the check cannot see Λ at all.
+pub const SMITH_FURNACE_TOL: f64 = 1e-9;
+
 /// Relative error allowed for the special functions of [`crate::math::special`] against mpmath: their
 /// series, recurrences and continued fractions each lose a few ulps, ~1e-15 in practice.
 pub const REL_TOL_SPECIAL: f64 = 1e-14;
