@@ -2,10 +2,30 @@
 //!
 //! For an isotropic NDF D normalized over projected area, the Smith masking of a view direction at
 //! angle θo from the normal is G1(θo) = 1/(1 + Λ(θo)), where Λ is the family's auxiliary function
-//! (each family computes its own; see `Ndf::lambda`). Masking and shadowing together, for a view at
+//! (each family computes its own; see [`Ndf::lambda`]). Masking and shadowing together, for a view at
 //! θo and a light at θi, follow one of two [`G2Model`]s. Everything here is pure f64 code.
+//!
+//! - [`integral`]: Λ of any NDF by MATH.md's 1D integral ([`lambda_integral`], [`lambda_by_integral`]).
+//! - [`engine`]: the G1 renderers use ([`G1Model`]: exact Smith, Walter's rational, the Beckmann-equivalent
+//!   Smith) and the weak white furnace value of each.
+//! - [`projected_area`]: the front-facing projected area, computed apart from Λ, to audit Λ against.
 
+pub mod engine;
+pub mod integral;
+pub mod projected_area;
+
+pub use engine::{G1Model, NoBeckmannEquivalent, beckmann_equivalent_alpha, walter_rational_g1};
+pub use integral::lambda_integral;
+pub use projected_area::{front_projected_area, smith_furnace};
+
+use crate::ndf::Ndf;
 use std::fmt;
+
+/// Λ(θo) of `ndf` by the generic 1D integral ([`lambda_integral`]), whatever route its family takes in
+/// [`Ndf::lambda`]: the independent check of the closed forms, and the route a benchmark compares them with.
+pub fn lambda_by_integral(ndf: &Ndf, theta_o: f64) -> f64 {
+    lambda_integral(|theta| ndf.eval(theta), theta_o)
+}
 
 /// How masking (view) and shadowing (light) combine into G2.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -3,10 +3,12 @@
 //! - [`special`]: exprel, the φ_k functions of exponential integrators and the scaled upper incomplete
 //!   gamma function e^x Γ(s, x) for every real s, which no available crate computes for s ≤ 0.
 //! - [`quad`]: adaptive Gauss–Kronrod (7, 15) quadrature that resolves narrow lobes.
+//! - [`gauss_legendre`]: the fixed 16-point Gauss–Legendre rule, for integrals split into panels in advance.
 //! - [`roots`]: Brent's safeguarded bracketing root finder and a log-scale bracket expansion.
 //! - [`simplex`]: Nelder–Mead minimization within a box, for fits of several parameters.
 //! - [`tolerance`]: every accuracy target of the crate's numerical tests, with its reason.
 
+pub mod gauss_legendre;
 pub mod quad;
 pub mod roots;
 pub mod simplex;

@@ -58,6 +58,25 @@ pub const NORMALIZATION_TOL: f64 = 1e-10;
 /// below [`NORMALIZATION_TOL`], still well above the ~1e-15 round-off of summing positive terms.
 pub const QUAD_REL_TOL: f64 = 1e-12;
 
+/// Relative error allowed for Smith's Λ by a closed form (Trowbridge–Reitz, Beckmann, Phong) against the
+/// 40-digit references: like D, each exponentiates or subtracts a computed value, Beckmann's bracket cancels
+/// by up to 2a² ≤ 128 below its asymptotic series and Λ's condition in θo reaches ~2a² ≈ 1400 in the far
+/// tail, so a few 1e-14 are expected and 1e-12 holds with margin.
+pub const REL_TOL_LAMBDA_CLOSED_FORM: f64 = 1e-12;
+
+/// Relative error allowed for Smith's Λ by MATH.md's 1D integral (`masking::lambda_integral`, the only route
+/// of Torrance–Sparrow, ABC, SGD and GTR): geometric panels of a fixed 16-point rule carry no error
+/// estimate. Worst measured against the references: 2.4e-13 (SGD) for those families, 1.4e-12 for a
+/// super-rough Beckmann lobe (α_b = 5 at θo = 1°) and 9e-13 against the closed forms over their whole domains;
+/// the bound leaves a margin of ~7 above that, where a badly placed panel (2e-9 with a panel ratio of 4)
+/// would show at once.
+pub const REL_TOL_LAMBDA_INTEGRAL: f64 = 1e-11;
+
+/// Allowed deviation from 1 of the weak white furnace G1 · A/cos θo (`masking::smith_furnace`), where Λ
+/// itself is at least this large: A is an adaptive quadrature to QUAD_REL_TOL and D's normalization holds to
+/// NORMALIZATION_TOL, so 1e-9 leaves room for both; below it the check cannot see Λ at all.
+pub const SMITH_FURNACE_TOL: f64 = 1e-9;
+
 /// Relative error allowed for the special functions of [`crate::math::special`] against mpmath: their
 /// series, recurrences and continued fractions each lose a few ulps, ~1e-15 in practice.
 pub const REL_TOL_SPECIAL: f64 = 1e-14;

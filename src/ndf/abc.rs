@@ -14,6 +14,9 @@
 //!   θ → π/2: D → (1 + a₁)^{−a₂}/N, small but positive.
 //! - Stable form: D = exp(−a₂ log1p(2 a₁ sin²(θ/2)) − ln N), so that U^{−a₂} (e.g. (1e6)^{−1e4}) never
 //!   under- or overflows by itself.
+//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::masking::lambda_integral`], within
+//!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
+//!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
 use super::Distribution;
 use crate::domain::{Bound, DomainError, Param};
@@ -113,6 +116,11 @@ impl Distribution for Abc {
     fn eval(&self, theta: f64) -> f64 {
         let one_minus_cos_theta = 2.0 * (0.5 * theta).sin().powi(2);
         (self.ln_peak - self.alpha_abc2 * (self.alpha_abc1 * one_minus_cos_theta).ln_1p()).exp()
+    }
+
+    /// Λ(θo) by MATH.md's 1D integral ([`crate::masking::lambda_integral`]): no closed form is known.
+    fn lambda(&self, theta_o: f64) -> f64 {
+        crate::masking::lambda_integral(|theta| self.eval(theta), theta_o)
     }
 
     fn params(&self) -> Vec<f64> {

@@ -22,6 +22,9 @@
 //!   q/q_peak ≤ 1 + k ≤ 1e300). Its relative error is ~γ times that of q/q_peak (a few ulps), plus for γ > 1
 //!   the rounding of 1/γ times ln D_peak (≤ 690 · 2⁻⁵³ ≈ 8e-14), where exp(ln D_peak − γ ln(q/q_peak)) would
 //!   add |ln D| ulps (up to ~1450).
+//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::masking::lambda_integral`], within
+//!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
+//!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
 use super::Distribution;
 use crate::domain::{Bound, DomainError, Param};
@@ -131,6 +134,11 @@ impl Distribution for Gtr {
         } else {
             (self.peak_scale / q_over_q_peak).powf(self.gamma_gtr)
         }
+    }
+
+    /// Λ(θo) by MATH.md's 1D integral ([`crate::masking::lambda_integral`]): no closed form is known.
+    fn lambda(&self, theta_o: f64) -> f64 {
+        crate::masking::lambda_integral(|theta| self.eval(theta), theta_o)
     }
 
     fn params(&self) -> Vec<f64> {

@@ -39,6 +39,11 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
     /// D(θ) for θ ∈ [0, π/2], normalized over projected area.
     fn eval(&self, theta: f64) -> f64;
 
+    /// Smith's Λ(θo) for θo ∈ [0, π/2] (MATH.md "Masking–shadowing and albedo"), with G1 = 1/(1 + Λ): Λ(0) = 0,
+    /// non-decreasing in θo, finite and ≥ 0 (or +∞ where θo reaches π/2 if the family's Λ diverges there),
+    /// never NaN. Each family states its route (closed form or [`crate::masking::lambda_integral`]).
+    fn lambda(&self, theta_o: f64) -> f64;
+
     /// The parameter values in [`PARAMS`](Self::PARAMS) order.
     fn params(&self) -> Vec<f64>;
 }
@@ -157,6 +162,14 @@ macro_rules! families {
             pub fn eval(&self, theta: f64) -> f64 {
                 match self {
                     $(Ndf::$variant(d) => d.eval(theta),)+
+                }
+            }
+
+            /// Smith's Λ(θo) for θo ∈ [0, π/2] (see [`Distribution::lambda`]).
+            #[inline]
+            pub fn lambda(&self, theta_o: f64) -> f64 {
+                match self {
+                    $(Ndf::$variant(d) => d.lambda(theta_o),)+
                 }
             }
 

@@ -13,6 +13,9 @@
 //! - θ → 0: D → 1/N ≈ 1/(π α²) for small α. θ → π/2: D → exp(−(π/(2α))²)/N, exactly 0 for small α.
 //! - Stable form: D = exp(ln(1/N) − (θ/α)²) in one exponential, so that exp(−(θ/α)²) cannot underflow while
 //!   D itself is still representable (1/N reaches 3e299).
+//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::masking::lambda_integral`], within
+//!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
+//!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
 use super::Distribution;
 use crate::domain::{Bound, DomainError, Param};
@@ -81,6 +84,11 @@ impl Distribution for TorranceSparrow {
     #[inline]
     fn eval(&self, theta: f64) -> f64 {
         (self.ln_peak - (theta / self.alpha_ts).powi(2)).exp()
+    }
+
+    /// Λ(θo) by MATH.md's 1D integral ([`crate::masking::lambda_integral`]): no closed form is known.
+    fn lambda(&self, theta_o: f64) -> f64 {
+        crate::masking::lambda_integral(|theta| self.eval(theta), theta_o)
     }
 
     fn params(&self) -> Vec<f64> {

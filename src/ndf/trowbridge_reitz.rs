@@ -10,6 +10,10 @@
 //! - Stable form: sin²θ + α² cos²θ, a sum of non-negative terms, instead of the notebook's cos²θ (α² − 1) + 1,
 //!   which cancels for small α near θ = 0; D = (α/q)²/π rather than α²/(π q²) so that α⁴ never underflows
 //!   (q = α² at θ = 0).
+//! - Smith Λ (Heitz 2014 eq. 72): Λ(θo) = (√(1 + x) − 1)/2 with x = α² tan²θo, evaluated as x/(2(√(1 + x) + 1)),
+//!   whose textbook form loses ~7 digits at α = 1e-3, θo = 30°; x = (α tan θo)² so that α² tan²θo does not
+//!   underflow as a product of an underflowing α². Λ(0) = 0; at θo = FRAC_PI_2, tan θo = 1.6e16 and Λ ≈ α tan θo/2
+//!   is large but finite (≤ 8e19 at α = 1e4).
 
 use super::Distribution;
 use crate::domain::{Bound, DomainError, Param};
@@ -73,6 +77,12 @@ impl Distribution for TrowbridgeReitz {
         let (sin_theta, cos_theta) = theta.sin_cos();
         let q = sin_theta * sin_theta + self.alpha2 * cos_theta * cos_theta;
         (self.alpha_tr / q).powi(2) * FRAC_1_PI
+    }
+
+    /// Λ(θo) = x/(2(√(1 + x) + 1)), x = (α_tr tan θo)² (module header).
+    fn lambda(&self, theta_o: f64) -> f64 {
+        let x = (self.alpha_tr * theta_o.tan()).powi(2);
+        x / (2.0 * ((1.0 + x).sqrt() + 1.0))
     }
 
     fn params(&self) -> Vec<f64> {

@@ -82,11 +82,14 @@ pub fn files_in(dir: &Path) -> Vec<String> {
     names
 }
 
-/// The records of the CSV file at `path`, relative to the package root.
+/// The records of the CSV file at `path`, relative to the package root (lines starting with `#` are
+/// comments, such as a provenance line above the header).
 pub fn csv_records(path: &str) -> Vec<csv::StringRecord> {
     let path = root().join(path);
-    let mut reader =
-        csv::Reader::from_path(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let mut reader = csv::ReaderBuilder::new()
+        .comment(Some(b'#'))
+        .from_path(&path)
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     reader.records().map(|r| r.expect("a CSV record")).collect()
 }
 

@@ -9,6 +9,7 @@ mod common;
 mod fit;
 mod fresnel_properties;
 mod fresnel_reference;
+mod masking;
 mod ndf_properties;
 mod ndf_reference;
 mod stress;
