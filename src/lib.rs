@@ -4,10 +4,12 @@
 //! `look`) → resolved scenes, fits, coefficients and data files computed and read (`resolve`) →
 //! sampling plan (`plan`) → evaluated jobs (`sample`, `adaptive`) → the figure
 //! (`figure`), placed by `layout` → bytes and files (`output`); `render` runs the whole chain.
-//! The maths (`ndf`, `masking`, `fresnel`, `math`) is pure f64 code with no I/O; `audit` integrates the curves of
-//! scenes for `ndfplot check`.
+//! The maths (`ndf`, `masking`, `fresnel`, `math`) is pure f64 code with no I/O; `albedo` integrates
+//! the single-scattering microfacet BRDF into directional albedos, their averages, energy-compensation
+//! factors and split-sum tables; `audit` integrates the curves of scenes for `ndfplot check`.
 
 pub mod adaptive;
+pub mod albedo;
 pub mod angle;
 pub mod audit;
 pub mod bench;

@@ -81,6 +81,23 @@ pub const SMITH_FURNACE_TOL: f64 = 1e-9;
 /// series, recurrences and continued fractions each lose a few ulps, ~1e-15 in practice.
 pub const REL_TOL_SPECIAL: f64 = 1e-14;
 
+/// Relative accuracy asked of each nested adaptive integral of the directional albedo
+/// (`albedo`): the Gauss–Kronrod error estimate overstates the error of smooth integrands by orders
+/// of magnitude, so 1e-12 per level lands E, E_avg and the split-sum tables well inside
+/// [`ALBEDO_TOL`], while staying above the ~1e-15 round-off floor that would stall the bisection.
+pub const ALBEDO_QUAD_REL_TOL: f64 = 1e-12;
+
+/// Absolute error allowed for directional albedos E(μ), averages E_avg and split-sum values against
+/// exact or independent references: E ≤ 1, and the nested quadrature holds ~1e-12 per level, so
+/// 1e-10 leaves two orders of margin for the accumulated error of three nested integrals.
+pub const ALBEDO_TOL: f64 = 1e-10;
+
+/// Absolute accuracy (in units of E) asked of each nested albedo integral whose Fresnel weight is
+/// a tabulated basis function or reconstruction: linear between 1000 nodes in cos θd, its kinks
+/// make Gauss–Kronrod converge only algebraically, and a tighter target costs orders of magnitude
+/// more subdivisions for no gain over the tabulation's own error.
+pub const ALBEDO_TABULATED_TOL: f64 = 1e-8;
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -6,6 +6,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod albedo;
 mod fit;
 mod fresnel_properties;
 mod fresnel_reference;

@@ -1,0 +1,281 @@
+//! Directional albedo (`ndfplot::albedo`) of the GGX microfacet BRDF against exact values, an
+//! mpmath reference, an independent quadrature, the values of MATH.md's research notes and Cycles'
+//! precomputed tables, and its invariants (bounds, split-sum linearity).
+//!
+//! - `tests/data/albedo_reference.csv`: E(μ = 1) at 40-digit mpmath (`albedo_reference_gen.py`).
+//! - `tests/data/cycles_ggx_E.csv`: Cycles' `table_ggx_E` (32 × 32) and `table_ggx_Eavg` (32),
+//!   Monte Carlo estimates printed as float32 to 6 decimals.
+
+use crate::common::{number, root};
+use ndfplot::albedo::{
+    Microfacet, RoughnessMap, albedo_table, average_albedo, average_albedo_table, split_sum_tables,
+    turquin_factor,
+};
+use ndfplot::fresnel::basis::coeffs;
+use ndfplot::fresnel::exact::{Incidence, Index, reflectance};
+use ndfplot::masking::G2Model;
+use ndfplot::math::quad::integrate;
+use ndfplot::math::tolerance::{ALBEDO_TABULATED_TOL, ALBEDO_TOL};
+use std::f64::consts::PI;
+
+/// Trowbridge–Reitz D(θ) = α²/(π (sin²θ + α² cos²θ)²).
+fn ggx_d(alpha: f64) -> impl Fn(f64) -> f64 + Sync + Send + Copy {
+    move |theta: f64| {
+        let (s, c) = theta.sin_cos();
+        let k = s * s + alpha * alpha * c * c;
+        alpha * alpha / (PI * k * k)
+    }
+}
+
+/// Trowbridge–Reitz Λ(θ) = x/(2(√(1 + x) + 1)), x = α² tan²θ.
+fn ggx_lambda(alpha: f64) -> impl Fn(f64) -> f64 + Sync + Send + Copy {
+    move |theta: f64| {
+        let t = alpha * theta.tan();
+        let x = t * t;
+        x / (2.0 * ((1.0 + x).sqrt() + 1.0))
+    }
+}
+
+type Ggx = Microfacet<Box<dyn Fn(f64) -> f64 + Sync + Send>, Box<dyn Fn(f64) -> f64 + Sync + Send>>;
+
+/// The GGX surface of width α with the G2 model `g2`.
+fn ggx(alpha: f64, g2: G2Model) -> Ggx {
+    Microfacet::new(Box::new(ggx_d(alpha)), Box::new(ggx_lambda(alpha)), g2)
+}
+
+fn albedo(mu: f64, alpha: f64) -> f64 {
+    ggx(alpha, G2Model::HeightCorrelated)
+        .albedo(mu, None)
+        .unwrap_or_else(|e| panic!("E({mu}, {alpha}): {e}"))
+}
+
+/// The records of a CSV file with `#` comment lines, relative to the package root.
+fn commented_csv(path: &str) -> Vec<csv::StringRecord> {
+    let path = root().join(path);
+    csv::ReaderBuilder::new()
+        .comment(Some(b'#'))
+        .from_path(&path)
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+        .records()
+        .map(|r| r.expect("a CSV record"))
+        .collect()
+}
+
+#[test]
+fn albedo_uniform_lobe_at_normal_incidence_is_one_minus_ln_2() {
+    // α = 1 makes D = 1/π and G2 = 2μi/(1 + μi): E(1) = ∫₀¹ μ/(1 + μ) dμ = 1 − ln 2.
+    for g2 in [G2Model::HeightCorrelated, G2Model::Separable] {
+        let e = ggx(1.0, g2).albedo(1.0, None).unwrap();
+        let err = (e - (1.0 - 2f64.ln())).abs();
+        assert!(err <= 1e-12, "{g2}: {e}, error {err:e}");
+    }
+}
+
+#[test]
+fn albedo_at_normal_incidence_matches_mpmath() {
+    let mut worst: f64 = 0.0;
+    for record in commented_csv("tests/data/albedo_reference.csv") {
+        let (alpha, mu, want) = (number(&record, 0), number(&record, 1), number(&record, 2));
+        let err = (albedo(mu, alpha) - want).abs();
+        assert!(err <= ALBEDO_TOL, "α = {alpha}: error {err:e}");
+        worst = worst.max(err);
+    }
+    eprintln!("E(1) against mpmath: worst |difference| {worst:.1e}");
+}
+
+/// E(μo) = (1/(4μo)) ∫ F D(h) G2 dωi over the upper hemisphere of ωi, in (θi, φi) with the interval
+/// split at the mirror direction (θo, π): an independent parameterization of the same integral.
+fn albedo_by_light_direction(mu: f64, alpha: f64) -> f64 {
+    const TOL: f64 = 1e-13;
+    let (d, lambda) = (ggx_d(alpha), ggx_lambda(alpha));
+    let theta_o = mu.acos();
+    let (sin_o, lambda_o) = (theta_o.sin(), lambda(theta_o));
+    let slice = |theta_i: f64| {
+        let (sin_i, cos_i) = theta_i.sin_cos();
+        let g2 = 1.0 / (1.0 + lambda_o + lambda(theta_i));
+        let integrand = |phi: f64| {
+            let h = [sin_o + sin_i * phi.cos(), sin_i * phi.sin(), mu + cos_i];
+            let norm = (h[0] * h[0] + h[1] * h[1] + h[2] * h[2]).sqrt();
+            d((h[2] / norm).min(1.0).acos())
+        };
+        let split = PI - (4.0 * alpha).min(1.0);
+        let pieces = integrate(integrand, 0.0, split, TOL).unwrap()
+            + integrate(integrand, split, PI, TOL).unwrap();
+        2.0 * pieces * g2 * sin_i / (4.0 * mu)
+    };
+    let mut edges = vec![0.0, theta_o, PI / 2.0];
+    for k in [-4.0, -1.0, 1.0, 4.0] {
+        let edge = theta_o + k * alpha;
+        if edge > 0.0 && edge < PI / 2.0 {
+            edges.push(edge);
+        }
+    }
+    edges.sort_by(f64::total_cmp);
+    edges
+        .windows(2)
+        .map(|w| integrate(slice, w[0], w[1], TOL).unwrap())
+        .sum()
+}
+
+#[test]
+fn albedo_agrees_with_an_independent_quadrature() {
+    let mut worst: f64 = 0.0;
+    for alpha in [0.0166493, 0.0625, 0.25, 1.0, 2.0] {
+        for mu in [0.05, 0.3, 0.7, 0.95] {
+            let (got, want) = (albedo(mu, alpha), albedo_by_light_direction(mu, alpha));
+            let err = (got - want).abs();
+            assert!(
+                err <= ALBEDO_TOL,
+                "E({mu}, {alpha}) = {got}, independently {want}"
+            );
+            worst = worst.max(err);
+        }
+    }
+    eprintln!("E against the (θi, φi) quadrature: worst |difference| {worst:.1e}");
+}
+
+/// |got − want| within one unit of `want`'s last printed digit (`decimals` of them): the notes
+/// truncate some values (E(1, 0.0166493) = 0.99971591981… is printed 0.999715919).
+fn assert_printed(what: &str, got: f64, want: f64, decimals: i32) {
+    let unit = 10f64.powi(-decimals) + ALBEDO_TOL;
+    assert!((got - want).abs() <= unit, "{what}: {got}, printed {want}");
+}
+
+#[test]
+fn albedo_reproduces_the_research_values() {
+    // (μ, α, E, decimals printed); the notes' (0.516129, 0.0166493) is Cycles' grid point
+    // (16/31, (4/31)²).
+    let alpha_cycles = (4.0f64 / 31.0).powi(2);
+    let values = [
+        (0.5, 0.25, 0.857263436, 9),
+        (0.2, 0.5, 0.789929187, 9),
+        (0.5, 0.5625, 0.6631758, 7),
+        (0.5, 1.0, 0.4506939, 7),
+        (1.0, alpha_cycles, 0.999715919, 9),
+        (16.0 / 31.0, alpha_cycles, 0.999306215, 9),
+        (4.0 / 31.0, alpha_cycles, 0.989924759, 9),
+    ];
+    for (mu, alpha, want, decimals) in values {
+        assert_printed(
+            &format!("E({mu}, {alpha})"),
+            albedo(mu, alpha),
+            want,
+            decimals,
+        );
+    }
+    // (α, E_avg, Turquin factor 1/E(μ = 0.5) for F₀ = 1).
+    let averages = [
+        (0.0625, 0.987250, 1.01181),
+        (0.25, 0.882323, 1.16650),
+        (0.5625, 0.656201, 1.50790),
+        (1.0, 0.409137, 2.21880),
+    ];
+    for (alpha, want_avg, want_turquin) in averages {
+        let surface = ggx(alpha, G2Model::HeightCorrelated);
+        let e_avg = average_albedo(&surface, None).unwrap();
+        assert_printed(&format!("E_avg({alpha})"), e_avg, want_avg, 6);
+        let factor = turquin_factor(1.0, surface.albedo(0.5, None).unwrap());
+        assert_printed(&format!("Turquin({alpha})"), factor, want_turquin, 5);
+    }
+}
+
+/// Cycles' clamp of a grid coordinate (`cycles_precompute.cpp`): max(i/31, 1e-4), in float32.
+fn cycles_coordinate(index: &str) -> f64 {
+    let i: f32 = index.parse().expect("a grid index");
+    f64::from((i / 31.0).clamp(1e-4, 1.0))
+}
+
+#[test]
+fn albedo_reproduces_cycles_tables() {
+    // A Monte Carlo table printed to 6 decimals: allow its print rounding (5e-7) plus its noise.
+    const CYCLES_TOL: f64 = 2.5e-6;
+    let (mut worst_e, mut worst_avg): (f64, f64) = (0.0, 0.0);
+    for record in commented_csv("tests/data/cycles_ggx_E.csv") {
+        let r = cycles_coordinate(&record[2]);
+        let alpha = f64::from((r as f32) * (r as f32));
+        let want = number(&record, 3);
+        let (got, worst) = match &record[0] {
+            "ggx_E" => (albedo(cycles_coordinate(&record[1]), alpha), &mut worst_e),
+            "ggx_Eavg" => {
+                let surface = ggx(alpha, G2Model::HeightCorrelated);
+                (average_albedo(&surface, None).unwrap(), &mut worst_avg)
+            }
+            other => panic!("unknown table {other}"),
+        };
+        let err = (got - want).abs();
+        assert!(err <= CYCLES_TOL, "{record:?}: exact {got}");
+        *worst = worst.max(err);
+    }
+    eprintln!("Cycles ggx_E: worst |difference| {worst_e:.2e}; ggx_Eavg: {worst_avg:.2e}");
+}
+
+#[test]
+fn albedo_stays_within_zero_and_one() {
+    let mus = [0.0, 1e-6, 1e-3, 0.05, 0.3, 0.7, 0.99, 1.0 - 1e-12, 1.0];
+    for g2 in [G2Model::HeightCorrelated, G2Model::Separable] {
+        for alpha in [1e-3, 0.01, 0.1, 0.5, 1.0, 2.0, 4.0] {
+            let surface = ggx(alpha, g2);
+            for mu in mus {
+                let e = surface.albedo(mu, None).unwrap();
+                assert!(
+                    (-ALBEDO_TOL..=1.0 + ALBEDO_TOL).contains(&e),
+                    "{g2} E({mu}, {alpha}) = {e}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn albedo_tables_follow_the_grid_convention_and_split_sum_is_linear() {
+    let surface = |alpha: f64| ggx(alpha, G2Model::HeightCorrelated);
+    let (n_mu, n_r) = (6, 5);
+    let table = albedo_table(n_mu, n_r, RoughnessMap::Squared, surface, None, None).unwrap();
+    assert_eq!(table.mu, [0.0, 0.2, 0.4, 0.6, 0.8, 1.0]);
+    assert_eq!(table.roughness, [0.0, 0.25, 0.5, 0.75, 1.0]);
+    for (i, &mu) in table.mu.iter().enumerate() {
+        // The mirror limit r = 0 without Fresnel is 1; the grazing limit μ = 0 with
+        // height-correlated G2 is 1 too.
+        assert_eq!(table.get(i, 0), 1.0);
+        for (j, &r) in table.roughness.iter().enumerate().skip(1) {
+            let want = if mu == 0.0 { 1.0 } else { albedo(mu, r * r) };
+            assert!((table.get(i, j) - want).abs() <= ALBEDO_TOL);
+        }
+    }
+    // The split sum integrates at ALBEDO_TABULATED_TOL per level; the kinks of the tabulated basis
+    // leave its values within ~5 times that of their limits, and four of them are summed.
+    const SPLIT_SUM_TOL: f64 = 100.0 * ALBEDO_TABULATED_TOL;
+    let tables = split_sum_tables(n_mu, n_r, RoughnessMap::Squared, surface, None).unwrap();
+    for (e0, e) in tables[0].values.iter().zip(&table.values) {
+        assert!((e0 - e).abs() <= SPLIT_SUM_TOL, "E_0 {e0} ≠ E {e}");
+    }
+    // Gold and glass: Σ c_k E_k equals the albedo with the reconstructed Fresnel F̂(θd).
+    for (eta, kappa) in [(0.29, 2.86), (1.5, 0.0)] {
+        let c = coeffs(Index::new(eta, kappa));
+        let weights = [c.c0, c.c1, c.c2, c.c3];
+        let reconstructed = move |theta_d: f64| c.interpolate(theta_d.cos());
+        let direct = albedo_table(
+            n_mu,
+            n_r,
+            RoughnessMap::Squared,
+            |alpha| surface(alpha).with_tolerance(ALBEDO_TABULATED_TOL),
+            Some(&reconstructed),
+            None,
+        )
+        .unwrap();
+        for (cell, want) in direct.values.iter().enumerate() {
+            let split: f64 = (0..4).map(|k| weights[k] * tables[k].values[cell]).sum();
+            assert!(
+                (split - want).abs() <= SPLIT_SUM_TOL,
+                "η̃ = {eta} + {kappa}i, cell {cell}: {split} vs {want}"
+            );
+        }
+    }
+    // The exact Fresnel stays within [0, 1], so its albedo does too.
+    let gold = Index::new(0.29, 2.86);
+    let exact = move |theta_d: f64| reflectance(Incidence::from_cos(theta_d.cos()), gold);
+    let e_gold = albedo_table(3, 3, RoughnessMap::Linear, surface, Some(&exact), None).unwrap();
+    assert!(e_gold.values.iter().all(|e| (0.0..=1.0).contains(e)));
+    let averages = average_albedo_table(3, RoughnessMap::Linear, surface, None, None).unwrap();
+    assert_eq!(averages[0], 1.0);
+}
