@@ -1,13 +1,20 @@
-//! The normalization audit of every curve in scenes (what `ndfplot check` prints). For an NDF, 2π ∫₀^{π/2} D sin θ cos θ dθ with its error estimate, which must be 1 within `--tolerance`; for a
-//! Fresnel curve, the hemispherical average 2 ∫₀¹ F(c) c dc, reported only. A view transform of an NDF
-//! is audited through its NDF; difference series are not audited (they are not distributions).
+//! The audit of every curve in scenes (what `ndfplot check` prints). For an NDF, 2π ∫₀^{π/2} D sin θ cos θ
+//! dθ with its error estimate, which must be 1 within `--tolerance`, and the consistency of its Smith Λ:
+//! the weak white furnace G1(θo) A(θo)/cos θo with the front-facing projected area A computed apart from Λ
+//! ([`masking::smith_furnace`]), which must be 1 within `--tolerance` at every θo of [`FURNACE_ANGLES_DEG`];
+//! for a Fresnel curve, the hemispherical average 2 ∫₀¹ F(c) c dc, reported only. A view transform of an
+//! NDF, or a quantity of it (G1, albedo, …), is audited through its NDF; difference series are not audited
+//! (they are not distributions).
 //!
 //! Owns what is audited and how; the integrals are [`crate::metrics::projected_integral`]'s. The
 //! table and the verdict (exit 1 on a failure) are the command's (`cmd::check`).
 
 use crate::curve::Curve;
 use crate::error::{Error, Result};
+use crate::masking;
+use crate::math::tolerance::QUAD_REL_TOL;
 use crate::metrics::{Estimate, MetricError, lobe_width, maximum, projected_integral};
+use crate::ndf::Ndf;
 use crate::scene::Scene;
 use rayon::prelude::*;
 use std::collections::HashSet;
@@ -30,6 +37,9 @@ pub enum Quantity {
     Normalization,
     /// 2 ∫₀¹ F(c) c dc of a Fresnel curve.
     HemisphericalAverage,
+    /// The weak white furnace G1(θo) A(θo)/cos θo of an NDF's Smith Λ farthest from 1 over
+    /// [`FURNACE_ANGLES_DEG`]; should be 1.
+    SmithConsistency,
 }
 
 impl Quantity {
@@ -38,6 +48,7 @@ impl Quantity {
         match self {
             Quantity::Normalization => "normalization",
             Quantity::HemisphericalAverage => "hemispherical_average",
+            Quantity::SmithConsistency => "smith_consistency",
         }
     }
 }
@@ -56,9 +67,9 @@ pub struct Audit {
 }
 
 impl Audit {
-    /// |integral − 1| for a normalization, `None` for a Fresnel average.
+    /// |integral − 1| for a normalization or a Smith consistency, `None` for a Fresnel average.
     pub fn deviation(&self) -> Option<f64> {
-        (self.quantity == Quantity::Normalization).then(|| (self.integral.value - 1.0).abs())
+        (self.quantity != Quantity::HemisphericalAverage).then(|| (self.integral.value - 1.0).abs())
     }
 }
 
@@ -68,13 +79,20 @@ pub fn normalization(d: impl Fn(f64) -> f64) -> std::result::Result<Estimate, Me
     projected_integral(d, lobe_width(peak.value), AUDIT_SHIFT)
 }
 
-/// The audit quantity of a curve (for a transformed view, of the NDF behind it), or `None` for a
-/// difference series.
-pub fn audit(curve: &Curve) -> Option<std::result::Result<(Quantity, Estimate), MetricError>> {
+/// The view angles, in degrees, at which an NDF's Smith consistency is audited: the normal, every 15° and
+/// the grazing angles where Λ grows fastest.
+pub const FURNACE_ANGLES_DEG: [f64; 9] = [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0, 89.0, 89.9];
+
+/// The audit quantities of a curve: an NDF's normalization and Smith consistency (also for a view or a
+/// quantity of it, through the NDF behind it), a Fresnel curve's average; none for a difference series.
+pub fn audit(curve: &Curve) -> Vec<std::result::Result<(Quantity, Estimate), MetricError>> {
     match curve {
-        Curve::Ndf(d) => Some(normalization(|t| d.eval(t)).map(|e| (Quantity::Normalization, e))),
+        Curve::Ndf(d) => vec![
+            normalization(|t| d.eval(t)).map(|e| (Quantity::Normalization, e)),
+            smith_consistency(d).map(|e| (Quantity::SmithConsistency, e)),
+        ],
         // 2 ∫₀¹ F(c) c dc = (1/π) · 2π ∫₀^{π/2} F sin θ cos θ dθ.
-        Curve::Fresnel(f) => Some(
+        Curve::Fresnel(f) => vec![
             projected_integral(|t| f.eval(t), lobe_width(1.0), AUDIT_SHIFT).map(|e| {
                 (
                     Quantity::HemisphericalAverage,
@@ -84,10 +102,31 @@ pub fn audit(curve: &Curve) -> Option<std::result::Result<(Quantity, Estimate), 
                     },
                 )
             }),
-        ),
+        ],
         Curve::Transformed { curve, .. } => audit(curve),
-        Curve::Difference { .. } => None,
+        Curve::Quantity { ndf, .. } => audit(&Curve::Ndf(ndf.clone())),
+        Curve::Difference { .. } => vec![],
     }
+}
+
+/// The weak white furnace of `ndf`'s Smith Λ farthest from 1 over [`FURNACE_ANGLES_DEG`], with the error
+/// the front-area quadrature was asked for ([`QUAD_REL_TOL`], relative).
+pub fn smith_consistency(ndf: &Ndf) -> std::result::Result<Estimate, MetricError> {
+    let mut worst = 1.0_f64;
+    for degrees in FURNACE_ANGLES_DEG {
+        let theta = degrees.to_radians();
+        let value = masking::smith_furnace(ndf, theta).map_err(MetricError::Quad)?;
+        if !value.is_finite() {
+            return Err(MetricError::NonFinite { theta });
+        }
+        if (value - 1.0).abs() > (worst - 1.0).abs() {
+            worst = value;
+        }
+    }
+    Ok(Estimate {
+        value: worst,
+        error: QUAD_REL_TOL * worst.abs(),
+    })
 }
 
 /// Audits every distinct curve of `scenes` (first appearance order), in parallel.
@@ -102,10 +141,11 @@ pub fn audit_scenes(scenes: &[Scene]) -> Result<Vec<Audit>> {
             }
         }
     }
-    let audits: Vec<Option<Audit>> = curves
+    let audits: Vec<Vec<Audit>> = curves
         .par_iter()
         .map(|(scene, json, curve)| {
             audit(curve)
+                .into_iter()
                 .map(|result| {
                     let (quantity, integral) =
                         result.map_err(|e| Error::Numerics(format!("{scene}: {json}: {e}")))?;
@@ -116,7 +156,7 @@ pub fn audit_scenes(scenes: &[Scene]) -> Result<Vec<Audit>> {
                         integral,
                     })
                 })
-                .transpose()
+                .collect()
         })
         .collect::<Result<_>>()?;
     Ok(audits.into_iter().flatten().collect())

@@ -386,11 +386,13 @@ pub struct FitArgs {
 #[derive(Debug, Args)]
 #[command(
     after_long_help = "For every distinct NDF of the scenes: 2 pi integral D sin cos dtheta over [0, pi/2] by\n\
-    adaptive quadrature, with its error estimate and |integral - 1|; for every Fresnel curve the\n\
+    adaptive quadrature, with its error estimate and |integral - 1|, and its Smith consistency: the weak\n\
+    white furnace G1(theta_o) A(theta_o) / cos theta_o farthest from 1 over theta_o in 0..89.9 degrees,\n\
+    the front-facing projected area A integrated apart from Lambda; for every Fresnel curve the\n\
     hemispherical average 2 integral_0^1 F(c) c dc (reported, not checked). Difference series are skipped.\n\
     --format json prints a JSON array of one object per row and --format csv CSV, with the table's\n\
     column names (deviation null or empty for a Fresnel average, curve as JSON).\n\
-    Exit 1 when an NDF is off by more than --tolerance.\n\n\
+    Exit 1 when an NDF's normalization or Smith consistency is off by more than --tolerance.\n\n\
     Examples:\n  \
     ndfplot check\n  \
     ndfplot check configs/abc-vs-tr.json my-scenes/ --tolerance 1e-12\n  \
@@ -400,7 +402,7 @@ pub struct CheckArgs {
     /// Scene spec files, or folders whose *.json are checked in name order. None: the built-in catalogue.
     #[arg(value_name = "SPEC.json|DIR")]
     pub paths: Vec<PathBuf>,
-    /// Largest accepted |2 pi integral D sin cos dtheta - 1|.
+    /// Largest accepted |2 pi integral D sin cos dtheta - 1| and Smith-consistency deviation from 1.
     #[arg(long, value_name = "X", default_value_t = crate::audit::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
     /// Output: a readable table, a JSON array of one object per row, or CSV.

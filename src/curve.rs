@@ -16,6 +16,7 @@ use crate::keys::{self, Accepted};
 use crate::ndf::{Family, Ndf};
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::published::{Channel, Preset, PresetError, Source};
+use crate::quantity::{self, Quantity};
 use crate::transform::Transform;
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
@@ -42,6 +43,35 @@ pub enum Curve {
         /// The transformed NDF.
         curve: Box<Curve>,
     },
+    /// A quantity of an NDF's microfacet model other than D (Λ, G1, G2, albedo, furnace), a
+    /// function of the view angle θo.
+    Quantity {
+        /// The quantity.
+        quantity: Quantity<Curve>,
+        /// The NDF.
+        ndf: Ndf,
+    },
+}
+
+/// What a curve's values are, for the rules that pair curves (differences, `compare`) and for
+/// axis labels: an NDF quantity (`"d"` for D itself) or a Fresnel reflectance.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// A quantity of an NDF, by its name in curve JSON ([`quantity::NAMES`]).
+    Ndf(&'static str),
+    /// A Fresnel reflectance.
+    Fresnel,
+}
+
+impl Kind {
+    /// The kind in messages: `ndf`, `ndf quantity "g1"`, `fresnel`.
+    pub fn describe(self) -> String {
+        match self {
+            Kind::Ndf("d") => "ndf".to_string(),
+            Kind::Ndf(quantity) => format!("ndf quantity \"{quantity}\""),
+            Kind::Fresnel => "fresnel".to_string(),
+        }
+    }
 }
 
 impl Curve {
@@ -53,6 +83,17 @@ impl Curve {
             Curve::Fresnel(f) => f.eval(theta),
             Curve::Difference { op, a, b } => op.apply(a.eval(theta), b.eval(theta)),
             Curve::Transformed { transform, curve } => transform.apply(theta, curve.eval(theta)),
+            Curve::Quantity { quantity, ndf } => quantity.eval(ndf, theta),
+        }
+    }
+
+    /// What the curve's values are; a difference's are its first operand's (both share them).
+    pub fn kind(&self) -> Kind {
+        match self {
+            Curve::Ndf(_) | Curve::Transformed { .. } => Kind::Ndf("d"),
+            Curve::Quantity { quantity, .. } => Kind::Ndf(quantity.name()),
+            Curve::Fresnel(_) => Kind::Fresnel,
+            Curve::Difference { a, .. } => a.kind(),
         }
     }
 
@@ -64,14 +105,15 @@ impl Curve {
             Curve::Fresnel(f) => Model::Fresnel(FresnelModel::from(f)),
             Curve::Difference { a, .. } => a.model(),
             Curve::Transformed { curve, .. } => curve.model(),
+            Curve::Quantity { ndf, .. } => Model::Ndf(ndf.family()),
         }
     }
 
-    /// Parameters in canonical order, with their values; none for a difference (its operands
-    /// carry them).
+    /// Parameters in canonical order, with their values (a quantity's, its NDF's); none for a
+    /// difference (its operands carry them).
     pub fn params(&self) -> Vec<(&'static str, ParamValue)> {
         match self {
-            Curve::Ndf(d) => {
+            Curve::Ndf(d) | Curve::Quantity { ndf: d, .. } => {
                 let names = d.family().param_names();
                 names
                     .iter()
@@ -104,6 +146,11 @@ impl Serialize for Curve {
             Curve::Ndf(_) | Curve::Fresnel(_) => {
                 serialize_model(serializer, self.model(), &self.params())
             }
+            Curve::Quantity { quantity, .. } => quantity::serialize_curve(
+                serializer,
+                |map| write_model(map, self.model(), &self.params()),
+                quantity,
+            ),
         }
     }
 }
@@ -141,11 +188,21 @@ fn serialize_model<S: Serializer, V: Serialize>(
     params: &[(&'static str, V)],
 ) -> Result<S::Ok, S::Error> {
     let mut map = serializer.serialize_map(None)?;
+    write_model(&mut map, model, params)?;
+    map.end()
+}
+
+/// Writes the model key and name, then each parameter, into `map`.
+fn write_model<M: SerializeMap, V: Serialize>(
+    map: &mut M,
+    model: Model,
+    params: &[(&'static str, V)],
+) -> Result<(), M::Error> {
     map.serialize_entry(model.key(), model.name())?;
     for (name, value) in params {
         map.serialize_entry(name, value)?;
     }
-    map.end()
+    Ok(())
 }
 
 /// A validated curve as a spec describes it: every key and domain checked, nothing computed.
@@ -178,6 +235,14 @@ pub enum CurveSpec {
         /// The transformed NDF.
         curve: Box<CurveSpec>,
     },
+    /// A quantity of an NDF other than D (see [`Curve::Quantity`]); the NDF may still need
+    /// resolving (a fitted parameter).
+    Quantity {
+        /// The quantity.
+        quantity: Quantity<CurveSpec>,
+        /// The NDF.
+        ndf: Box<CurveSpec>,
+    },
 }
 
 impl CurveSpec {
@@ -190,6 +255,19 @@ impl CurveSpec {
             CurveSpec::Published(preset) => Model::Ndf(preset.source().family()),
             CurveSpec::Difference { a, .. } => a.model(),
             CurveSpec::Transformed { curve, .. } => curve.model(),
+            CurveSpec::Quantity { ndf, .. } => ndf.model(),
+        }
+    }
+
+    /// What the resolved curve's values will be (see [`Curve::kind`]).
+    pub fn kind(&self) -> Kind {
+        match self {
+            CurveSpec::Quantity { quantity, .. } => Kind::Ndf(quantity.name()),
+            CurveSpec::Difference { a, .. } => a.kind(),
+            other => match other.model() {
+                Model::Ndf(_) => Kind::Ndf("d"),
+                Model::Fresnel(_) => Kind::Fresnel,
+            },
         }
     }
 
@@ -213,6 +291,19 @@ impl Serialize for CurveSpec {
             CurveSpec::Transformed { transform, curve } => {
                 serialize_transformed(serializer, *transform, curve)
             }
+            CurveSpec::Quantity { quantity, ndf } => quantity::serialize_curve(
+                serializer,
+                |map| match &**ndf {
+                    CurveSpec::Fitted(fitted) => fitted.write_members(map),
+                    CurveSpec::Published(preset) => {
+                        let curve = Curve::Ndf(preset.ndf());
+                        write_model(map, curve.model(), &curve.params())
+                    }
+                    CurveSpec::Ready(curve) => write_model(map, curve.model(), &curve.params()),
+                    other => unreachable!("a quantity of a non-NDF curve: {other:?}"),
+                },
+                quantity,
+            ),
         }
     }
 }
@@ -244,9 +335,10 @@ impl Fitted {
     }
 }
 
-impl Serialize for Fitted {
-    /// The family and its parameters, the fitted one as `{"fit": {"target": …, "by": …}}`.
-    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+impl Fitted {
+    /// Writes the family and its parameters into `map`, the fitted one as
+    /// `{"fit": {"target": …, "by": …}}`.
+    fn write_members<M: SerializeMap>(&self, map: &mut M) -> Result<(), M::Error> {
         /// `{"target": …, "by": …}`.
         struct FitObject<'a>(&'a Fitted);
         impl Serialize for FitObject<'_> {
@@ -257,7 +349,6 @@ impl Serialize for Fitted {
                 map.end()
             }
         }
-        let mut map = serializer.serialize_map(None)?;
         map.serialize_entry("ndf", self.family.name())?;
         let mut fixed = self.fixed.iter();
         for (i, name) in self.family.param_names().iter().enumerate() {
@@ -269,6 +360,15 @@ impl Serialize for Fitted {
                 map.serialize_entry(name, value)?;
             }
         }
+        Ok(())
+    }
+}
+
+impl Serialize for Fitted {
+    /// The family and its parameters, the fitted one as `{"fit": {"target": …, "by": …}}`.
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(None)?;
+        self.write_members(&mut map)?;
         map.end()
     }
 }
@@ -578,15 +678,34 @@ pub struct Resolved<'a> {
     pub params: Vec<ParamSpec>,
     /// Per key, its node in the document, or `None` when absent (a default applies).
     pub nodes: Vec<Option<&'a Node>>,
+    /// The quantity of an NDF curve other than D ([`crate::quantity`]).
+    pub quantity: Option<Quantity<CurveSpec>>,
 }
 
 impl Resolved<'_> {
-    /// Describes the curve ([`Model::build`]), reporting a domain error at the path of the
-    /// offending key.
+    /// Describes the curve ([`Model::build`]) and the quantity it shows, reporting a domain error
+    /// at the path of the offending key.
     pub fn build(&self, values: &[ParamValue], path: &str) -> Result<CurveSpec, Problem> {
-        self.model
+        let curve = self
+            .model
             .build(self.signature, values)
-            .map_err(|e| domain_problem(&e, path))
+            .map_err(|e| domain_problem(&e, path))?;
+        self.showing_quantity(curve, path)
+    }
+
+    /// `ndf` (this entry's NDF, built or fitted) showing the entry's quantity, if it names one
+    /// other than D; a quantity the family cannot show is reported at `path`.
+    pub fn showing_quantity(&self, ndf: CurveSpec, path: &str) -> Result<CurveSpec, Problem> {
+        match (&self.quantity, self.model) {
+            (Some(quantity), Model::Ndf(family)) => {
+                quantity.check_family(family, path)?;
+                Ok(CurveSpec::Quantity {
+                    quantity: quantity.clone(),
+                    ndf: Box::new(ndf),
+                })
+            }
+            _ => Ok(ndf),
+        }
     }
 }
 
@@ -618,9 +737,13 @@ pub fn resolve<'a>(
         )]);
     };
     let mut model_problems = Vec::new();
+    // Beside "ndf", an object under "fresnel" is an albedo's Fresnel factor, not a model key.
+    let has_ndf = members.iter().any(|(k, _)| k == "ndf");
     let model_keys: Vec<&(String, Node)> = members
         .iter()
-        .filter(|(k, _)| k == "ndf" || k == "fresnel")
+        .filter(|(k, v)| {
+            k == "ndf" || (k == "fresnel" && !(has_ndf && matches!(v.value, Value::Object(_))))
+        })
         .collect();
     let model = match model_keys.as_slice() {
         [] => {
@@ -647,10 +770,15 @@ pub fn resolve<'a>(
         return Err(problems);
     };
     let signatures = model.signatures();
+    let quantity_keys: &[&str] = match model {
+        Model::Ndf(_) => quantity::KEYS,
+        Model::Fresnel(_) => &[],
+    };
     let all_keys: Vec<&str> = signatures
         .iter()
         .flatten()
         .map(|p| p.name)
+        .chain(quantity_keys.iter().copied())
         .chain(extra_keys.iter().copied())
         .collect();
     let object = format!("{} \"{}\"", model.key(), model.name());
@@ -665,7 +793,11 @@ pub fn resolve<'a>(
     }
     let given: Vec<&(String, Node)> = members
         .iter()
-        .filter(|(k, _)| k != model.key() && !extra_keys.contains(&k.as_str()))
+        .filter(|(k, _)| {
+            k != model.key()
+                && !extra_keys.contains(&k.as_str())
+                && !quantity_keys.contains(&k.as_str())
+        })
         .collect();
     let Some(signature) = signatures
         .iter()
@@ -690,6 +822,13 @@ pub fn resolve<'a>(
         .iter()
         .map(|p| given.iter().find(|(k, _)| k == p.name).map(|(_, n)| n))
         .collect();
+    let quantity = match model {
+        Model::Ndf(_) => quantity::parse(members, path).unwrap_or_else(|found| {
+            problems.extend(found);
+            None
+        }),
+        Model::Fresnel(_) => None,
+    };
     for (spec, node) in params.iter().zip(&nodes) {
         if node.is_none() && spec.default.is_none() {
             problems.push(Problem::new(
@@ -709,6 +848,7 @@ pub fn resolve<'a>(
             signature,
             params,
             nodes,
+            quantity,
         })
     } else {
         Err(problems)
@@ -809,11 +949,11 @@ pub fn transformed(
     curve: CurveSpec,
     path: &str,
 ) -> Result<CurveSpec, Problem> {
-    if curve.model().key() != "ndf" {
+    if curve.kind() != Kind::Ndf("d") {
         return Err(Problem::new(
             path,
             format!(
-                "the {} view applies to NDF curves (got {})",
+                "the {} view applies to NDF curves showing D (got {})",
                 transform.name(),
                 curve.canonical_json()
             ),
@@ -1246,12 +1386,14 @@ pub fn difference(
     b: CurveSpec,
     path: &str,
 ) -> Result<CurveSpec, Problem> {
-    let (kind_a, kind_b) = (a.model().key(), b.model().key());
+    let (kind_a, kind_b) = (a.kind(), b.kind());
     if kind_a != kind_b {
         return Err(Problem::new(
             join_key(path, "b"),
             format!(
-                "a difference needs two curves of the same kind (got {kind_a} against {kind_b}, expected two NDFs or two Fresnel curves)"
+                "a difference needs two curves of the same kind (got {} against {}, expected two NDFs showing the same quantity or two Fresnel curves)",
+                kind_a.describe(),
+                kind_b.describe()
             ),
         ));
     }

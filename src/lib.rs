@@ -41,6 +41,7 @@ pub mod problem;
 pub mod progress;
 pub mod provenance;
 pub mod published;
+pub mod quantity;
 pub mod render;
 pub mod resolve;
 pub mod sample;

@@ -114,7 +114,19 @@ pub fn curve(spec: &CurveSpec) -> std::result::Result<Curve, Problem> {
             transform: *transform,
             curve: Box::new(curve(inner)?),
         },
+        CurveSpec::Quantity { quantity, ndf } => Curve::Quantity {
+            quantity: quantity.resolve(curve)?,
+            ndf: ndf_of(curve(ndf)?),
+        },
     })
+}
+
+/// The NDF of a resolved NDF curve (what a quantity wraps: a plain, fitted or published NDF).
+fn ndf_of(curve: Curve) -> crate::ndf::Ndf {
+    match curve {
+        Curve::Ndf(ndf) => ndf,
+        other => unreachable!("the spec stage wraps only NDF curves in a quantity: {other:?}"),
+    }
 }
 
 /// Reads a CSV data file within its [`DataScope`](crate::datafile::DataScope): its two columns as
@@ -281,6 +293,31 @@ fn labelled(spec: &CurveSpec, label: &Label) -> std::result::Result<(Curve, Stri
             };
             Ok((curve, text))
         }
+        // A quantity's automatic label adds the options that are not its defaults.
+        // A template's {e_avg} is an albedo's average.
+        (CurveSpec::Quantity { quantity, ndf }, _) => {
+            let (inner, mut text) = labelled(ndf, label)?;
+            let quantity = quantity.resolve(curve)?;
+            let ndf = ndf_of(inner);
+            match label {
+                Label::Auto(_) => {
+                    for part in crate::quantity::label_parts(&quantity) {
+                        if !text.is_empty() {
+                            text += ", ";
+                        }
+                        text += &part;
+                    }
+                }
+                _ if text.contains(crate::quantity::E_AVG_PLACEHOLDER) => {
+                    if let Some(average) = quantity.label_average(&ndf) {
+                        text = text
+                            .replace(crate::quantity::E_AVG_PLACEHOLDER, &format!("{average:.4}"));
+                    }
+                }
+                _ => {}
+            }
+            Ok((Curve::Quantity { quantity, ndf }, text))
+        }
         (CurveSpec::Fitted(fitted), _) => {
             let (curve, outcome) = self::fitted(fitted)?;
             let text = text(label, &curve, Some((fitted, &outcome)));
@@ -366,6 +403,7 @@ fn fill_template(template: &str, curve: &Curve, values: &[(&str, ParamValue)]) -
     if let Some(l2) = belcour_l2(curve) {
         label = label.replace("{l2}", &format!("{l2:.2}"));
     }
+
     for (name, value) in values {
         let text = match value {
             ParamValue::Number(v) => curve::pretty(*v),

@@ -22,8 +22,10 @@ use crate::curve::{
 use crate::dataset::{Coefficient, SpectrumQuantity};
 use crate::domain::Param;
 use crate::fresnel::{self, FresnelModel};
+use crate::masking::{G1Model, G2Model};
 use crate::ndf::Family;
 use crate::published::{Channel, Source};
+use crate::quantity;
 use crate::scene::interactive::{INTERACTIVE_KEYS, MAX_SLIDERS, PARAM_KEYS, SCALES, SLIDER_KEY};
 use crate::scene::reader::REFUSED_IN_TEXT;
 use crate::scene::sweep::{
@@ -440,9 +442,14 @@ fn signature(
     extras: &[&str],
     param: impl Fn(&ParamSpec) -> Value,
 ) -> Value {
+    let quantity_keys: &[&str] = match model {
+        Model::Ndf(_) => quantity::KEYS,
+        Model::Fresnel(_) => &[],
+    };
     let keys: Vec<&str> = [model.key()]
         .into_iter()
         .chain(params.iter().map(|p| p.name))
+        .chain(quantity_keys.iter().copied())
         .chain(extras.iter().copied())
         .collect();
     let required: Vec<&str> = [model.key()]
@@ -458,14 +465,70 @@ fn signature(
         Model::Ndf(family) => format!("the {} NDF", family.title()),
         Model::Fresnel(model) => format!("the Fresnel model {}", model.name()),
     };
-    object(&keys, &required, |key| {
+    let mut schema = object(&keys, &required, |key| {
         if key == model.key() {
             described(strings(&model_names(model)), title.as_str())
         } else if let Some(spec) = params.iter().find(|p| p.name == key) {
             param(spec)
+        } else if quantity_keys.contains(&key) {
+            quantity_key(key)
         } else {
             extra_key(key)
         }
+    });
+    if !quantity_keys.is_empty() {
+        schema["dependentSchemas"] = quantity_dependencies();
+    }
+    schema
+}
+
+/// The keys an NDF curve takes to show a quantity other than D ([`quantity`]).
+fn quantity_key(key: &str) -> Value {
+    match key {
+        quantity::QUANTITY_KEY => described(
+            strings(&quantity::NAMES),
+            "what the curve shows: d (default) D(θ); lambda Smith Λ(θo); g1 G1(θo); g2 G2(θo, θi); albedo E(cos θo); furnace the weak white furnace of a G1",
+        ),
+        quantity::G2_KEY => described(
+            strings(&names(&G2Model::NAMES)),
+            "how masking and shadowing combine (default height-correlated); g2 and albedo curves",
+        ),
+        quantity::THETA_I_KEY => json!({
+            "anyOf": [
+                { "type": "number", "minimum": 0, "maximum": std::f64::consts::FRAC_PI_2 },
+                { "const": quantity::SAME },
+            ],
+            "description": "the light's angle θi in radians, or \"same\" for θi = θo (default); g2 curves",
+        }),
+        quantity::G1_KEY => described(
+            strings(&names(&G1Model::NAMES)),
+            "the G1 a furnace curve audits (default smith; the others need a family with a Beckmann-equivalent roughness)",
+        ),
+        quantity::FRESNEL_KEY => described(
+            reference("fresnel_curve"),
+            "the Fresnel factor F(θd) of an albedo curve (default F = 1)",
+        ),
+        other => panic!("no schema for the quantity key {other:?}"),
+    }
+}
+
+/// Each quantity option key requires a quantity that takes it.
+fn quantity_dependencies() -> Value {
+    let requires = |quantities: &[&str]| {
+        let names: Vec<String> = quantities.iter().map(|q| format!("\"{q}\"")).collect();
+        json!({
+            "properties": { quantity::QUANTITY_KEY: {
+                "enum": quantities,
+                "description": format!("this key needs quantity {}", names.join(" or ")),
+            } },
+            "required": [quantity::QUANTITY_KEY],
+        })
+    };
+    json!({
+        quantity::G2_KEY: requires(&["g2", "albedo"]),
+        quantity::THETA_I_KEY: requires(&["g2"]),
+        quantity::G1_KEY: requires(&["furnace"]),
+        quantity::FRESNEL_KEY: requires(&["albedo"]),
     })
 }
 
@@ -720,6 +783,7 @@ pub fn schema() -> Value {
 
     let ops: Vec<&str> = DiffOp::ALL.iter().map(|op| op.name()).collect();
     let mut curves = Vec::new();
+    let mut fresnel_curves = Vec::new();
     let mut scene_curves = Vec::new();
     for model in models() {
         for (i, params) in model.signatures().iter().enumerate() {
@@ -729,6 +793,9 @@ pub fn schema() -> Value {
                 signature(model, params, &[], |spec| plain_param(model, spec)),
             );
             curves.push(reference(&name));
+            if let Model::Fresnel(_) = model {
+                fresnel_curves.push(reference(&name));
+            }
             let name = signature_def("scene_curve", model, i);
             def(
                 &name,
@@ -784,6 +851,10 @@ pub fn schema() -> Value {
     def(
         "curve",
         json!({ "description": "the curve format of eval, compare and fit", "oneOf": curves }),
+    );
+    def(
+        "fresnel_curve",
+        json!({ "description": "a Fresnel curve given by its parameters", "oneOf": fresnel_curves }),
     );
     def(
         "scene_curve",

@@ -1,5 +1,5 @@
 //! `ndfplot check`: the audit table of [`crate::audit`] on stdout and its verdict (exit 1 when an NDF's
-//! normalization is off by more than `--tolerance`).
+//! normalization or Smith consistency is off by more than `--tolerance`).
 
 use crate::audit::Audit;
 use crate::error::{Error, Result};
@@ -77,9 +77,10 @@ pub fn report(audits: &[Audit], tolerance: f64) -> Report {
     report
 }
 
-/// `Err(CheckFailed)` (exit 1) when an NDF's normalization is off by more than `tolerance`.
+/// `Err(CheckFailed)` (exit 1) when an NDF's normalization or Smith consistency is off by more than
+/// `tolerance` from 1.
 pub fn verdict(audits: &[Audit], tolerance: f64) -> Result<()> {
-    let ndfs = audits.iter().filter(|a| a.deviation().is_some()).count();
+    let checked = audits.iter().filter(|a| a.deviation().is_some()).count();
     let failed = audits
         .iter()
         .filter(|a| a.deviation().is_some_and(|d| d > tolerance))
@@ -88,7 +89,7 @@ pub fn verdict(audits: &[Audit], tolerance: f64) -> Result<()> {
         Ok(())
     } else {
         Err(Error::CheckFailed(format!(
-            "check: {failed} of {ndfs} NDFs are off by more than --tolerance {tolerance:?} from a normalization of 1"
+            "check: {failed} of {checked} NDF audits (normalization, Smith consistency) are off by more than --tolerance {tolerance:?} from 1"
         )))
     }
 }

@@ -58,23 +58,31 @@ pub fn parse_bound(text: &str) -> Result<Bound> {
     }
 }
 
-/// Checks that two curves are of the same kind (both NDFs or both Fresnel); the problem is at the
-/// model key of `b`, given under the key `b_key` (`""` for a whole argument).
+/// Checks that two curves are of the same kind (two NDFs showing the same quantity, or two Fresnel
+/// curves); the problem is at the model key of `b`, given under the key `b_key` (`""` for a whole
+/// argument).
 fn check_kinds(a: &Curve, b: &Curve, b_key: &str) -> std::result::Result<(), Problem> {
-    let (ma, mb) = (a.model(), b.model());
-    if ma.key() == mb.key() {
+    let (ka, kb) = (a.kind(), b.kind());
+    if ka == kb {
         return Ok(());
     }
-    Err(Problem::new(
-        join_key(b_key, mb.key()),
+    let (ma, mb) = (a.model(), b.model());
+    let message = if ma.key() == mb.key() {
+        format!(
+            "compare needs two curves showing the same quantity (got {} against {})",
+            kb.describe(),
+            ka.describe()
+        )
+    } else {
         format!(
             "compare needs two curves of the same kind (got {} \"{}\" against {} \"{}\", expected two NDFs or two Fresnel curves)",
             mb.key(),
             mb.name(),
             ma.key(),
             ma.name()
-        ),
-    ))
+        )
+    };
+    Err(Problem::new(join_key(b_key, mb.key()), message))
 }
 
 /// The metrics of `a` against `b` over `range` ([`compare_operands`]); the outer `Err` is two curves of

@@ -15,7 +15,7 @@ pub mod interactive;
 pub mod reader;
 pub mod sweep;
 
-use crate::curve::{self, Curve, CurveSpec, Fitted, Label, Model, ParamValue, Part};
+use crate::curve::{self, Curve, CurveSpec, Fitted, Kind, Label, Model, ParamValue, Part};
 use crate::dataset::Dataset;
 use crate::json::{Node, Value};
 use crate::layout;
@@ -869,13 +869,17 @@ fn default_curve_labels(
     unit: XUnit,
     transform: Option<Transform>,
 ) -> (String, String) {
-    let x_label = match unit {
-        XUnit::Degrees => "θ (degrees)",
-        XUnit::Slope => "slope tan θ",
-        _ => "θ (radians)",
+    let view_angle = !matches!(first.curve.kind(), Kind::Ndf("d") | Kind::Fresnel);
+    let x_label = match (unit, view_angle) {
+        (XUnit::Degrees, false) => "θ (degrees)",
+        (XUnit::Degrees, true) => "θ_o (degrees)",
+        (XUnit::Slope, _) => "slope tan θ",
+        (_, false) => "θ (radians)",
+        (_, true) => "θ_o (radians)",
     };
-    let y_label = match (first.curve.model(), transform) {
-        (Model::Fresnel(_), _) => "F(θ)",
+    let y_label = match (&first.curve, transform) {
+        (CurveSpec::Quantity { quantity, .. }, _) => quantity.axis_label(),
+        (curve, _) if curve.kind() == Kind::Fresnel => "F(θ)",
         (_, Some(Transform::Projected)) => "D(θ) cos θ",
         (_, Some(Transform::Slope)) => "P₂₂ = D(θ) cos⁴θ",
         _ => "D(θ)",
@@ -1119,7 +1123,18 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
             .map(|(i, ((_, s), &c))| (free != Some(i)).then(|| s.values[c].value))
             .collect();
         let curve = match free {
-            Some(free) => CurveSpec::Fitted(Box::new(fits[choice[free]].clone())),
+            Some(free) => {
+                let fitted = CurveSpec::Fitted(Box::new(fits[choice[free]].clone()));
+                match resolved.showing_quantity(fitted, path) {
+                    Ok(curve) => curve,
+                    Err(problem) => {
+                        if !reader.problems[entry_start..].contains(&problem) {
+                            reader.problems.push(problem);
+                        }
+                        continue;
+                    }
+                }
+            }
             None => {
                 let values: Vec<ParamValue> = values.iter().flatten().copied().collect();
                 match resolved.build(&values, path) {

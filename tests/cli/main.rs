@@ -15,6 +15,7 @@ mod lazy_basis;
 mod lint;
 mod man;
 mod published;
+mod quantity;
 mod readme;
 mod robustness;
 mod sampling;

@@ -5,7 +5,8 @@
 //! validator refuses, and every malformed spec it accepts is named with the reason.
 
 use crate::common::{ndfplot, root};
-use ndfplot::curve::{DIFFERENCE_KEYS, TRANSFORM_KEYS};
+use ndfplot::curve::{DIFFERENCE_KEYS, Model, TRANSFORM_KEYS};
+use ndfplot::quantity;
 use ndfplot::input::parse_json;
 use ndfplot::scene::interactive::{INTERACTIVE_KEYS, PARAM_KEYS, SLIDER_KEY};
 use ndfplot::scene::sweep::{FIT_KEY, FIT_KEYS, FROM_BECKMANN_KEY, SWEEP_KEYS};
@@ -109,7 +110,15 @@ fn every_key_table_equals_the_schema_properties() {
     // Every model and signature, in both the plain and the scene curve format.
     for model in models() {
         for (i, params) in model.signatures().iter().enumerate() {
-            let params: Vec<&str> = params.iter().map(|p| p.name).collect();
+            // An NDF's parameters, then the keys of the quantity it shows.
+            let params: Vec<&str> = params
+                .iter()
+                .map(|p| p.name)
+                .chain(match model {
+                    Model::Ndf(_) => quantity::KEYS.to_vec(),
+                    Model::Fresnel(_) => vec![],
+                })
+                .collect();
             let plain = def(&schema, &signature_def("curve", model, i));
             assert_eq!(
                 keys(plain),
@@ -496,6 +505,10 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
         "cross-field: width × height × png_scale²",
     ),
     ("points-over-cap", "cross-field: curves × samples"),
+    (
+        "quantity-g1-family",
+        "cross-field: a Beckmann-based G1 needs a family with a Beckmann-equivalent roughness",
+    ),
     (
         "range-over-cap",
         "computed: the number of values a range gives",
