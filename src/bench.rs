@@ -1,13 +1,16 @@
 //! The measurements of `ndfplot bench`: run time against error for drawing (uniform grids against
-//! adaptive sampling), for normalization routes, and evaluation throughput per family.
+//! adaptive sampling), for normalization routes, evaluation throughput per family, Smith Λ routes
+//! (closed forms against quadrature) and one full albedo table.
 //!
 //! Owns the timing loop and the measured cases. Every duration comes from a [`Clock`] it is handed,
 //! so tests pass a fake clock and get deterministic results; it writes nothing (the subcommand turns
 //! [`Row`]s into a CSV and a figure). Timings are never part of the catalogue or of `render --check`.
 
 use crate::adaptive::{self, Frame, PixelMap};
+use crate::albedo::{AlbedoTable, Microfacet, RoughnessMap, albedo_table};
 use crate::look::Scale;
-use crate::math::quad::integrate;
+use crate::masking::{G2Model, lambda_by_integral};
+use crate::math::quad::{QuadError, integrate};
 use crate::math::special::upper_gamma_scaled;
 use crate::math::tolerance::floored_relative_difference;
 use crate::ndf::{Abc, Family, Ndf, TorranceSparrow};
@@ -81,23 +84,27 @@ const TASK_POINTS: usize = 1 << 16;
 /// One measured case.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
-    /// `drawing`, `normalization` or `throughput`.
+    /// `drawing`, `normalization`, `throughput`, `lambda` or `albedo_table`.
     pub section: &'static str,
     /// What is measured: a curve in canonical JSON, or a family name.
     pub case: String,
     /// The method: `uniform`, `adaptive`, `uniform_needed` (the fewest uniform samples within
-    /// [`DRAWING_TOLERANCE_PX`]), a normalization route, `eval_1_thread`, `eval_all_threads`.
+    /// [`DRAWING_TOLERANCE_PX`]), a normalization route, `eval_1_thread`, `eval_all_threads`, a Λ
+    /// route (`closed_form`, `quadrature`), `table`.
     pub method: String,
     /// The method's setting: N for uniform grids, the tolerance in px for adaptive sampling, the
-    /// quadrature tolerance, the thread count.
+    /// quadrature tolerance, the thread count; 0 for a route without one.
     pub setting: f64,
-    /// Samples (points drawn, or D values written); 1 for a normalization.
+    /// Samples (points drawn, D values written, Λ values or table cells computed); 1 for a
+    /// normalization.
     pub samples: usize,
-    /// Median seconds per run of the case.
+    /// Median seconds per run of the case (per Λ value for `lambda`, per table for
+    /// `albedo_table`).
     pub seconds: f64,
     /// Drawing: the polyline's largest deviation from the curve in pixels. Normalization: relative
-    /// error against the reference. Throughput: largest relative difference from the one-thread values (0: every thread count
-    /// computes the same `eval`).
+    /// error against the reference. Throughput: largest relative difference from the one-thread
+    /// values (0: every thread count computes the same `eval`). Λ: largest floored relative error
+    /// against the references. Albedo table: largest absolute difference from Cycles' table.
     pub error: f64,
 }
 
@@ -473,11 +480,202 @@ pub fn throughput(clock: &dyn Clock, settings: &Settings, cases: &[Ndf]) -> Vec<
     rows
 }
 
+/// Smith Λ(θo) references: `tests/data/reference/lambda.csv` (mpmath at 40 digits, MATH.md's 1D
+/// integral), rows `case_id,curve_json,theta_o,lambda` below a `#` provenance line.
+const LAMBDA_REFERENCE: &str = include_str!("../tests/data/reference/lambda.csv");
+
+/// One reference Λ value: the curve, θo and Λ(θo).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LambdaCase {
+    /// The NDF.
+    pub ndf: Ndf,
+    /// The view angle θo.
+    pub theta_o: f64,
+    /// The reference Λ(θo).
+    pub lambda: f64,
+}
+
+/// The rows of the embedded Λ reference file, in file order, each curve read by the library's own
+/// curve parser. Panics if the file does not parse (it is embedded, so a test catches that).
+pub fn lambda_cases() -> Vec<LambdaCase> {
+    let mut reader = csv::ReaderBuilder::new()
+        .comment(Some(b'#'))
+        .from_reader(LAMBDA_REFERENCE.as_bytes());
+    reader
+        .records()
+        .map(|record| {
+            let record = record.expect("lambda.csv is well-formed CSV");
+            let node = crate::json::parse(&record[1]).expect("curve_json is JSON");
+            let ndf = match crate::curve::parse(&node, "") {
+                Ok(crate::curve::CurveSpec::Ready(crate::curve::Curve::Ndf(ndf))) => ndf,
+                other => panic!("lambda.csv: {} is not an NDF: {other:?}", &record[1]),
+            };
+            let number = |column: usize| -> f64 {
+                record[column].parse().expect("lambda.csv numbers parse")
+            };
+            LambdaCase {
+                ndf,
+                theta_o: number(2),
+                lambda: number(3),
+            }
+        })
+        .collect()
+}
+
+/// Whether `family`'s own Λ ([`Ndf::lambda`]) is a closed form; every other family's own route is the
+/// generic quadrature ([`crate::masking::lambda_integral`]).
+pub fn lambda_has_closed_form(family: Family) -> bool {
+    matches!(
+        family,
+        Family::TrowbridgeReitz | Family::Beckmann | Family::Phong
+    )
+}
+
+/// Section (d): Smith's Λ per family over its rows of [`lambda_cases`]: its own route
+/// ([`Ndf::lambda`], method `closed_form` or `quadrature`) and, for the closed-form families, also the
+/// generic quadrature ([`lambda_by_integral`], method `quadrature`). A row's `samples` is the
+/// family's reference count, `seconds` the median time of one pass over them divided by that count
+/// (per Λ evaluation), `error` the largest [`floored_relative_difference`] from the references.
+pub fn lambda_routes(clock: &dyn Clock, settings: &Settings, cases: &[LambdaCase]) -> Vec<Row> {
+    let mut rows = Vec::new();
+    for family in Family::ALL {
+        let of_family: Vec<&LambdaCase> =
+            cases.iter().filter(|c| c.ndf.family() == family).collect();
+        if of_family.is_empty() {
+            continue;
+        }
+        let own: fn(&Ndf, f64) -> f64 = Ndf::lambda;
+        let mut routes = vec![(own, lambda_has_closed_form(family))];
+        if lambda_has_closed_form(family) {
+            routes.push((lambda_by_integral, false));
+        }
+        for (route, closed_form) in routes {
+            let pass = || -> f64 {
+                of_family
+                    .iter()
+                    .map(|c| route(&c.ndf, std::hint::black_box(c.theta_o)))
+                    .sum()
+            };
+            let seconds = time(clock, settings, &mut || {
+                std::hint::black_box(pass());
+            });
+            let error = of_family
+                .iter()
+                .map(|c| floored_relative_difference(route(&c.ndf, c.theta_o), c.lambda))
+                .fold(0.0, |worst, e| {
+                    if e.is_nan() {
+                        f64::INFINITY
+                    } else {
+                        worst.max(e)
+                    }
+                });
+            rows.push(Row {
+                section: "lambda",
+                case: family.name().to_string(),
+                method: if closed_form {
+                    "closed_form"
+                } else {
+                    "quadrature"
+                }
+                .into(),
+                setting: 0.0,
+                samples: of_family.len(),
+                seconds: seconds / of_family.len() as f64,
+                error,
+            });
+        }
+    }
+    rows
+}
+
+/// Cycles' GGX albedo table `table_ggx_E` (`tests/data/cycles_ggx_E.csv`: Monte Carlo, F = 1,
+/// height-correlated G2, α = r², printed to 6 decimals), rows `table,y,x,value` (μ row y, r column x).
+const CYCLES_GGX_E: &str = include_str!("../tests/data/cycles_ggx_E.csv");
+
+/// Rows and columns of Cycles' `table_ggx_E`.
+pub const CYCLES_TABLE_SIZE: usize = 32;
+
+/// The Trowbridge–Reitz surface of width `alpha` (in its domain) with height-correlated G2, D and Λ
+/// by [`Ndf::eval`] and [`Ndf::lambda`], as the `albedo` quantity builds its surface.
+pub fn ggx_surface(
+    alpha: f64,
+) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send, impl Fn(f64) -> f64 + Sync + Send> {
+    let ndf = Family::TrowbridgeReitz
+        .build(&[alpha])
+        .expect("α lies in the domain");
+    let d = ndf.clone();
+    Microfacet::new(
+        move |t| d.eval(t),
+        move |t| ndf.lambda(t),
+        G2Model::HeightCorrelated,
+    )
+}
+
+/// The Trowbridge–Reitz albedo table on Cycles' 32 × 32 grid (μ = i/31, r = j/31, α = r², F = 1)
+/// of [`ggx_surface`]s; cells in parallel on all rayon threads. Errs if a quadrature fails.
+pub fn ggx_albedo_table() -> Result<AlbedoTable, QuadError> {
+    albedo_table(
+        CYCLES_TABLE_SIZE,
+        CYCLES_TABLE_SIZE,
+        RoughnessMap::Squared,
+        ggx_surface,
+        None,
+        None,
+    )
+}
+
+/// The largest |E − E_Cycles| of `table` (on Cycles' grid, [`ggx_albedo_table`]) over the cells
+/// whose coordinates Cycles does not clamp: its μ = 0 row and r = 0 column are the limits μ → 0⁺
+/// and α → 0⁺, where Cycles evaluates μ = 1e-4 and r = 1e-4 instead, so they are left out (31 × 31
+/// cells compared). Cycles' float32 coordinates differ from i/31 by < 1e-7 relative, far below
+/// its Monte Carlo noise (~1e-6).
+pub fn cycles_difference(table: &AlbedoTable) -> f64 {
+    let mut reader = csv::ReaderBuilder::new()
+        .comment(Some(b'#'))
+        .from_reader(CYCLES_GGX_E.as_bytes());
+    reader
+        .records()
+        .map(|record| record.expect("cycles_ggx_E.csv is well-formed CSV"))
+        .filter(|record| &record[0] == "ggx_E")
+        .filter_map(|record| {
+            let index =
+                |column: usize| -> usize { record[column].parse().expect("grid indices parse") };
+            let (i, j) = (index(1), index(2));
+            let want: f64 = record[3].parse().expect("table values parse");
+            (i > 0 && j > 0).then(|| (table.get(i, j) - want).abs())
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Section (e): one full [`ggx_albedo_table`] (about a second or two on two threads, so each batch
+/// is a single table), timed like every case by [`time`], against Cycles' table
+/// ([`cycles_difference`]: an absolute error). `setting` is the thread count, `samples` the 1024
+/// cells. A failed quadrature gives an infinite error.
+pub fn albedo_table_row(clock: &dyn Clock, settings: &Settings) -> Row {
+    let mut table = None;
+    let seconds = time(clock, settings, &mut || table = Some(ggx_albedo_table()));
+    let error = match table {
+        Some(Ok(table)) => cycles_difference(&table),
+        _ => f64::INFINITY,
+    };
+    Row {
+        section: "albedo_table",
+        case: "trowbridge_reitz".into(),
+        method: "table".into(),
+        setting: rayon::current_num_threads() as f64,
+        samples: CYCLES_TABLE_SIZE * CYCLES_TABLE_SIZE,
+        seconds,
+        error,
+    }
+}
+
 /// Every section in order.
 pub fn run(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
     let mut rows = drawing(clock, settings, &drawing_cases());
     rows.extend(normalization(clock, settings));
     rows.extend(throughput(clock, settings, &throughput_cases()));
+    rows.extend(lambda_routes(clock, settings, &lambda_cases()));
+    rows.push(albedo_table_row(clock, settings));
     rows
 }
 
@@ -548,6 +746,68 @@ mod tests {
         }
         let text = csv(&rows);
         assert!(text.starts_with("section,case,method,setting,samples,seconds,error\nthroughput,phong,eval_1_thread,1.0,1000,0.0,0.0\n"), "{text}");
+    }
+
+    #[test]
+    fn lambda_rows_time_every_route_and_hold_the_reference() {
+        let ticks = Cell::new(0);
+        let settings = Settings {
+            min_batch: Duration::ZERO,
+            batches: 1,
+            throughput_points: 2,
+        };
+        let cases = lambda_cases();
+        assert!(cases.len() > 400, "{} reference rows", cases.len());
+        let rows = lambda_routes(&CallClock(&ticks), &settings, &cases);
+        // Seven own routes, and the quadrature of the three closed-form families.
+        assert_eq!(rows.len(), Family::ALL.len() + 3);
+        for row in &rows {
+            let family = Family::from_name(&row.case).unwrap();
+            let closed_form = row.method == "closed_form";
+            assert!(!closed_form || lambda_has_closed_form(family), "{row:?}");
+            // The quadrature's worst is Phong α_p = 20 at θo = 1e-6 (7e-10), where D's argument
+            // rounds near grazing (tests/numerics/masking.rs); the closed forms hold
+            // REL_TOL_LAMBDA_CLOSED_FORM.
+            let tol = if closed_form {
+                crate::math::tolerance::REL_TOL_LAMBDA_CLOSED_FORM
+            } else {
+                1e-9
+            };
+            assert!(row.error <= tol, "{row:?}");
+            assert_eq!(row.seconds, 0.0, "{row:?}");
+            let count = cases.iter().filter(|c| c.ndf.family() == family).count();
+            assert_eq!(row.samples, count, "{row:?}");
+        }
+    }
+
+    #[test]
+    fn the_cycles_difference_leaves_out_the_clamped_row_and_column() {
+        let n = CYCLES_TABLE_SIZE;
+        let mut reader = csv::ReaderBuilder::new()
+            .comment(Some(b'#'))
+            .from_reader(CYCLES_GGX_E.as_bytes());
+        let mut values = vec![f64::NAN; n * n];
+        for record in reader.records().map(Result::unwrap) {
+            if &record[0] == "ggx_E" {
+                let (i, j): (usize, usize) =
+                    (record[1].parse().unwrap(), record[2].parse().unwrap());
+                values[i * n + j] = record[3].parse().unwrap();
+            }
+        }
+        let grid: Vec<f64> = (0..n).map(|i| i as f64 / (n - 1) as f64).collect();
+        let mut table = AlbedoTable {
+            map: RoughnessMap::Squared,
+            mu: grid.clone(),
+            roughness: grid,
+            values,
+        };
+        assert_eq!(cycles_difference(&table), 0.0);
+        // The μ = 0 row and r = 0 column are limits Cycles does not tabulate.
+        table.values[3] = 1.0;
+        table.values[3 * n] = 1.0;
+        assert_eq!(cycles_difference(&table), 0.0);
+        table.values[3 * n + 5] += 1e-3;
+        assert!((cycles_difference(&table) - 1e-3).abs() < 1e-12);
     }
 
     #[test]

@@ -16,11 +16,11 @@ use crate::provenance::Provenance;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-/// Figure size in CSS pixels: three panels side by side, tall enough for the drawing panel to keep
-/// a useful plot above its ten-entry legend.
+/// Figure size in CSS pixels: four panels, two by two, each tall enough for the drawing panel to
+/// keep a useful plot above its ten-entry legend.
 const CANVAS: Canvas = Canvas {
-    width_px: 1500,
-    height_px: 760,
+    width_px: 1400,
+    height_px: 1400,
     png_scale: 1.0,
     font_px: 13.0,
 };
@@ -110,13 +110,23 @@ fn short(case: &str) -> String {
     }
 }
 
-/// The series marking the floor at which exact results (error 0) are drawn, across `x`.
-fn floor_line(x: (f64, f64)) -> Series {
-    series(
-        "error 0 (exact) is drawn at 10^{−17}".to_owned(),
-        style(0x777777, Dash::Dotted, Mark::Line),
-        vec![(x.0, ERROR_FLOOR), (x.1, ERROR_FLOOR)],
-    )
+/// log₁₀ of a row's seconds (the x of every time-against-error panel).
+fn log_time(row: &Row) -> f64 {
+    row.seconds.max(f64::MIN_POSITIVE).log10()
+}
+
+/// The series marking the floor at which exact results (error 0) are drawn, across the times of
+/// the rows of `sections`; none unless one of them is exact.
+fn floor_line(rows: &[Row], sections: &[&str]) -> Option<Series> {
+    let shown = || rows.iter().filter(|r| sections.contains(&r.section));
+    shown().any(|r| r.error <= ERROR_FLOOR).then(|| {
+        let x = span(shown().map(log_time));
+        series(
+            "error 0 (exact) is drawn at 10^{−17}".to_owned(),
+            style(0x777777, Dash::Dotted, Mark::Line),
+            vec![(x.0, ERROR_FLOOR), (x.1, ERROR_FLOOR)],
+        )
+    })
 }
 
 /// The extent of `values`, `(0, 1)` when empty.
@@ -128,12 +138,66 @@ fn span(values: impl Iterator<Item = f64>) -> (f64, f64) {
         .unwrap_or((0.0, 1.0))
 }
 
-/// The figure: (a) drawn error in px against time per curve, uniform dashed and adaptive solid,
-/// one shade of its family's colour per case; (b) relative error of each normalization route
-/// against time; (c) samples per second on one thread, a bar per family in its colour. Times on
-/// log₁₀ axes; exact results at a marked floor.
+/// Panel (d): per family, the worst relative error of its Λ routes against time per Λ value, a
+/// line in the family's colour from its closed form (the faster end) to the generic quadrature, or a
+/// point where quadrature is its only route; and the albedo table's absolute difference from
+/// Cycles' against its time, a black point.
+fn lambda_panel(rows: &[Row]) -> Panel {
+    let point = |r: &Row| (log_time(r), r.error.max(ERROR_FLOOR));
+    let mut shown: Vec<Series> = Family::ALL
+        .iter()
+        .filter_map(|family| {
+            let routes: Vec<&Row> = rows
+                .iter()
+                .filter(|r| r.section == "lambda" && r.case == family.name())
+                .collect();
+            let names: Vec<String> = routes.iter().map(|r| r.method.replace('_', " ")).collect();
+            (!routes.is_empty()).then(|| {
+                series(
+                    format!("{}: {}", family.title(), names.join(" → ")),
+                    style(family.colour(), Dash::Solid, Mark::LinePoints),
+                    routes.iter().map(|r| point(r)).collect(),
+                )
+            })
+        })
+        .collect();
+    shown.extend(
+        rows.iter()
+            .filter(|r| r.section == "albedo_table")
+            .map(|r| {
+                series(
+                    format!(
+                        "{n}×{n} GGX albedo table, {} threads: |E − Cycles|",
+                        r.setting,
+                        n = bench::CYCLES_TABLE_SIZE
+                    ),
+                    style(0x000000, Dash::Solid, Mark::LinePoints),
+                    vec![point(r)],
+                )
+            }),
+    );
+    shown.extend(floor_line(rows, &["lambda", "albedo_table"]));
+    let errors = span(shown.iter().flat_map(|s| s.points.iter().map(|p| p.1)));
+    let mut panel = panel(
+        "(d) Smith Λ routes; one albedo table",
+        "log₁₀ time per Λ value or per table (s)",
+        "Λ: relative error; table: absolute",
+        shown,
+    );
+    // Three decades of headroom above the largest error leave the legend a place that hides none.
+    panel.axes.y_range = Some((errors.0 / 3.0, errors.1 * LEGEND_HEADROOM));
+    panel
+}
+
+/// Factor above the largest error of panel (d) where its y axis ends.
+const LEGEND_HEADROOM: f64 = 1e3;
+
+/// The figure, 2 × 2: (a) drawn error in px against time per curve, uniform dashed and adaptive
+/// solid, one shade of its family's colour per case; (b) relative error of each normalization route
+/// against time; (c) samples per second on one thread, a bar per family in its colour; (d) Smith Λ
+/// routes and the albedo table ([`lambda_panel`]). Times on log₁₀ axes; exact results at a marked
+/// floor.
 pub fn figure(rows: &[Row]) -> Figure {
-    let log_time = |r: &Row| r.seconds.max(f64::MIN_POSITIVE).log10();
     let mut drawing = Vec::new();
     let mut cases: Vec<&str> = rows
         .iter()
@@ -167,13 +231,7 @@ pub fn figure(rows: &[Row]) -> Figure {
             ));
         }
     }
-    let drawing_times = span(rows.iter().filter(|r| r.section == "drawing").map(log_time));
-    if rows
-        .iter()
-        .any(|r| r.section == "drawing" && r.error <= ERROR_FLOOR)
-    {
-        drawing.push(floor_line(drawing_times));
-    }
+    drawing.extend(floor_line(rows, &["drawing"]));
     let mut routes: Vec<&str> = rows
         .iter()
         .filter(|r| r.section == "normalization")
@@ -197,17 +255,7 @@ pub fn figure(rows: &[Row]) -> Figure {
             )
         })
         .collect();
-    if rows
-        .iter()
-        .any(|r| r.section == "normalization" && r.error <= ERROR_FLOOR)
-    {
-        let times = span(
-            rows.iter()
-                .filter(|r| r.section == "normalization")
-                .map(log_time),
-        );
-        normalization.push(floor_line(times));
-    }
+    normalization.extend(floor_line(rows, &["normalization"]));
     let throughput = Family::ALL
         .iter()
         .enumerate()
@@ -235,8 +283,8 @@ pub fn figure(rows: &[Row]) -> Figure {
     Figure {
         id: "bench".into(),
         title: "ndfplot bench: time against error".into(),
-        rows: 1,
-        cols: 3,
+        rows: 2,
+        cols: 2,
         canvas: CANVAS,
         theme: Theme::Notebook,
         provenance: Provenance::without_spec(),
@@ -254,6 +302,7 @@ pub fn figure(rows: &[Row]) -> Figure {
                 normalization,
             ),
             speed,
+            lambda_panel(rows),
         ],
     }
 }
@@ -302,13 +351,24 @@ mod tests {
         for family in Family::ALL {
             rows.push(row("throughput", family.name(), "eval_1_thread", 2.0, 0.0));
         }
+        rows.push(row("lambda", "beckmann", "closed_form", 0.1, 1e-14));
+        rows.push(row("lambda", "beckmann", "quadrature", 10.0, 1e-12));
+        rows.push(row("lambda", "abc", "quadrature", 8.0, 1e-13));
+        rows.push(row("albedo_table", "trowbridge_reitz", "table", 2.0, 1e-6));
         let figure = figure(&rows);
         let labels: Vec<&str> = figure
             .panels
             .iter()
             .flat_map(|p| p.series.iter().map(|s| s.label.as_str()))
             .collect();
-        for expected in ["Beckmann 0.001, uniform", "closed form", "Torrance–Sparrow"] {
+        for expected in [
+            "Beckmann 0.001, uniform",
+            "closed form",
+            "Torrance–Sparrow",
+            "Beckmann: closed form → quadrature",
+            "ABC: quadrature",
+            "32×32 GGX albedo table, 2 threads: |E − Cycles|",
+        ] {
             assert!(labels.contains(&expected), "{expected} not in {labels:?}");
         }
         assert!(labels.iter().any(|l| l.starts_with("error 0 (exact)")));
