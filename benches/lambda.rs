@@ -1,0 +1,60 @@
+//! Smith's Λ per family, as `ndfplot bench`'s section (d) measures it on the reference angles: each
+//! family at its example parameters (`Family::example`, the ones `cargo bench --bench eval` times)
+//! over 90 θo, the midpoints of 1° steps from 0.5° to 89.5°, by its own route (`Ndf::lambda`) and,
+//! for the closed-form families, also by the generic quadrature (`masking::lambda_by_integral`);
+//! and one directional albedo E(μ = 0.5) of GGX α = 0.25 (height-correlated, F = 1). Criterion
+//! reports the time per 90 values (and values per second) and per albedo.
+//!
+//! Run: `cargo bench --bench lambda`.
+
+use criterion::{BenchmarkId, Criterion, Throughput, black_box, criterion_group, criterion_main};
+use ndfplot::bench::{ggx_surface, lambda_has_closed_form};
+use ndfplot::masking::lambda_by_integral;
+use ndfplot::ndf::{Family, Ndf};
+
+/// View angles per curve.
+const ANGLES: usize = 90;
+
+fn lambda(c: &mut Criterion) {
+    let thetas: Vec<f64> = (0..ANGLES).map(|k| (k as f64 + 0.5).to_radians()).collect();
+    let mut group = c.benchmark_group("lambda");
+    group.throughput(Throughput::Elements(ANGLES as u64));
+    for family in Family::ALL {
+        let ndf = family
+            .build(family.example())
+            .expect("examples lie in the domain");
+        let own: fn(&Ndf, f64) -> f64 = Ndf::lambda;
+        let mut routes = vec![(
+            if lambda_has_closed_form(family) {
+                "closed_form"
+            } else {
+                "quadrature"
+            },
+            own,
+        )];
+        if lambda_has_closed_form(family) {
+            routes.push(("quadrature", lambda_by_integral));
+        }
+        for (name, route) in routes {
+            group.bench_with_input(BenchmarkId::new(name, family.name()), &ndf, |b, ndf| {
+                b.iter(|| {
+                    thetas
+                        .iter()
+                        .map(|&theta| route(ndf, black_box(theta)))
+                        .sum::<f64>()
+                })
+            });
+        }
+    }
+    group.finish();
+}
+
+fn albedo(c: &mut Criterion) {
+    let surface = ggx_surface(0.25);
+    c.bench_function("albedo/ggx_0.25_mu_0.5", |b| {
+        b.iter(|| surface.albedo(black_box(0.5), None).expect("converges"))
+    });
+}
+
+criterion_group!(benches, lambda, albedo);
+criterion_main!(benches);
