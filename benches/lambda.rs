@@ -8,7 +8,7 @@
 //! Run: `cargo bench --bench lambda`.
 
 use criterion::{BenchmarkId, Criterion, Throughput, black_box, criterion_group, criterion_main};
-use ndfplot::bench::{ggx_surface, lambda_has_closed_form};
+use ndfplot::bench::ggx_surface;
 use ndfplot::masking::lambda_by_integral;
 use ndfplot::ndf::{Family, Ndf};
 
@@ -25,14 +25,14 @@ fn lambda(c: &mut Criterion) {
             .expect("examples lie in the domain");
         let own: fn(&Ndf, f64) -> f64 = Ndf::lambda;
         let mut routes = vec![(
-            if lambda_has_closed_form(family) {
+            if family.lambda_closed_form() {
                 "closed_form"
             } else {
                 "quadrature"
             },
             own,
         )];
-        if lambda_has_closed_form(family) {
+        if family.lambda_closed_form() {
             routes.push(("quadrature", lambda_by_integral));
         }
         for (name, route) in routes {

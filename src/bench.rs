@@ -522,15 +522,6 @@ pub fn lambda_cases() -> Vec<LambdaCase> {
         .collect()
 }
 
-/// Whether `family`'s own Λ ([`Ndf::lambda`]) is a closed form; every other family's own route is the
-/// generic quadrature ([`crate::masking::lambda_integral`]).
-pub fn lambda_has_closed_form(family: Family) -> bool {
-    matches!(
-        family,
-        Family::TrowbridgeReitz | Family::Beckmann | Family::Phong
-    )
-}
-
 /// Section (d): Smith's Λ per family over its rows of [`lambda_cases`]: its own route
 /// ([`Ndf::lambda`], method `closed_form` or `quadrature`) and, for the closed-form families, also the
 /// generic quadrature ([`lambda_by_integral`], method `quadrature`). A row's `samples` is the
@@ -545,8 +536,8 @@ pub fn lambda_routes(clock: &dyn Clock, settings: &Settings, cases: &[LambdaCase
             continue;
         }
         let own: fn(&Ndf, f64) -> f64 = Ndf::lambda;
-        let mut routes = vec![(own, lambda_has_closed_form(family))];
-        if lambda_has_closed_form(family) {
+        let mut routes = vec![(own, family.lambda_closed_form())];
+        if family.lambda_closed_form() {
             routes.push((lambda_by_integral, false));
         }
         for (route, closed_form) in routes {
@@ -764,7 +755,7 @@ mod tests {
         for row in &rows {
             let family = Family::from_name(&row.case).unwrap();
             let closed_form = row.method == "closed_form";
-            assert!(!closed_form || lambda_has_closed_form(family), "{row:?}");
+            assert!(!closed_form || family.lambda_closed_form(), "{row:?}");
             // The quadrature's worst is Phong α_p = 20 at θo = 1e-6 (7e-10), where D's argument
             // rounds near grazing (tests/numerics/masking.rs); the closed forms hold
             // REL_TOL_LAMBDA_CLOSED_FORM.

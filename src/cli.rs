@@ -59,8 +59,8 @@ pub enum Command {
         ndfplot man --dir man && man -l man/ndfplot-render.1\n  \
         ndfplot man --dir /usr/local/share/man/man1")]
     Man(ManArgs),
-    /// Measure run time against error (drawing, normalization routes, throughput); writes
-    /// bench.csv, bench.svg and bench.png.
+    /// Measure run time against error (drawing, normalization routes, throughput, Λ routes, an
+    /// albedo table); writes bench.csv, bench.svg and bench.png.
     Bench(BenchArgs),
 }
 
@@ -426,7 +426,12 @@ pub struct CheckArgs {
     (series and continued fraction vs quadrature) against mpmath\n  \
     throughput     D values written per second by eval (the path of every output) on a 2^20-point\n                 \
     grid (two 2^16-point tasks per thread if that is more), on one thread and on all threads\n                 \
-    (error: largest relative difference from the one-thread values)\n\n\
+    (error: largest relative difference from the one-thread values)\n  \
+    lambda         Smith Lambda per family by its own route (closed form or quadrature) and, for\n                 \
+    the closed forms, also by the generic quadrature: time per value and the worst relative\n                 \
+    error against the 40-digit references of tests/data/reference/lambda.csv\n  \
+    albedo_table   one 32 x 32 GGX albedo table (alpha = r^2, height-correlated G2, F = 1) on all\n                 \
+    threads, against Cycles' table_ggx_E\n\n\
     Times are medians of 5 batches of at least 50 ms; machines shared with other work give noisy numbers.\n\n\
     Example:\n  \
     ndfplot bench -o plots/bench"

@@ -80,6 +80,7 @@ impl Distribution for Beckmann {
     const TITLE: &'static str = "Beckmann";
     const PARAMS: &'static [Param] = &[ALPHA_B];
     const COLOUR: u32 = 0x2689D1;
+    const LAMBDA_CLOSED_FORM: bool = true;
     const EXAMPLE: &'static [f64] = &[0.3];
 
     fn from_params(params: &[f64]) -> Result<Self, DomainError> {

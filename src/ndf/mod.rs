@@ -28,6 +28,9 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
     const LEGEND_PREFIX: Option<&'static str> = None;
     /// The notebook's Solarized-based colour, as 0xRRGGBB.
     const COLOUR: u32;
+    /// Whether [`lambda`](Self::lambda) is a closed form; otherwise it is the generic quadrature
+    /// ([`crate::masking::lambda_integral`]).
+    const LAMBDA_CLOSED_FORM: bool = false;
     /// A representative parameter set in [`PARAMS`](Self::PARAMS) order, the one the numpy peer times:
     /// `ndfplot bench` and `cargo bench --bench eval` measure it.
     const EXAMPLE: &'static [f64];
@@ -129,6 +132,13 @@ macro_rules! families {
             pub fn legend_prefix(self) -> Option<&'static str> {
                 match self {
                     $(Family::$variant => <$ty as Distribution>::LEGEND_PREFIX,)+
+                }
+            }
+
+            /// See [`Distribution::LAMBDA_CLOSED_FORM`].
+            pub fn lambda_closed_form(self) -> bool {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::LAMBDA_CLOSED_FORM,)+
                 }
             }
 

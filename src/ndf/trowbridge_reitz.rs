@@ -65,6 +65,7 @@ impl Distribution for TrowbridgeReitz {
     const ALIASES: &'static [&'static str] = &["ggx"];
     const PARAMS: &'static [Param] = &[ALPHA_TR];
     const COLOUR: u32 = 0x849900;
+    const LAMBDA_CLOSED_FORM: bool = true;
     const EXAMPLE: &'static [f64] = &[0.3];
 
     fn from_params(params: &[f64]) -> Result<Self, DomainError> {

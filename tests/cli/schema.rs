@@ -6,8 +6,8 @@
 
 use crate::common::{ndfplot, root};
 use ndfplot::curve::{DIFFERENCE_KEYS, Model, TRANSFORM_KEYS};
-use ndfplot::quantity;
 use ndfplot::input::parse_json;
+use ndfplot::quantity;
 use ndfplot::scene::interactive::{INTERACTIVE_KEYS, PARAM_KEYS, SLIDER_KEY};
 use ndfplot::scene::sweep::{FIT_KEY, FIT_KEYS, FROM_BECKMANN_KEY, SWEEP_KEYS};
 use ndfplot::scene::{self as scene, data};

@@ -22,17 +22,9 @@ use ndfplot::ndf::{Family, Ndf};
 use std::collections::BTreeMap;
 use std::f64::consts::FRAC_PI_2;
 
-/// The families whose Λ has a closed form.
-fn has_closed_form(family: Family) -> bool {
-    matches!(
-        family,
-        Family::TrowbridgeReitz | Family::Beckmann | Family::Phong
-    )
-}
-
 /// The tolerance of a family's own route.
 fn lambda_tol(family: Family) -> f64 {
-    if has_closed_form(family) {
+    if family.lambda_closed_form() {
         REL_TOL_LAMBDA_CLOSED_FORM
     } else {
         REL_TOL_LAMBDA_INTEGRAL
@@ -63,7 +55,7 @@ fn reproduces_the_lambda_reference() {
         // exp(−tan²θm/α²) vanish at grazing, its relative error there is ~α_p · 2.2e-16/(π/2 − θm), which the
         // integral over [π/2 − θo, π/2] inherits for tiny θo (1.6e-10 for Phong α_p = 20 at θo = 1e-6). Their
         // closed forms do not take θm at all; the integral is compared to them from θo = 1e-3 on.
-        let integral_applies = !has_closed_form(family) || theta_o >= 1e-3;
+        let integral_applies = !family.lambda_closed_form() || theta_o >= 1e-3;
         for (route, got, tol) in [
             ("own", ndf.lambda(theta_o), lambda_tol(family)),
             (
@@ -340,7 +332,7 @@ fn lambda_is_a_masking_function_over_every_domain() {
 #[test]
 fn closed_forms_equal_the_generic_integral_over_their_domains() {
     let mut worst = BTreeMap::new();
-    for family in Family::ALL.into_iter().filter(|&f| has_closed_form(f)) {
+    for family in Family::ALL.into_iter().filter(|f| f.lambda_closed_form()) {
         // Phong's cos^α_p θ with 0 < α_p < 1 has a power singularity at grazing the generic integral does not
         // grade for (see `masking::integral`): the closed form is the only route there.
         let smooth_at_grazing =
