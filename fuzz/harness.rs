@@ -13,7 +13,6 @@
 use ndfplot::angle::AngleUnit;
 use ndfplot::cmd::eval::{parse_theta_list, write_table};
 use ndfplot::curve::{Curve, Model, ParamKind};
-use ndfplot::dataset::Dataset;
 use ndfplot::figure::Figure;
 use ndfplot::fresnel::FresnelModel;
 use ndfplot::output::{self, Format};
@@ -133,8 +132,7 @@ fn spec(bytes: &[u8]) {
                 _ => 1000,
             };
             s.panels.iter().map(move |p| {
-                p.curves.len() * samples
-                    + p.data.iter().map(|d| data_len(&d.dataset)).sum::<usize>()
+                p.curves.len() * samples + p.data.iter().map(|d| d.dataset.len()).sum::<usize>()
             })
         })
         .sum();
@@ -163,14 +161,6 @@ fn spec(bytes: &[u8]) {
             !text.contains("NaN") && !text.contains("inf"),
             "non-finite value in {text}"
         );
-    }
-}
-
-fn data_len(dataset: &Dataset) -> usize {
-    match dataset {
-        Dataset::Spectrum { count, .. } => *count,
-        Dataset::Gulbrandsen { r, g, .. } => r.len() * g.len(),
-        Dataset::Table { x, .. } | Dataset::Csv { x, .. } => x.len(),
     }
 }
 

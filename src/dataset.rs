@@ -1,9 +1,13 @@
 //! Series that are not functions of θ: the Belcour–Bati–Barla singular-value spectrum,
-//! coefficient paths and manifolds over Gulbrandsen's (r, g), and literal tables.
+//! coefficient paths and manifolds over Gulbrandsen's (r, g), the directional albedo of an NDF
+//! family over (μ, r) on Cycles' grid, and literal tables.
 //!
 //! A dataset is validated data (like a curve) and evaluates to points; it never draws or writes.
 
+use crate::albedo::{Microfacet, RoughnessMap, albedo_table};
 use crate::fresnel::{basis, gulbrandsen};
+use crate::masking::G2Model;
+use crate::ndf::Family;
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
 /// Which number of the spectrum a spectrum series shows (MATH.md, basis step 6).
@@ -74,6 +78,42 @@ impl Coefficient {
     }
 }
 
+/// Which number of the directional albedo an albedo dataset shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum AlbedoValue {
+    /// E(μ, r) itself.
+    Albedo,
+    /// 1 − E(μ, r): the energy single scattering loses.
+    Loss,
+}
+
+impl AlbedoValue {
+    /// Every value, by its JSON name.
+    pub const NAMES: [(&'static str, AlbedoValue); 2] =
+        [("E", AlbedoValue::Albedo), ("loss", AlbedoValue::Loss)];
+
+    fn name(self) -> &'static str {
+        Self::NAMES
+            .iter()
+            .find(|(_, v)| *v == self)
+            .map(|(n, _)| *n)
+            .expect("every albedo value is named")
+    }
+}
+
+/// The JSON names of the roughness maps of an albedo dataset (`"map"`), the default first.
+pub const ROUGHNESS_MAPS: [(&str, RoughnessMap); 2] =
+    [("r2", RoughnessMap::Squared), ("r", RoughnessMap::Linear)];
+
+/// The JSON name of a roughness map (one of [`ROUGHNESS_MAPS`]).
+fn map_name(map: RoughnessMap) -> &'static str {
+    ROUGHNESS_MAPS
+        .iter()
+        .find(|(_, m)| *m == map)
+        .map(|(n, _)| *n)
+        .expect("every roughness map is named")
+}
+
 /// A non-θ series.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Dataset {
@@ -117,6 +157,24 @@ pub enum Dataset {
         /// Values, in file order.
         y: Vec<f64>,
     },
+    /// The directional albedo E (or the loss 1 − E) of the single-scattering BRDF with F = 1 of
+    /// a one-parameter NDF family whose parameter is its width α, on Cycles' grid
+    /// ([`albedo_table`]): μ_i = i/(mu − 1) (rows, x) by r_j = j/(r − 1) (columns, y), α = map(r);
+    /// z per point. The r = 0 column is the mirror limit and the μ = 0 row the grazing limit.
+    Albedo {
+        /// The NDF family (its one parameter is α).
+        family: Family,
+        /// How r maps to α.
+        map: RoughnessMap,
+        /// How masking and shadowing combine.
+        g2: G2Model,
+        /// E or 1 − E.
+        value: AlbedoValue,
+        /// Points on the μ axis, at least 2.
+        mu: usize,
+        /// Points on the r axis, at least 2.
+        r: usize,
+    },
     /// Literal points.
     Table {
         /// x values.
@@ -150,13 +208,39 @@ impl Dataset {
         matches!(self, Dataset::Csv { .. })
     }
 
-    /// Whether the dataset has a z coordinate (for surface panels).
+    /// Whether the dataset has a z coordinate (for surface and heat-map panels).
     pub fn has_z(&self) -> bool {
-        matches!(self, Dataset::Gulbrandsen { z: Some(_), .. })
+        matches!(
+            self,
+            Dataset::Gulbrandsen { z: Some(_), .. } | Dataset::Albedo { .. }
+        )
+    }
+
+    /// Whether the dataset is z over a rectilinear grid, x varying along its rows and y along its
+    /// columns (what a heat-map panel draws).
+    pub fn is_map(&self) -> bool {
+        matches!(self, Dataset::Albedo { .. })
+    }
+
+    /// How many points the dataset has, known without computing them (but for a CSV file's,
+    /// known once read).
+    pub fn len(&self) -> usize {
+        match self {
+            Dataset::Spectrum { count, .. } => *count,
+            Dataset::Gulbrandsen { r, g, .. } => r.len() * g.len(),
+            Dataset::Albedo { mu, r, .. } => mu * r,
+            Dataset::Table { x, .. } | Dataset::Csv { x, .. } => x.len(),
+        }
+    }
+
+    /// Whether the dataset has no points.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
     }
 
     /// Computes the points. The spectrum and Gulbrandsen datasets build the Fresnel basis on
-    /// first use.
+    /// first use; an albedo dataset computes its table in parallel, and a quadrature that fails
+    /// gives NaN values, which evaluation reports as non-finite.
     pub fn evaluate(&self) -> DataPoints {
         match self {
             Dataset::Spectrum { quantity, count } => {
@@ -203,6 +287,46 @@ impl Dataset {
                 let grid = (r.len() > 1 && g.len() > 1).then_some((r.len(), g.len()));
                 DataPoints { points, z, grid }
             }
+            Dataset::Albedo {
+                family,
+                map,
+                g2,
+                value,
+                mu,
+                r,
+            } => {
+                let surface = |alpha: f64| {
+                    let ndf = family
+                        .build(&[alpha])
+                        .expect("the spec admits only families whose width domain holds (0, 1]");
+                    let d = ndf.clone();
+                    Microfacet::new(move |t| d.eval(t), move |t| ndf.lambda(t), *g2)
+                };
+                match albedo_table(*mu, *r, *map, surface, None, None) {
+                    Ok(table) => {
+                        let points = table
+                            .mu
+                            .iter()
+                            .flat_map(|&m| table.roughness.iter().map(move |&r| (m, r)))
+                            .collect();
+                        let z = match value {
+                            AlbedoValue::Albedo => table.values,
+                            AlbedoValue::Loss => table.values.iter().map(|e| 1.0 - e).collect(),
+                        };
+                        DataPoints {
+                            points,
+                            z: Some(z),
+                            grid: Some((*mu, *r)),
+                        }
+                    }
+                    // A quadrature that did not converge: one non-finite point, reported.
+                    Err(_) => DataPoints {
+                        points: vec![(f64::NAN, f64::NAN)],
+                        z: None,
+                        grid: None,
+                    },
+                }
+            }
             Dataset::Table { x, y } | Dataset::Csv { x, y, .. } => DataPoints {
                 points: x.iter().copied().zip(y.iter().copied()).collect(),
                 z: None,
@@ -240,6 +364,22 @@ impl Serialize for Dataset {
                 map.serialize_entry("r", r)?;
                 map.serialize_entry("g", g)?;
                 map.serialize_entry("g_remap", g_remap)?;
+            }
+            Dataset::Albedo {
+                family,
+                map: roughness,
+                g2,
+                value,
+                mu,
+                r,
+            } => {
+                map.serialize_entry("data", "albedo")?;
+                map.serialize_entry("ndf", family.name())?;
+                map.serialize_entry("map", map_name(*roughness))?;
+                map.serialize_entry("g2", g2.name())?;
+                map.serialize_entry("value", value.name())?;
+                map.serialize_entry("mu", mu)?;
+                map.serialize_entry("r", r)?;
             }
             Dataset::Table { x, y } => {
                 map.serialize_entry("data", "table")?;

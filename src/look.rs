@@ -188,6 +188,30 @@ pub enum PanelKind {
         /// Camera azimuth around the z axis, degrees.
         azimuth_deg: f64,
     },
+    /// A 2D map: a series' z over its rectilinear (x, y) grid drawn as coloured cells
+    /// ([`viridis`]), with a colour bar.
+    Heatmap {
+        /// Colour bar label.
+        z_label: String,
+        /// z range the colours span; `None` = the data's extent.
+        z_range: Option<(f64, f64)>,
+    },
+}
+
+/// Viridis (van der Walt and Smith's perceptually uniform sequential colour map, matplotlib's
+/// default) at ten evenly spaced points, 0 to 1.
+const VIRIDIS: [u32; 10] = [
+    0x440154, 0x482878, 0x3E4A89, 0x31688E, 0x26828E, 0x1F9E89, 0x35B779, 0x6DCD59, 0xB4DE2C,
+    0xFDE725,
+];
+
+/// The viridis colour of `t` ∈ [0, 1] (clamped; NaN is 0), interpolated linearly in sRGB between
+/// the points of [`VIRIDIS`]: dark violet at 0, yellow at 1, lightness rising throughout.
+pub fn viridis(t: f64) -> Rgb {
+    let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
+    let at = t * (VIRIDIS.len() - 1) as f64;
+    let i = (at.floor() as usize).min(VIRIDIS.len() - 2);
+    Rgb::from_hex(VIRIDIS[i]).mix(Rgb::from_hex(VIRIDIS[i + 1]), at - i as f64)
 }
 
 /// Scale of an axis.
@@ -370,6 +394,19 @@ mod tests {
                     assert!(b > a + 1.0, "{base:?} n = {n}: {a} then {b}");
                 }
             }
+        }
+    }
+
+    #[test]
+    fn viridis_runs_from_violet_to_yellow_rising_in_lightness() {
+        assert_eq!(viridis(0.0), Rgb::from_hex(0x440154));
+        assert_eq!(viridis(1.0), Rgb::from_hex(0xFDE725));
+        assert_eq!(viridis(f64::NAN), viridis(-1.0));
+        assert_eq!(viridis(2.0), viridis(1.0));
+        let lightness_at = |t: f64| lightness(viridis(t).luminance());
+        for i in 0..64 {
+            let (a, b) = (f64::from(i) / 64.0, f64::from(i + 1) / 64.0);
+            assert!(lightness_at(b) > lightness_at(a), "{a} to {b}");
         }
     }
 

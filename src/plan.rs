@@ -134,9 +134,13 @@ impl Planner {
         let (a, b) = panel.axes.theta_range();
         let mut feed = Vec::with_capacity(panel.curves.len() + panel.data.len());
         match sampling {
-            // Cartesian and polar panels place (θ, v) in a 2D pixel frame; surface panels do not.
+            // Cartesian and polar panels place (θ, v) in a 2D pixel frame; surface and heat-map
+            // panels do not.
             Sampling::Adaptive { tolerance_px }
-                if !matches!(panel.axes.kind, PanelKind::Surface { .. }) =>
+                if !matches!(
+                    panel.axes.kind,
+                    PanelKind::Surface { .. } | PanelKind::Heatmap { .. }
+                ) =>
             {
                 let frame = frame(scene, panel, tolerance_px);
                 // An adaptive curve depends on its panel's frame and, through the automatic y range,
@@ -166,7 +170,8 @@ impl Planner {
                     }));
                 }
             }
-            // Surface panels draw curves as 3D lines: no 2D pixel frame, so the table's grid.
+            // Surface panels draw curves as 3D lines (heat maps none): no 2D pixel frame, so the
+            // table's grid.
             Sampling::Adaptive { .. } | Sampling::Default => {
                 return self.panel(scene, p, Sampling::Uniform(crate::scene::DEFAULT_SAMPLES));
             }

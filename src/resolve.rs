@@ -425,7 +425,7 @@ fn check_points(sampling: Sampling, panels: &[ScenePanel]) -> Option<Problem> {
     let data: usize = panels
         .iter()
         .flat_map(|p| &p.data)
-        .map(|d| data_points(&d.dataset))
+        .map(|d| d.dataset.len())
         .sum();
     let total = curves.saturating_mul(per_curve).saturating_add(data);
     (total > MAX_POINTS_PER_SCENE).then(|| {
@@ -434,15 +434,6 @@ fn check_points(sampling: Sampling, panels: &[ScenePanel]) -> Option<Problem> {
             format!("too many points in one scene (got {curves} curves × {per_curve} samples + {data} data points = {total}, expected at most {MAX_POINTS_PER_SCENE})"),
         )
     })
-}
-
-/// How many points a dataset has.
-fn data_points(dataset: &Dataset) -> usize {
-    match dataset {
-        Dataset::Spectrum { count, .. } => *count,
-        Dataset::Gulbrandsen { r, g, .. } => r.len() * g.len(),
-        Dataset::Table { x, .. } | Dataset::Csv { x, .. } => x.len(),
-    }
 }
 
 /// The columns `x_column` and `y_column` of the CSV text `bytes` (with a header), as finite

@@ -19,7 +19,7 @@ use crate::curve::{
     DIFFERENCE_KEY, DIFFERENCE_KEYS, DiffOp, Model, PUBLISHED_KEY, PUBLISHED_KEYS, ParamKind,
     ParamSpec, TRANSFORM_KEY, TRANSFORM_KEYS,
 };
-use crate::dataset::{Coefficient, SpectrumQuantity};
+use crate::dataset::{AlbedoValue, Coefficient, ROUGHNESS_MAPS, SpectrumQuantity};
 use crate::domain::Param;
 use crate::fresnel::{self, FresnelModel};
 use crate::masking::{G1Model, G2Model};
@@ -253,14 +253,17 @@ fn panel_key(key: &str) -> Value {
         "title" => text_field("the panel's title, math text (optional)"),
         "kind" => described(
             strings(scene::PANEL_KINDS),
-            "cartesian (default) or surface (3D, with z and camera)",
+            "cartesian (default), surface (3D, with z and camera) or heatmap (a grid's z as coloured cells with a colour bar, with z)",
         ),
         "x" => described(
             reference("x_axis"),
             "the x axis: θ in a unit, or a data series' x",
         ),
         "y" => described(reference("y_axis"), "the y axis: the curves' values"),
-        "z" => described(reference("z_axis"), "a surface panel's z axis"),
+        "z" => described(
+            reference("z_axis"),
+            "a surface panel's z axis, or a heat-map panel's colour bar",
+        ),
         "view" => described(
             strings(scene::VIEWS),
             "cartesian (default) or polar: the lobe in the plane of incidence",
@@ -537,6 +540,7 @@ fn data_key(kind: &str, key: &str) -> Value {
         (_, "data") => json!({ "const": kind, "description": match kind {
             "spectrum" => "the singular values of the Fresnel basis' training curves",
             "gulbrandsen" => "decomposition coefficients over Gulbrandsen's (r, g)",
+            "albedo" => "the directional albedo E (F = 1) of an NDF family over μ = cos θo × roughness r, on Cycles' grid",
             "table" => "literal points",
             "csv" => "θ and values read from a CSV file",
             other => panic!("no description for the data kind {other:?}"),
@@ -567,6 +571,32 @@ fn data_key(kind: &str, key: &str) -> Value {
             )
         }
         ("gulbrandsen", "g_remap") => described(json!({ "type": "boolean" }), free_param(key)),
+        ("albedo", "ndf") => described(
+            strings(data::ALBEDO_FAMILIES),
+            "the NDF family, its one parameter the width α (default ggx)",
+        ),
+        ("albedo", "map") => described(
+            strings(&names(&ROUGHNESS_MAPS)),
+            "how r maps to α: r2 (α = r², Cycles and Filament; default) or r (α = r)",
+        ),
+        ("albedo", "g2") => described(
+            strings(&names(&G2Model::NAMES)),
+            "how masking and shadowing combine (default height-correlated)",
+        ),
+        ("albedo", "value") => described(
+            strings(&names(&AlbedoValue::NAMES)),
+            "E (default) or loss: 1 − E, the energy single scattering loses",
+        ),
+        ("albedo", "mu" | "r") => json!({
+            "type": "integer",
+            "minimum": data::ALBEDO_POINTS.0,
+            "maximum": data::ALBEDO_POINTS.1,
+            "description": format!(
+                "points on the {} axis, i/(n − 1) for i = 0 … n − 1 (default {})",
+                if key == "mu" { "μ" } else { "r" },
+                data::DEFAULT_ALBEDO_POINTS
+            ),
+        }),
         ("table", "x") => described(reference("plain_sweep"), "the points' x: a list or a sweep"),
         ("table", "y") => described(reference("plain_sweep"), "the points' y, as many as x"),
         ("csv", "path") => text_field(

@@ -3,6 +3,9 @@
 //! `{"data": "spectrum", "quantity": "cumulative", "count": 20}` — the singular-value spectrum;
 //! `{"data": "gulbrandsen", "x": "c0", "y": "c2", "z": "c3", "r": <sweep>, "g": <sweep>, "g_remap": false}`
 //! — decomposition coefficients over Gulbrandsen's (r, g);
+//! `{"data": "albedo", "ndf": "ggx", "map": "r2", "g2": "height-correlated", "value": "loss", "mu": 33, "r": 33}`
+//! — the directional albedo E (or 1 − E) with F = 1 over (μ, r) on Cycles' grid, for heat-map and
+//! surface panels;
 //! `{"data": "table", "x": [...], "y": [...]}` — literal points;
 //! `{"data": "csv", "path": "renderer.csv", "x": "theta", "y": "value", "degrees": false}` — θ and
 //! values of a CSV file next to the spec, to overlay on analytic curves; the file is named here
@@ -14,7 +17,7 @@ use super::sweep;
 use super::{Pending, SceneData, Spec, read_style};
 use crate::curve::{ParamKind, pretty};
 use crate::datafile::DataScope;
-use crate::dataset::{Coefficient, Dataset, SpectrumQuantity};
+use crate::dataset::{AlbedoValue, Coefficient, Dataset, ROUGHNESS_MAPS, SpectrumQuantity};
 use crate::fresnel::{EDGE_TINT, REFLECTIVITY};
 use crate::json::{Node, Value};
 use crate::look::Rgb;
@@ -26,7 +29,15 @@ pub const MAX_DATA_POINTS: usize = 250_000;
 /// Keys every data entry accepts besides its own.
 pub const COMMON_KEYS: [&str; 6] = ["data", "label", "style", "colour", "color", "mark"];
 /// The kinds of data entry (`"data": <kind>`).
-pub const KINDS: &[&str] = &["spectrum", "gulbrandsen", "table", "csv"];
+pub const KINDS: &[&str] = &["spectrum", "gulbrandsen", "albedo", "table", "csv"];
+/// NDF families an albedo series takes (`"ndf"`): those whose one parameter is the width α, whose
+/// domain holds every α = map(r), r ∈ (0, 1]; the default first.
+pub const ALBEDO_FAMILIES: &[&str] = &["ggx", "trowbridge_reitz", "beckmann"];
+/// Fewest and most points on each axis of an albedo series (`"mu"`, `"r"`): a 65 × 65 table takes
+/// a few seconds (1–3 ms a cell).
+pub const ALBEDO_POINTS: (usize, usize) = (2, 65);
+/// Points on each axis of an albedo series when `"mu"` or `"r"` is not given.
+pub const DEFAULT_ALBEDO_POINTS: usize = 33;
 
 /// Solarized blue, the default colour of data series.
 const DATA_COLOUR: u32 = 0x268BD2;
@@ -47,6 +58,11 @@ impl DataSpec {
             DataSpec::Ready(dataset) => dataset.is_theta(),
             DataSpec::Csv(_) => true,
         }
+    }
+
+    /// Whether the series is z over a rectilinear grid (see [`Dataset::is_map`]).
+    pub fn is_map(&self) -> bool {
+        matches!(self, DataSpec::Ready(dataset) if dataset.is_map())
     }
 
     /// Whether the series has a z coordinate (see [`Dataset::has_z`]).
@@ -85,6 +101,7 @@ pub fn own_keys(kind: &str) -> &'static [&'static str] {
     match kind {
         "spectrum" => &["quantity", "count"],
         "gulbrandsen" => &["x", "y", "z", "r", "g", "g_remap"],
+        "albedo" => &["ndf", "map", "g2", "value", "mu", "r"],
         "csv" => &["path", "x", "y", "degrees"],
         _ => &["x", "y"],
     }
@@ -106,6 +123,7 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
     let dataset = match kind {
         "spectrum" => read_spectrum(reader, &entry).map(DataSpec::Ready),
         "gulbrandsen" => read_gulbrandsen(reader, &entry).map(DataSpec::Ready),
+        "albedo" => read_albedo(reader, &entry).map(DataSpec::Ready),
         "csv" => read_csv(reader, &entry).map(DataSpec::Csv),
         _ => read_table(reader, &entry).map(DataSpec::Ready),
     };
@@ -255,6 +273,57 @@ fn read_gulbrandsen(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
     })
 }
 
+/// Reads `{"data": "albedo", …}`: every key has a default (GGX, α = r², height-correlated G2, E,
+/// [`DEFAULT_ALBEDO_POINTS`] on each axis).
+fn read_albedo(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
+    let family = match entry.get("ndf") {
+        None => Some(crate::ndf::Family::TrowbridgeReitz),
+        Some(_) => reader
+            .choice(entry, "ndf", ALBEDO_FAMILIES)
+            .and_then(crate::ndf::Family::from_name),
+    };
+    let map = named(reader, entry, "map", &ROUGHNESS_MAPS);
+    let g2 = named(reader, entry, "g2", &crate::masking::G2Model::NAMES);
+    let value = named(reader, entry, "value", &AlbedoValue::NAMES);
+    let (lo, hi) = ALBEDO_POINTS;
+    let expected = format!("a whole number from {lo} to {hi}");
+    let mut count = |key: &str| match entry.get(key) {
+        None => Some(DEFAULT_ALBEDO_POINTS),
+        Some(_) => reader
+            .number(
+                entry,
+                key,
+                |v| v.fract() == 0.0 && (lo as f64..=hi as f64).contains(&v),
+                &expected,
+            )
+            .map(|v| v as usize),
+    };
+    let (mu, r) = (count("mu"), count("r"));
+    Some(Dataset::Albedo {
+        family: family?,
+        map: map?,
+        g2: g2?,
+        value: value?,
+        mu: mu?,
+        r: r?,
+    })
+}
+
+/// The value of `key` among `names` (JSON name, value), the first when the key is absent.
+fn named<T: Copy>(
+    reader: &mut Reader,
+    entry: &Object,
+    key: &str,
+    names: &[(&'static str, T)],
+) -> Option<T> {
+    if entry.get(key).is_none() {
+        return Some(names[0].1);
+    }
+    let choices: Vec<&'static str> = names.iter().map(|(n, _)| *n).collect();
+    let name = reader.choice(entry, key, &choices)?;
+    names.iter().find(|(n, _)| *n == name).map(|(_, v)| *v)
+}
+
 fn read_table(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
     let any = |v: f64| v.is_finite();
     let x = values(reader, entry, "x", any, "finite");
@@ -338,7 +407,16 @@ fn default_label(dataset: &DataSpec) -> String {
                 _ => format!("r × {tint} grid"),
             }
         }
+        Dataset::Albedo { value, .. } => albedo_symbol(*value).into(),
         Dataset::Table { .. } | Dataset::Csv { .. } => "data".into(),
+    }
+}
+
+/// E or 1 − E, as an albedo series names its value.
+fn albedo_symbol(value: AlbedoValue) -> &'static str {
+    match value {
+        AlbedoValue::Albedo => "E",
+        AlbedoValue::Loss => "1 − E",
     }
 }
 
@@ -351,14 +429,16 @@ pub fn default_labels(dataset: &DataSpec) -> (String, String) {
     match dataset {
         Dataset::Spectrum { .. } => ("index k".into(), "singular values".into()),
         Dataset::Gulbrandsen { x, y, .. } => (symbol(*x).into(), symbol(*y).into()),
+        Dataset::Albedo { .. } => ("μ = cos θ_o".into(), "r".into()),
         Dataset::Table { .. } | Dataset::Csv { .. } => ("x".into(), "y".into()),
     }
 }
 
-/// Default z axis label of a surface panel whose first series is `dataset`.
+/// Default z axis label of a surface or heat-map panel whose first series is `dataset`.
 pub fn z_label(dataset: &DataSpec) -> String {
     match dataset {
         DataSpec::Ready(Dataset::Gulbrandsen { z: Some(z), .. }) => symbol(*z).into(),
+        DataSpec::Ready(Dataset::Albedo { value, .. }) => albedo_symbol(*value).into(),
         _ => "z".into(),
     }
 }

@@ -83,7 +83,7 @@ pub const PANEL_KEYS: &[&str] = &[
     "curves",
 ];
 /// Panel kinds (`kind`).
-pub const PANEL_KINDS: &[&str] = &["cartesian", "surface"];
+pub const PANEL_KINDS: &[&str] = &["cartesian", "surface", "heatmap"];
 /// Views of a cartesian panel (`view`).
 pub const VIEWS: &[&str] = &["cartesian", "polar"];
 /// Value transforms a panel applies to its NDF curves (`transform`).
@@ -94,7 +94,7 @@ pub const DEFAULT_SLOPE_RANGE: (f64, f64) = (0.0, 4.0);
 pub const X_KEYS: &[&str] = &["unit", "scale", "range", "label", "ticks"];
 /// Units of an `x` axis.
 pub const X_UNITS: &[&str] = &["radians", "degrees", "slope", "plain"];
-/// Keys of a surface panel's `z` axis.
+/// Keys of a surface or heat-map panel's `z` axis.
 pub const Z_KEYS: &[&str] = &["range", "label"];
 /// Keys of a surface panel's `camera`.
 pub const CAMERA_KEYS: &[&str] = &["elevation", "azimuth"];
@@ -662,7 +662,13 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
     if x_scale == Scale::Log && kind != PanelKind::Cartesian {
         reader.report(
             join_key(&x_path, "scale"),
-            "a log x axis is drawn on cartesian panels only (got \"log\" on a polar or surface panel, expected \"linear\")",
+            "a log x axis is drawn on cartesian panels only (got \"log\" on a polar, surface or heat-map panel, expected \"linear\")",
+        );
+    }
+    if y_scale == Scale::Log && matches!(kind, PanelKind::Heatmap { .. }) {
+        reader.report(
+            join_key(&y_path, "scale"),
+            "a heat-map panel draws its grid on linear axes (got \"log\", expected \"linear\")",
         );
     }
     let (default_x_label, default_y_label) = match (series.curves.first(), series.data.first()) {
@@ -887,33 +893,40 @@ fn default_curve_labels(
     (x_label.to_string(), y_label.to_string())
 }
 
-/// The panel kind: `"kind": "surface"` with its `z` axis and `camera`; otherwise a cartesian
-/// panel in its `view` (a polar view needs curves of θ on an angle axis).
+/// The panel kind: `"kind": "surface"` with its `z` axis and `camera`, `"kind": "heatmap"` with its
+/// `z` axis; otherwise a cartesian panel in its `view` (a polar view needs curves of θ on an angle
+/// axis).
 fn read_kind(
     reader: &mut Reader,
     panel: &reader::Object,
     series: &PanelSeries,
     x_unit: XUnit,
 ) -> Option<PanelKind> {
-    let surface = reader.choice(panel, "kind", PANEL_KINDS) == Some("surface");
-    if surface {
+    let kind = reader.choice(panel, "kind", PANEL_KINDS);
+    if let Some(kind @ ("surface" | "heatmap")) = kind {
         if let Some(view) = panel.get("view") {
             reader.report(
                 panel.path_of("view"),
-                format!("a surface panel has no view (got {view}, expected a \"camera\" object for its angle, or a cartesian panel)"),
+                format!(
+                    "a {kind} panel has no view (got {view}, expected a cartesian panel for a view)"
+                ),
             );
         }
-        return read_surface(reader, panel, series);
+        return if kind == "surface" {
+            read_surface(reader, panel, series)
+        } else {
+            read_heatmap(reader, panel, series, x_unit)
+        };
     }
     for key in ["z", "camera"] {
         if panel.get(key).is_some() {
-            reader.report(panel.path_of(key), "only surface panels have this key (got it on a cartesian panel, expected \"kind\": \"surface\" with it)");
+            reader.report(panel.path_of(key), "only surface and heat-map panels have this key (got it on a cartesian panel, expected \"kind\": \"surface\" or \"heatmap\" with it)");
         }
     }
     if let Some(i) = series.data.iter().position(|d| d.dataset.has_z()) {
         reader.report(
             panel.path_of("curves"),
-            format!("series {i} has a z axis: it needs \"kind\": \"surface\""),
+            format!("series {i} has a z axis: it needs \"kind\": \"surface\" or \"heatmap\""),
         );
     }
     match reader.choice(panel, "view", VIEWS) {
@@ -949,10 +962,7 @@ fn read_surface(
         );
         return None;
     }
-    let z_path = panel.path_of("z");
-    let z = panel
-        .get("z")
-        .and_then(|n| reader.object(n, &z_path, Z_KEYS));
+    let (z_label, z_range) = read_z(reader, panel, series);
     let camera_path = panel.path_of("camera");
     let camera = panel
         .get("camera")
@@ -970,18 +980,73 @@ fn read_surface(
             .unwrap_or(default)
     };
     Some(PanelKind::Surface {
-        z_label: z.and_then(|z| reader.text(&z, "label")).unwrap_or_else(|| {
-            series
-                .data
-                .first()
-                .map(|d| data::z_label(&d.dataset))
-                .unwrap_or_default()
-        }),
-        z_range: z.and_then(|z| reader.interval(&z, "range", f64::is_finite, "finite")),
+        z_label,
+        z_range,
         // The notebook's view_init(elev=65, azim=-45).
         elevation_deg: angle(reader, "elevation", 65.0),
         azimuth_deg: angle(reader, "azimuth", -45.0),
     })
+}
+
+/// A surface or heat-map panel's `z` axis: its label (by default its first series') and range.
+fn read_z(
+    reader: &mut Reader,
+    panel: &reader::Object,
+    series: &PanelSeries,
+) -> (String, Option<(f64, f64)>) {
+    let z_path = panel.path_of("z");
+    let z = panel
+        .get("z")
+        .and_then(|n| reader.object(n, &z_path, Z_KEYS));
+    let label = z.and_then(|z| reader.text(&z, "label")).unwrap_or_else(|| {
+        series
+            .data
+            .first()
+            .map(|d| data::z_label(&d.dataset))
+            .unwrap_or_default()
+    });
+    let range = z.and_then(|z| reader.interval(&z, "range", f64::is_finite, "finite"));
+    (label, range)
+}
+
+/// A heat-map panel: exactly one data series of z over a rectilinear grid (an albedo series), on
+/// plain linear axes, with its `z` axis (the colour bar); no curves of θ and no camera.
+fn read_heatmap(
+    reader: &mut Reader,
+    panel: &reader::Object,
+    series: &PanelSeries,
+    x_unit: XUnit,
+) -> Option<PanelKind> {
+    let before = reader.problems.len();
+    if !series.curves.is_empty() {
+        reader.report(
+            panel.path_of("curves"),
+            "a heat-map panel shows one grid of values, not curves of θ (expected one data series such as {\"data\": \"albedo\"})",
+        );
+    } else if series.data.len() != 1 || !series.data[0].dataset.is_map() {
+        reader.report(
+            panel.path_of("curves"),
+            format!(
+                "a heat-map panel shows exactly one data series of z over a grid (got {} series, expected one {{\"data\": \"albedo\"}})",
+                series.data.len()
+            ),
+        );
+    }
+    if let Some(camera) = panel.get("camera") {
+        reader.report(
+            panel.path_of("camera"),
+            format!("a heat-map panel has no camera (got {camera}, expected \"kind\": \"surface\" for a 3D view)"),
+        );
+    }
+    // Curves of θ (reported above) make the default unit an angle.
+    if x_unit != XUnit::Plain && series.curves.is_empty() {
+        reader.report(
+            join_key(&panel.path_of("x"), "unit"),
+            "a heat-map panel's x axis is its grid's (expected \"plain\" or no unit)",
+        );
+    }
+    let (z_label, z_range) = read_z(reader, panel, series);
+    (reader.problems.len() == before).then_some(PanelKind::Heatmap { z_label, z_range })
 }
 
 /// The series of one panel: curves of θ, then data series.

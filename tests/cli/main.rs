@@ -11,6 +11,7 @@ mod cli;
 mod compare;
 mod conventions;
 mod fit;
+mod heatmap;
 mod lazy_basis;
 mod lint;
 mod man;

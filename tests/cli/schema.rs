@@ -452,6 +452,10 @@ fn misspelt_keys_and_names_fail_the_schema_as_they_fail_the_validator() {
 /// `tests/data/malformed/`.
 const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
     (
+        "albedo-without-heatmap",
+        "cross-field: a data series with z needs a surface or heat-map panel",
+    ),
+    (
         "camera-without-surface",
         "cross-field: camera is allowed only when the panel's kind is surface",
     ),
@@ -491,6 +495,26 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
     (
         "from-beckmann-out-of-range",
         "the converted value's domain (2/α_b² − 2 ≥ 0) is a computed bound",
+    ),
+    (
+        "heatmap-axes",
+        "cross-field: a heat-map panel's x axis has no unit",
+    ),
+    (
+        "heatmap-camera",
+        "cross-field: camera is allowed only when the panel's kind is surface",
+    ),
+    (
+        "heatmap-log-y",
+        "cross-field: a heat-map panel's y axis is linear",
+    ),
+    (
+        "heatmap-not-a-map",
+        "cross-field: a heat-map panel shows one albedo series",
+    ),
+    (
+        "heatmap-with-curves",
+        "cross-field: a heat-map panel shows no curves of θ",
     ),
     (
         "layout-too-small",

@@ -168,6 +168,21 @@ impl Axis {
         Axis::values(Scale::Linear, range, max_ticks)
     }
 
+    /// The colour axis of a heat-map panel: `given` or the extent of the series' finite z values
+    /// exactly (colours span the data, no margin), linear.
+    pub(super) fn colour(panel: &Panel, given: Option<(f64, f64)>, max_ticks: f64) -> Axis {
+        let data = panel
+            .series
+            .iter()
+            .filter_map(|s| s.z.as_deref())
+            .flatten()
+            .copied()
+            .filter(|v| v.is_finite());
+        let (lo, hi) = given.or(extent(data)).unwrap_or((0.0, 1.0));
+        let (lo, hi) = widen_if_flat(lo.min(hi), lo.max(hi));
+        Axis::values(Scale::Linear, (lo, hi), max_ticks)
+    }
+
     /// The label of tick `v` (one of `ticks`); empty for any other value.
     pub(super) fn label(&self, v: f64) -> String {
         self.ticks

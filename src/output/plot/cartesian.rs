@@ -341,15 +341,45 @@ fn margins(m: &Metrics) -> (u32, u32, u32) {
     (m.px(top), m.px(right), m.px(side))
 }
 
-/// Draws the axes and the series of `panel` in `area`, laid out as `frame`, and returns the
-/// plot area.
-fn draw_chart<DB: DrawingBackend>(
+/// Draws the axes of `panel` alone filling `area` (its series are not drawn), `fill` inside its
+/// plot area (given that area and the x and y axes), then the frame round it; returns the plot
+/// area. For panels whose content is not series of points, such as heat maps.
+pub(super) fn draw_framed<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     panel: &Panel,
-    looks: &[Look],
+    m: &Metrics,
+    fill: impl FnOnce(&DrawingArea<DB, Shift>, &Axis, &Axis) -> Result<(), PlotError>,
+) -> Result<DrawingArea<DB, Shift>, PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let frame = Frame::fit(area, area.dim_in_pixel(), panel, m, (0, 0))?;
+    let (_, plot) = draw_axes(area, panel, &frame, m)?;
+    fill(&plot, &frame.x, &frame.y)?;
+    let (pw, ph) = plot.dim_in_pixel();
+    outline(
+        &plot,
+        [(0, 0), (pw as i32 - 1, ph as i32 - 1)],
+        m.line(m.palette.frame),
+    )?;
+    Ok(plot)
+}
+
+/// Draws the axes of `panel` in `area`, laid out as `frame`: grid, ticks, tick labels and axis
+/// labels; returns the chart and its plot area.
+#[allow(clippy::type_complexity)]
+fn draw_axes<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, Shift>,
+    panel: &Panel,
     frame: &Frame,
     m: &Metrics,
-) -> Result<DrawingArea<DB, Shift>, PlotError>
+) -> Result<
+    (
+        ChartContext<'a, DB, Cartesian2d<Axis, Axis>>,
+        DrawingArea<DB, Shift>,
+    ),
+    PlotError,
+>
 where
     DB::ErrorType: 'static,
 {
@@ -407,6 +437,23 @@ where
     mathtext::draw(area, &panel.axes.y_label, &y_style, y_at, m)?;
 
     let plot = chart.plotting_area().strip_coord_spec();
+    Ok((chart, plot))
+}
+
+/// Draws the axes and the series of `panel` in `area`, laid out as `frame`, and returns the
+/// plot area.
+fn draw_chart<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    panel: &Panel,
+    looks: &[Look],
+    frame: &Frame,
+    m: &Metrics,
+) -> Result<DrawingArea<DB, Shift>, PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let (x, y) = (&frame.x, &frame.y);
+    let (mut chart, plot) = draw_axes(area, panel, frame, m)?;
     let (pw, ph) = plot.dim_in_pixel();
     // Curve vertices in plot pixels, clamped to the plot area as plotters clamps the points
     // of the elements it draws (the dashes are walked along the clamped polyline).

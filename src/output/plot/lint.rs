@@ -74,6 +74,11 @@ pub(super) fn record_panel(recorder: &Recorder, plot: Rect, ticks: (usize, usize
     }
 }
 
+/// Whether a panel of `kind` is drawn on 2D axes with ticks (cartesian and heat-map panels).
+fn flat(kind: &PanelKind) -> bool {
+    matches!(kind, PanelKind::Cartesian | PanelKind::Heatmap { .. })
+}
+
 fn overlap(a: &Rect, b: &Rect, tolerance: f64) -> bool {
     a[0] + tolerance < b[2]
         && b[0] + tolerance < a[2]
@@ -132,7 +137,7 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
         .panels
         .iter()
         .enumerate()
-        .filter(|(_, p)| p.axes.kind == PanelKind::Cartesian)
+        .filter(|(_, p)| flat(&p.axes.kind))
         .map(|(i, _)| i)
         .collect();
     let cols = figure.cols.max(1);
@@ -146,7 +151,9 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
     }
     for (a, &pa) in trace.panels.iter().zip(&cartesian) {
         for (b, &pb) in trace.panels.iter().zip(&cartesian) {
-            if pb <= pa || pa / cols != pb / cols {
+            let kind = |p: usize| std::mem::discriminant(&figure.panels[p].axes.kind);
+            // Heat maps keep a colour bar beside their plot area: they line up with their own kind.
+            if pb <= pa || pa / cols != pb / cols || kind(pa) != kind(pb) {
                 continue;
             }
             let size = |r: &Rect| (r[2] - r[0], r[3] - r[1]);
@@ -210,11 +217,7 @@ mod tests {
     fn the_trace_holds_every_label_plot_area_and_tick() {
         let figure = sample();
         let (trace, _) = trace_of(&figure).unwrap();
-        let cartesian = figure
-            .panels
-            .iter()
-            .filter(|p| p.axes.kind == PanelKind::Cartesian)
-            .count();
+        let cartesian = figure.panels.iter().filter(|p| flat(&p.axes.kind)).count();
         assert_eq!(trace.panels.len(), cartesian);
         for label in ["NDF and Fresnel", "θ", "F₀ = 0.04"] {
             assert!(trace.texts.iter().any(|t| t.label == label), "{label}");

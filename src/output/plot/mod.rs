@@ -7,7 +7,7 @@
 //!
 //! Cartesian panels draw lines, dots, lines with dots, or bars; surface panels draw a 3D
 //! axes box with back panes, depth-sorted translucent surface meshes and 3D lines, using the
-//! camera geometry of [`super::plot3d`].
+//! camera geometry of [`super::plot3d`]; heat-map panels draw coloured cells and a colour bar.
 //!
 //! There is one drawing: the SVG, drawn at `SVG_UNITS_PER_PX` device units per CSS pixel and
 //! given a `viewBox` that maps it back to the canvas size, so that coordinates and line widths
@@ -16,7 +16,7 @@
 //!
 //! This file holds the entry points and the page layout; each drawing job has its own file:
 //! [`axis`] (ranges, ticks, tick labels), [`clip`] (curves cut to the visible box),
-//! [`cartesian`] and [`surface`] (the two panel kinds), [`legend`], [`style`] (sizes, colours,
+//! [`cartesian`], [`surface`] and [`heatmap`] (the panel kinds), [`legend`], [`style`] (sizes, colours,
 //! font) and [`encode`] (SVG finishing and PNG encoding).
 
 mod axis;
@@ -25,6 +25,7 @@ mod clip;
 mod encode;
 #[cfg(test)]
 mod fixtures;
+mod heatmap;
 mod legend;
 mod lint;
 mod mathtext;
@@ -45,6 +46,7 @@ use crate::layout::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
 use crate::look::PanelKind;
 use cartesian::{Needs, Shared, draw_cartesian, draw_cartesian_shared};
 use encode::{device_size, encode_png, finish_svg, rasterize};
+use heatmap::draw_heatmap;
 use lint::Recorder;
 pub use lint::lint;
 use polar::draw_polar;
@@ -348,6 +350,9 @@ where
         ) => {
             let view = View::new(*elevation_deg, *azimuth_deg);
             draw_surface(&area, panel, looks, (z_label, *z_range), view, m)
+        }
+        (PanelKind::Heatmap { z_label, z_range }, _) => {
+            draw_heatmap(&area, panel, (z_label, *z_range), m)
         }
     }
 }
