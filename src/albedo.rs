@@ -494,8 +494,9 @@ impl AlbedoTable {
 /// Reports progress as (cells done, cells in all); called from the worker threads.
 pub type ProgressFn<'a> = &'a (dyn Fn(usize, usize) + Sync);
 
-/// n ≥ 2 points i/(n − 1), the last exactly 1.
-fn unit_grid(n: usize) -> Vec<f64> {
+/// The n ≥ 2 coordinates i/(n − 1), i = 0 … n − 1, of a table axis ([`AlbedoTable`]'s μ and r,
+/// [`average_albedo_table`]'s r), the last exactly 1. Panics for n < 2.
+pub fn unit_grid(n: usize) -> Vec<f64> {
     assert!(n >= 2, "a table axis needs at least two points, got {n}");
     (0..n).map(|i| i as f64 / (n - 1) as f64).collect()
 }

@@ -32,6 +32,9 @@ pub enum Command {
     Fit(FitArgs),
     /// Audit the normalization of every curve in scenes (or the built-in catalogue).
     Check(CheckArgs),
+    /// Tabulate the directional albedo E(mu, r) of an NDF, its average E_avg(r) or the split-sum
+    /// tables, for renderers; prints CSV.
+    Albedo(AlbedoArgs),
     /// List the built-in catalogue: one `id<TAB>title` line per figure.
     #[command(after_long_help = "Examples:\n  \
         ndfplot list\n  \
@@ -412,6 +415,71 @@ pub struct CheckArgs {
     /// inside the folder of the spec naming it. Repeatable.
     #[arg(long = "allow-read", value_name = "DIR")]
     pub allow_read: Vec<PathBuf>,
+}
+
+/// Arguments of `ndfplot albedo`.
+#[derive(Debug, Args)]
+#[command(
+    after_long_help = "Tables of the single-scattering microfacet BRDF f = F D G2 / (4 cos theta_o cos theta_i)\n\
+    (MATH.md \"Masking-shadowing and albedo\"), on Cycles' grid: mu = cos theta_o = i/(n_mu - 1),\n\
+    r = j/(n_r - 1), alpha = r^2 (--map r2) or r (--map r); r maps to the family's first parameter.\n\
+    The mu = 0 row is the limit mu -> 0+, the r = 0 column the mirror limit alpha -> 0+ (E = F(theta_o)).\n\n\
+    Tables (CSV columns):\n  \
+    e          mu,r,alpha,E,turquin_f0_1: E(mu) and Turquin's compensation factor 1/E (F0 = 1);\n             \
+    with --fresnel mu,r,alpha,E_F, the albedo with F(theta_d)\n  \
+    average    r,alpha,E_avg,kulla_conty_norm: E_avg = 2 integral E(mu) mu dmu and Kulla-Conty's\n             \
+    1/(pi (1 - E_avg)) (empty, JSON null, where E_avg = 1); with --fresnel also F_avg and\n             \
+    F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)) (E_avg stays F = 1)\n  \
+    split-sum  mu,r,alpha,E_0,E_1,E_2,E_3: Belcour-Bati-Barla tables, E_k the albedo with F = b_k, so\n             \
+    that E_F = sum c_k E_k for F = sum c_k b_k (see coeffs); no --fresnel\n\n\
+    The CSV starts with # lines naming the table, NDF, G2, map, Fresnel, grid, limits and accuracy;\n\
+    --format json prints one object with the same keys, \"columns\" and \"rows\" (arrays of numbers).\n\
+    Cells are computed in parallel; a progress bar shows on a terminal unless -q. Exit 2 on bad\n\
+    input (unknown family, missing --fix, grid over the cap, a parameter out of its domain) or a\n\
+    quadrature that does not converge.\n\n\
+    Examples:\n  \
+    ndfplot albedo > ggx_E.csv\n  \
+    ndfplot albedo --table average --size 32 --format json\n  \
+    ndfplot albedo --ndf beckmann --map r --fresnel '{\"fresnel\":\"exact\",\"eta\":1.5}' --size 16\n  \
+    ndfplot albedo --ndf gtr --fix gamma_gtr=1.5 --table split-sum --mu-count 16 --r-count 16 -o gtr_split.csv"
+)]
+pub struct AlbedoArgs {
+    /// The NDF family, by name or alias (ggx); r maps to its first parameter, the others take --fix.
+    #[arg(long, value_name = "FAMILY", default_value = "trowbridge_reitz")]
+    pub ndf: String,
+    /// Fix a parameter of the family other than its first as NAME=VALUE. Repeatable.
+    #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub fix: Vec<String>,
+    /// How the roughness r maps to the first parameter: r2 (alpha = r^2, as Cycles, Filament, glTF) or
+    /// r (alpha = r).
+    #[arg(long, value_name = "MAP", default_value = "r2", value_parser = ["r2", "r"])]
+    pub map: String,
+    /// Points on both axes, mu and r (2 to 1024; default 32, as Cycles).
+    #[arg(long, value_name = "N", conflicts_with_all = ["mu_count", "r_count"])]
+    pub size: Option<usize>,
+    /// Points on the mu axis (2 to 1024; default 32); not for --table average.
+    #[arg(long, value_name = "N")]
+    pub mu_count: Option<usize>,
+    /// Points on the r axis (2 to 1024; default 32).
+    #[arg(long, value_name = "N")]
+    pub r_count: Option<usize>,
+    /// How masking and shadowing combine into G2.
+    #[arg(long, value_name = "MODEL", default_value = "height-correlated",
+        value_parser = clap::builder::PossibleValuesParser::new(crate::masking::G2Model::NAMES.map(|(name, _)| name)))]
+    pub g2: String,
+    /// A Fresnel factor F(theta_d) inside the integral: a Fresnel curve as inline JSON
+    /// ('{"fresnel":"exact","eta":1.5}') or @FILE. Default F = 1.
+    #[arg(long, value_name = "JSON|@FILE")]
+    pub fresnel: Option<String>,
+    /// The table: e (E per mu and r), average (E_avg per r) or split-sum (E_0..E_3 per mu and r).
+    #[arg(long, value_name = "TABLE", default_value = "e", value_parser = ["e", "average", "split-sum"])]
+    pub table: String,
+    /// Output: CSV with # metadata lines, or one JSON object.
+    #[arg(long, value_name = "FORMAT", default_value = "csv", value_parser = ["csv", "json"])]
+    pub format: String,
+    /// Write the table to FILE (atomically: a temporary renamed into place) instead of stdout.
+    #[arg(short, long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
 }
 
 /// Arguments of `ndfplot bench`.

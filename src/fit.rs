@@ -254,6 +254,34 @@ pub struct FitSpec {
     fixed_text: String,
 }
 
+/// Checks that every key of `fixed` (`--fix`) is a parameter of `family` and is fixed at most
+/// once; the error names the first key that is not.
+pub fn check_fixed_keys(family: Family, fixed: &[(String, f64)]) -> Result<(), FitError> {
+    let names = family.param_names();
+    for (i, (key, value)) in fixed.iter().enumerate() {
+        if !names.contains(&key.as_str()) {
+            return Err(FitError::new(
+                Subject::Fixed,
+                key,
+                format!(
+                    "not a parameter of {} (got {key}={value:?}, expected one of: {}){}",
+                    family.name(),
+                    names.join(", "),
+                    suggestion(key, names.iter().copied())
+                ),
+            ));
+        }
+        if fixed[..i].iter().any(|(k, _)| k == key) {
+            return Err(FitError::new(
+                Subject::Fixed,
+                key,
+                format!("fixed twice (got {key}={value:?} again)"),
+            ));
+        }
+    }
+    Ok(())
+}
+
 impl FitSpec {
     /// Checks `fixed` (key, value) pairs against `family`'s parameters for a fit by `by`.
     ///
@@ -261,28 +289,8 @@ impl FitSpec {
     /// parameter left, more than one free parameter for `peak` or `max` (which match one number), a
     /// fixed value out of its domain.
     pub fn new(family: Family, fixed: &[(String, f64)], by: By) -> Result<FitSpec, FitError> {
+        check_fixed_keys(family, fixed)?;
         let names = family.param_names();
-        for (i, (key, value)) in fixed.iter().enumerate() {
-            if !names.contains(&key.as_str()) {
-                return Err(FitError::new(
-                    Subject::Fixed,
-                    key,
-                    format!(
-                        "not a parameter of {} (got {key}={value:?}, expected one of: {}){}",
-                        family.name(),
-                        names.join(", "),
-                        suggestion(key, names.iter().copied())
-                    ),
-                ));
-            }
-            if fixed[..i].iter().any(|(k, _)| k == key) {
-                return Err(FitError::new(
-                    Subject::Fixed,
-                    key,
-                    format!("fixed twice (got {key}={value:?} again)"),
-                ));
-            }
-        }
         let fixed_value = |name: &str| fixed.iter().find(|(k, _)| k == name).map(|&(_, v)| v);
         let free: Vec<usize> = (0..names.len())
             .filter(|&i| fixed_value(names[i]).is_none())

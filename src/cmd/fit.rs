@@ -20,11 +20,12 @@ fn usage(source: &str, at: &str, message: String) -> Error {
     })
 }
 
-/// Looks up `--family` (canonical names and aliases), suggesting the nearest name.
-pub fn parse_family(name: &str) -> Result<Family> {
+/// Looks up an NDF family given as argument `flag` (`--family`, `--ndf`) by canonical name or
+/// alias, suggesting the nearest name.
+pub fn parse_family(flag: &str, name: &str) -> Result<Family> {
     Family::from_name(name).ok_or_else(|| {
         usage(
-            "--family",
+            flag,
             name,
             format!(
                 "unknown ndf family (got \"{name}\", expected one of: {}){}",

@@ -1,5 +1,6 @@
 //! One module per subcommand: each turns parsed arguments into output through the library.
 
+pub mod albedo;
 pub mod bench;
 pub mod check;
 pub mod coeffs;
@@ -10,7 +11,7 @@ pub mod fit;
 pub mod render;
 pub mod schema;
 
-use crate::cli::{CheckArgs, CoeffsArgs, Command, CompareArgs, EvalArgs, FitArgs};
+use crate::cli::{AlbedoArgs, CheckArgs, CoeffsArgs, Command, CompareArgs, EvalArgs, FitArgs};
 use crate::curve::Curve;
 use crate::dataset::Dataset;
 use crate::error::{Error, Result};
@@ -31,6 +32,7 @@ pub fn run(command: Command, quiet: bool) -> Result<()> {
         Command::Compare(args) => run_compare(args),
         Command::Fit(args) => run_fit(args, quiet),
         Command::Check(args) => run_check(args),
+        Command::Albedo(args) => run_albedo(args, quiet),
         Command::List => stdout::print(&crate::catalogue::listing()),
         Command::Show(args) => run_show(&args.id),
         Command::Schema => schema::run(),
@@ -212,7 +214,7 @@ fn run_compare_pairs(
 }
 
 fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {
-    let family = fit::parse_family(&args.family)?;
+    let family = fit::parse_family("--family", &args.family)?;
     let by = fit::parse_by(&args.by)?;
     let fixed = fit::parse_fixed(&args.fix)?;
     let format = fit::Format::parse(args.format.as_deref())?;
@@ -261,4 +263,44 @@ fn run_check(args: CheckArgs) -> Result<()> {
         _ => check::table(&audits, args.tolerance),
     })?;
     check::verdict(&audits, args.tolerance)
+}
+
+/// `ndfplot albedo`: every argument checked (and the output folder of `-o` made writable) before
+/// anything is integrated; the table goes to stdout or, with `-o`, to its file.
+fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
+    let table = albedo::Table::from_name(&args.table).expect("clap allows only table names");
+    let map = albedo::parse_map(&args.map).expect("clap allows only map names");
+    let g2 = crate::masking::G2Model::from_name(&args.g2).expect("clap allows only G2 names");
+    let family = fit::parse_family("--ndf", &args.ndf)?;
+    let surface = albedo::Surface::new(family, &fit::parse_fixed(&args.fix)?, map)?;
+    let grid = albedo::grid(table, args.size, args.mu_count, args.r_count)?;
+    let fresnel = match &args.fresnel {
+        Some(arg) => Some(albedo::fresnel_factor(load_curves(
+            std::slice::from_ref(arg),
+            "--fresnel",
+        )?)?),
+        None => None,
+    };
+    let request = albedo::Request::new(table, surface, g2, grid, fresnel)?;
+    let destination = args
+        .out
+        .as_deref()
+        .map(|path| crate::output::write::split_file_path("-o", path))
+        .transpose()?;
+    if let Some((dir, _)) = destination {
+        crate::output::write::check_writable(dir)?;
+    }
+    let progress = crate::progress::Progress::new(request.steps() as u64, quiet);
+    progress.stage("integrating");
+    let output = request.compute(&progress)?;
+    progress.finish();
+    let text = if args.format == "json" {
+        output.json()
+    } else {
+        output.csv()
+    };
+    match destination {
+        Some((dir, name)) => crate::output::write::write_files(dir, &[(name, text)]).map(drop),
+        None => stdout::print(&text),
+    }
 }

@@ -85,6 +85,16 @@ impl Report {
         self.rows.push(row);
     }
 
+    /// The column names, in order.
+    pub fn columns(&self) -> &[String] {
+        &self.columns
+    }
+
+    /// The rows, each with one cell per column.
+    pub fn rows(&self) -> &[Vec<Cell>] {
+        &self.rows
+    }
+
     /// Every row as one compact JSON object and a newline (JSON Lines): `{"<column>": <cell>, …}`.
     pub fn json_lines(&self) -> String {
         self.rows

@@ -96,6 +96,28 @@ pub fn write_files<N: AsRef<str> + Sync, B: AsRef<[u8]> + Sync>(
     Ok(names.iter().map(|name| dir.join(name)).collect())
 }
 
+/// Splits an output file path given by the user as argument `flag` (`-o FILE`) into its folder (`.`
+/// for a bare name) and its file name, refusing a path without a plain file name (`dir/`, `..`) or
+/// with a hidden one (a leading `.` is kept for the temporaries).
+pub fn split_file_path<'a>(flag: &str, path: &'a Path) -> Result<(&'a Path, &'a str)> {
+    let shown = path.display().to_string();
+    let name = path
+        .file_name()
+        .and_then(|n| n.to_str())
+        .filter(|n| !n.starts_with('.') && !path.as_os_str().to_string_lossy().ends_with('/'))
+        .ok_or_else(|| {
+            Error::Usage(format!(
+                "{flag}: not a file name to write (got \"{}\", expected a path ending in a plain, non-hidden UTF-8 file name)",
+                crate::problem::excerpt(&shown)
+            ))
+        })?;
+    let dir = match path.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir,
+        _ => Path::new("."),
+    };
+    Ok((dir, name))
+}
+
 /// Creates `dir` if needed and checks that a file can be created in it (a temporary, removed at
 /// once), so a long run can fail before its work rather than after it.
 pub fn check_writable(dir: &Path) -> Result<()> {

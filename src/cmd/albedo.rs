@@ -1,0 +1,651 @@
+//! `ndfplot albedo`: the tables renderers precompute from an NDF — the directional albedo E(μ, r)
+//! with Turquin's factor, the average E_avg(r) with Kulla–Conty's normalisation and Fresnel
+//! colouring, and the Belcour–Bati–Barla split-sum tables E_0 … E_3 — with metadata naming what
+//! they are, as CSV or JSON.
+//!
+//! Owns the reading of the command's arguments into a [`Request`] (the family, its fixed
+//! parameters, the roughness map, the grid, the Fresnel factor) and the text of the output; the
+//! integrals and the grids are [`crate::albedo`]'s.
+
+use serde::ser::{Serialize, SerializeMap, Serializer};
+
+use crate::albedo::{
+    self, Microfacet, RoughnessMap, average_albedo_table, average_fresnel, kulla_conty_fresnel,
+    kulla_conty_lobe, split_sum_tables, turquin_factor, unit_grid,
+};
+use crate::curve::{Curve, Kind};
+use crate::domain::DomainError;
+use crate::error::{Error, Result};
+use crate::masking::G2Model;
+use crate::math::quad::QuadError;
+use crate::math::tolerance::{ALBEDO_QUAD_REL_TOL, ALBEDO_TABULATED_TOL, ALBEDO_TOL};
+use crate::ndf::{Family, Ndf};
+use crate::output::report::{Cell, Report};
+use crate::problem::{Problem, Problems};
+use crate::progress::Progress;
+
+/// Most points on one axis of a table.
+pub const MAX_AXIS: usize = 1024;
+/// Most cells (μ × r) of a table: 512 × 512.
+pub const MAX_CELLS: usize = 1 << 18;
+/// Points per axis when neither `--size` nor a count is given: Cycles' 32.
+pub const DEFAULT_AXIS: usize = 32;
+
+/// Which table `--table` asks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Table {
+    /// E(μ, r) (or E_F with a Fresnel factor) and Turquin's factor 1/E.
+    E,
+    /// E_avg(r), Kulla–Conty's 1/(π(1 − E_avg)) and, with a Fresnel factor, F_avg and F_ms.
+    Average,
+    /// The split-sum tables E_0 … E_3.
+    SplitSum,
+}
+
+impl Table {
+    /// Every table with its name in `--table`.
+    pub const NAMES: [(&'static str, Table); 3] = [
+        ("e", Table::E),
+        ("average", Table::Average),
+        ("split-sum", Table::SplitSum),
+    ];
+
+    /// The table named `name` in `--table`, if any.
+    pub fn from_name(name: &str) -> Option<Table> {
+        Table::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|&(_, table)| table)
+    }
+
+    /// The table's name in `--table`.
+    pub fn name(self) -> &'static str {
+        Table::NAMES
+            .iter()
+            .find(|&&(_, table)| table == self)
+            .map(|&(name, _)| name)
+            .expect("every table is named")
+    }
+}
+
+/// The roughness maps with their names in `--map` and in the NDF's description (`"alpha_tr":"r^2"`).
+const MAPS: [(&str, &str, RoughnessMap); 2] = [
+    ("r2", "r^2", RoughnessMap::Squared),
+    ("r", "r", RoughnessMap::Linear),
+];
+
+/// The map named `name` in `--map`, if any.
+pub fn parse_map(name: &str) -> Option<RoughnessMap> {
+    MAPS.iter()
+        .find(|(n, _, _)| *n == name)
+        .map(|&(_, _, map)| map)
+}
+
+/// The value the NDF's description shows for the mapped parameter: `r^2` or `r`.
+fn map_expression(map: RoughnessMap) -> &'static str {
+    MAPS.iter()
+        .find(|&&(_, _, m)| m == map)
+        .map(|&(_, expression, _)| expression)
+        .expect("every map is named")
+}
+
+/// A family whose first parameter is the mapped roughness and whose others are fixed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Surface {
+    family: Family,
+    map: RoughnessMap,
+    /// Every parameter's value in the family's order; the first is replaced by map(r).
+    params: Vec<f64>,
+}
+
+impl Surface {
+    /// The surface of `family` with `fixed` (`--fix`) giving every parameter but the first, which
+    /// `map` fills from r. Errs naming `--fix` for an unknown, repeated, missing or mapped key.
+    pub fn new(family: Family, fixed: &[(String, f64)], map: RoughnessMap) -> Result<Surface> {
+        crate::fit::check_fixed_keys(family, fixed).map_err(super::fit::fit_error)?;
+        let names = family.param_names();
+        let (mapped, others) = (names[0], &names[1..]);
+        let fix_problem = |at: &str, message: String| {
+            Error::input(Problems {
+                source: "--fix".into(),
+                list: vec![Problem::new(at, message)],
+            })
+        };
+        if let Some((_, value)) = fixed.iter().find(|(key, _)| key == mapped) {
+            return Err(fix_problem(
+                mapped,
+                if others.is_empty() {
+                    format!(
+                        "the roughness r maps to it (got {mapped}={value:?}, expected no --fix: it is {}'s only parameter)",
+                        family.name()
+                    )
+                } else {
+                    format!(
+                        "the roughness r maps to it (got {mapped}={value:?}, expected --fix only for {}'s other parameters: {})",
+                        family.name(),
+                        others.join(", ")
+                    )
+                },
+            ));
+        }
+        let mut params = vec![f64::NAN];
+        for &name in others {
+            match fixed.iter().find(|(key, _)| key == name) {
+                Some(&(_, value)) => params.push(value),
+                None => {
+                    return Err(fix_problem(
+                        name,
+                        format!(
+                            "missing (got no --fix {name}=…, expected a value for every parameter of {} but {mapped}, which r maps to)",
+                            family.name()
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(Surface {
+            family,
+            map,
+            params,
+        })
+    }
+
+    /// The NDF at roughness parameter α (the mapped first parameter), or the error naming the value
+    /// outside its domain.
+    pub fn ndf(&self, alpha: f64) -> std::result::Result<Ndf, DomainError> {
+        let mut params = self.params.clone();
+        params[0] = alpha;
+        self.family.build(&params)
+    }
+
+    /// Checks that every r of an `n_r`-point axis but r = 0 (the mirror limit, no NDF) gives an NDF:
+    /// an error names `--fix` for a fixed value out of its domain, `--map` for a mapped one, with r.
+    pub fn check(&self, n_r: usize) -> Result<()> {
+        let mapped = self.family.params()[0].name;
+        for r in unit_grid(n_r).into_iter().filter(|&r| r > 0.0) {
+            if let Err(e) = self.ndf(self.map.alpha(r)) {
+                let (source, message) = if e.param == mapped {
+                    (
+                        "--map",
+                        format!(
+                            "out of domain at r = {r:?} (got {} = {:?} from {}, expected {})",
+                            e.param,
+                            e.value,
+                            self.map.name(),
+                            e.expected
+                        ),
+                    )
+                } else {
+                    (
+                        "--fix",
+                        e.to_string().replacen(&format!("{}: ", e.param), "", 1),
+                    )
+                };
+                return Err(Error::input(Problems {
+                    source: source.into(),
+                    list: vec![Problem::new(e.param, message)],
+                }));
+            }
+        }
+        Ok(())
+    }
+
+    /// The description of the NDF in canonical curve JSON's order, the mapped parameter written as
+    /// its map (`{"ndf":"gtr","alpha_gtr":"r^2","gamma_gtr":1.5}`).
+    pub fn description(&self) -> String {
+        crate::json::to_string(self)
+    }
+}
+
+impl Serialize for Surface {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        let names = self.family.param_names();
+        let mut map = serializer.serialize_map(Some(names.len() + 1))?;
+        map.serialize_entry("ndf", self.family.name())?;
+        map.serialize_entry(names[0], map_expression(self.map))?;
+        for (name, value) in names.iter().zip(&self.params).skip(1) {
+            map.serialize_entry(name, value)?;
+        }
+        map.end()
+    }
+}
+
+/// The microfacet surface of `ndf` under `g2` ([`Microfacet::new`]).
+fn microfacet(
+    ndf: Ndf,
+    g2: G2Model,
+) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send, impl Fn(f64) -> f64 + Sync + Send> {
+    let for_lambda = ndf.clone();
+    Microfacet::new(
+        move |theta| ndf.eval(theta),
+        move |theta| for_lambda.lambda(theta),
+        g2,
+    )
+}
+
+/// The grid `(n_μ, n_r)` of `--size` or `--mu-count`/`--r-count` (each [`DEFAULT_AXIS`] unless
+/// given); n_μ is `None` for [`Table::Average`], which has no μ axis (`--mu-count` refused). Each
+/// count must be 2 … [`MAX_AXIS`] and the cells at most [`MAX_CELLS`].
+pub fn grid(
+    table: Table,
+    size: Option<usize>,
+    mu_count: Option<usize>,
+    r_count: Option<usize>,
+) -> Result<(Option<usize>, usize)> {
+    let axis = |flag: &str, n: Option<usize>| match n {
+        None => Ok(DEFAULT_AXIS),
+        Some(n) if (2..=MAX_AXIS).contains(&n) => Ok(n),
+        Some(n) => Err(Error::Usage(format!(
+            "{flag}: points per axis out of range (got {n}, expected 2 to {MAX_AXIS})"
+        ))),
+    };
+    let (mu_flag, r_flag) = match size {
+        Some(_) => ("--size", "--size"),
+        None => ("--mu-count", "--r-count"),
+    };
+    let n_r = axis(r_flag, size.or(r_count))?;
+    if table == Table::Average {
+        return match mu_count {
+            Some(n) => Err(Error::Usage(format!(
+                "--mu-count: the average table has no mu axis (got {n}, expected no --mu-count with --table average)"
+            ))),
+            None => Ok((None, n_r)),
+        };
+    }
+    let n_mu = axis(mu_flag, size.or(mu_count))?;
+    if n_mu * n_r > MAX_CELLS {
+        return Err(Error::Usage(format!(
+            "{}: too many cells (got {n_mu} x {n_r} = {}, expected at most {MAX_CELLS})",
+            if size.is_some() {
+                "--size"
+            } else {
+                "--mu-count, --r-count"
+            },
+            n_mu * n_r
+        )));
+    }
+    Ok((Some(n_mu), n_r))
+}
+
+/// The Fresnel factor of `--fresnel`: its one curve, which must be a Fresnel curve.
+pub fn fresnel_factor(curves: Vec<Curve>) -> Result<Curve> {
+    let problem = |message: String| {
+        Error::input(Problems {
+            source: "--fresnel".into(),
+            list: vec![Problem::new("", message)],
+        })
+    };
+    let count = curves.len();
+    let Ok([curve]) = <[Curve; 1]>::try_from(curves) else {
+        return Err(problem(format!(
+            "one Fresnel curve (got {count} curves, expected one)"
+        )));
+    };
+    if curve.kind() != Kind::Fresnel {
+        return Err(problem(format!(
+            "the Fresnel factor is a Fresnel curve (got {}, expected {{\"fresnel\": <model>, …}})",
+            curve.kind().describe()
+        )));
+    }
+    Ok(curve)
+}
+
+/// Everything `ndfplot albedo` computes from, validated.
+#[derive(Debug, Clone)]
+pub struct Request {
+    /// Which table.
+    pub table: Table,
+    /// The NDF family with its fixed parameters and roughness map.
+    pub surface: Surface,
+    /// The G2 model.
+    pub g2: G2Model,
+    /// Points on the μ axis (`None` for [`Table::Average`]).
+    pub n_mu: Option<usize>,
+    /// Points on the r axis.
+    pub n_r: usize,
+    /// The Fresnel factor F(θd) (`None`: F = 1); never with [`Table::SplitSum`].
+    pub fresnel: Option<Curve>,
+}
+
+impl Request {
+    /// The request, checked: no Fresnel factor for the split-sum tables, every NDF of the grid in
+    /// its domain.
+    pub fn new(
+        table: Table,
+        surface: Surface,
+        g2: G2Model,
+        (n_mu, n_r): (Option<usize>, usize),
+        fresnel: Option<Curve>,
+    ) -> Result<Request> {
+        if table == Table::SplitSum
+            && let Some(curve) = &fresnel
+        {
+            return Err(Error::input(Problems {
+                source: "--fresnel".into(),
+                list: vec![Problem::new(
+                    "",
+                    format!(
+                        "the split-sum tables are Fresnel-independent, E_k has F = b_k (got {}, expected no --fresnel with --table split-sum)",
+                        crate::problem::excerpt(&curve.canonical_json())
+                    ),
+                )],
+            }));
+        }
+        surface.check(n_r)?;
+        Ok(Request {
+            table,
+            surface,
+            g2,
+            n_mu,
+            n_r,
+            fresnel,
+        })
+    }
+
+    /// The number of progress steps: cells, or r values for [`Table::Average`].
+    pub fn steps(&self) -> usize {
+        self.n_mu.unwrap_or(1) * self.n_r
+    }
+
+    /// Computes the table (cells in parallel; `progress` counts them) with its metadata.
+    pub fn compute(&self, progress: &Progress) -> Result<Output> {
+        let tick = |_: usize, _: usize| progress.advance(1);
+        let surface = |alpha: f64| {
+            let ndf = self
+                .surface
+                .ndf(alpha)
+                .expect("every alpha of the grid was checked by Request::new");
+            microfacet(ndf, self.g2)
+        };
+        let evaluate = self
+            .fresnel
+            .as_ref()
+            .map(|curve| move |theta: f64| curve.eval(theta));
+        let fresnel: albedo::Fresnel = evaluate.as_ref().map(|f| f as &(dyn Fn(f64) -> f64 + Sync));
+        let map = self.surface.map;
+        let failed = |e: QuadError| {
+            Error::Numerics(format!(
+                "albedo: --table {}: {e} (expected a convergent integral)",
+                self.table.name()
+            ))
+        };
+        let report = match (self.table, self.n_mu) {
+            (Table::E, Some(n_mu)) => {
+                let table =
+                    albedo::albedo_table(n_mu, self.n_r, map, surface, fresnel, Some(&tick))
+                        .map_err(failed)?;
+                let columns: &[&str] = match fresnel {
+                    Some(_) => &["mu", "r", "alpha", "E_F"],
+                    None => &["mu", "r", "alpha", "E", "turquin_f0_1"],
+                };
+                let mut report = Report::new(columns.iter().copied());
+                for (i, &mu) in table.mu.iter().enumerate() {
+                    for (j, &r) in table.roughness.iter().enumerate() {
+                        let e = table.get(i, j);
+                        let mut row = numbers(&[mu, r, map.alpha(r), e]);
+                        if fresnel.is_none() {
+                            row.push(finite(turquin_factor(1.0, e)));
+                        }
+                        report.push(row);
+                    }
+                }
+                report
+            }
+            (Table::SplitSum, Some(n_mu)) => {
+                let tables =
+                    split_sum_tables(n_mu, self.n_r, map, surface, Some(&tick)).map_err(failed)?;
+                let mut report = Report::new(["mu", "r", "alpha", "E_0", "E_1", "E_2", "E_3"]);
+                for (i, &mu) in tables[0].mu.iter().enumerate() {
+                    for (j, &r) in tables[0].roughness.iter().enumerate() {
+                        let mut row = numbers(&[mu, r, map.alpha(r)]);
+                        row.extend(tables.iter().map(|t| Cell::Number(t.get(i, j))));
+                        report.push(row);
+                    }
+                }
+                report
+            }
+            _ => {
+                let e_avg = average_albedo_table(self.n_r, map, surface, None, Some(&tick))
+                    .map_err(failed)?;
+                let f_avg = fresnel.map(average_fresnel).transpose().map_err(failed)?;
+                let columns: &[&str] = match f_avg {
+                    Some(_) => &["r", "alpha", "E_avg", "kulla_conty_norm", "F_avg", "F_ms"],
+                    None => &["r", "alpha", "E_avg", "kulla_conty_norm"],
+                };
+                let mut report = Report::new(columns.iter().copied());
+                for (r, e_avg) in unit_grid(self.n_r).into_iter().zip(e_avg) {
+                    let mut row = numbers(&[r, map.alpha(r), e_avg]);
+                    // f_ms's normalisation 1/(π(1 − E_avg)) is the lobe at E(μo) = E(μi) = 0;
+                    // undefined for the mirror (E_avg = 1), which scatters once.
+                    row.push(if e_avg < 1.0 {
+                        finite(kulla_conty_lobe(0.0, 0.0, e_avg))
+                    } else {
+                        Cell::Missing
+                    });
+                    if let Some(f_avg) = f_avg {
+                        row.extend(numbers(&[f_avg, kulla_conty_fresnel(f_avg, e_avg)]));
+                    }
+                    report.push(row);
+                }
+                report
+            }
+        };
+        Ok(Output {
+            metadata: self.metadata(),
+            report,
+        })
+    }
+
+    /// The metadata of the table, in output order.
+    fn metadata(&self) -> Vec<(&'static str, Meta)> {
+        let fresnel = match &self.fresnel {
+            Some(curve) => Meta::Json(curve.canonical_json()),
+            None => Meta::Absent("none (F = 1)"),
+        };
+        let what = match (self.table, &self.fresnel) {
+            (Table::E, None) => {
+                "directional albedo E(mu) of f = F D G2 / (4 cos(theta_o) cos(theta_i)), one row per (mu, r), and Turquin's compensation factor 1/E (F0 = 1)"
+            }
+            (Table::E, Some(_)) => {
+                "directional albedo E_F(mu) of f = F D G2 / (4 cos(theta_o) cos(theta_i)) with F(theta_d), one row per (mu, r)"
+            }
+            (Table::Average, None) => {
+                "average albedo E_avg = 2 int_0^1 E(mu) mu dmu (F = 1), one row per r, and Kulla-Conty's f_ms normalisation 1/(pi (1 - E_avg)) (empty where E_avg = 1)"
+            }
+            (Table::Average, Some(_)) => {
+                "average albedo E_avg = 2 int_0^1 E(mu) mu dmu (F = 1), one row per r, Kulla-Conty's 1/(pi (1 - E_avg)) (empty where E_avg = 1), F_avg = 2 int_0^1 F mu dmu and F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg))"
+            }
+            (Table::SplitSum, _) => {
+                "Belcour-Bati-Barla split-sum tables E_k(mu): the albedo with F = b_k(theta_d), k = 0..3 (E_0 = E), one row per (mu, r); E_F = sum c_k E_k for F = sum c_k b_k"
+            }
+        };
+        let grid = match self.n_mu {
+            Some(_) => {
+                "mu = cos(theta_o) = i/(mu_count - 1), r = j/(r_count - 1), alpha = map(r); rows by mu, then r"
+            }
+            None => "r = j/(r_count - 1), alpha = map(r)",
+        };
+        let limits = match self.table {
+            Table::Average => "r = 0 is the mirror limit alpha -> 0+ (E_avg = 1)".to_string(),
+            _ => format!(
+                "mu = 0 is the limit mu -> 0+; r = 0 is the mirror limit alpha -> 0+, {}",
+                if self.table == Table::SplitSum {
+                    "E_k = b_k(theta_o)"
+                } else {
+                    "E = F(theta_o)"
+                }
+            ),
+        };
+        let accuracy = match self.table {
+            Table::SplitSum => format!(
+                "each nested integral to {ALBEDO_TABULATED_TOL:e} absolute (the basis is tabulated, linear between 1000 nodes in cos(theta_d))"
+            ),
+            _ => format!(
+                "within {ALBEDO_TOL:e} of the exact integrals for smooth F (nested adaptive Gauss-Kronrod, each level to {ALBEDO_QUAD_REL_TOL:e})"
+            ),
+        };
+        let mut metadata = vec![
+            ("table", Meta::Text(self.table.name().into())),
+            ("quantity", Meta::Text(what.into())),
+            ("ndf", Meta::Json(self.surface.description())),
+            ("g2", Meta::Text(self.g2.name().into())),
+            ("map", Meta::Text(self.surface.map.name().into())),
+            ("fresnel", fresnel),
+        ];
+        if let Some(n_mu) = self.n_mu {
+            metadata.push(("mu_count", Meta::Count(n_mu)));
+        }
+        metadata.extend([
+            ("r_count", Meta::Count(self.n_r)),
+            ("grid", Meta::Text(grid.into())),
+            ("limits", Meta::Text(limits)),
+            ("accuracy", Meta::Text(accuracy)),
+        ]);
+        metadata
+    }
+}
+
+/// Number cells.
+fn numbers(values: &[f64]) -> Vec<Cell> {
+    values.iter().map(|&v| Cell::Number(v)).collect()
+}
+
+/// A number cell, or an empty one where the value is not finite (never printed, CONTRACTS.md).
+fn finite(value: f64) -> Cell {
+    if value.is_finite() {
+        Cell::Number(value)
+    } else {
+        Cell::Missing
+    }
+}
+
+/// A metadata value: text, JSON (a curve), a count, or nothing.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Meta {
+    /// No value: JSON `null`, and this text in CSV.
+    Absent(&'static str),
+    /// Text (a JSON string).
+    Text(String),
+    /// JSON text, embedded as JSON.
+    Json(String),
+    /// A whole number.
+    Count(usize),
+}
+
+impl Serialize for Meta {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        match self {
+            Meta::Absent(_) => serializer.serialize_none(),
+            Meta::Text(text) => serializer.serialize_str(text),
+            Meta::Json(text) => Cell::Json(text.clone()).serialize(serializer),
+            Meta::Count(n) => serializer.serialize_u64(*n as u64),
+        }
+    }
+}
+
+impl std::fmt::Display for Meta {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Meta::Absent(text) => f.write_str(text),
+            Meta::Text(text) | Meta::Json(text) => f.write_str(text),
+            Meta::Count(n) => write!(f, "{n}"),
+        }
+    }
+}
+
+/// A computed table with its metadata.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Output {
+    /// (key, value) pairs naming what the table is, in order.
+    pub metadata: Vec<(&'static str, Meta)>,
+    /// The columns and rows.
+    pub report: Report,
+}
+
+impl Output {
+    /// CSV: one `# <key>: <value>` line per metadata pair, then the header and the rows.
+    pub fn csv(&self) -> String {
+        let mut text: String = self
+            .metadata
+            .iter()
+            .map(|(key, value)| format!("# {key}: {value}\n"))
+            .collect();
+        text.push_str(&self.report.csv());
+        text
+    }
+
+    /// One compact JSON object and a newline: the metadata's keys, then `"columns"` (the names) and
+    /// `"rows"` (arrays of numbers, `null` for an empty cell).
+    pub fn json(&self) -> String {
+        crate::json::to_string(self) + "\n"
+    }
+}
+
+impl Serialize for Output {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(self.metadata.len() + 2))?;
+        for (key, value) in &self.metadata {
+            map.serialize_entry(key, value)?;
+        }
+        map.serialize_entry("columns", self.report.columns())?;
+        map.serialize_entry("rows", self.report.rows())?;
+        map.end()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fixed(pairs: &[(&str, f64)]) -> Vec<(String, f64)> {
+        pairs.iter().map(|&(k, v)| (k.to_string(), v)).collect()
+    }
+
+    #[test]
+    fn the_ndf_is_described_with_its_map_in_canonical_order() {
+        let gtr = Surface::new(
+            Family::Gtr,
+            &fixed(&[("gamma_gtr", 1.5)]),
+            RoughnessMap::Squared,
+        )
+        .unwrap();
+        assert_eq!(
+            gtr.description(),
+            r#"{"ndf":"gtr","alpha_gtr":"r^2","gamma_gtr":1.5}"#
+        );
+        let ggx = Surface::new(Family::TrowbridgeReitz, &[], RoughnessMap::Linear).unwrap();
+        assert_eq!(
+            ggx.description(),
+            r#"{"ndf":"trowbridge_reitz","alpha_tr":"r"}"#
+        );
+    }
+
+    #[test]
+    fn grids_are_capped_and_the_average_has_no_mu_axis() {
+        assert_eq!(grid(Table::E, None, None, None).unwrap(), (Some(32), 32));
+        assert_eq!(grid(Table::E, Some(4), None, None).unwrap(), (Some(4), 4));
+        assert_eq!(
+            grid(Table::SplitSum, None, Some(3), Some(5)).unwrap(),
+            (Some(3), 5)
+        );
+        assert_eq!(
+            grid(Table::Average, Some(8), None, None).unwrap(),
+            (None, 8)
+        );
+        assert!(grid(Table::Average, None, Some(8), None).is_err());
+        assert!(grid(Table::E, Some(1), None, None).is_err());
+        assert!(grid(Table::E, Some(MAX_AXIS + 1), None, None).is_err());
+        assert!(grid(Table::E, None, Some(MAX_AXIS), Some(MAX_AXIS)).is_err());
+        assert!(grid(Table::Average, None, None, Some(MAX_AXIS)).is_ok());
+    }
+
+    #[test]
+    fn table_names_round_trip() {
+        for (name, table) in Table::NAMES {
+            assert_eq!(Table::from_name(name), Some(table));
+            assert_eq!(table.name(), name);
+        }
+        assert_eq!(parse_map("r2"), Some(RoughnessMap::Squared));
+        assert_eq!(parse_map("r"), Some(RoughnessMap::Linear));
+    }
+}
