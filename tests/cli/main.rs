@@ -1,11 +1,12 @@
 //! The integration tests that run the real `ndfplot` binary or its render pipeline: the command
-//! line and its contracts, batch and multi-parameter fits, robustness against bad input and
-//! interruption, the JSON Schema, panel views, sampling, the lazily computed Fresnel basis,
-//! interactive pages in a browser, and README's transcripts.
+//! line and its contracts, the albedo tables, batch and multi-parameter fits, robustness against
+//! bad input and interruption, the JSON Schema, panel views, sampling, the lazily computed Fresnel
+//! basis, interactive pages in a browser, and README's transcripts.
 
 #[path = "../common/mod.rs"]
 mod common;
 
+mod albedo;
 mod browser;
 mod cli;
 mod compare;

@@ -11,7 +11,14 @@ fn man_pages_render_with_their_options_and_exit_codes() {
     let pages = [
         (
             "ndfplot.1",
-            &["render", "eval", "EXIT STATUS", "SCENE FORMAT", "published"][..],
+            &[
+                "render",
+                "eval",
+                "albedo",
+                "EXIT STATUS",
+                "SCENE FORMAT",
+                "published",
+            ][..],
         ),
         (
             "ndfplot-render.1",
@@ -30,6 +37,10 @@ fn man_pages_render_with_their_options_and_exit_codes() {
         (
             "ndfplot-fit.1",
             &["--target", "--family", "--by", "EXIT STATUS"][..],
+        ),
+        (
+            "ndfplot-albedo.1",
+            &["--table", "--fresnel", "--map", "split-sum", "EXIT STATUS"][..],
         ),
         ("ndfplot-man.1", &["--dir", "EXIT STATUS"][..]),
     ];

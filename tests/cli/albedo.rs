@@ -1,0 +1,366 @@
+//! `ndfplot albedo`: its tables equal `eval`'s albedo quantity cell by cell, the average table
+//! Cycles' `table_ggx_Eavg` and the research notes' values, the roughness maps and the Fresnel
+//! factor do what they say, the metadata names the table, and bad arguments exit 2 with one error
+//! line naming the argument. Grids are small: every cell is a nested adaptive integral.
+
+use crate::common::{ndfplot, root, scratch, text};
+
+/// A table as printed: the `# key: value` metadata, the column names and the rows of numbers
+/// (`NaN` for an empty field).
+struct Printed {
+    metadata: Vec<(String, String)>,
+    columns: Vec<String>,
+    rows: Vec<Vec<f64>>,
+}
+
+impl Printed {
+    fn column(&self, name: &str) -> usize {
+        self.columns
+            .iter()
+            .position(|c| c == name)
+            .unwrap_or_else(|| panic!("no column {name} in {:?}", self.columns))
+    }
+
+    fn meta(&self, key: &str) -> &str {
+        self.metadata
+            .iter()
+            .find(|(k, _)| k == key)
+            .map(|(_, v)| v.as_str())
+            .unwrap_or_else(|| panic!("no metadata {key} in {:?}", self.metadata))
+    }
+}
+
+/// Runs `ndfplot albedo ARGS` (CSV), which must succeed with nothing on stderr.
+fn albedo(args: &[&str]) -> Printed {
+    let mut all = vec!["albedo"];
+    all.extend(args);
+    let out = ndfplot(&all);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(out.stderr.is_empty(), "{}", text(&out.stderr));
+    parse(&text(&out.stdout))
+}
+
+fn parse(csv: &str) -> Printed {
+    let mut lines = csv.lines();
+    let mut metadata = Vec::new();
+    let header = loop {
+        let line = lines.next().expect("a header after the metadata");
+        match line.strip_prefix("# ") {
+            Some(meta) => {
+                let (key, value) = meta.split_once(": ").expect("# key: value");
+                metadata.push((key.to_string(), value.to_string()));
+            }
+            None => break line,
+        }
+    };
+    let columns = header.split(',').map(String::from).collect();
+    let rows = lines
+        .map(|line| {
+            line.split(',')
+                .map(|f| {
+                    if f.is_empty() {
+                        f64::NAN
+                    } else {
+                        f.parse().unwrap()
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    Printed {
+        metadata,
+        columns,
+        rows,
+    }
+}
+
+/// `eval` of `curves` at every θ of `thetas`: one row per θ, one value per curve.
+fn eval(curves: &[String], thetas: &[f64]) -> Vec<Vec<f64>> {
+    let list: Vec<String> = thetas.iter().map(|t| format!("{t:?}")).collect();
+    let list = list.join(",");
+    let mut args = vec!["eval"];
+    for curve in curves {
+        args.extend(["--curve", curve.as_str()]);
+    }
+    args.extend(["--theta", list.as_str()]);
+    let out = ndfplot(&args);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    text(&out.stdout)
+        .lines()
+        .skip(1)
+        .map(|line| {
+            line.split(',')
+                .skip(1)
+                .map(|f| f.parse().unwrap())
+                .collect()
+        })
+        .collect()
+}
+
+/// Every E-like cell (column `value`) of a long-format table equals `eval` of the albedo quantity
+/// of GGX at its α (`extra` adds keys to the curve: a G2 model, a Fresnel factor) at θ = acos μ,
+/// to 1e-12; the r = 0 column is `mirror(θ)`.
+fn assert_matches_eval(table: &Printed, value: &str, extra: &str, mirror: impl Fn(f64) -> f64) {
+    let (mu, r, alpha, e) = (
+        table.column("mu"),
+        table.column("r"),
+        table.column("alpha"),
+        table.column(value),
+    );
+    let mut alphas: Vec<f64> = table.rows.iter().map(|row| row[alpha]).collect();
+    alphas.sort_by(f64::total_cmp);
+    alphas.dedup();
+    alphas.retain(|&a| a > 0.0);
+    let mut thetas: Vec<f64> = table.rows.iter().map(|row| row[mu].acos()).collect();
+    thetas.sort_by(f64::total_cmp);
+    thetas.dedup();
+    let curves: Vec<String> = alphas
+        .iter()
+        .map(|a| format!(r#"{{"ndf":"ggx","alpha_tr":{a:?},"quantity":"albedo"{extra}}}"#))
+        .collect();
+    let values = eval(&curves, &thetas);
+    for row in &table.rows {
+        let theta = row[mu].acos();
+        let expected = if row[r] == 0.0 {
+            mirror(theta)
+        } else {
+            let i = thetas.iter().position(|&t| t == theta).unwrap();
+            let j = alphas.iter().position(|&a| a == row[alpha]).unwrap();
+            values[i][j]
+        };
+        assert!(
+            (row[e] - expected).abs() <= 1e-12,
+            "mu = {}, r = {}: {} vs eval {expected}",
+            row[mu],
+            row[r],
+            row[e]
+        );
+    }
+}
+
+#[test]
+fn the_e_table_is_evals_albedo_at_every_cell_with_turquins_factor() {
+    let table = albedo(&["--size", "4"]);
+    assert_eq!(table.columns, ["mu", "r", "alpha", "E", "turquin_f0_1"]);
+    assert_eq!(table.rows.len(), 16);
+    assert_matches_eval(&table, "E", "", |_| 1.0);
+    let (mu, r, alpha, e, factor) = (0, 1, 2, 3, 4);
+    for (k, row) in table.rows.iter().enumerate() {
+        // Rows by μ, then r, on i/3 and j/3; α = r².
+        assert_eq!(row[mu], (k / 4) as f64 / 3.0);
+        assert_eq!(row[r], (k % 4) as f64 / 3.0);
+        assert_eq!(row[alpha], row[r] * row[r]);
+        assert!((row[factor] * row[e] - 1.0).abs() <= 1e-14, "{row:?}");
+    }
+    let last = table.rows.last().unwrap();
+    assert_eq!((last[mu], last[r]), (1.0, 1.0));
+    assert!((last[e] - (1.0 - 2f64.ln())).abs() <= 1e-10, "{}", last[e]);
+
+    let separable = albedo(&["--size", "3", "--g2", "separable"]);
+    assert_eq!(separable.meta("g2"), "separable");
+    assert_matches_eval(&separable, "E", r#","g2":"separable""#, |_| 1.0);
+}
+
+#[test]
+fn the_average_table_is_cycles_and_the_research_values() {
+    let table = albedo(&["--table", "average", "--size", "5"]);
+    assert_eq!(table.columns, ["r", "alpha", "E_avg", "kulla_conty_norm"]);
+    // r = 0, 1/4, 1/2, 3/4, 1: α = 0, 0.0625, 0.25, 0.5625, 1.
+    let e_avg: Vec<f64> = table.rows.iter().map(|row| row[2]).collect();
+    let research = [0.987250, 0.882323, 0.656201];
+    for (value, expected) in e_avg[1..4].iter().zip(research) {
+        assert!((value - expected).abs() <= 1e-6, "{value} vs {expected}");
+    }
+    // Cycles' table_ggx_Eavg at x = 0 (r clamped to 1e-4) and x = 31 (r = 1).
+    let cycles = std::fs::read_to_string(root().join("tests/data/cycles_ggx_E.csv")).unwrap();
+    let entry = |x: &str| -> f64 {
+        let line = cycles
+            .lines()
+            .find(|l| l.starts_with(&format!("ggx_Eavg,,{x},")))
+            .unwrap();
+        line.rsplit(',').next().unwrap().parse().unwrap()
+    };
+    assert!((e_avg[0] - entry("0")).abs() <= 2e-6);
+    assert!((e_avg[4] - entry("31")).abs() <= 2e-6, "{}", e_avg[4]);
+    // Kulla–Conty's normalisation: undefined for the mirror, 1/(π(1 − E_avg)) elsewhere.
+    assert!(table.rows[0][3].is_nan());
+    for row in &table.rows[1..] {
+        let expected = 1.0 / (std::f64::consts::PI * (1.0 - row[2]));
+        assert!((row[3] - expected).abs() <= 1e-12 * expected, "{row:?}");
+    }
+}
+
+#[test]
+fn the_roughness_map_decides_alpha() {
+    let squared = albedo(&["--size", "3"]);
+    let linear = albedo(&["--map", "r", "--mu-count", "3", "--r-count", "5"]);
+    assert_eq!(linear.meta("map"), "alpha = r");
+    assert_eq!(squared.meta("map"), "alpha = r^2");
+    assert_eq!(
+        linear.meta("ndf"),
+        r#"{"ndf":"trowbridge_reitz","alpha_tr":"r"}"#
+    );
+    for row in &linear.rows {
+        assert_eq!(row[2], row[1]);
+    }
+    // α = 0.25 is r = 1/4 under `r` and r = 1/2 under `r2`: the same values.
+    let at = |table: &Printed, r: f64| -> Vec<f64> {
+        table
+            .rows
+            .iter()
+            .filter(|row| row[1] == r)
+            .map(|row| row[3])
+            .collect()
+    };
+    assert_eq!(at(&linear, 0.25), at(&squared, 0.5));
+    assert_ne!(at(&linear, 0.5), at(&squared, 0.5));
+}
+
+#[test]
+fn a_fresnel_factor_turns_e_into_e_f_as_eval_computes_it() {
+    let fresnel = r#"{"fresnel":"exact","eta":1.5}"#;
+    let table = albedo(&["--size", "3", "--fresnel", fresnel]);
+    assert_eq!(table.columns, ["mu", "r", "alpha", "E_F"]);
+    assert_eq!(
+        table.meta("fresnel"),
+        r#"{"fresnel":"exact","eta":1.5,"kappa":0.0}"#
+    );
+    let f = |theta: f64| eval(&[fresnel.to_string()], &[theta])[0][0];
+    assert_matches_eval(&table, "E_F", &format!(r#","fresnel":{fresnel}"#), f);
+
+    let schlick = r#"{"fresnel":"schlick","f0":0.04}"#;
+    let average = albedo(&["--table", "average", "--size", "2", "--fresnel", schlick]);
+    assert_eq!(
+        average.columns,
+        ["r", "alpha", "E_avg", "kulla_conty_norm", "F_avg", "F_ms"]
+    );
+    let plain = albedo(&["--table", "average", "--size", "2"]);
+    for (row, plain) in average.rows.iter().zip(&plain.rows) {
+        assert_eq!(row[2], plain[2], "E_avg is the F = 1 average");
+        assert!((row[4] - (0.04 + 0.96 / 21.0)).abs() <= 1e-14, "{row:?}");
+        let f_ms = row[4] * row[4] * row[2] / (1.0 - row[4] * (1.0 - row[2]));
+        assert!((row[5] - f_ms).abs() <= 1e-15, "{row:?}");
+    }
+}
+
+#[test]
+fn the_split_sum_tables_start_with_e_and_their_mirror_column_is_the_basis() {
+    let table = albedo(&["--table", "split-sum", "--mu-count", "3", "--r-count", "2"]);
+    assert_eq!(
+        table.columns,
+        ["mu", "r", "alpha", "E_0", "E_1", "E_2", "E_3"]
+    );
+    assert_eq!(table.meta("table"), "split-sum");
+    assert!(table.meta("accuracy").contains("1e-8"));
+    let plain = albedo(&["--mu-count", "3", "--r-count", "2"]);
+    let basis: Vec<String> = (0..4)
+        .map(|k| format!(r#"{{"fresnel":"basis","index":{k}}}"#))
+        .collect();
+    for (row, plain) in table.rows.iter().zip(&plain.rows) {
+        assert!((row[3] - plain[3]).abs() <= 1e-7, "{row:?} vs {plain:?}");
+        if row[1] == 0.0 {
+            let b = &eval(&basis, &[row[0].acos()])[0];
+            for k in 0..4 {
+                assert!((row[3 + k] - b[k]).abs() <= 1e-12, "{row:?} vs {b:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn metadata_names_the_table_in_csv_and_json_alike() {
+    let args = ["albedo", "--size", "2"];
+    let csv = albedo(&args[1..]);
+    for key in [
+        "table", "quantity", "ndf", "g2", "map", "fresnel", "mu_count", "r_count", "grid",
+        "limits", "accuracy",
+    ] {
+        assert!(!csv.meta(key).is_empty(), "{key}");
+    }
+    assert_eq!(csv.meta("fresnel"), "none (F = 1)");
+    assert_eq!(csv.meta("mu_count"), "2");
+    let out = ndfplot(&["albedo", "--size", "2", "--format", "json"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["ndf"]["alpha_tr"], "r^2");
+    assert_eq!(json["fresnel"], serde_json::Value::Null);
+    assert_eq!(json["mu_count"], 2);
+    assert_eq!(json["columns"][3], "E");
+    let rows: Vec<Vec<f64>> = serde_json::from_value(json["rows"].clone()).unwrap();
+    assert_eq!(rows, csv.rows);
+}
+
+#[test]
+fn bad_arguments_exit_2_with_one_line_naming_them() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["--ndf", "ggxx"],
+            r#"error: --ndf: ggxx: unknown ndf family (got "ggxx""#,
+        ),
+        (
+            &["--ndf", "gtr"],
+            "error: --fix: gamma_gtr: missing (got no --fix gamma_gtr=…",
+        ),
+        (
+            &["--fix", "alpha_tr=0.5"],
+            "error: --fix: alpha_tr: the roughness r maps to it",
+        ),
+        (
+            &["--ndf", "gtr", "--fix", "gamma_gtr=0"],
+            "error: --fix: gamma_gtr: out of domain (got 0.0, expected",
+        ),
+        (
+            &["--size", "1025"],
+            "error: --size: points per axis out of range (got 1025, expected 2 to 1024)",
+        ),
+        (
+            &["--mu-count", "1024", "--r-count", "512"],
+            "error: --mu-count, --r-count: too many cells (got 1024 x 512 = 524288, expected at most 262144)",
+        ),
+        (
+            &[
+                "--table",
+                "split-sum",
+                "--fresnel",
+                r#"{"fresnel":"schlick","f0":0.04}"#,
+            ],
+            "error: --fresnel: the split-sum tables are Fresnel-independent",
+        ),
+        (
+            &["--fresnel", r#"{"ndf":"ggx","alpha_tr":0.3}"#],
+            "error: --fresnel: the Fresnel factor is a Fresnel curve (got ndf, expected",
+        ),
+        (
+            &["--table", "average", "--mu-count", "4"],
+            "error: --mu-count: the average table has no mu axis",
+        ),
+    ];
+    for (args, expected) in cases {
+        let mut all = vec!["albedo"];
+        all.extend(*args);
+        let out = ndfplot(&all);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(stderr.starts_with(expected), "{args:?}: {stderr}");
+    }
+    let misspelt = ndfplot(&["albedo", "--ndf", "beckman"]);
+    assert!(text(&misspelt.stderr).contains(r#"did you mean "beckmann"?"#));
+}
+
+#[test]
+fn dash_o_writes_the_file_and_nothing_on_stdout() {
+    let dir = scratch("albedo-out");
+    let path = dir.join("nested").join("ggx_E.csv");
+    let out = ndfplot(&["albedo", "--size", "2", "-o", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(out.stdout.is_empty() && out.stderr.is_empty());
+    let printed = ndfplot(&["albedo", "--size", "2"]);
+    assert_eq!(std::fs::read(&path).unwrap(), printed.stdout);
+    let names: Vec<_> = std::fs::read_dir(path.parent().unwrap())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names, ["ggx_E.csv"], "no temporary is left");
+}
