@@ -178,7 +178,7 @@ impl Surface {
                 } else {
                     (
                         "--fix",
-                        e.to_string().replacen(&format!("{}: ", e.param), "", 1),
+                        format!("out of domain (got {:?}, expected {})", e.value, e.expected),
                     )
                 };
                 return Err(Error::input(Problems {
