@@ -1296,13 +1296,16 @@ impl DiffOp {
 /// The members of the curve object `node` at `path` that accepts `keys` and `extra_keys` (which the
 /// caller handles), with the problems of its keys ([`keys::check`]; `object` names it in them); a
 /// value that is not an object is the one problem.
+/// An object's members with the problems of its keys, as [`keyed_object`] returns them.
+type KeyedMembers<'a> = (&'a [(String, Node)], Vec<Problem>);
+
 fn keyed_object<'a>(
     node: &'a Node,
     path: &str,
     keys: &[&str],
     extra_keys: &[&str],
     object: &str,
-) -> Result<(&'a [(String, Node)], Vec<Problem>), Vec<Problem>> {
+) -> Result<KeyedMembers<'a>, Vec<Problem>> {
     let Value::Object(members) = &node.value else {
         return Err(vec![Problem::new(
             path,

@@ -238,7 +238,7 @@ fn encode_sources(
         quiet,
     );
     progress.stage("evaluating");
-    let evaluated = evaluate(&plan, &sources)?;
+    let evaluated = evaluate(&plan, sources)?;
     progress.advance(plan.jobs.len() as u64);
     progress.stage("encoding");
     let mut stats = RenderStats {

@@ -125,7 +125,7 @@ process.stdout.write(JSON.stringify(out));
     fn domain_values(param: &Param) -> Vec<f64> {
         let lo = match (param.min.inclusive, param.min.value) {
             (true, v) => v,
-            (false, v) if v == 0.0 => 1e-300,
+            (false, 0.0) => 1e-300,
             (false, v) => v.next_up(),
         };
         let hi = if param.max.is_open() {
