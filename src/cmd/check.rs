@@ -119,7 +119,7 @@ mod tests {
         assert!((bad.value - 1.001).abs() < 1e-12, "{bad:?}");
         let err = verdict(&audits, DEFAULT_TOLERANCE).unwrap_err();
         assert_eq!(err.exit_code(), 1);
-        assert!(err.to_string().contains("1 of 2 NDFs"), "{err}");
+        assert!(err.to_string().contains("1 of 2 NDF audits"), "{err}");
         let text = table(&audits, DEFAULT_TOLERANCE);
         assert!(
             text.lines().nth(1).unwrap().starts_with("ok ")
