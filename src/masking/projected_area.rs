@@ -22,9 +22,9 @@ const BREAK_COUNT: i32 = 24;
 /// A(θo) = ∫ ⟨ωo, m⟩⁺ D(m) dm for θo ∈ [0, π/2]:
 /// 2π ∫₀^{θe} D a sin θm dθm + 2 ∫_{θe}^{π/2} D (a φ₀ + b sin φ₀) sin θm dθm, θe = π/2 − θo,
 /// a = cos θo cos θm, b = sin θo sin θm, φ₀ = arccos(−a/b) (every azimuth faces ωo below θe, |φ| < φ₀ above).
-/// Pieces split geometrically towards 0, θe and π/2 and around D's lobe width 1/√(π D(0)); a piece is accepted
-/// once its error estimate is within QUAD_REL_TOL of A's scale cos θo (its relative error may be out of reach
-/// where it holds ~1e-30 of the whole).
+/// Pieces split geometrically towards 0, θe and π/2 and from D's lobe width 1/√(π D(0)) both inwards and
+/// outwards; a piece is accepted once its error estimate is within QUAD_REL_TOL of A's scale cos θo (its relative
+/// error may be out of reach where it holds ~1e-30 of the whole).
 pub fn front_projected_area(ndf: &Ndf, theta_o: f64) -> Result<f64, QuadError> {
     let (sin_o, cos_o) = theta_o.sin_cos();
     let edge = FRAC_PI_2 - theta_o;
@@ -48,6 +48,13 @@ pub fn front_projected_area(ndf: &Ndf, theta_o: f64) -> Result<f64, QuadError> {
         breaks.push(FRAC_PI_2 - 0.5 * shrink);
         breaks.push(edge - span_below * shrink);
         breaks.push(edge + 0.5 * theta_o * shrink);
+    }
+    // Outwards from the lobe too, up to π/2: a heavy tail (GGX's mass beyond θ falls only like (α/θ)²) then
+    // meets pieces of its own scale, which the shift below cannot hide.
+    let mut outward = width * BREAK_RATIO.powi(4);
+    while outward < FRAC_PI_2 {
+        breaks.push(outward);
+        outward *= BREAK_RATIO;
     }
     breaks.retain(|b| (0.0..=FRAC_PI_2).contains(b));
     breaks.sort_by(f64::total_cmp);
