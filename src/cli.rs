@@ -236,6 +236,7 @@ fn eval_help() -> String {
         }
     }
     text.push_str(FRESNEL_HELP);
+    text.push_str(QUANTITY_HELP);
     text.push_str(
         "\nOutput: CSV with header theta,value (one curve) or theta,<curve JSON>... (several), theta_deg\n\
          instead of theta with --degrees;\n\
@@ -256,6 +257,21 @@ const FRESNEL_HELP: &str = "  fresnel exact        eta in [1e-150, 1e150], kappa
   fresnel belcour      eta/kappa or r/g/g_remap: the four-term basis reconstruction
   fresnel basis        index 0, 1, 2 or 3: one basis function
   fresnel normalized   eta/kappa or r/g/g_remap: (F - F0)/(1 - F0), the basis training curves
+";
+
+/// What an NDF curve may show besides D ([`crate::quantity`]), for `eval --help`.
+const QUANTITY_HELP: &str = "
+An NDF curve may add \"quantity\" (theta is then the view angle theta_o):
+  d        D(theta) (default)
+  lambda   Smith Lambda(theta_o)
+  g1       G1 = 1/(1 + Lambda(theta_o))
+  g2       G2(theta_o, theta_i); \"g2\": height-correlated (default) or separable, \"theta_i\": radians
+           or \"same\" (default)
+  albedo   directional albedo E(cos theta_o) of f = F D G2 / (4 cos theta_o cos theta_i); \"g2\" as above,
+           \"fresnel\": a Fresnel curve object (default F = 1)
+  furnace  weak white furnace G1_used (1 + Lambda); \"g1\": smith (default, exactly 1),
+           walter-rational or beckmann-equivalent (at the family's Beckmann-equivalent roughness)
+  e.g. '{\"ndf\":\"ggx\",\"alpha_tr\":0.3,\"quantity\":\"albedo\",\"fresnel\":{\"fresnel\":\"exact\",\"eta\":1.5}}'
 ";
 
 /// Arguments of `ndfplot compare`.
