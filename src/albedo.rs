@@ -68,6 +68,7 @@ use crate::fresnel::basis::basis;
 use crate::masking::{G2Model, g1};
 use crate::math::quad::{QuadError, integrate};
 use crate::math::tolerance::{ALBEDO_QUAD_REL_TOL, ALBEDO_TABULATED_TOL};
+use crate::ndf::Ndf;
 
 /// A Fresnel factor as a function of θd, the angle between the view ωo and the half-vector h, in
 /// [0, π/2]; `None` is F ≡ 1. It must be ≥ 0 wherever the integrals are to converge to a relative
@@ -363,6 +364,20 @@ fn integrate_to(
     }
 }
 
+/// The microfacet surface of `ndf` under `g2`: D by [`Ndf::eval`], Λ by [`Ndf::lambda`], the width
+/// its [`median_slope`] ([`Microfacet::new`]). The one way the crate turns an NDF into a surface.
+pub fn surface_of(
+    ndf: Ndf,
+    g2: G2Model,
+) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send, impl Fn(f64) -> f64 + Sync + Send> {
+    let for_lambda = ndf.clone();
+    Microfacet::new(
+        move |theta| ndf.eval(theta),
+        move |theta| for_lambda.lambda(theta),
+        g2,
+    )
+}
+
 /// The median slope of a lobe: tan θ at which 2π ∫₀^θ D sin θ cos θ dθ reaches ½, to within a
 /// factor of 2^{1/2} (enough for a quadrature scale). The projected area is accumulated over slope
 /// octaves tan θ ∈ [2^k, 2^{k+1}], k = −1000 … 64, each integrated on its own, so lobes of any
@@ -453,6 +468,35 @@ pub enum RoughnessMap {
 }
 
 impl RoughnessMap {
+    /// Each map with its key in a scene's `"map"` and `ndfplot albedo --map`, the default first.
+    pub const KEYS: [(&'static str, RoughnessMap); 2] =
+        [("r2", RoughnessMap::Squared), ("r", RoughnessMap::Linear)];
+
+    /// The map whose key is `key` (`r2`, `r`), if any.
+    pub fn from_key(key: &str) -> Option<RoughnessMap> {
+        Self::KEYS
+            .iter()
+            .find(|(k, _)| *k == key)
+            .map(|&(_, map)| map)
+    }
+
+    /// The map's key (`r2`, `r`).
+    pub fn key(self) -> &'static str {
+        Self::KEYS
+            .iter()
+            .find(|&&(_, m)| m == self)
+            .map(|&(key, _)| key)
+            .expect("every map has a key")
+    }
+
+    /// The expression of α in r: `r^2` or `r`.
+    pub fn expression(self) -> &'static str {
+        match self {
+            RoughnessMap::Squared => "r^2",
+            RoughnessMap::Linear => "r",
+        }
+    }
+
     /// The map's name in outputs: `alpha = r^2` or `alpha = r`.
     pub fn name(self) -> &'static str {
         match self {

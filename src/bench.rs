@@ -7,7 +7,7 @@
 //! [`Row`]s into a CSV and a figure). Timings are never part of the catalogue or of `render --check`.
 
 use crate::adaptive::{self, Frame, PixelMap};
-use crate::albedo::{AlbedoTable, Microfacet, RoughnessMap, albedo_table};
+use crate::albedo::{AlbedoTable, Microfacet, RoughnessMap, albedo_table, surface_of};
 use crate::look::Scale;
 use crate::masking::{G2Model, lambda_by_integral};
 use crate::math::quad::{QuadError, integrate};
@@ -594,12 +594,7 @@ pub fn ggx_surface(
     let ndf = Family::TrowbridgeReitz
         .build(&[alpha])
         .expect("α lies in the domain");
-    let d = ndf.clone();
-    Microfacet::new(
-        move |t| d.eval(t),
-        move |t| ndf.lambda(t),
-        G2Model::HeightCorrelated,
-    )
+    surface_of(ndf, G2Model::HeightCorrelated)
 }
 
 /// The Trowbridge–Reitz albedo table on Cycles' 32 × 32 grid (μ = i/31, r = j/31, α = r², F = 1)

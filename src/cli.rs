@@ -468,7 +468,8 @@ pub struct AlbedoArgs {
     pub fix: Vec<String>,
     /// How the roughness r maps to the first parameter: r2 (alpha = r^2, as Cycles, Filament, glTF) or
     /// r (alpha = r).
-    #[arg(long, value_name = "MAP", default_value = "r2", value_parser = ["r2", "r"])]
+    #[arg(long, value_name = "MAP", default_value = "r2",
+        value_parser = clap::builder::PossibleValuesParser::new(crate::albedo::RoughnessMap::KEYS.map(|(key, _)| key)))]
     pub map: String,
     /// Points on both axes, mu and r (2 to 1024; default 32, as Cycles).
     #[arg(long, value_name = "N", conflicts_with_all = ["mu_count", "r_count"])]
@@ -488,7 +489,8 @@ pub struct AlbedoArgs {
     #[arg(long, value_name = "JSON|@FILE")]
     pub fresnel: Option<String>,
     /// The table: e (E per mu and r), average (E_avg per r) or split-sum (E_0..E_3 per mu and r).
-    #[arg(long, value_name = "TABLE", default_value = "e", value_parser = ["e", "average", "split-sum"])]
+    #[arg(long, value_name = "TABLE", default_value = "e",
+        value_parser = clap::builder::PossibleValuesParser::new(crate::cmd::albedo::Table::NAMES.map(|(name, _)| name)))]
     pub table: String,
     /// Output: CSV with # metadata lines, or one JSON object.
     #[arg(long, value_name = "FORMAT", default_value = "csv", value_parser = ["csv", "json"])]

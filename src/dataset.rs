@@ -4,7 +4,7 @@
 //!
 //! A dataset is validated data (like a curve) and evaluates to points; it never draws or writes.
 
-use crate::albedo::{Microfacet, RoughnessMap, albedo_table};
+use crate::albedo::{RoughnessMap, albedo_table, surface_of};
 use crate::fresnel::{basis, gulbrandsen};
 use crate::masking::G2Model;
 use crate::ndf::Family;
@@ -99,19 +99,6 @@ impl AlbedoValue {
             .map(|(n, _)| *n)
             .expect("every albedo value is named")
     }
-}
-
-/// The JSON names of the roughness maps of an albedo dataset (`"map"`), the default first.
-pub const ROUGHNESS_MAPS: [(&str, RoughnessMap); 2] =
-    [("r2", RoughnessMap::Squared), ("r", RoughnessMap::Linear)];
-
-/// The JSON name of a roughness map (one of [`ROUGHNESS_MAPS`]).
-fn map_name(map: RoughnessMap) -> &'static str {
-    ROUGHNESS_MAPS
-        .iter()
-        .find(|(_, m)| *m == map)
-        .map(|(n, _)| *n)
-        .expect("every roughness map is named")
 }
 
 /// A non-θ series.
@@ -299,8 +286,7 @@ impl Dataset {
                     let ndf = family
                         .build(&[alpha])
                         .expect("the spec admits only families whose width domain holds (0, 1]");
-                    let d = ndf.clone();
-                    Microfacet::new(move |t| d.eval(t), move |t| ndf.lambda(t), *g2)
+                    surface_of(ndf, *g2)
                 };
                 match albedo_table(*mu, *r, *map, surface, None, None) {
                     Ok(table) => {
@@ -375,7 +361,7 @@ impl Serialize for Dataset {
             } => {
                 map.serialize_entry("data", "albedo")?;
                 map.serialize_entry("ndf", family.name())?;
-                map.serialize_entry("map", map_name(*roughness))?;
+                map.serialize_entry("map", roughness.key())?;
                 map.serialize_entry("g2", g2.name())?;
                 map.serialize_entry("value", value.name())?;
                 map.serialize_entry("mu", mu)?;

@@ -10,7 +10,7 @@
 //! This module owns those keys: which quantity takes which, their defaults, their canonical JSON
 //! and their labels. Evaluation defers to [`crate::masking`] and [`crate::albedo`].
 
-use crate::albedo::{self, Microfacet};
+use crate::albedo;
 use crate::curve::{self, Curve, CurveSpec};
 use crate::json::{Node, Value};
 use crate::masking::{self, G1Model, G2Model};
@@ -33,6 +33,17 @@ pub const G1_KEY: &str = "g1";
 pub const FRESNEL_KEY: &str = "fresnel";
 /// The word of `theta_i` for a light in the view direction, θi = θo.
 pub const SAME: &str = "same";
+
+/// Each option key with the quantities that take it.
+pub const OPTION_TAKERS: [(&str, &[&str]); 4] = [
+    (G2_KEY, &["g2", "albedo"]),
+    (THETA_I_KEY, &["g2"]),
+    (G1_KEY, &["furnace"]),
+    (FRESNEL_KEY, &["albedo"]),
+];
+
+/// The largest light angle `theta_i` takes, radians (grazing); the smallest is 0.
+pub const THETA_I_MAX: f64 = FRAC_PI_2;
 
 /// The quantity names in curve JSON, the default first.
 pub const NAMES: [&str; 6] = ["d", "lambda", "g1", "g2", "albedo", "furnace"];
@@ -159,7 +170,7 @@ impl Quantity<Curve> {
             // A quadrature that fails, or a G1 the family lacks (refused when the spec is read),
             // gives NaN, which evaluation reports as a non-finite value of the curve.
             Quantity::Albedo { model, fresnel } => {
-                let surface = Microfacet::new(|t| ndf.eval(t), |t| ndf.lambda(t), *model);
+                let surface = albedo::surface_of(ndf.clone(), *model);
                 let mu_o = theta_o.cos().clamp(0.0, 1.0);
                 let result = match fresnel {
                     Some(f) => surface.albedo(mu_o, Some(&|t| f.eval(t))),
@@ -186,8 +197,7 @@ impl Quantity<Curve> {
         let Quantity::Albedo { model, fresnel } = self else {
             return None;
         };
-        let surface = Microfacet::new(|t| ndf.eval(t), |t| ndf.lambda(t), *model)
-            .with_tolerance(LABEL_E_AVG_TOL);
+        let surface = albedo::surface_of(ndf.clone(), *model).with_tolerance(LABEL_E_AVG_TOL);
         let result = match fresnel {
             Some(f) => albedo::average_albedo(&surface, Some(&|t| f.eval(t))),
             None => albedo::average_albedo(&surface, None),
@@ -291,14 +301,7 @@ pub fn parse(
             }
         },
     };
-    // Each option key with the quantities that take it.
-    let takers: [(&str, &[&str]); 4] = [
-        (G2_KEY, &["g2", "albedo"]),
-        (THETA_I_KEY, &["g2"]),
-        (G1_KEY, &["furnace"]),
-        (FRESNEL_KEY, &["albedo"]),
-    ];
-    for (key, quantities) in takers {
+    for (key, quantities) in OPTION_TAKERS {
         if let Some(node) = get(key)
             && !quantities.contains(&name)
         {
@@ -392,12 +395,12 @@ fn named<T: Copy>(
 /// `theta_i`: radians in [0, π/2], or `"same"`.
 fn theta_i(node: &Node, path: &str) -> Result<ThetaI, Vec<Problem>> {
     match &node.value {
-        Value::Number(n) if (0.0..=FRAC_PI_2).contains(&n.value) => Ok(ThetaI::Fixed(n.value)),
+        Value::Number(n) if (0.0..=THETA_I_MAX).contains(&n.value) => Ok(ThetaI::Fixed(n.value)),
         Value::String(word) if word == SAME => Ok(ThetaI::Same),
         _ => Err(vec![Problem::new(
             path,
             format!(
-                "expected the light's angle (got {node}, expected radians in [0, {FRAC_PI_2}] or \"{SAME}\")"
+                "expected the light's angle (got {node}, expected radians in [0, {THETA_I_MAX}] or \"{SAME}\")"
             ),
         )]),
     }

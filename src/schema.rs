@@ -19,7 +19,7 @@ use crate::curve::{
     DIFFERENCE_KEY, DIFFERENCE_KEYS, DiffOp, Model, PUBLISHED_KEY, PUBLISHED_KEYS, ParamKind,
     ParamSpec, TRANSFORM_KEY, TRANSFORM_KEYS,
 };
-use crate::dataset::{AlbedoValue, Coefficient, ROUGHNESS_MAPS, SpectrumQuantity};
+use crate::dataset::{AlbedoValue, Coefficient, SpectrumQuantity};
 use crate::domain::Param;
 use crate::fresnel::{self, FresnelModel};
 use crate::masking::{G1Model, G2Model};
@@ -498,7 +498,7 @@ fn quantity_key(key: &str) -> Value {
         ),
         quantity::THETA_I_KEY => json!({
             "anyOf": [
-                { "type": "number", "minimum": 0, "maximum": std::f64::consts::FRAC_PI_2 },
+                { "type": "number", "minimum": 0, "maximum": quantity::THETA_I_MAX },
                 { "const": quantity::SAME },
             ],
             "description": "the light's angle θi in radians, or \"same\" for θi = θo (default); g2 curves",
@@ -527,12 +527,12 @@ fn quantity_dependencies() -> Value {
             "required": [quantity::QUANTITY_KEY],
         })
     };
-    json!({
-        quantity::G2_KEY: requires(&["g2", "albedo"]),
-        quantity::THETA_I_KEY: requires(&["g2"]),
-        quantity::G1_KEY: requires(&["furnace"]),
-        quantity::FRESNEL_KEY: requires(&["albedo"]),
-    })
+    Value::Object(
+        quantity::OPTION_TAKERS
+            .iter()
+            .map(|(key, quantities)| (key.to_string(), requires(quantities)))
+            .collect(),
+    )
 }
 
 fn data_key(kind: &str, key: &str) -> Value {
@@ -576,7 +576,7 @@ fn data_key(kind: &str, key: &str) -> Value {
             "the NDF family, its one parameter the width α (default ggx)",
         ),
         ("albedo", "map") => described(
-            strings(&names(&ROUGHNESS_MAPS)),
+            strings(&names(&crate::albedo::RoughnessMap::KEYS)),
             "how r maps to α: r2 (α = r², Cycles and Filament; default) or r (α = r)",
         ),
         ("albedo", "g2") => described(

@@ -10,7 +10,7 @@
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
 use crate::albedo::{
-    self, Microfacet, RoughnessMap, average_albedo_table, average_fresnel, kulla_conty_fresnel,
+    self, RoughnessMap, average_albedo_table, average_fresnel, kulla_conty_fresnel,
     kulla_conty_lobe, split_sum_tables, turquin_factor, unit_grid,
 };
 use crate::curve::{Curve, Kind};
@@ -66,27 +66,6 @@ impl Table {
             .map(|&(name, _)| name)
             .expect("every table is named")
     }
-}
-
-/// The roughness maps with their names in `--map` and in the NDF's description (`"alpha_tr":"r^2"`).
-const MAPS: [(&str, &str, RoughnessMap); 2] = [
-    ("r2", "r^2", RoughnessMap::Squared),
-    ("r", "r", RoughnessMap::Linear),
-];
-
-/// The map named `name` in `--map`, if any.
-pub fn parse_map(name: &str) -> Option<RoughnessMap> {
-    MAPS.iter()
-        .find(|(n, _, _)| *n == name)
-        .map(|&(_, _, map)| map)
-}
-
-/// The value the NDF's description shows for the mapped parameter: `r^2` or `r`.
-fn map_expression(map: RoughnessMap) -> &'static str {
-    MAPS.iter()
-        .find(|&&(_, _, m)| m == map)
-        .map(|&(_, expression, _)| expression)
-        .expect("every map is named")
 }
 
 /// A family whose first parameter is the mapped roughness and whose others are fixed.
@@ -202,25 +181,12 @@ impl Serialize for Surface {
         let names = self.family.param_names();
         let mut map = serializer.serialize_map(Some(names.len() + 1))?;
         map.serialize_entry("ndf", self.family.name())?;
-        map.serialize_entry(names[0], map_expression(self.map))?;
+        map.serialize_entry(names[0], self.map.expression())?;
         for (name, value) in names.iter().zip(&self.params).skip(1) {
             map.serialize_entry(name, value)?;
         }
         map.end()
     }
-}
-
-/// The microfacet surface of `ndf` under `g2` ([`Microfacet::new`]).
-fn microfacet(
-    ndf: Ndf,
-    g2: G2Model,
-) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send, impl Fn(f64) -> f64 + Sync + Send> {
-    let for_lambda = ndf.clone();
-    Microfacet::new(
-        move |theta| ndf.eval(theta),
-        move |theta| for_lambda.lambda(theta),
-        g2,
-    )
 }
 
 /// The grid `(n_μ, n_r)` of `--size` or `--mu-count`/`--r-count` (each [`DEFAULT_AXIS`] unless
@@ -355,7 +321,7 @@ impl Request {
                 .surface
                 .ndf(alpha)
                 .expect("every alpha of the grid was checked by Request::new");
-            microfacet(ndf, self.g2)
+            albedo::surface_of(ndf, self.g2)
         };
         let evaluate = self
             .fresnel
@@ -645,7 +611,7 @@ mod tests {
             assert_eq!(Table::from_name(name), Some(table));
             assert_eq!(table.name(), name);
         }
-        assert_eq!(parse_map("r2"), Some(RoughnessMap::Squared));
-        assert_eq!(parse_map("r"), Some(RoughnessMap::Linear));
+        assert_eq!(RoughnessMap::from_key("r2"), Some(RoughnessMap::Squared));
+        assert_eq!(RoughnessMap::from_key("r"), Some(RoughnessMap::Linear));
     }
 }

@@ -269,7 +269,7 @@ fn run_check(args: CheckArgs) -> Result<()> {
 /// anything is integrated; the table goes to stdout or, with `-o`, to its file.
 fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
     let table = albedo::Table::from_name(&args.table).expect("clap allows only table names");
-    let map = albedo::parse_map(&args.map).expect("clap allows only map names");
+    let map = crate::albedo::RoughnessMap::from_key(&args.map).expect("clap allows only map names");
     let g2 = crate::masking::G2Model::from_name(&args.g2).expect("clap allows only G2 names");
     let family = fit::parse_family("--ndf", &args.ndf)?;
     let surface = albedo::Surface::new(family, &fit::parse_fixed(&args.fix)?, map)?;

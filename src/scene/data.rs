@@ -17,7 +17,7 @@ use super::sweep;
 use super::{Pending, SceneData, Spec, read_style};
 use crate::curve::{ParamKind, pretty};
 use crate::datafile::DataScope;
-use crate::dataset::{AlbedoValue, Coefficient, Dataset, ROUGHNESS_MAPS, SpectrumQuantity};
+use crate::dataset::{AlbedoValue, Coefficient, Dataset, SpectrumQuantity};
 use crate::fresnel::{EDGE_TINT, REFLECTIVITY};
 use crate::json::{Node, Value};
 use crate::look::Rgb;
@@ -282,7 +282,7 @@ fn read_albedo(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
             .choice(entry, "ndf", ALBEDO_FAMILIES)
             .and_then(crate::ndf::Family::from_name),
     };
-    let map = named(reader, entry, "map", &ROUGHNESS_MAPS);
+    let map = named(reader, entry, "map", &crate::albedo::RoughnessMap::KEYS);
     let g2 = named(reader, entry, "g2", &crate::masking::G2Model::NAMES);
     let value = named(reader, entry, "value", &AlbedoValue::NAMES);
     let (lo, hi) = ALBEDO_POINTS;
