@@ -380,17 +380,31 @@ pub fn surface_of(
 
 /// The median slope of a lobe: tan θ at which 2π ∫₀^θ D sin θ cos θ dθ reaches ½, to within a
 /// factor of 2^{1/2} (enough for a quadrature scale). The projected area is accumulated over slope
-/// octaves tan θ ∈ [2^k, 2^{k+1}], k = −1000 … 64, each integrated on its own, so lobes of any
-/// width, down to D(0) near f64::MAX, are resolved; the mass below 2^{−1000} is < π D(0) 2^{−2000},
-/// nothing. Returns 2^{k+½} for the octave where the half is crossed (1 if rounding keeps the
-/// total below ½, which a normalized D does not).
+/// octaves tan θ ∈ [2^k, 2^{k+1}] up to k = 64, each integrated on its own, so lobes of any width,
+/// down to D(0) near f64::MAX, are resolved. Below slope s, where D is still D(0) to within a factor
+/// near 1 (s ≤ 2^{−40}), the mass is about π D(0) s², so the octaves start where that is below
+/// 2^{−100} (at k = −1000 if D(0) is 0 or not finite): the skipped mass is nothing, and a lobe of
+/// ordinary width costs ~60 octaves instead of ~1000 (the albedo builds this once per value).
+/// Returns 2^{k+½} for the octave where the half is crossed (1 if rounding keeps the total below ½,
+/// which a normalized D does not).
 pub fn median_slope(ndf: impl Fn(f64) -> f64) -> f64 {
     const LOWEST_OCTAVE: i32 = -1000;
     const HIGHEST_OCTAVE: i32 = 64;
+    /// The highest first octave: far below any lobe's own scale, where every D is flat.
+    const FLAT_OCTAVE: i32 = -40;
+    /// log₂ of the mass allowed below the first octave.
+    const SKIPPED_MASS_LOG2: f64 = -100.0;
     /// The mass of an octave to a few digits is all the bracket needs.
     const OCTAVE_REL_TOL: f64 = 1e-6;
+    let peak_mass_log2 = (PI * ndf(0.0)).log2();
+    let first = if peak_mass_log2.is_finite() {
+        (((SKIPPED_MASS_LOG2 - peak_mass_log2) / 2.0).floor() as i32)
+            .clamp(LOWEST_OCTAVE, FLAT_OCTAVE)
+    } else {
+        LOWEST_OCTAVE
+    };
     let mut mass = 0.0;
-    for k in LOWEST_OCTAVE..HIGHEST_OCTAVE {
+    for k in first..HIGHEST_OCTAVE {
         let (lo, hi) = (2f64.powi(k).atan(), 2f64.powi(k + 1).atan());
         let octave = integrate(
             |theta: f64| 2.0 * PI * ndf(theta) * theta.sin() * theta.cos(),
