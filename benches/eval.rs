@@ -1,12 +1,12 @@
 //! Evaluation throughput of each NDF family: `ndfplot bench`'s curve per family
-//! ([`ndfplot::bench::throughput_cases`]), 1000 θ evenly spaced over [0, π/2] (ends included),
+//! ([`ndfplot::cmd::bench::measure::throughput_cases`]), 1000 θ evenly spaced over [0, π/2] (ends included),
 //! single-threaded, by `eval` per point — the path every output uses. Criterion reports the time per
 //! 1000 samples and the throughput in samples per second.
 //!
 //! Run: `cargo bench --bench eval`.
 
 use criterion::{BenchmarkId, Criterion, Throughput, black_box, criterion_group, criterion_main};
-use ndfplot::bench::throughput_cases;
+use ndfplot::cmd::bench::measure::throughput_cases;
 use std::f64::consts::FRAC_PI_2;
 
 /// Samples per curve, as in a typical plot.

@@ -8,9 +8,9 @@
 //! Run: `cargo bench --bench lambda`.
 
 use criterion::{BenchmarkId, Criterion, Throughput, black_box, criterion_group, criterion_main};
-use ndfplot::bench::ggx_surface;
-use ndfplot::masking::lambda_by_integral;
-use ndfplot::ndf::{Family, Ndf};
+use ndfplot::cmd::bench::measure::ggx_surface;
+use ndfplot::model::masking::lambda_by_integral;
+use ndfplot::model::ndf::{Family, Ndf};
 
 /// View angles per curve.
 const ANGLES: usize = 90;

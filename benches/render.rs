@@ -6,10 +6,10 @@
 //!
 //! Run: `cargo bench --bench render`.
 
-use ndfplot::catalogue::CATALOGUE;
 use ndfplot::output::Format;
 use ndfplot::render::{self, RenderOptions, RenderStats};
-use ndfplot::source::CanvasOverride;
+use ndfplot::spec::catalogue::CATALOGUE;
+use ndfplot::spec::source::CanvasOverride;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 

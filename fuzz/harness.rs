@@ -10,18 +10,18 @@
 //! non-negative for an NDF and within [0, 1] for the exact, Schlick and Lazanyi Fresnel curves.
 //! 3 mod 4: `eval`'s path, a θ list and a curve (see [`eval`]).
 
-use ndfplot::angle::AngleUnit;
+use ndfplot::spec::angle::AngleUnit;
 use ndfplot::cmd::eval::{parse_theta_list, write_table};
-use ndfplot::curve::{Curve, Model, ParamKind};
-use ndfplot::figure::Figure;
-use ndfplot::fresnel::FresnelModel;
+use ndfplot::spec::curve::{Curve, Model, ParamKind};
+use ndfplot::pipeline::figure::Figure;
+use ndfplot::model::fresnel::FresnelModel;
 use ndfplot::output::{self, Format};
-use ndfplot::plan::{Outputs, plan};
-use ndfplot::provenance::Provenance;
-use ndfplot::resolve;
-use ndfplot::sample::evaluate_all;
-use ndfplot::scene::Sampling;
-use ndfplot::source::{self, CanvasOverride};
+use ndfplot::pipeline::plan::{Outputs, plan};
+use ndfplot::pipeline::provenance::Provenance;
+use ndfplot::pipeline::resolve;
+use ndfplot::pipeline::sample::evaluate_all;
+use ndfplot::spec::scene::Sampling;
+use ndfplot::spec::source::{self, CanvasOverride};
 use std::f64::consts::FRAC_PI_2;
 
 /// Most table points of a spec that is evaluated; larger valid specs are only validated.
@@ -83,10 +83,10 @@ fn eval(bytes: &[u8]) {
         return;
     };
     assert!(!thetas.is_empty(), "a parsed θ list has an angle");
-    let Ok(node) = ndfplot::json::parse(curve) else {
+    let Ok(node) = ndfplot::spec::json::parse(curve) else {
         return;
     };
-    let Ok(spec) = ndfplot::curve::parse(&node, "") else {
+    let Ok(spec) = ndfplot::spec::curve::parse(&node, "") else {
         return;
     };
     let Ok(curve) = resolve::curve(&spec) else {
@@ -190,7 +190,7 @@ impl Bytes<'_> {
 
 fn curve(bytes: &[u8]) {
     let mut input = Bytes(bytes);
-    let models = ndfplot::schema::models();
+    let models = ndfplot::spec::schema::models();
     let model = models[usize::from(input.byte()) % models.len()];
     let signatures = model.signatures();
     let params = &signatures[usize::from(input.byte()) % signatures.len()];
@@ -206,8 +206,8 @@ fn curve(bytes: &[u8]) {
         }
     }
     text.push('}');
-    let node = ndfplot::json::parse(&text).expect("the generated curve is valid JSON");
-    let Ok(spec) = ndfplot::curve::parse(&node, "") else {
+    let node = ndfplot::spec::json::parse(&text).expect("the generated curve is valid JSON");
+    let Ok(spec) = ndfplot::spec::curve::parse(&node, "") else {
         return;
     };
     let curve = resolve::curve(&spec).expect("a curve argument has no fit to fail");

@@ -171,10 +171,10 @@ pub struct RenderArgs {
     #[arg(long, value_name = "DIR")]
     pub check: Option<PathBuf>,
     /// Largest accepted relative difference of a CSV value under --check.
-    #[arg(long, value_name = "X", requires = "check", default_value_t = crate::check_outputs::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
+    #[arg(long, value_name = "X", requires = "check", default_value_t = crate::output::stored::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
     /// Override every scene's theme: notebook, colour-blind (or color-blind) or dark.
-    #[arg(long, value_name = "NAME", value_parser = clap::builder::PossibleValuesParser::new(crate::scene::THEMES))]
+    #[arg(long, value_name = "NAME", value_parser = clap::builder::PossibleValuesParser::new(crate::spec::scene::THEMES))]
     pub theme: Option<String>,
     /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
     /// inside the folder of the spec naming it. Repeatable.
@@ -217,20 +217,23 @@ pub struct EvalArgs {
 
 /// `fit --family`'s help: the registry's canonical family names.
 fn family_help() -> String {
-    let names: Vec<&str> = crate::ndf::Family::ALL.iter().map(|f| f.name()).collect();
+    let names: Vec<&str> = crate::model::ndf::Family::ALL
+        .iter()
+        .map(|f| f.name())
+        .collect();
     format!("The NDF family to fit ({})", names.join(", "))
 }
 
 fn eval_help() -> String {
     let mut text = String::from("Curve models and parameter domains:\n");
-    for family in crate::ndf::Family::ALL {
+    for family in crate::model::ndf::Family::ALL {
         text.push_str(&format!(
             "  ndf {:<18} {}\n",
             family.name(),
             family.domain()
         ));
     }
-    for family in crate::ndf::Family::ALL {
+    for family in crate::model::ndf::Family::ALL {
         for alias in family.aliases() {
             text.push_str(&format!("  ({alias} is an alias of {})\n", family.name()));
         }
@@ -259,7 +262,7 @@ const FRESNEL_HELP: &str = "  fresnel exact        eta in [1e-150, 1e150], kappa
   fresnel normalized   eta/kappa or r/g/g_remap: (F - F0)/(1 - F0), the basis training curves
 ";
 
-/// What an NDF curve may show besides D ([`crate::quantity`]), for `eval --help`.
+/// What an NDF curve may show besides D ([`crate::spec::quantity`]), for `eval --help`.
 const QUANTITY_HELP: &str = "
 An NDF curve may add \"quantity\" (theta is then the view angle theta_o):
   d        D(theta) (default)
@@ -422,7 +425,7 @@ pub struct CheckArgs {
     #[arg(value_name = "SPEC.json|DIR")]
     pub paths: Vec<PathBuf>,
     /// Largest accepted |2 pi integral D sin cos dtheta - 1| and Smith-consistency deviation from 1.
-    #[arg(long, value_name = "X", default_value_t = crate::audit::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
+    #[arg(long, value_name = "X", default_value_t = crate::pipeline::audit::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
     /// Output: a readable table, a JSON array of one object per row, or CSV.
     #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = ["table", "json", "csv"])]
@@ -469,7 +472,7 @@ pub struct AlbedoArgs {
     /// How the roughness r maps to the first parameter: r2 (alpha = r^2, as Cycles, Filament, glTF) or
     /// r (alpha = r).
     #[arg(long, value_name = "MAP", default_value = "r2",
-        value_parser = clap::builder::PossibleValuesParser::new(crate::albedo::RoughnessMap::KEYS.map(|(key, _)| key)))]
+        value_parser = clap::builder::PossibleValuesParser::new(crate::model::albedo::RoughnessMap::KEYS.map(|(key, _)| key)))]
     pub map: String,
     /// Points on both axes, mu and r (2 to 1024; default 32, as Cycles).
     #[arg(long, value_name = "N", conflicts_with_all = ["mu_count", "r_count"])]
@@ -482,7 +485,7 @@ pub struct AlbedoArgs {
     pub r_count: Option<usize>,
     /// How masking and shadowing combine into G2.
     #[arg(long, value_name = "MODEL", default_value = "height-correlated",
-        value_parser = clap::builder::PossibleValuesParser::new(crate::masking::G2Model::NAMES.map(|(name, _)| name)))]
+        value_parser = clap::builder::PossibleValuesParser::new(crate::model::masking::G2Model::NAMES.map(|(name, _)| name)))]
     pub g2: String,
     /// A Fresnel factor F(theta_d) inside the integral: a Fresnel curve as inline JSON
     /// ('{"fresnel":"exact","eta":1.5}') or @FILE. Default F = 1.

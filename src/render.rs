@@ -6,18 +6,18 @@
 //! writes no file at all; then the plan is evaluated in parallel and each output is written
 //! atomically through [`crate::output::write`].
 
-use crate::check_outputs;
 use crate::error::{Error, Result};
-use crate::figure::Figure;
+use crate::output::stored;
 use crate::output::{Format, encode_all, html, write};
-use crate::plan::{Outputs, Plan, plan};
+use crate::pipeline::figure::Figure;
+use crate::pipeline::plan::{Outputs, Plan, plan};
+use crate::pipeline::progress::Progress;
+use crate::pipeline::provenance::Provenance;
+use crate::pipeline::resolve;
+use crate::pipeline::sample::{Evaluated, JobError, evaluate_all};
 use crate::problem::{Problem, Problems};
-use crate::progress::Progress;
-use crate::provenance::Provenance;
-use crate::resolve;
-use crate::sample::{Evaluated, JobError, evaluate_all};
-use crate::scene::Scene;
-use crate::source::{CanvasOverride, Source, load_scenes, sources};
+use crate::spec::scene::Scene;
+use crate::spec::source::{CanvasOverride, Source, load_scenes, sources};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -86,7 +86,7 @@ pub fn run_with_progress(
 }
 
 /// `render --check DIR`: re-renders the CSVs and SVGs of `options` (writing nothing) and compares
-/// them with DIR's ([`check_outputs::compare`]: values at a relative `tolerance`, then the drawing
+/// them with DIR's ([`stored::compare`]: values at a relative `tolerance`, then the drawing
 /// of figures whose values match); prints every difference, and fails (exit 1) on any. Only CSV
 /// and SVG are encoded, whatever `options.formats` says.
 pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -> Result<()> {
@@ -95,8 +95,8 @@ pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -
         ..options.clone()
     };
     let (outputs, _) = encode_outputs(&options, quiet)?;
-    let (report, ok) = check_outputs::compare(dir, &outputs, tolerance)?;
-    crate::stdout::print(&report)?;
+    let (report, ok) = stored::compare(dir, &outputs, tolerance)?;
+    crate::output::stdout::print(&report)?;
     if ok {
         Ok(())
     } else {
@@ -212,7 +212,7 @@ pub fn to_stdout(options: &RenderOptions, quiet: bool) -> Result<Vec<u8>> {
 
 /// [`encode_outputs`] of spec `sources` already read.
 fn encode_sources(
-    sources: &[crate::source::Source],
+    sources: &[crate::spec::source::Source],
     options: &RenderOptions,
     quiet: bool,
 ) -> Result<(Files, RenderStats)> {

@@ -5,24 +5,24 @@
 //!
 //! Owns the reading of the command's arguments into a [`Request`] (the family, its fixed
 //! parameters, the roughness map, the grid, the Fresnel factor) and the text of the output; the
-//! integrals and the grids are [`crate::albedo`]'s.
+//! integrals and the grids are [`crate::model::albedo`]'s.
 
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
-use crate::albedo::{
+use crate::error::{Error, Result};
+use crate::model::albedo::{
     self, RoughnessMap, average_albedo_table, average_fresnel, kulla_conty_fresnel,
     kulla_conty_lobe, split_sum_tables, turquin_factor, unit_grid,
 };
-use crate::curve::{Curve, Kind};
-use crate::domain::DomainError;
-use crate::error::{Error, Result};
-use crate::masking::G2Model;
-use crate::math::quad::QuadError;
-use crate::math::tolerance::{ALBEDO_QUAD_REL_TOL, ALBEDO_TABULATED_TOL, ALBEDO_TOL};
-use crate::ndf::{Family, Ndf};
+use crate::model::domain::DomainError;
+use crate::model::masking::G2Model;
+use crate::model::math::quad::QuadError;
+use crate::model::math::tolerance::{ALBEDO_QUAD_REL_TOL, ALBEDO_TABULATED_TOL, ALBEDO_TOL};
+use crate::model::ndf::{Family, Ndf};
 use crate::output::report::{Cell, Report};
+use crate::pipeline::progress::Progress;
 use crate::problem::{Problem, Problems};
-use crate::progress::Progress;
+use crate::spec::curve::{Curve, Kind};
 
 /// Most points on one axis of a table.
 pub const MAX_AXIS: usize = 1024;
@@ -81,7 +81,7 @@ impl Surface {
     /// The surface of `family` with `fixed` (`--fix`) giving every parameter but the first, which
     /// `map` fills from r. Errs naming `--fix` for an unknown, repeated, missing or mapped key.
     pub fn new(family: Family, fixed: &[(String, f64)], map: RoughnessMap) -> Result<Surface> {
-        crate::fit::check_fixed_keys(family, fixed).map_err(super::fit::fit_error)?;
+        crate::model::fit::check_fixed_keys(family, fixed).map_err(super::fit::fit_error)?;
         let names = family.param_names();
         let (mapped, others) = (names[0], &names[1..]);
         let fix_problem = |at: &str, message: String| {
@@ -172,7 +172,7 @@ impl Surface {
     /// The description of the NDF in canonical curve JSON's order, the mapped parameter written as
     /// its map (`{"ndf":"gtr","alpha_gtr":"r^2","gamma_gtr":1.5}`).
     pub fn description(&self) -> String {
-        crate::json::to_string(self)
+        crate::spec::json::to_string(self)
     }
 }
 
@@ -543,7 +543,7 @@ impl Output {
     /// One compact JSON object and a newline: the metadata's keys, then `"columns"` (the names) and
     /// `"rows"` (arrays of numbers, `null` for an empty cell).
     pub fn json(&self) -> String {
-        crate::json::to_string(self) + "\n"
+        crate::spec::json::to_string(self) + "\n"
     }
 }
 

@@ -1,9 +1,9 @@
-//! `ndfplot check`: the audit table of [`crate::audit`] on stdout and its verdict (exit 1 when an NDF's
+//! `ndfplot check`: the audit table of [`crate::pipeline::audit`] on stdout and its verdict (exit 1 when an NDF's
 //! normalization or Smith consistency is off by more than `--tolerance`).
 
-use crate::audit::Audit;
 use crate::error::{Error, Result};
 use crate::output::report::{Cell, Report};
+use crate::pipeline::audit::Audit;
 
 /// The columns of the table and of `--format json|csv`.
 const COLUMNS: [&str; 7] = [
@@ -97,8 +97,8 @@ pub fn verdict(audits: &[Audit], tolerance: f64) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::audit::{DEFAULT_TOLERANCE, Quantity, normalization};
-    use crate::ndf::{Distribution, Phong};
+    use crate::model::ndf::{Distribution, Phong};
+    use crate::pipeline::audit::{DEFAULT_TOLERANCE, Quantity, normalization};
 
     #[test]
     fn an_unnormalized_lobe_fails_the_check_with_exit_1() {

@@ -1,10 +1,10 @@
 //! `ndfplot coeffs`: the Belcour–Bati–Barla decomposition of materials, as CSV (CONTRACTS.md) or a JSON
 //! array of the same rows.
 
-use crate::curve::Curve;
 use crate::error::{Error, Result};
-use crate::fresnel::{Fresnel, Ior, basis};
+use crate::model::fresnel::{Fresnel, Ior, basis};
 use crate::output::report::{Cell, Report};
+use crate::spec::curve::Curve;
 
 /// The material (complex index) behind a curve that names one: `belcour` or `exact`.
 fn material(curve: &Curve) -> Option<Ior> {

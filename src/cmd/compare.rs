@@ -4,15 +4,15 @@
 //! `--pairs`, the same for every pair of a JSON Lines input, compared in parallel and written in input
 //! order, one row (JSON object, CSV row, number) per pair.
 //!
-//! Owns the formatting, the bound checks and the batch run only; the metrics are [`crate::metrics`]'s.
+//! Owns the formatting, the bound checks and the batch run only; the metrics are [`crate::model::metrics`]'s.
 
-use crate::angle::AngleUnit;
-use crate::curve::Curve;
 use crate::error::{Error, Result};
-use crate::metrics::sampled::{Operand, compare_operands};
-use crate::metrics::{Comparison, LOG_RATIO_FLOOR, Metric, MetricError, ThetaRange};
+use crate::model::metrics::sampled::{Operand, compare_operands};
+use crate::model::metrics::{Comparison, LOG_RATIO_FLOOR, Metric, MetricError, ThetaRange};
 use crate::output::report::{Cell, Report};
 use crate::problem::{Problem, Problems, join_key, suggestion};
+use crate::spec::angle::AngleUnit;
+use crate::spec::curve::Curve;
 use rayon::prelude::*;
 
 /// A `--max-error <metric>=<x>` bound.

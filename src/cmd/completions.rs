@@ -5,8 +5,8 @@
 
 use crate::cli::Cli;
 use crate::error::{Error, Result};
+use crate::output::stdout;
 use crate::output::write::write_files;
-use crate::stdout;
 use clap::CommandFactory;
 use clap_complete::Shell;
 use std::path::Path;

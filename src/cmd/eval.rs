@@ -6,11 +6,11 @@
 
 use rayon::prelude::*;
 
-use crate::angle::AngleUnit;
-use crate::curve::Curve;
 use crate::error::{Error, Result};
-use crate::grid::linspace_at;
+use crate::model::grid::linspace_at;
 use crate::output::csv::Table;
+use crate::spec::angle::AngleUnit;
+use crate::spec::curve::Curve;
 
 /// Largest θ count of a `start:stop:count` list (CONTRACTS.md).
 pub const MAX_THETA_COUNT: u64 = 10_000_000;
@@ -85,7 +85,7 @@ impl ThetaList {
 }
 
 /// Parses a θ list: comma-separated numbers or `start:stop:count` (numpy linspace, taken in the unit
-/// given), in `unit` (radians may be multiples of π, [`crate::angle::pi_multiple`]; degrees are
+/// given), in `unit` (radians may be multiples of π, [`crate::spec::angle::pi_multiple`]; degrees are
 /// converted as θ = d·π/180). Every θ must lie in [0, π/2].
 pub fn parse_theta_list(text: &str, unit: AngleUnit) -> Result<ThetaList> {
     let bad = |what: String| Error::Usage(format!("--theta: {what}"));
@@ -209,7 +209,7 @@ fn rows(curves: &[Curve], thetas: &ThetaList, range: std::ops::Range<usize>) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::grid::linspace;
+    use crate::model::grid::linspace;
     use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
     fn radians(text: &str, unit: AngleUnit) -> Result<Vec<f64>> {
@@ -221,8 +221,9 @@ mod tests {
         texts
             .iter()
             .map(|text| {
-                let spec = crate::curve::parse(&crate::json::parse(text).unwrap(), "").unwrap();
-                crate::resolve::curve(&spec).unwrap()
+                let spec = crate::spec::curve::parse(&crate::spec::json::parse(text).unwrap(), "")
+                    .unwrap();
+                crate::pipeline::resolve::curve(&spec).unwrap()
             })
             .collect()
     }

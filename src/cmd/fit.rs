@@ -4,14 +4,14 @@
 //! fitted becomes a problem of its source; the others are still written.
 //!
 //! Owns the reading of `--family`, `--fix`, `--by` and `--format`, the mapping of fit errors to their
-//! argument or target, and the text of the output; the fitting itself is [`crate::fit`]'s.
+//! argument or target, and the text of the output; the fitting itself is [`crate::model::fit`]'s.
 
-use crate::curve::Curve;
 use crate::error::{Error, Result};
-use crate::fit::{By, Fit, FitError, FitSpec, Subject};
-use crate::ndf::Family;
+use crate::model::fit::{By, Fit, FitError, FitSpec, Subject};
+use crate::model::ndf::Family;
 use crate::output::csv::Table;
 use crate::problem::{Problem, Problems, suggestion};
+use crate::spec::curve::Curve;
 
 fn usage(source: &str, at: &str, message: String) -> Error {
     Error::input(Problems {

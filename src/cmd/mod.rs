@@ -12,13 +12,13 @@ pub mod render;
 pub mod schema;
 
 use crate::cli::{AlbedoArgs, CheckArgs, CoeffsArgs, Command, CompareArgs, EvalArgs, FitArgs};
-use crate::curve::Curve;
-use crate::dataset::Dataset;
 use crate::error::{Error, Result};
-use crate::input::Side;
-use crate::metrics::sampled::{Operand, Samples};
+use crate::model::dataset::Dataset;
+use crate::model::metrics::sampled::{Operand, Samples};
 use crate::problem::{Problem, Problems, join_key};
-use crate::{input, resolve, source, stdout};
+use crate::spec::curve::Curve;
+use crate::spec::input::Side;
+use crate::{output::stdout, pipeline::resolve, spec::input, spec::source};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -33,7 +33,7 @@ pub fn run(command: Command, quiet: bool) -> Result<()> {
         Command::Fit(args) => run_fit(args, quiet),
         Command::Check(args) => run_check(args),
         Command::Albedo(args) => run_albedo(args, quiet),
-        Command::List => stdout::print(&crate::catalogue::listing()),
+        Command::List => stdout::print(&crate::spec::catalogue::listing()),
         Command::Show(args) => run_show(&args.id),
         Command::Schema => schema::run(),
         Command::Completions(args) => completions::completions(args.shell),
@@ -44,17 +44,17 @@ pub fn run(command: Command, quiet: bool) -> Result<()> {
 
 /// Prints the spec of catalogue figure `id`; an unknown id is a usage error with a suggestion.
 fn run_show(id: &str) -> Result<()> {
-    match crate::catalogue::find(id) {
+    match crate::spec::catalogue::find(id) {
         Some((_, text)) => stdout::print(text),
         None => Err(crate::error::Error::Usage(format!(
             "show: unknown catalogue id (got \"{id}\", see ndfplot list){}",
-            crate::problem::suggestion(id, crate::catalogue::ids())
+            crate::problem::suggestion(id, crate::spec::catalogue::ids())
         ))),
     }
 }
 
 fn run_eval(args: EvalArgs) -> Result<()> {
-    let unit = crate::angle::AngleUnit::of(args.degrees);
+    let unit = crate::spec::angle::AngleUnit::of(args.degrees);
     let thetas = eval::parse_theta_list(&args.theta, unit)?;
     let curves = load_curves(&args.curve, "--curve")?;
     eval::write_table(&curves, &thetas, unit, &mut stdout::stream)?;
@@ -152,7 +152,7 @@ fn run_compare(args: CompareArgs) -> Result<()> {
         .collect::<Result<_>>()?;
     let span = compare::parse_span(
         args.theta_range.as_deref(),
-        crate::angle::AngleUnit::of(args.degrees),
+        crate::spec::angle::AngleUnit::of(args.degrees),
     )?;
     let output = compare::Output::parse(&args.format, args.metric.as_deref(), span.unit)?;
     let (a, b) = match (&args.pairs, args.a.as_deref(), args.b.as_deref()) {
@@ -218,7 +218,7 @@ fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {
     let by = fit::parse_by(&args.by)?;
     let fixed = fit::parse_fixed(&args.fix)?;
     let format = fit::Format::parse(args.format.as_deref())?;
-    let spec = crate::fit::FitSpec::new(family, &fixed, by).map_err(fit::fit_error)?;
+    let spec = crate::model::fit::FitSpec::new(family, &fixed, by).map_err(fit::fit_error)?;
     let targets = load_targets(&args.target, "--target")?;
     let report = fit::run(&spec, targets, format);
     stdout::print(&report.stdout)?;
@@ -256,7 +256,7 @@ fn run_check(args: CheckArgs) -> Result<()> {
         &source::sources(&args.paths, &args.allow_read)?,
         source::CanvasOverride::default(),
     ))?;
-    let audits = crate::audit::audit_scenes(&scenes)?;
+    let audits = crate::pipeline::audit::audit_scenes(&scenes)?;
     stdout::print(&match args.format.as_str() {
         "json" => check::report(&audits, args.tolerance).json_array(),
         "csv" => check::report(&audits, args.tolerance).csv(),
@@ -269,8 +269,10 @@ fn run_check(args: CheckArgs) -> Result<()> {
 /// anything is integrated; the table goes to stdout or, with `-o`, to its file.
 fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
     let table = albedo::Table::from_name(&args.table).expect("clap allows only table names");
-    let map = crate::albedo::RoughnessMap::from_key(&args.map).expect("clap allows only map names");
-    let g2 = crate::masking::G2Model::from_name(&args.g2).expect("clap allows only G2 names");
+    let map = crate::model::albedo::RoughnessMap::from_key(&args.map)
+        .expect("clap allows only map names");
+    let g2 =
+        crate::model::masking::G2Model::from_name(&args.g2).expect("clap allows only G2 names");
     let family = fit::parse_family("--ndf", &args.ndf)?;
     let surface = albedo::Surface::new(family, &fit::parse_fixed(&args.fix)?, map)?;
     let grid = albedo::grid(table, args.size, args.mu_count, args.r_count)?;
@@ -290,7 +292,7 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
     if let Some((dir, _)) = destination {
         crate::output::write::check_writable(dir)?;
     }
-    let progress = crate::progress::Progress::new(request.steps() as u64, quiet);
+    let progress = crate::pipeline::progress::Progress::new(request.steps() as u64, quiet);
     progress.stage("integrating");
     let output = request.compute(&progress)?;
     progress.finish();

@@ -5,7 +5,7 @@ use crate::cli::RenderArgs;
 use crate::error::Result;
 use crate::output::Format;
 use crate::render::{self, RenderOptions};
-use crate::source::CanvasOverride;
+use crate::spec::source::CanvasOverride;
 
 /// Runs `ndfplot render` (or `render --check DIR`, or `render -o -` to stdout) with the parsed
 /// `args`; `quiet` turns the progress bar off.
@@ -19,14 +19,14 @@ pub fn run(args: RenderArgs, quiet: bool) -> Result<()> {
             height: args.height,
             png_scale: args.png_scale,
             font_px: args.font_px,
-            theme: args.theme.as_deref().map(crate::scene::theme_named),
+            theme: args.theme.as_deref().map(crate::spec::scene::theme_named),
         },
         allow_read: args.allow_read,
     };
     match &args.check {
         Some(dir) => render::check(&options, dir, args.tolerance, quiet),
         None if options.out.as_os_str() == "-" => {
-            crate::stdout::write_bytes(&render::to_stdout(&options, quiet)?)
+            crate::output::stdout::write_bytes(&render::to_stdout(&options, quiet)?)
         }
         None => render::run_with_progress(&options, quiet).map(|_| ()),
     }

@@ -6,7 +6,7 @@
 //!
 //! Pure serialization into memory: it never evaluates a curve or touches a file.
 
-use crate::figure::Figure;
+use crate::pipeline::figure::Figure;
 use std::io::Write;
 
 /// A CSV document being written into memory, one row at a time: fields are appended to the

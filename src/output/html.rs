@@ -16,11 +16,11 @@ mod maths;
 
 pub use maths::REL_TOL_PAGE;
 
-use crate::curve::{Curve, Model};
-use crate::fresnel::Fresnel;
-use crate::look::{Dash, LegendPlace, Scale, XUnit};
-use crate::scene::interactive::Interactive;
-use crate::scene::{Scene, SceneCurve};
+use crate::model::fresnel::Fresnel;
+use crate::spec::curve::{Curve, Model};
+use crate::spec::look::{Dash, LegendPlace, Scale, XUnit};
+use crate::spec::scene::interactive::Interactive;
+use crate::spec::scene::{Scene, SceneCurve};
 use serde_json::{Value, json};
 
 const TEMPLATE: &str = include_str!("html/page.html");

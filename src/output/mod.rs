@@ -11,11 +11,13 @@ pub mod pdf;
 pub mod plot;
 pub mod plot3d;
 pub mod report;
+pub mod stdout;
+pub mod stored;
 pub mod svg_tree;
 pub mod write;
 
 use crate::error::{Error, Result};
-use crate::figure::Figure;
+use crate::pipeline::figure::Figure;
 use csv::figure_csv;
 
 /// An output format of `render`.

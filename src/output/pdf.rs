@@ -14,7 +14,7 @@ use krilla::page::PageSettings;
 use krilla::{Document, SerializeSettings};
 use krilla_svg::{SurfaceExt, SvgSettings};
 
-use crate::provenance::Provenance;
+use crate::pipeline::provenance::Provenance;
 
 /// PDF points per CSS pixel: 72 points and 96 CSS pixels to the inch.
 pub const POINTS_PER_PX: f32 = 0.75;

@@ -99,13 +99,13 @@ impl Report {
     pub fn json_lines(&self) -> String {
         self.rows
             .iter()
-            .map(|row| crate::json::to_string(&Row(&self.columns, row)) + "\n")
+            .map(|row| crate::spec::json::to_string(&Row(&self.columns, row)) + "\n")
             .collect()
     }
 
     /// Every row as an object of a compact JSON array, and a newline: `[{"<column>": <cell>, …}, …]`.
     pub fn json_array(&self) -> String {
-        crate::json::to_string(&Rows(self)) + "\n"
+        crate::spec::json::to_string(&Rows(self)) + "\n"
     }
 
     /// CSV: the column names, then one line per row.

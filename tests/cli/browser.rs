@@ -9,11 +9,11 @@
 //! /usr/bin/chromium the browser part prints why it was skipped.
 
 use crate::common::{files_in, ndfplot, render_into, root, scratch};
-use ndfplot::curve::Curve;
-use ndfplot::curve::{CurveSpec, parse};
-use ndfplot::fresnel::Fresnel;
-use ndfplot::math::tolerance::floored_relative_difference;
+use ndfplot::model::fresnel::Fresnel;
+use ndfplot::model::math::tolerance::floored_relative_difference;
 use ndfplot::output::html::REL_TOL_PAGE;
+use ndfplot::spec::curve::Curve;
+use ndfplot::spec::curve::{CurveSpec, parse};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -71,7 +71,7 @@ fn chromium(args: &[&str]) -> std::process::Output {
 
 /// The library's value of a page curve (canonical JSON) at θ: what `ndfplot eval` prints.
 fn eval_curve(canonical: &str) -> Curve {
-    let node = ndfplot::json::parse(canonical).unwrap();
+    let node = ndfplot::spec::json::parse(canonical).unwrap();
     match parse(&node, "").unwrap() {
         CurveSpec::Ready(curve) => curve,
         CurveSpec::Belcour(ior) => Curve::Fresnel(Fresnel::belcour(ior)),

@@ -112,9 +112,10 @@ fn eval_values_match_the_library() {
         "--theta",
         thetas,
     ]);
-    let curve = ndfplot::resolve::curve(
-        &ndfplot::curve::parse(
-            &ndfplot::json::parse(r#"{"ndf":"abc","alpha_abc1":23.5,"alpha_abc2":1.75}"#).unwrap(),
+    let curve = ndfplot::pipeline::resolve::curve(
+        &ndfplot::spec::curve::parse(
+            &ndfplot::spec::json::parse(r#"{"ndf":"abc","alpha_abc1":23.5,"alpha_abc2":1.75}"#)
+                .unwrap(),
             "",
         )
         .unwrap(),

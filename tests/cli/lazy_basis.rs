@@ -4,13 +4,13 @@
 //! computes the basis first.
 
 use crate::common::scratch;
-use ndfplot::curve::CurveSpec;
-use ndfplot::fresnel::basis::basis_is_loaded;
+use ndfplot::model::fresnel::basis::basis_is_loaded;
 use ndfplot::output::Format;
+use ndfplot::pipeline::resolve;
 use ndfplot::render::{self, RenderOptions};
-use ndfplot::resolve;
-use ndfplot::scene::data::DataSpec;
-use ndfplot::source::{self, CanvasOverride};
+use ndfplot::spec::curve::CurveSpec;
+use ndfplot::spec::scene::data::DataSpec;
+use ndfplot::spec::source::{self, CanvasOverride};
 use std::process::Command;
 
 /// Set in the process that runs a check alone.

@@ -4,7 +4,7 @@
 
 use ndfplot::output::plot::lint;
 use ndfplot::render::drawn_figures;
-use ndfplot::source::CanvasOverride;
+use ndfplot::spec::source::CanvasOverride;
 
 #[test]
 fn every_catalogue_figure_passes_the_figure_lint() {

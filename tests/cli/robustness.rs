@@ -754,7 +754,7 @@ fn inputs_over_the_size_cap_are_refused_by_name() {
     let dir = scratch("robustness-input-cap");
     let big = dir.join("big.json");
     // Valid JSON (one string) one byte over the cap.
-    let cap = ndfplot::input::MAX_INPUT_BYTES as usize;
+    let cap = ndfplot::spec::input::MAX_INPUT_BYTES as usize;
     let mut spec = vec![b'a'; cap - 1];
     spec[0] = b'"';
     spec.push(b'"');

@@ -3,16 +3,16 @@
 //! (formats not requested, jobs shared between panels).
 
 use crate::common::scratch;
-use ndfplot::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
-use ndfplot::figure::Figure;
-use ndfplot::look::{Dash, PanelKind, Rgb, Scale, XUnit};
-use ndfplot::ndf::Family;
+use ndfplot::model::ndf::Family;
 use ndfplot::output::Format;
-use ndfplot::plan::{Job, Outputs, plan};
-use ndfplot::provenance::Provenance;
+use ndfplot::pipeline::adaptive::{self, Frame, distance_to_segment, max_deviation_px};
+use ndfplot::pipeline::figure::Figure;
+use ndfplot::pipeline::plan::{Job, Outputs, plan};
+use ndfplot::pipeline::provenance::Provenance;
+use ndfplot::pipeline::sample::evaluate_all;
 use ndfplot::render::{self, RenderOptions};
-use ndfplot::sample::evaluate_all;
-use ndfplot::source::{self, CanvasOverride};
+use ndfplot::spec::look::{Dash, PanelKind, Rgb, Scale, XUnit};
+use ndfplot::spec::source::{self, CanvasOverride};
 use std::f64::consts::FRAC_PI_2;
 use std::path::Path;
 
@@ -70,10 +70,10 @@ fn scene(sampling: &str) -> String {
     )
 }
 
-fn load(dir: &Path, text: &str) -> Vec<ndfplot::scene::Scene> {
+fn load(dir: &Path, text: &str) -> Vec<ndfplot::spec::scene::Scene> {
     let path = dir.join("s.json");
     std::fs::write(&path, text).unwrap();
-    ndfplot::resolve::scenes(source::load_scenes(
+    ndfplot::pipeline::resolve::scenes(source::load_scenes(
         &source::sources(&[path], &[]).unwrap(),
         CanvasOverride::default(),
     ))
@@ -182,7 +182,7 @@ fn sampling_key_errors_name_the_problem() {
     ] {
         let path = dir.join("s.json");
         std::fs::write(&path, scene(sampling)).unwrap();
-        let error = ndfplot::resolve::scenes(source::load_scenes(
+        let error = ndfplot::pipeline::resolve::scenes(source::load_scenes(
             &source::sources(&[path], &[]).unwrap(),
             CanvasOverride::default(),
         ))
@@ -336,7 +336,7 @@ const FIT_SLACK_PX: f64 = 0.05;
 /// vertex per sample (clipped).
 fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
     const UNIQUE: &str = "#010203";
-    let scenes = ndfplot::resolve::scenes(source::load_scenes(
+    let scenes = ndfplot::pipeline::resolve::scenes(source::load_scenes(
         &source::sources(&[], &[]).unwrap(),
         CanvasOverride::default(),
     ))
@@ -358,7 +358,7 @@ fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
         &evaluated,
     );
     let panel = &mut figure.panels[p];
-    panel.axes.legend = ndfplot::look::LegendPlace::None;
+    panel.axes.legend = ndfplot::spec::look::LegendPlace::None;
     panel.series[s].style.colour = Rgb::from_hex(0x010203);
     panel.series[s].style.dash = Dash::Solid;
     let panel = &figure.panels[p];
@@ -467,7 +467,7 @@ fn drawn_deviation(id: &str, p: usize, s: usize) -> Option<Drawn> {
 /// fitted to the drawing itself, so a wrong frame, y range or scale in the sampler shows here.
 #[test]
 fn drawn_curves_of_every_view_follow_their_true_curves_in_the_panels_pixels() {
-    let tolerance = ndfplot::scene::DEFAULT_TOLERANCE_PX;
+    let tolerance = ndfplot::spec::scene::DEFAULT_TOLERANCE_PX;
     // Device units are a quarter CSS pixel, half an output pixel at PNG scale 2: a vertex moves
     // at most half a diagonal of that when it is snapped, plus the error of a map fitted to
     // vertices snapped so.

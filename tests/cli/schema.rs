@@ -5,13 +5,13 @@
 //! validator refuses, and every malformed spec it accepts is named with the reason.
 
 use crate::common::{ndfplot, root};
-use ndfplot::curve::{DIFFERENCE_KEYS, Model, TRANSFORM_KEYS};
-use ndfplot::input::parse_json;
-use ndfplot::quantity;
-use ndfplot::scene::interactive::{INTERACTIVE_KEYS, PARAM_KEYS, SLIDER_KEY};
-use ndfplot::scene::sweep::{FIT_KEY, FIT_KEYS, FROM_BECKMANN_KEY, SWEEP_KEYS};
-use ndfplot::scene::{self as scene, data};
-use ndfplot::schema::{self, data_def, model_names, models, signature_def};
+use ndfplot::spec::curve::{DIFFERENCE_KEYS, Model, TRANSFORM_KEYS};
+use ndfplot::spec::input::parse_json;
+use ndfplot::spec::quantity;
+use ndfplot::spec::scene::interactive::{INTERACTIVE_KEYS, PARAM_KEYS, SLIDER_KEY};
+use ndfplot::spec::scene::sweep::{FIT_KEY, FIT_KEYS, FROM_BECKMANN_KEY, SWEEP_KEYS};
+use ndfplot::spec::scene::{self as scene, data};
+use ndfplot::spec::schema::{self, data_def, model_names, models, signature_def};
 use serde_json::{Value, json};
 use std::collections::BTreeSet;
 
@@ -146,11 +146,13 @@ fn every_key_table_equals_the_schema_properties() {
                 .map(|n| format!("{}:{n}", model.key())),
         );
     }
-    let mut accepted: BTreeSet<String> = ndfplot::ndf::Family::NAMES
+    let mut accepted: BTreeSet<String> = ndfplot::model::ndf::Family::NAMES
         .iter()
         .map(|n| format!("ndf:{n}"))
         .collect();
-    accepted.extend(ndfplot::fresnel::FresnelModel::all().map(|m| format!("fresnel:{}", m.name())));
+    accepted.extend(
+        ndfplot::model::fresnel::FresnelModel::all().map(|m| format!("fresnel:{}", m.name())),
+    );
     assert_eq!(all_names, accepted);
 
     for &kind in data::KINDS {

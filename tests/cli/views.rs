@@ -3,12 +3,12 @@
 //! CSV series compares against the curve it was sampled from.
 
 use crate::common::{ndfplot, render_into, scratch, text};
-use ndfplot::curve::Curve;
-use ndfplot::input::parse_json;
-use ndfplot::math::quad::{QuadError, integrate};
-use ndfplot::math::tolerance::QUAD_REL_TOL;
-use ndfplot::metrics::lobe_width;
-use ndfplot::scene;
+use ndfplot::model::math::quad::{QuadError, integrate};
+use ndfplot::model::math::tolerance::QUAD_REL_TOL;
+use ndfplot::model::metrics::lobe_width;
+use ndfplot::spec::curve::Curve;
+use ndfplot::spec::input::parse_json;
+use ndfplot::spec::scene;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Accepted relative deviation of a view's total mass from 1/(2π).
@@ -33,7 +33,7 @@ fn panel_curves(transform: &str) -> Vec<Curve> {
     );
     let node = parse_json(&text, "scene").unwrap();
     let spec = scene::parse(&node, None).unwrap_or_else(|p| panic!("{p:?}"));
-    let scene = ndfplot::resolve::scene(spec).unwrap_or_else(|p| panic!("{p:?}"));
+    let scene = ndfplot::pipeline::resolve::scene(spec).unwrap_or_else(|p| panic!("{p:?}"));
     scene.panels[0]
         .curves
         .iter()

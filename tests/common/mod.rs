@@ -1,12 +1,12 @@
 //! What the test binaries share: running the real `ndfplot` binary, scratch folders, reading the
 //! reference CSVs of `tests/data`, parameter grids, and which tolerance each family is held to.
-//! The tolerances themselves live in `ndfplot::math::tolerance`.
+//! The tolerances themselves live in `ndfplot::model::math::tolerance`.
 
 // Each binary uses its own part of these helpers.
 #![allow(dead_code)]
 
-use ndfplot::math::tolerance::{REL_TOL_NDF, REL_TOL_TROWBRIDGE_REITZ};
-use ndfplot::ndf::Family;
+use ndfplot::model::math::tolerance::{REL_TOL_NDF, REL_TOL_TROWBRIDGE_REITZ};
+use ndfplot::model::ndf::Family;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -112,7 +112,7 @@ pub fn log_grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
         .collect()
 }
 
-/// The relative accuracy `family`'s values are held to (`ndfplot::math::tolerance`).
+/// The relative accuracy `family`'s values are held to (`ndfplot::model::math::tolerance`).
 pub fn ndf_tol(family: Family) -> f64 {
     match family {
         Family::TrowbridgeReitz => REL_TOL_TROWBRIDGE_REITZ,

@@ -1,4 +1,4 @@
-//! Directional albedo (`ndfplot::albedo`) of the GGX microfacet BRDF against exact values, an
+//! Directional albedo (`ndfplot::model::albedo`) of the GGX microfacet BRDF against exact values, an
 //! mpmath reference, an independent quadrature, the values of MATH.md's research notes and Cycles'
 //! precomputed tables, and its invariants (bounds, split-sum linearity).
 //!
@@ -7,16 +7,16 @@
 //!   Monte Carlo estimates printed as float32 to 6 decimals.
 
 use crate::common::{number, root};
-use ndfplot::albedo::{
+use ndfplot::model::albedo::{
     Microfacet, RoughnessMap, albedo_table, average_albedo, average_albedo_table, split_sum_tables,
     turquin_factor,
 };
-use ndfplot::fresnel::basis::coeffs;
-use ndfplot::fresnel::exact::{Incidence, Index, reflectance};
-use ndfplot::masking::G2Model;
-use ndfplot::math::quad::integrate;
-use ndfplot::math::tolerance::{ALBEDO_TABULATED_TOL, ALBEDO_TOL};
-use ndfplot::ndf::Family;
+use ndfplot::model::fresnel::basis::coeffs;
+use ndfplot::model::fresnel::exact::{Incidence, Index, reflectance};
+use ndfplot::model::masking::G2Model;
+use ndfplot::model::math::quad::integrate;
+use ndfplot::model::math::tolerance::{ALBEDO_TABULATED_TOL, ALBEDO_TOL};
+use ndfplot::model::ndf::Family;
 use rayon::prelude::*;
 use std::f64::consts::PI;
 

@@ -4,17 +4,19 @@
 //! fit input; difference series.
 
 use crate::common::{csv_records, number};
-use ndfplot::curve::{self, Curve, DiffOp};
-use ndfplot::fit::{By, FitError, Subject, fit};
-use ndfplot::metrics::{self, lobe_width, maximum};
-use ndfplot::ndf::Family;
+use ndfplot::model::fit::{By, FitError, Subject, fit};
+use ndfplot::model::metrics::{self, lobe_width, maximum};
+use ndfplot::model::ndf::Family;
+use ndfplot::spec::curve::{self, Curve, DiffOp};
 
 /// Relative agreement required with the mpmath peak fits: the brief's bound; the solver reaches ~1e-15.
 const PEAK_FIT_REL_TOL: f64 = 1e-7;
 
 fn parse(text: &str) -> Curve {
-    ndfplot::resolve::curve(&curve::parse(&ndfplot::json::parse(text).unwrap(), "").unwrap())
-        .unwrap()
+    ndfplot::pipeline::resolve::curve(
+        &curve::parse(&ndfplot::spec::json::parse(text).unwrap(), "").unwrap(),
+    )
+    .unwrap()
 }
 
 fn ndf(family: Family, params: &[f64]) -> Curve {
@@ -304,7 +306,7 @@ fn difference_series_parse_evaluate_and_print_canonically() {
         (4.0 / (2.0 * std::f64::consts::PI)) / (6.0 / (2.0 * std::f64::consts::PI))
     );
     let problems = |text: &str| {
-        let list = curve::parse(&ndfplot::json::parse(text).unwrap(), "").unwrap_err();
+        let list = curve::parse(&ndfplot::spec::json::parse(text).unwrap(), "").unwrap_err();
         list.iter()
             .map(|p| format!("{}: {}", p.at, p.message))
             .collect::<Vec<_>>()

@@ -5,7 +5,7 @@
 use std::f64::consts::FRAC_PI_2;
 
 use crate::common::log_grid;
-use ndfplot::fresnel::{Coefficients, Fresnel, Ior, SchlickF0, approx, gulbrandsen};
+use ndfplot::model::fresnel::{Coefficients, Fresnel, Ior, SchlickF0, approx, gulbrandsen};
 
 /// F(0) against ((η − 1)² + κ²)/((η + 1)² + κ²), relative: the exact form at c = 1 takes a complex
 /// square root and a few products, each within an ulp or two.

@@ -8,8 +8,8 @@ use std::collections::BTreeMap;
 use std::time::Instant;
 
 use crate::common::{csv_records, number};
-use ndfplot::fresnel::{Fresnel, Incidence, Index, Ior, SchlickF0, basis, exact};
-use ndfplot::math::tolerance::{REL_TOL_FRESNEL, floored_relative_difference};
+use ndfplot::model::fresnel::{Fresnel, Incidence, Index, Ior, SchlickF0, basis, exact};
+use ndfplot::model::math::tolerance::{REL_TOL_FRESNEL, floored_relative_difference};
 /// The basis b₀…b₃, the coefficients c₀…c₃, `l2` and the normalized spectrum, absolute: a different
 /// SVD routine moves them by ~2e-14 (reference/README.md), given training rows rounded like numpy's
 /// (the row with 1 − F₀ = 2e-5 amplifies each ulp of F 5e4-fold). Measured: b₂ 9.0e-15, b₃ 1.1e-14.

@@ -13,12 +13,12 @@
 //! Errors are `floored_relative_difference` (relative above ABS_FLOOR, absolute below).
 
 use crate::common::{csv_records, log_grid, number};
-use ndfplot::masking::{g1, lambda_by_integral, smith_furnace};
-use ndfplot::math::tolerance::{
+use ndfplot::model::masking::{g1, lambda_by_integral, smith_furnace};
+use ndfplot::model::math::tolerance::{
     REL_TOL_LAMBDA_CLOSED_FORM, REL_TOL_LAMBDA_INTEGRAL, SMITH_FURNACE_TOL,
     floored_relative_difference,
 };
-use ndfplot::ndf::{Family, Ndf};
+use ndfplot::model::ndf::{Family, Ndf};
 use std::collections::BTreeMap;
 use std::f64::consts::FRAC_PI_2;
 

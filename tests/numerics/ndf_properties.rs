@@ -3,9 +3,11 @@
 //! adaptive quadrature; constructors accept exactly the domain their family states.
 
 use crate::common::log_grid;
-use ndfplot::math::quad::{QuadError, integrate};
-use ndfplot::math::tolerance::{NORMALIZATION_TOL, QUAD_REL_TOL};
-use ndfplot::ndf::{Abc, Beckmann, Family, Gtr, Ndf, Phong, Sgd, TorranceSparrow, TrowbridgeReitz};
+use ndfplot::model::math::quad::{QuadError, integrate};
+use ndfplot::model::math::tolerance::{NORMALIZATION_TOL, QUAD_REL_TOL};
+use ndfplot::model::ndf::{
+    Abc, Beckmann, Family, Gtr, Ndf, Phong, Sgd, TorranceSparrow, TrowbridgeReitz,
+};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Geometric ratio between successive quadrature breakpoints: pieces span a factor 4 in θ (or in π/2 − θ),

@@ -9,11 +9,11 @@
 //!
 //! Both files have the columns `case_id,curve_json,theta,value`, every number the exact double to use.
 //! Error is `floored_relative_difference` (relative above ABS_FLOOR, absolute below), with the
-//! tolerances of `ndfplot::math::tolerance`.
+//! tolerances of `ndfplot::model::math::tolerance`.
 
 use crate::common::{csv_records, ndf_tol, number};
-use ndfplot::math::tolerance::floored_relative_difference;
-use ndfplot::ndf::{Family, Ndf};
+use ndfplot::model::math::tolerance::floored_relative_difference;
+use ndfplot::model::ndf::{Family, Ndf};
 use std::collections::BTreeMap;
 
 /// Builds the NDF a `curve_json` cell describes, e.g. `{"ndf":"beckmann","alpha_b":0.5}`.

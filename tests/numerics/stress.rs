@@ -9,9 +9,9 @@
 //! grids and normalizes a regular subset of those (see [`SLICE_NORMALIZED_EVERY`]).
 
 use crate::common::log_grid;
-use ndfplot::domain::Param;
-use ndfplot::math::quad::{QuadError, integrate};
-use ndfplot::ndf::{Family, Ndf};
+use ndfplot::model::domain::Param;
+use ndfplot::model::math::quad::{QuadError, integrate};
+use ndfplot::model::ndf::{Family, Ndf};
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, PI};
 

@@ -4,16 +4,16 @@
 //! implementations within [`REL_TOL_PAGE`] of each other over every family's whole domain.
 //! Serialization only: nothing here evaluates a curve outside its test.
 
-use crate::domain::Param;
-use crate::fresnel::{self, basis};
-use crate::ndf::Family;
+use crate::model::domain::Param;
+use crate::model::fresnel::{self, basis};
+use crate::model::ndf::Family;
 use serde_json::{Map, Value, json};
 
 /// The page's port of the curve definitions; defines `ndfplotMaths(domains, basis)`.
 pub const SCRIPT: &str = include_str!("maths.js");
 
 /// Largest relative difference between a page's value and `ndfplot eval`'s (floored below
-/// [`crate::math::tolerance::ABS_FLOOR`]): both sides exponentiate exponents of up to ~1450 whose
+/// [`crate::model::math::tolerance::ABS_FLOOR`]): both sides exponentiate exponents of up to ~1450 whose
 /// libm roundings differ by an ulp or two between the browser and the platform (fdlibm against
 /// glibc), ≤ 1450 · 4.4e-16 ≈ 6e-13.
 pub const REL_TOL_PAGE: f64 = 1e-12;
@@ -83,9 +83,9 @@ pub fn basis_json(encode: &dyn Fn(&[f64]) -> Value) -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::curve::Curve;
-    use crate::fresnel::{Fresnel, Ior, SchlickF0, approx};
-    use crate::math::tolerance::floored_relative_difference;
+    use crate::model::fresnel::{Fresnel, Ior, SchlickF0, approx};
+    use crate::model::math::tolerance::floored_relative_difference;
+    use crate::spec::curve::Curve;
     use std::collections::BTreeMap;
     use std::f64::consts::FRAC_PI_2;
     use std::process::Command;

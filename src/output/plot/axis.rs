@@ -7,11 +7,11 @@ use std::ops::Range;
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint};
 use plotters::prelude::*;
 
-use crate::figure::{Panel, Series};
+use crate::pipeline::figure::{Panel, Series};
 
-use crate::look::{Axes, Mark, Scale, TickChoice, XUnit};
+use crate::spec::look::{Axes, Mark, Scale, TickChoice, XUnit};
 
-use crate::layout::{AUTO_MARGIN, widen_if_flat};
+use crate::pipeline::layout::{AUTO_MARGIN, widen_if_flat};
 
 use super::ticks::{self, Ticks};
 
@@ -312,8 +312,8 @@ pub(super) fn median_spacing(series: &Series, axes: &Axes) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::look::Dash;
     use crate::output::plot::fixtures::{RED, panel, series};
+    use crate::spec::look::Dash;
     use std::f64::consts::PI;
 
     #[test]

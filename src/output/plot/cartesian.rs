@@ -13,10 +13,10 @@ use super::mathtext;
 use super::style::{Metrics, stroke};
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
-use crate::figure::{Panel, Series};
-use crate::layout::AXIS_LABEL_EM;
-use crate::layout::DEFAULT_ASPECT_RATIO;
-use crate::look::{LegendPlace, Mark, Scale};
+use crate::pipeline::figure::{Panel, Series};
+use crate::pipeline::layout::AXIS_LABEL_EM;
+use crate::pipeline::layout::DEFAULT_ASPECT_RATIO;
+use crate::spec::look::{LegendPlace, Mark, Scale};
 
 /// Bar width as a fraction of the median spacing of a series' x values.
 pub(super) const BAR_FRACTION: f64 = 0.6;
@@ -640,8 +640,8 @@ pub(super) fn visible_bars(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::look::{Dash, XUnit};
     use crate::output::plot::fixtures::{RED, marked, panel, series};
+    use crate::spec::look::{Dash, XUnit};
 
     #[test]
     fn plain_axes_pad_the_data_and_tick_whole_indices() {

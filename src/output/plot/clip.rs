@@ -2,7 +2,7 @@
 //! axes box (Liang–Barsky), in display coordinates.
 
 use super::axis::{Axis, x_display};
-use crate::figure::{Panel, Series};
+use crate::pipeline::figure::{Panel, Series};
 
 /// The drawable parts of `series` in display coordinates: broken at undrawable points
 /// (non-finite, or ≤ 0 on a log axis) and clipped to the axes box.
@@ -118,8 +118,8 @@ pub(super) fn clip(a: (f64, f64), b: (f64, f64), [x0, x1, y0, y1]: [f64; 4]) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::look::{Dash, Scale, XUnit};
     use crate::output::plot::fixtures::{RED, panel, series};
+    use crate::spec::look::{Dash, Scale, XUnit};
 
     #[test]
     fn curves_break_at_undrawable_points_and_clip_to_the_axes() {

@@ -4,8 +4,8 @@
 
 use super::PlotError;
 use super::style::{EM_PER_SIZE, FONT_NAME};
-use crate::look::Canvas;
-use crate::provenance::Provenance;
+use crate::pipeline::provenance::Provenance;
+use crate::spec::look::Canvas;
 
 /// `font-family` written into the SVG: the embedded face, then the generic fallback.
 pub(super) const SVG_FONT_FAMILY: &str = "DejaVu Sans, sans-serif";

@@ -4,9 +4,9 @@
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
-use crate::figure::{Figure, Panel, Series};
-use crate::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Scale, Style, Theme, XUnit};
-use crate::provenance::Provenance;
+use crate::pipeline::figure::{Figure, Panel, Series};
+use crate::pipeline::provenance::Provenance;
+use crate::spec::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Scale, Style, Theme, XUnit};
 
 /// The spec text the test figures claim to come from.
 /// The PNG of `figure`, rasterized from its SVG as `render` does.

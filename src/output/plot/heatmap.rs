@@ -16,9 +16,9 @@ use super::cartesian::{Y_TICK_SPACING_EM, draw_framed};
 use super::mathtext;
 use super::style::Metrics;
 use super::{PlotError, draw_err, outline};
-use crate::figure::{Panel, Series};
-use crate::layout::AXIS_LABEL_EM;
-use crate::look::{Rgb, viridis};
+use crate::pipeline::figure::{Panel, Series};
+use crate::pipeline::layout::AXIS_LABEL_EM;
+use crate::spec::look::{Rgb, viridis};
 
 /// Gap between the plot area and the colour bar, and the bar's width, in base text sizes.
 const BAR_GAP_EM: f64 = 1.0;

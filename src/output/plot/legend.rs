@@ -17,8 +17,8 @@ use super::style::{MARKER_RADIUS_PX, Metrics, SURFACE_OPACITY, mesh_colour, stro
 use super::text::MIN_SHRINK;
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
-use crate::figure::{Panel, Series};
-use crate::look::{Corner, LegendPlace, Mark};
+use crate::pipeline::figure::{Panel, Series};
+use crate::spec::look::{Corner, LegendPlace, Mark};
 
 /// Number of heights tried for the legend box, from the top to the bottom of the plot area.
 pub(super) const LEGEND_HEIGHTS: i32 = 5;

@@ -7,8 +7,8 @@ use std::cell::RefCell;
 
 use super::theme::{self, Pattern};
 use super::{PlotError, SVG_UNITS_PER_PX, draw_figure};
-use crate::figure::Figure;
-use crate::look::{PanelKind, Rgb};
+use crate::pipeline::figure::Figure;
+use crate::spec::look::{PanelKind, Rgb};
 use plotters::prelude::*;
 
 /// Least labelled ticks per axis of a 2D panel.
@@ -210,8 +210,8 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::look::{Dash, Scale, XUnit};
     use crate::output::plot::fixtures::{RED, figure, panel, sample, series};
+    use crate::spec::look::{Dash, Scale, XUnit};
 
     #[test]
     fn the_trace_holds_every_label_plot_area_and_tick() {

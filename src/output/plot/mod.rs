@@ -41,9 +41,9 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::plot3d::View;
-use crate::figure::{Figure, Panel};
-use crate::layout::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
-use crate::look::PanelKind;
+use crate::pipeline::figure::{Figure, Panel};
+use crate::pipeline::layout::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
+use crate::spec::look::PanelKind;
 use cartesian::{Needs, Shared, draw_cartesian, draw_cartesian_shared};
 use encode::{device_size, encode_png, finish_svg, rasterize};
 use heatmap::draw_heatmap;
@@ -375,14 +375,14 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::figure::Series;
-    use crate::look::{Dash, Mark, PanelKind, Scale, Theme, XUnit};
     use crate::output::plot::fixtures::{
         BLACK, BLUE, ORANGE, RED, SPEC, STEEL, decode, draw_png, figure, fresnel_sample, in_3d,
         manifold_edge, manifold_grid, marked, panel, polylines_in, sample, sampled, series,
         surface_kind, xy, zs,
     };
-    use crate::provenance::Provenance;
+    use crate::pipeline::figure::Series;
+    use crate::pipeline::provenance::Provenance;
+    use crate::spec::look::{Dash, Mark, PanelKind, Scale, Theme, XUnit};
     use std::f64::consts::PI;
 
     #[test]
@@ -539,7 +539,7 @@ mod tests {
         let text = String::from_utf8(svg(&blind).unwrap()).unwrap();
         // RED, BLUE, ORANGE in order of appearance: blue, vermillion, bluish green (darkened a
         // little for 3:1 contrast on white).
-        let green = theme::on_white(crate::look::Rgb::from_hex(0x009E73));
+        let green = theme::on_white(crate::spec::look::Rgb::from_hex(0x009E73));
         let green = u32::from(green.0) << 16 | u32::from(green.1) << 8 | u32::from(green.2);
         for hex in [0x0072B2, 0xD55E00, green] {
             assert!(polylines_in(&text, hex) > 0, "{hex:06X}");
@@ -566,14 +566,14 @@ mod tests {
         let mut figure = sample();
         (figure.canvas.width_px, figure.canvas.height_px) = (8193, 8192);
         figure.canvas.png_scale = 1.0;
-        assert!(crate::scene::check_canvas(&figure.canvas).is_err());
+        assert!(crate::spec::scene::check_canvas(&figure.canvas).is_err());
         assert!(matches!(
             encode::png_size(&figure.canvas),
             Err(PlotError::Canvas { .. })
         ));
         assert!(svg(&figure).is_ok());
         figure.canvas.width_px = 8192;
-        assert!(crate::scene::check_canvas(&figure.canvas).is_ok());
+        assert!(crate::spec::scene::check_canvas(&figure.canvas).is_ok());
         assert_eq!(encode::png_size(&figure.canvas).unwrap(), (8192, 8192));
         let mut figure = sample();
         figure.cols = 1;

@@ -24,9 +24,9 @@ use super::style::{Metrics, stroke};
 use super::text::{anchor_towards, text_box, text_size};
 use super::theme::Look;
 use super::{PlotError, draw_err};
-use crate::figure::Panel;
-use crate::layout::AXIS_LABEL_EM;
-use crate::look::{Mark, Scale, XUnit};
+use crate::pipeline::figure::Panel;
+use crate::pipeline::layout::AXIS_LABEL_EM;
+use crate::spec::look::{Mark, Scale, XUnit};
 
 /// Angle steps tried for spokes and labels, in degrees, finest first.
 const ANGLE_STEPS_DEG: [f64; 4] = [15.0, 30.0, 45.0, 90.0];
@@ -401,13 +401,13 @@ fn gcd(a: i64, b: i64) -> i64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::figure::{Figure, Series};
-    use crate::look::{Dash, PanelKind};
     use crate::output::plot::fixtures::draw_png;
     use crate::output::plot::fixtures::{
         BLUE, RED, figure, marked, panel, polar_sample, sampled, series,
     };
     use crate::output::plot::svg;
+    use crate::pipeline::figure::{Figure, Series};
+    use crate::spec::look::{Dash, PanelKind};
 
     #[test]
     fn angle_labels_read_in_degrees_or_fractions_of_pi() {
@@ -443,7 +443,7 @@ mod tests {
         let mut p = panel(XUnit::Degrees, y_scale, series);
         p.axes.kind = PanelKind::Polar;
         p.axes.y_range = y_range;
-        p.axes.legend = crate::look::LegendPlace::None;
+        p.axes.legend = crate::spec::look::LegendPlace::None;
         figure(vec![p])
     }
 

@@ -9,7 +9,7 @@ use plotters::style::{FontFamily, FontStyle, register_font};
 
 use super::theme::{Palette, Pattern};
 use super::{PlotError, draw_err};
-use crate::look::{Mark, Rgb};
+use crate::spec::look::{Mark, Rgb};
 
 /// Name under which the embedded face is registered; the SVG names it first.
 pub(super) const FONT_NAME: &str = "DejaVu Sans";

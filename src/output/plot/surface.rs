@@ -13,10 +13,10 @@ use super::style::{Metrics, SURFACE_OPACITY, mesh_colour, stroke};
 use super::text::{anchor_towards, text_box, text_size};
 use super::theme::Look;
 use super::{PlotError, draw_err};
-use crate::figure::{Panel, Series};
-use crate::layout::AXIS_LABEL_EM;
-use crate::look::{Mark, Rgb};
 use crate::output::plot3d::{self, P3, Projector, View};
+use crate::pipeline::figure::{Panel, Series};
+use crate::pipeline::layout::AXIS_LABEL_EM;
+use crate::spec::look::{Mark, Rgb};
 
 /// Free space between neighbouring tick labels along a 3D edge, in base text sizes.
 pub(super) const TICK_CLEARANCE_EM: f64 = 0.8;

@@ -6,9 +6,9 @@
 
 use plotters::style::RGBColor;
 
-use crate::figure::{Figure, Series};
+use crate::pipeline::figure::{Figure, Series};
 
-use crate::look::{Dash, MAX_LUMINANCE_ON_WHITE, Rgb, Theme};
+use crate::spec::look::{Dash, MAX_LUMINANCE_ON_WHITE, Rgb, Theme};
 
 /// The colours of everything that is not a series.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -213,8 +213,8 @@ fn lighten(colour: Rgb) -> Rgb {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::look::{Scale, XUnit};
     use crate::output::plot::fixtures::{BLACK, BLUE, RED, figure, panel, sample, series};
+    use crate::spec::look::{Scale, XUnit};
 
     #[test]
     fn the_notebook_theme_keeps_spec_colours_and_dashes() {

@@ -197,7 +197,10 @@ pub(super) fn given_log_labels(values: &[f64]) -> Vec<String> {
                 .map_or(0, |(hi, lo)| hi - lo);
             log_labels(&forms, span as f64)
         }
-        None => values.iter().map(|&v| crate::curve::pretty(v)).collect(),
+        None => values
+            .iter()
+            .map(|&v| crate::spec::curve::pretty(v))
+            .collect(),
     }
 }
 

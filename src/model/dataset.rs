@@ -1,0 +1,391 @@
+//! Series that are not functions of θ: the Belcour–Bati–Barla singular-value spectrum,
+//! coefficient paths and manifolds over Gulbrandsen's (r, g), the directional albedo of an NDF
+//! family over (μ, r) on Cycles' grid, and literal tables.
+//!
+//! A dataset is validated data (like a curve) and evaluates to points; it never draws or writes.
+
+use crate::model::albedo::{RoughnessMap, albedo_table, surface_of};
+use crate::model::fresnel::{basis, gulbrandsen};
+use crate::model::masking::G2Model;
+use crate::model::ndf::Family;
+use serde::ser::{Serialize, SerializeMap, Serializer};
+
+/// Which number of the spectrum a spectrum series shows (MATH.md, basis step 6).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SpectrumQuantity {
+    /// The singular values s_k.
+    SingularValue,
+    /// s_k / Σ s.
+    Normalized,
+    /// Running sums of the normalized values.
+    Cumulative,
+}
+
+impl SpectrumQuantity {
+    /// Every quantity, by its JSON name.
+    pub const NAMES: [(&'static str, SpectrumQuantity); 3] = [
+        ("singular_value", SpectrumQuantity::SingularValue),
+        ("normalized", SpectrumQuantity::Normalized),
+        ("cumulative", SpectrumQuantity::Cumulative),
+    ];
+
+    fn name(self) -> &'static str {
+        Self::NAMES
+            .iter()
+            .find(|(_, q)| *q == self)
+            .map(|(n, _)| *n)
+            .expect("every quantity is named")
+    }
+}
+
+/// A decomposition coefficient, as an axis of a Gulbrandsen dataset.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Coefficient {
+    /// c₀ = F₀.
+    C0,
+    /// c₁ = 1 − c₀.
+    C1,
+    /// c₂.
+    C2,
+    /// c₃.
+    C3,
+}
+
+impl Coefficient {
+    /// Every coefficient, by its JSON name.
+    pub const NAMES: [(&'static str, Coefficient); 4] = [
+        ("c0", Coefficient::C0),
+        ("c1", Coefficient::C1),
+        ("c2", Coefficient::C2),
+        ("c3", Coefficient::C3),
+    ];
+
+    fn name(self) -> &'static str {
+        Self::NAMES
+            .iter()
+            .find(|(_, c)| *c == self)
+            .map(|(n, _)| *n)
+            .expect("every coefficient is named")
+    }
+
+    fn of(self, c: &basis::Coefficients) -> f64 {
+        match self {
+            Coefficient::C0 => c.c0,
+            Coefficient::C1 => c.c1,
+            Coefficient::C2 => c.c2,
+            Coefficient::C3 => c.c3,
+        }
+    }
+}
+
+/// Which number of the directional albedo an albedo dataset shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum AlbedoValue {
+    /// E(μ, r) itself.
+    Albedo,
+    /// 1 − E(μ, r): the energy single scattering loses.
+    Loss,
+}
+
+impl AlbedoValue {
+    /// Every value, by its JSON name.
+    pub const NAMES: [(&'static str, AlbedoValue); 2] =
+        [("E", AlbedoValue::Albedo), ("loss", AlbedoValue::Loss)];
+
+    fn name(self) -> &'static str {
+        Self::NAMES
+            .iter()
+            .find(|(_, v)| *v == self)
+            .map(|(n, _)| *n)
+            .expect("every albedo value is named")
+    }
+}
+
+/// A non-θ series.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Dataset {
+    /// The first `count` entries of the spectrum of 100 dielectrics, at x = 0, 1, … (the
+    /// notebook's index axis).
+    Spectrum {
+        /// Which number to show.
+        quantity: SpectrumQuantity,
+        /// How many leading entries.
+        count: usize,
+    },
+    /// Coefficients of materials given by Gulbrandsen's (r, g) over the product r × g (r outer,
+    /// g inner): points (x, y) and, with `z`, a third coordinate.
+    Gulbrandsen {
+        /// Coefficient on the x axis.
+        x: Coefficient,
+        /// Coefficient on the y axis.
+        y: Coefficient,
+        /// Coefficient on the z axis (3D panels).
+        z: Option<Coefficient>,
+        /// Reflectivities, each in [0, 1).
+        r: Vec<f64>,
+        /// Edge tints, each in [0, 1].
+        g: Vec<f64>,
+        /// Use ḡ = 1 − (1 − g)³.
+        g_remap: bool,
+    },
+    /// Points read from a CSV file, x being θ (stored in radians): a renderer's or a measurement's
+    /// values to overlay on analytic curves.
+    Csv {
+        /// The file as the spec names it (relative to the spec's folder).
+        path: String,
+        /// Column holding θ.
+        x_column: String,
+        /// Column holding the values.
+        y_column: String,
+        /// Whether the file's θ are in degrees (converted to radians on reading).
+        degrees: bool,
+        /// θ in radians, in file order.
+        x: Vec<f64>,
+        /// Values, in file order.
+        y: Vec<f64>,
+    },
+    /// The directional albedo E (or the loss 1 − E) of the single-scattering BRDF with F = 1 of
+    /// a one-parameter NDF family whose parameter is its width α, on Cycles' grid
+    /// ([`albedo_table`]): μ_i = i/(mu − 1) (rows, x) by r_j = j/(r − 1) (columns, y), α = map(r);
+    /// z per point. The r = 0 column is the mirror limit and the μ = 0 row the grazing limit.
+    Albedo {
+        /// The NDF family (its one parameter is α).
+        family: Family,
+        /// How r maps to α.
+        map: RoughnessMap,
+        /// How masking and shadowing combine.
+        g2: G2Model,
+        /// E or 1 − E.
+        value: AlbedoValue,
+        /// Points on the μ axis, at least 2.
+        mu: usize,
+        /// Points on the r axis, at least 2.
+        r: usize,
+    },
+    /// Literal points.
+    Table {
+        /// x values.
+        x: Vec<f64>,
+        /// y values, as many as x.
+        y: Vec<f64>,
+    },
+}
+
+/// Points of a dataset: (x, y), optional z per point, and the grid shape when the points form
+/// a row-major grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DataPoints {
+    /// (x, y) per point.
+    pub points: Vec<(f64, f64)>,
+    /// z per point, for datasets with a z axis.
+    pub z: Option<Vec<f64>>,
+    /// `Some((rows, cols))` when the points form a grid of at least 2 × 2.
+    pub grid: Option<(usize, usize)>,
+}
+
+impl Dataset {
+    /// A canonical one-line JSON name, used as the CSV `curve` column: `{"data":<kind>,…}` with
+    /// the dataset's keys in the spec format's order, numbers in shortest round-trip form.
+    pub fn canonical_json(&self) -> String {
+        crate::spec::json::to_string(self)
+    }
+
+    /// Whether the dataset's x is θ in radians (so it shares axes with curves).
+    pub fn is_theta(&self) -> bool {
+        matches!(self, Dataset::Csv { .. })
+    }
+
+    /// Whether the dataset has a z coordinate (for surface and heat-map panels).
+    pub fn has_z(&self) -> bool {
+        matches!(
+            self,
+            Dataset::Gulbrandsen { z: Some(_), .. } | Dataset::Albedo { .. }
+        )
+    }
+
+    /// Whether the dataset is z over a rectilinear grid, x varying along its rows and y along its
+    /// columns (what a heat-map panel draws).
+    pub fn is_map(&self) -> bool {
+        matches!(self, Dataset::Albedo { .. })
+    }
+
+    /// How many points the dataset has, known without computing them (but for a CSV file's,
+    /// known once read).
+    pub fn len(&self) -> usize {
+        match self {
+            Dataset::Spectrum { count, .. } => *count,
+            Dataset::Gulbrandsen { r, g, .. } => r.len() * g.len(),
+            Dataset::Albedo { mu, r, .. } => mu * r,
+            Dataset::Table { x, .. } | Dataset::Csv { x, .. } => x.len(),
+        }
+    }
+
+    /// Whether the dataset has no points.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Computes the points. The spectrum and Gulbrandsen datasets build the Fresnel basis on
+    /// first use; an albedo dataset computes its table in parallel, and a quadrature that fails
+    /// gives NaN values, which evaluation reports as non-finite.
+    pub fn evaluate(&self) -> DataPoints {
+        match self {
+            Dataset::Spectrum { quantity, count } => {
+                let spectrum = basis::spectrum();
+                let values = match quantity {
+                    SpectrumQuantity::SingularValue => &spectrum.singular_values,
+                    SpectrumQuantity::Normalized => &spectrum.normalized,
+                    SpectrumQuantity::Cumulative => &spectrum.cumulative,
+                };
+                let points = values
+                    .iter()
+                    .take(*count)
+                    .enumerate()
+                    .map(|(k, &v)| (k as f64, v))
+                    .collect();
+                DataPoints {
+                    points,
+                    z: None,
+                    grid: None,
+                }
+            }
+            Dataset::Gulbrandsen {
+                x,
+                y,
+                z,
+                r,
+                g,
+                g_remap,
+            } => {
+                let coefficients: Vec<basis::Coefficients> = r
+                    .iter()
+                    .flat_map(|&r| g.iter().map(move |&g| (r, g)))
+                    .map(|(r, g)| {
+                        let g = if *g_remap {
+                            gulbrandsen::remap_edge_tint(g)
+                        } else {
+                            g
+                        };
+                        basis::coeffs(gulbrandsen::index(r, g))
+                    })
+                    .collect();
+                let points = coefficients.iter().map(|c| (x.of(c), y.of(c))).collect();
+                let z = z.map(|z| coefficients.iter().map(|c| z.of(c)).collect());
+                let grid = (r.len() > 1 && g.len() > 1).then_some((r.len(), g.len()));
+                DataPoints { points, z, grid }
+            }
+            Dataset::Albedo {
+                family,
+                map,
+                g2,
+                value,
+                mu,
+                r,
+            } => {
+                let surface = |alpha: f64| {
+                    let ndf = family
+                        .build(&[alpha])
+                        .expect("the spec admits only families whose width domain holds (0, 1]");
+                    surface_of(ndf, *g2)
+                };
+                match albedo_table(*mu, *r, *map, surface, None, None) {
+                    Ok(table) => {
+                        let points = table
+                            .mu
+                            .iter()
+                            .flat_map(|&m| table.roughness.iter().map(move |&r| (m, r)))
+                            .collect();
+                        let z = match value {
+                            AlbedoValue::Albedo => table.values,
+                            AlbedoValue::Loss => table.values.iter().map(|e| 1.0 - e).collect(),
+                        };
+                        DataPoints {
+                            points,
+                            z: Some(z),
+                            grid: Some((*mu, *r)),
+                        }
+                    }
+                    // A quadrature that did not converge: one non-finite point, reported.
+                    Err(_) => DataPoints {
+                        points: vec![(f64::NAN, f64::NAN)],
+                        z: None,
+                        grid: None,
+                    },
+                }
+            }
+            Dataset::Table { x, y } | Dataset::Csv { x, y, .. } => DataPoints {
+                points: x.iter().copied().zip(y.iter().copied()).collect(),
+                z: None,
+                grid: None,
+            },
+        }
+    }
+}
+
+impl Serialize for Dataset {
+    /// The members of the canonical JSON (see [`Dataset::canonical_json`]); a CSV series is named
+    /// by its file and columns, not its values.
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(None)?;
+        match self {
+            Dataset::Spectrum { quantity, count } => {
+                map.serialize_entry("data", "spectrum")?;
+                map.serialize_entry("quantity", quantity.name())?;
+                map.serialize_entry("count", count)?;
+            }
+            Dataset::Gulbrandsen {
+                x,
+                y,
+                z,
+                r,
+                g,
+                g_remap,
+            } => {
+                map.serialize_entry("data", "gulbrandsen")?;
+                map.serialize_entry("x", x.name())?;
+                map.serialize_entry("y", y.name())?;
+                if let Some(z) = z {
+                    map.serialize_entry("z", z.name())?;
+                }
+                map.serialize_entry("r", r)?;
+                map.serialize_entry("g", g)?;
+                map.serialize_entry("g_remap", g_remap)?;
+            }
+            Dataset::Albedo {
+                family,
+                map: roughness,
+                g2,
+                value,
+                mu,
+                r,
+            } => {
+                map.serialize_entry("data", "albedo")?;
+                map.serialize_entry("ndf", family.name())?;
+                map.serialize_entry("map", roughness.key())?;
+                map.serialize_entry("g2", g2.name())?;
+                map.serialize_entry("value", value.name())?;
+                map.serialize_entry("mu", mu)?;
+                map.serialize_entry("r", r)?;
+            }
+            Dataset::Table { x, y } => {
+                map.serialize_entry("data", "table")?;
+                map.serialize_entry("x", x)?;
+                map.serialize_entry("y", y)?;
+            }
+            Dataset::Csv {
+                path,
+                x_column,
+                y_column,
+                degrees,
+                ..
+            } => {
+                map.serialize_entry("data", "csv")?;
+                map.serialize_entry("path", path)?;
+                map.serialize_entry("x", x_column)?;
+                map.serialize_entry("y", y_column)?;
+                map.serialize_entry("degrees", degrees)?;
+            }
+        }
+        map.end()
+    }
+}

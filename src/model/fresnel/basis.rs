@@ -1,0 +1,394 @@
+//! The Belcour–Bati–Barla four-term Fresnel basis (SIGGRAPH 2020, "Bringing an Accurate Fresnel to
+//! Real-Time Rendering: a Preintegrable Decomposition"), rebuilt exactly as MATH.md steps 1–7 and
+//! the notebook `seeds/004_a7d16ebd756ecf05.txt` do, and the projection of a material onto it.
+//!
+//! - Grid: 1000 nodes c_i = numpy `linspace(0, 1, 1000)` = i·(1/999), the last one exactly 1.
+//! - Training set: 1000 materials (η = linspace(1.1, 3, 1000) overwritten row by row: 10 Gulbrandsen
+//!   conductors with g = 1, including the r′ > 1 row at k = 10 that gives η < 0, then dielectrics
+//!   1.01 … 3); each row is the normalized curve (F − F₀)/(1 − F₀) of the normative Fresnel form,
+//!   rounded exactly as numpy float64 rounds it (`numpy_f64`): row k = 10 has 1 − F₀ = 2e-5, so
+//!   each ulp of F moves it by ~5e-12 and the basis by up to ~1e-11, and only numpy's own rounding
+//!   reproduces the published reference basis to 1e-12 (it does to ~1e-14).
+//! - b₀ = 1, b₁ = |v₀|/max|v₀| from the SVD of the rows; b₂ = v₀/max|v₀|, b₃ = v₁/max|v₁| from the SVD
+//!   of the rows minus b₁, each flipped so its largest-magnitude entry is +1.
+//! - Critical indices: i₁ = argmax b₂ (128) and, of argmax ±b₃, the one farther from i₁ (432).
+//! - Projection (`fresnel2coeffs`): c₀ = F(1), c₁ = 1 − c₀ (0 when c₀ = 0), (c₂, c₃) solve the 2×2
+//!   system c₂ b₂[i] + c₃ b₃[i] = F(c_i) − (c₀ + c₁ b₁[i]) at the two critical nodes.
+//! - Spectrum check (step 6): singular values of the normalized curves of 100 dielectrics
+//!   η = linspace(1.01, 3, 100).
+//!
+//! The basis is computed with faer by `basis/compute.rs` (single-threaded partial SVDs: the
+//! leading right singular vectors only, checked against the full thin SVD to ~1e-15) and stored
+//! as a table that runs read ([`STORED`]); a test recomputes it and holds the table to it. The spectrum is computed
+//! at most once per process, on first use, from the thin SVD's singular values. Another SVD routine
+//! moves b₁…b₃ by ~1e-14 only (reference/README.md).
+//! Tabulated values between nodes are interpolated linearly in c (see [`Basis::interpolate`]). The
+//! reconstruction and the basis functions are approximations and basis vectors, not reflectances:
+//! they may leave [0, 1] and are never clamped.
+
+use std::sync::OnceLock;
+
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::svd::{self, ComputeSvdVectors};
+use faer::prelude::default;
+use faer::{Mat, Par};
+
+use super::exact::{Incidence, Index, normalized_reflectance, reflectance};
+use crate::model::grid::linspace;
+
+#[cfg(test)]
+mod compute;
+
+/// Number of grid nodes c_i (MATH.md step 1).
+pub const GRID_SIZE: usize = 1000;
+
+/// Index range of the dielectric training rows: η from 1.01 to 3.0 (the notebook's literals).
+const DIELECTRIC_ETA_MIN: f64 = 1.01;
+/// Upper end of the dielectric index range, for the training rows and the spectrum check.
+const DIELECTRIC_ETA_MAX: f64 = 3.0;
+/// Number of dielectrics in the spectrum check (MATH.md step 6).
+const SPECTRUM_SIZE: usize = 100;
+
+/// The grid c_i = numpy `linspace(0, 1, 1000)`, i.e. i·fl(1/999) with c₉₉₉ = 1 exactly.
+pub fn grid() -> Vec<f64> {
+    linspace(0.0, 1.0, GRID_SIZE)
+}
+
+/// The normalized curve (F(c_i) − F₀)/(1 − F₀) of the exact Fresnel form on the grid, F₀ = F(1)
+/// (`exact::normalized_reflectance`): accurate to ~1e-16 even where 1 − F₀ is tiny (the training
+/// row with 1 − F₀ = 2e-5, where the direct quotient carries ~4e-11 of rounding). Identically 0 for
+/// η̃ = 1.
+///
+/// The spectrum curves (the notebook's left spectrum panel, and the matrix of the spectrum check).
+/// The basis training rows are rounded like numpy's instead (`numpy_f64::training_row`), which is
+/// ~1e-11 less accurate in the row with 1 − F₀ = 2e-5 but reproduces the published basis.
+pub fn normalized_curve(cos_theta: &[f64], index: Index) -> Vec<f64> {
+    cos_theta
+        .iter()
+        .map(|&c| normalized_reflectance(Incidence::from_cos(c), index))
+        .collect()
+}
+
+/// Stacks `rows` (all of the same length) as the rows of a matrix.
+fn stack_rows(rows: &[Vec<f64>]) -> Mat<f64> {
+    Mat::from_fn(rows.len(), rows[0].len(), |i, j| rows[i][j])
+}
+
+/// Clears the upper halves of the AVX registers (`vzeroupper`) after a faer call.
+///
+/// faer's x86-64 kernels can return with the upper AVX/AVX-512 register state dirty; until it is
+/// cleared, legacy-SSE instructions in the rest of the process (this crate's scalar f64 code is
+/// compiled for baseline x86-64) run up to ~20–70× slower when mixed with the C library's AVX
+/// code (measured after the basis: 1e6 `mul_add` + `sqrt` 12 → 232 ms, the training rows
+/// 90 → 900 ms; with this call, unchanged).
+fn clear_upper_simd_state() {
+    #[cfg(target_arch = "x86_64")]
+    {
+        #[target_feature(enable = "avx")]
+        #[allow(unused_unsafe)]
+        unsafe fn zero_upper() {
+            // SAFETY: only called when the CPU supports AVX; vzeroupper touches no memory.
+            unsafe { std::arch::x86_64::_mm256_zeroupper() }
+        }
+        if std::arch::is_x86_feature_detected!("avx") {
+            // SAFETY: AVX is available (checked above). No vector value is live across this call.
+            unsafe { zero_upper() }
+        }
+    }
+}
+
+/// The thin SVD of `matrix` by faer (Householder bidiagonalization, then divide and conquer on the
+/// bidiagonal), single-threaded (`Par::Seq`) so that the result is bit-reproducible: the singular
+/// values, decreasing, and, when `vectors` is `Thin`, the right singular vectors as the columns of V.
+fn thin_svd(matrix: &Mat<f64>, vectors: ComputeSvdVectors) -> (Vec<f64>, Option<Mat<f64>>) {
+    let (m, n) = matrix.shape();
+    let size = m.min(n);
+    let mut s = faer::diag::Diag::<f64>::zeros(size);
+    let mut v = match vectors {
+        ComputeSvdVectors::No => None,
+        _ => Some(Mat::<f64>::zeros(n, size)),
+    };
+    let mut buffer = MemBuffer::new(svd::svd_scratch::<f64>(
+        m,
+        n,
+        ComputeSvdVectors::No,
+        vectors,
+        Par::Seq,
+        default(),
+    ));
+    svd::svd(
+        matrix.as_ref(),
+        s.as_mut(),
+        None,
+        v.as_mut().map(|v| v.as_mut()),
+        Par::Seq,
+        MemStack::new(&mut buffer),
+        default(),
+    )
+    .expect("the SVD of a finite matrix converges");
+    clear_upper_simd_state();
+    ((0..size).map(|k| s[k]).collect(), v)
+}
+
+/// The four basis functions on the grid and the two critical indices.
+#[derive(Debug, Clone)]
+pub struct Basis {
+    cos_theta: Vec<f64>,
+    functions: [Vec<f64>; 4],
+    critical: [usize; 2],
+}
+
+static BASIS: OnceLock<Basis> = OnceLock::new();
+
+/// The basis as [`compute`] makes it, stored: a comment line, `critical i₁ i₂`, then `b1`, `b2`
+/// and `b3` each followed by its 1000 node values in shortest round-trip form (b₀ = 1). Reading
+/// it takes well under a millisecond where computing it takes two SVDs (~60 ms), and every machine
+/// gets the same bits; a test keeps it equal to the computation.
+const STORED: &str = include_str!("basis/stored.txt");
+
+/// The basis of MATH.md steps 1–4, read from [`STORED`] on first call and shared.
+pub fn basis() -> &'static Basis {
+    BASIS.get_or_init(|| parse_stored(STORED))
+}
+
+/// Whether [`basis`] has been read in this process: it is only when a curve needs it.
+pub fn basis_is_loaded() -> bool {
+    BASIS.get().is_some()
+}
+
+/// The basis written in `text` (the format of [`STORED`]). Panics on a malformed table: the only
+/// table read is the one compiled in, which the tests read.
+fn parse_stored(text: &str) -> Basis {
+    let mut critical = [0; 2];
+    let mut functions = [vec![1.0; GRID_SIZE], Vec::new(), Vec::new(), Vec::new()];
+    for line in text.lines().filter(|l| !l.starts_with('#')) {
+        let mut words = line.split_ascii_whitespace();
+        match words.next() {
+            Some("critical") => {
+                for (slot, word) in critical.iter_mut().zip(words) {
+                    *slot = word.parse().expect("a node index");
+                }
+            }
+            Some(name @ ("b1" | "b2" | "b3")) => {
+                let k = usize::from(name.as_bytes()[1] - b'0');
+                functions[k] = words.map(|w| w.parse().expect("a number")).collect();
+            }
+            _ => panic!("unexpected line in the stored basis: {line:.40}"),
+        }
+    }
+    assert!(
+        functions.iter().all(|f| f.len() == GRID_SIZE),
+        "1000 values per function"
+    );
+    Basis {
+        cos_theta: grid(),
+        functions,
+        critical,
+    }
+}
+
+/// `basis` in the format of [`STORED`].
+#[cfg(test)]
+fn stored_text(basis: &Basis) -> String {
+    let mut text = String::from(
+        "# The Belcour–Bati–Barla Fresnel basis b1…b3 on c_i = linspace(0, 1, 1000) and its critical \
+         nodes, as src/fresnel/basis/compute.rs computes it; shortest round-trip doubles.\n",
+    );
+    text.push_str(&format!(
+        "critical {} {}\n",
+        basis.critical[0], basis.critical[1]
+    ));
+    for k in 1..4 {
+        let values: Vec<String> = basis.functions[k]
+            .iter()
+            .map(|v| format!("{v:?}"))
+            .collect();
+        text.push_str(&format!("b{k} {}\n", values.join(" ")));
+    }
+    text
+}
+
+impl Basis {
+    /// The grid nodes c_i = numpy `linspace(0, 1, 1000)`.
+    pub fn cos_theta(&self) -> &[f64] {
+        &self.cos_theta
+    }
+
+    /// Basis function b_k (k ∈ 0..=3) at the grid nodes. Panics for k > 3.
+    pub fn function(&self, k: usize) -> &[f64] {
+        &self.functions[k]
+    }
+
+    /// The critical indices [i₁, i₂] of MATH.md step 4: [128, 432].
+    pub fn critical_indices(&self) -> [usize; 2] {
+        self.critical
+    }
+
+    /// The interval [c_i, c_{i+1}] holding `cos_theta` and the weight t = (c − c_i)/(c_{i+1} − c_i).
+    ///
+    /// The weight uses the stored node values, so c = c_i gives t = 0 exactly; both differences are
+    /// exact for i ≥ 1 (Sterbenz). A cos θ that misses its node by δ (cos(arccos c_i) ≠ c_i, |δ| of a
+    /// few ulps) lands in either neighbouring interval, and the continuity of the interpolant bounds
+    /// the error by |δ| · max|b′| ≲ 4.4e-16 · 42 ≈ 2e-14 (the steepest segment is b₃ between c₀, c₁).
+    fn locate(&self, cos_theta: f64) -> (usize, f64) {
+        let last = GRID_SIZE - 1;
+        // A negative or NaN product saturates to 0 in the cast.
+        let i = ((cos_theta * last as f64).floor() as usize).min(last - 1);
+        let c = &self.cos_theta;
+        (i, (cos_theta - c[i]) / (c[i + 1] - c[i]))
+    }
+
+    /// b_k at an arbitrary c = cos θ ∈ [0, 1] by linear interpolation in c between the grid nodes:
+    /// (1 − t) b_k[i] + t b_k[i+1]. Equals the node value exactly at c = c_i. Panics for k > 3.
+    pub fn interpolate(&self, k: usize, cos_theta: f64) -> f64 {
+        let (i, t) = self.locate(cos_theta);
+        let b = &self.functions[k];
+        (1.0 - t) * b[i] + t * b[i + 1]
+    }
+}
+
+/// The four coefficients of a material in the basis: F̂ = c₀ + c₁ b₁ + c₂ b₂ + c₃ b₃.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Coefficients {
+    /// c₀ = F(θ = 0), the normal-incidence reflectance.
+    pub c0: f64,
+    /// c₁ = 1 − c₀ (0 when c₀ = 0).
+    pub c1: f64,
+    /// Weight of b₂, fitted at the critical nodes.
+    pub c2: f64,
+    /// Weight of b₃, fitted at the critical nodes.
+    pub c3: f64,
+}
+
+/// The notebook's `fresnel2coeffs` (MATH.md step 5) for the exact Fresnel of `index` η̃ = η + iκ:
+/// c₀ = F(1), c₁ = 1 − c₀ (0 when c₀ = 0), and (c₂, c₃) from the 2×2 system at the critical nodes,
+/// solved by Cramer's rule. Computes the basis on first use.
+pub fn coeffs(index: Index) -> Coefficients {
+    let basis = basis();
+    let [b1, b2, b3] = [basis.function(1), basis.function(2), basis.function(3)];
+    let [i1, i2] = basis.critical;
+    let c0 = reflectance(Incidence::NORMAL, index);
+    let c1 = if c0 != 0.0 { 1.0 - c0 } else { 0.0 };
+    let df1 = reflectance(Incidence::from_cos(basis.cos_theta[i1]), index) - (c0 + c1 * b1[i1]);
+    let df2 = reflectance(Incidence::from_cos(basis.cos_theta[i2]), index) - (c0 + c1 * b1[i2]);
+    let det = b2[i1] * b3[i2] - b3[i1] * b2[i2];
+    let c2 = (df1 * b3[i2] - df2 * b3[i1]) / det;
+    let c3 = (b2[i1] * df2 - b2[i2] * df1) / det;
+    Coefficients { c0, c1, c2, c3 }
+}
+
+impl Coefficients {
+    /// The reconstruction from the tabulated values b0..b3[i] (the notebook's evaluation order).
+    fn combine(&self, b: [f64; 4]) -> f64 {
+        self.c0 * b[0] + self.c1 * b[1] + self.c2 * b[2] + self.c3 * b[3]
+    }
+
+    /// The reconstruction F̂_i = c₀ + c₁ b₁[i] + c₂ b₂[i] + c₃ b₃[i] at the 1000 grid nodes.
+    pub fn reconstruction(&self) -> Vec<f64> {
+        let f = &basis().functions;
+        (0..GRID_SIZE)
+            .map(|i| self.combine([f[0][i], f[1][i], f[2][i], f[3][i]]))
+            .collect()
+    }
+
+    /// F̂ at an arbitrary c = cos θ ∈ [0, 1], interpolated linearly in c between the grid nodes with
+    /// the weights of [`Basis::interpolate`]; equals F̂_i exactly at c = c_i.
+    pub fn interpolate(&self, cos_theta: f64) -> f64 {
+        let basis = basis();
+        let (i, t) = basis.locate(cos_theta);
+        let f = &basis.functions;
+        let node = |j: usize| self.combine([f[0][j], f[1][j], f[2][j], f[3][j]]);
+        (1.0 - t) * node(i) + t * node(i + 1)
+    }
+
+    /// `l2_grid` = ‖F − F̂‖₂ over the 1000 grid nodes, F the exact Fresnel of `index` η̃ = η + iκ (the
+    /// notebook's L2).
+    pub fn l2_grid(&self, index: Index) -> f64 {
+        let basis = basis();
+        let reconstruction = self.reconstruction();
+        let sum_sq: f64 = basis
+            .cos_theta
+            .iter()
+            .zip(&reconstruction)
+            .map(|(&c, f_hat)| (reflectance(Incidence::from_cos(c), index) - f_hat).powi(2))
+            .sum();
+        sum_sq.sqrt()
+    }
+}
+
+/// The spectrum figure of MATH.md step 6.
+#[derive(Debug, Clone)]
+pub struct Spectrum {
+    /// The dielectric indices η = linspace(1.01, 3, 100), κ = 0.
+    pub etas: Vec<f64>,
+    /// Singular values s_k of their normalized curves on the grid, decreasing.
+    pub singular_values: Vec<f64>,
+    /// s_k / Σ s (normalized by the sum, not the sum of squares).
+    pub normalized: Vec<f64>,
+    /// Running sums of `normalized`: 0.91356, 0.97961, 0.99477, …
+    pub cumulative: Vec<f64>,
+}
+
+static SPECTRUM: OnceLock<Spectrum> = OnceLock::new();
+
+/// The spectrum of MATH.md step 6, computed on first call (one 100 × 1000 SVD) and shared.
+pub fn spectrum() -> &'static Spectrum {
+    SPECTRUM.get_or_init(|| {
+        let etas = linspace(DIELECTRIC_ETA_MIN, DIELECTRIC_ETA_MAX, SPECTRUM_SIZE);
+        let cos_theta = grid();
+        let rows: Vec<Vec<f64>> = etas
+            .iter()
+            .map(|&eta| normalized_curve(&cos_theta, Index::new(eta, 0.0)))
+            .collect();
+        let (singular_values, _) = thin_svd(&stack_rows(&rows), ComputeSvdVectors::No);
+        let total: f64 = singular_values.iter().sum();
+        let normalized: Vec<f64> = singular_values.iter().map(|s| s / total).collect();
+        let cumulative = normalized
+            .iter()
+            .scan(0.0, |sum, s| {
+                *sum += s;
+                Some(*sum)
+            })
+            .collect();
+        Spectrum {
+            etas,
+            singular_values,
+            normalized,
+            cumulative,
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn grid_matches_numpy_linspace() {
+        let c = grid();
+        assert_eq!(c.len(), GRID_SIZE);
+        assert_eq!((c[0], c[1], c[999]), (0.0, 0.001001001001001001, 1.0));
+    }
+
+    #[test]
+    fn normalized_curve_is_accurate_where_one_minus_f0_is_tiny() {
+        // The row k = 10 of the training set (1 − F₀ = 2e-5) at nodes 1, 128, 432, 900;
+        // mpmath at 50 digits from these exact doubles, rounded to the nearest double.
+        let (eta, kappa) = (-9.999950000513731e-6, 0.9999999999472646);
+        let c = grid();
+        let row = normalized_curve(&c, Index::new(eta, kappa));
+        let expected = [
+            (1, 0.9985843570318703),
+            (128, 0.8195432810777029),
+            (432, 0.4177376232363717),
+            (900, 0.017903384756318708),
+        ];
+        for (i, value) in expected {
+            assert!(
+                (row[i] - value).abs() < 1e-15,
+                "node {i}: {} vs {value}",
+                row[i]
+            );
+        }
+    }
+}

@@ -1,0 +1,266 @@
+//! How the stored basis ([`super::STORED`]) is made: MATH.md steps 1–4 run as the notebook runs
+//! them, with faer. Compiled for the tests, which check the stored table against it; with
+//! `NDFPLOT_WRITE_BASIS=1` set, `cargo test --lib stored_basis` writes the table anew instead.
+//!
+//! faer's SVDs run single-threaded from a fixed start vector, so the result does not depend on the
+//! thread count; the SIMD kernels faer picks by CPU may move its last bits, which is why the table,
+//! not this computation, is what a run uses.
+
+use faer::Mat;
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::svd::ComputeSvdVectors;
+use faer::matrix_free::eigen::{PartialEigenParams, partial_svd, partial_svd_scratch};
+use faer::{Col, Par};
+use rayon::prelude::*;
+
+use super::{
+    Basis, DIELECTRIC_ETA_MAX, DIELECTRIC_ETA_MIN, GRID_SIZE, clear_upper_simd_state, grid,
+    stack_rows, thin_svd,
+};
+use crate::model::fresnel::gulbrandsen;
+
+mod numpy_f64;
+
+/// Number of materials in the training set (MATH.md step 2).
+const TRAINING_SIZE: usize = 1000;
+
+/// Share of the training set made of Gulbrandsen conductors (the notebook's `alpha = 0.01`).
+const CONDUCTOR_SHARE: f64 = 0.01;
+
+/// The notebook's offset keeping the conductors' reflectivity away from 0: r′ = r/(1 − δ) + δ, δ = 1e-5.
+const REFLECTIVITY_OFFSET: f64 = 1.0e-5;
+
+/// First index of the `linspace(1.1, 3.0, 1000)` that the notebook starts its training set from;
+/// only row 0 keeps its value.
+const TRAINING_ETA_START: f64 = 1.1;
+
+/// The training materials (η, κ) of MATH.md step 2, built outside user validation (row k = 10 has
+/// η ≈ −9.99995e-6, κ ≈ 1), with the notebook's operation order.
+fn training_set() -> Vec<(f64, f64)> {
+    let mut materials = vec![(TRAINING_ETA_START, 0.0)];
+    for k in 1..TRAINING_SIZE {
+        let r = k as f64 / TRAINING_SIZE as f64;
+        materials.push(if r <= CONDUCTOR_SHARE {
+            let r = r / CONDUCTOR_SHARE / (1.0 - REFLECTIVITY_OFFSET) + REFLECTIVITY_OFFSET;
+            gulbrandsen::to_eta_kappa(r, 1.0)
+        } else {
+            let r = (r - CONDUCTOR_SHARE) / (1.0 - CONDUCTOR_SHARE);
+            (
+                DIELECTRIC_ETA_MIN + (DIELECTRIC_ETA_MAX - DIELECTRIC_ETA_MIN) * r,
+                0.0,
+            )
+        });
+    }
+    materials
+}
+
+/// The training matrix: row k is the normalized curve of training material k, rounded as numpy
+/// rounds it (`numpy_f64`), so that the basis reproduces the published numpy reference. Rows are
+/// computed in parallel; each is the same whichever thread computes it.
+fn training_matrix(cos_theta: &[f64]) -> Mat<f64> {
+    let rows: Vec<Vec<f64>> = training_set()
+        .par_iter()
+        .map(|&(eta, kappa)| numpy_f64::training_row(cos_theta, eta, kappa))
+        .collect();
+    stack_rows(&rows)
+}
+
+/// The first `count` right singular vectors of `matrix`, by decreasing singular value, from faer's
+/// full thin SVD.
+fn right_singular_vectors_full(matrix: &Mat<f64>, count: usize) -> Vec<Vec<f64>> {
+    let (_, v) = thin_svd(matrix, ComputeSvdVectors::Thin);
+    let v = v.expect("the SVD was asked for V");
+    (0..count)
+        .map(|k| v.col(k).iter().copied().collect())
+        .collect()
+}
+
+/// The first `count` right singular vectors of `matrix`, by decreasing singular value.
+///
+/// faer's partial SVD (thick-restart Lanczos bidiagonalization), single-threaded from the fixed
+/// start vector (1, …, 1), so bit-reproducible; ~8× faster than the full thin SVD for the two
+/// 1000 × 1000 training matrices. Converged to a residual ‖A v − s u‖ ≤ ε ‖A‖_F, i.e. each vector
+/// to ~ε ‖A‖_F / (singular value gap) ≈ 1e-15 here (s = 274, 26 for the curves; 39, 9.7, 2.0 for
+/// the residuals): it agrees with the full thin SVD to ~1e-15 (tested below), far inside the 1e-12
+/// that the reference tolerates. Falls back to the full thin SVD if it does not converge.
+fn right_singular_vectors(matrix: &Mat<f64>, count: usize) -> Vec<Vec<f64>> {
+    let (m, n) = matrix.shape();
+    let mut u = Mat::<f64>::zeros(m, count);
+    let mut v = Mat::<f64>::zeros(n, count);
+    let mut s = vec![0.0; count];
+    let start = Col::<f64>::from_fn(n, |_| 1.0);
+    let params = PartialEigenParams::default();
+    let mut buffer = MemBuffer::new(partial_svd_scratch::<f64>(
+        &matrix.as_ref(),
+        count,
+        Par::Seq,
+        params,
+    ));
+    let info = partial_svd(
+        u.as_mut(),
+        v.as_mut(),
+        &mut s,
+        &matrix.as_ref(),
+        start.as_ref(),
+        matrix.norm_l2() * f64::EPSILON,
+        Par::Seq,
+        MemStack::new(&mut buffer),
+        params,
+    );
+    clear_upper_simd_state();
+    let decreasing = s.windows(2).all(|pair| pair[0] >= pair[1]);
+    if info.n_converged_eigen < count || !decreasing {
+        return right_singular_vectors_full(matrix, count);
+    }
+    (0..count)
+        .map(|k| v.col(k).iter().copied().collect())
+        .collect()
+}
+
+/// `vector / max|vector|`, then negated if its largest-magnitude entry is negative, so that entry is +1.
+fn normalize_to_positive_peak(vector: &[f64]) -> Vec<f64> {
+    let peak = vector
+        .iter()
+        .copied()
+        .fold(0.0, |m: f64, v| if v.abs() > m.abs() { v } else { m });
+    let scale = peak.abs();
+    let scaled = vector.iter().map(|v| v / scale);
+    if peak < 0.0 {
+        scaled.map(|v| -v).collect()
+    } else {
+        scaled.collect()
+    }
+}
+
+/// numpy's `argmax`: the first index of the largest value.
+fn argmax(values: impl Iterator<Item = f64>) -> usize {
+    let mut best = (0, f64::NEG_INFINITY);
+    for (i, v) in values.enumerate() {
+        if v > best.1 {
+            best = (i, v);
+        }
+    }
+    best.0
+}
+
+/// The basis of MATH.md steps 1–4, computed: two partial SVDs of 1000 × 1000 matrices.
+pub(super) fn computed() -> Basis {
+    let cos_theta = grid();
+    let curves = training_matrix(&cos_theta);
+    let v = right_singular_vectors(&curves, 1);
+    let b1 = normalize_to_positive_peak(&v[0].iter().map(|x| x.abs()).collect::<Vec<f64>>());
+    let residuals = Mat::from_fn(curves.nrows(), curves.ncols(), |i, j| {
+        curves[(i, j)] - b1[j]
+    });
+    let v = right_singular_vectors(&residuals, 2);
+    let b2 = normalize_to_positive_peak(&v[0]);
+    let b3 = normalize_to_positive_peak(&v[1]);
+    let i1 = argmax(b2.iter().copied());
+    let i_plus = argmax(b3.iter().copied());
+    let i_minus = argmax(b3.iter().map(|v| -v));
+    let i2 = if i_plus.abs_diff(i1) > i_minus.abs_diff(i1) {
+        i_plus
+    } else {
+        i_minus
+    };
+    Basis {
+        cos_theta,
+        functions: [vec![1.0; GRID_SIZE], b1, b2, b3],
+        critical: [i1, i2],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::fresnel::basis::basis;
+
+    #[test]
+    fn training_row_rounds_like_numpy() {
+        // The quirky row k = 10 (1 − F₀ = 2e-5) from numpy 2.4 float64/complex128 on x86-64
+        // (AVX-512), exactly. The accurate values (mpmath, see the test above) differ by up to 3e-11.
+        let (eta, kappa) = training_set()[10];
+        let row = numpy_f64::training_row(&grid(), eta, kappa);
+        let expected = [
+            (1, 0.9985843570347518),
+            (128, 0.8195432810768335),
+            (432, 0.41773762323416164),
+            (900, 0.017903384730395037),
+            (998, 2.0020008408735605e-6),
+        ];
+        for (i, value) in expected {
+            assert_eq!(row[i], value, "node {i}");
+        }
+        // A dielectric and a conductor row.
+        let (eta, kappa) = training_set()[0];
+        assert_eq!(
+            numpy_f64::training_row(&grid(), eta, kappa)[500],
+            0.010780166047259189
+        );
+        let (eta, kappa) = training_set()[5];
+        assert_eq!(
+            numpy_f64::training_row(&grid(), eta, kappa)[300],
+            0.5194079664326562
+        );
+    }
+
+    #[test]
+    fn partial_svd_agrees_with_the_full_thin_svd() {
+        let curves = training_matrix(&grid());
+        let residuals = Mat::from_fn(curves.nrows(), curves.ncols(), |i, j| {
+            curves[(i, j)] - basis().function(1)[j]
+        });
+        for (matrix, count) in [(&curves, 1), (&residuals, 2)] {
+            let partial = right_singular_vectors(matrix, count);
+            let full = right_singular_vectors_full(matrix, count);
+            for (p, f) in partial.iter().zip(&full) {
+                let dot: f64 = p.iter().zip(f).map(|(a, b)| a * b).sum();
+                let sign = dot.signum();
+                let err = p
+                    .iter()
+                    .zip(f)
+                    .map(|(a, b)| (sign * a - b).abs())
+                    .fold(0.0, f64::max);
+                // Measured: 4.4e-16 (curves), 7.3e-16 (residuals).
+                assert!(err < 1e-14, "partial vs full SVD: {err:e}");
+            }
+        }
+    }
+
+    #[test]
+    fn training_set_keeps_the_quirky_row() {
+        let materials = training_set();
+        assert_eq!(materials[0], (1.1, 0.0));
+        let (eta, kappa) = materials[10];
+        assert!(
+            (eta + 9.99995e-6).abs() < 1e-11 && (kappa - 1.0).abs() < 1e-4,
+            "{eta} {kappa}"
+        );
+        let (eta, kappa) = materials[11];
+        assert!(
+            kappa == 0.0 && eta > DIELECTRIC_ETA_MIN && eta < 1.02,
+            "{eta} {kappa}"
+        );
+    }
+
+    #[test]
+    fn stored_basis_is_the_computed_one() {
+        let computed = computed();
+        if std::env::var_os("NDFPLOT_WRITE_BASIS").is_some() {
+            let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/fresnel/basis/stored.txt");
+            std::fs::write(path, super::super::stored_text(&computed)).unwrap();
+        }
+        let stored = basis();
+        assert_eq!(stored.critical_indices(), computed.critical_indices());
+        for k in 0..4 {
+            let worst = stored
+                .function(k)
+                .iter()
+                .zip(computed.function(k))
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max);
+            // The functions peak at 1; measured 0 on the machine that wrote the table.
+            assert!(worst <= 1e-13, "b{k}: {worst:e}");
+        }
+    }
+}

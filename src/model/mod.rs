@@ -1,0 +1,15 @@
+//! The mathematics: NDF families, masking, Fresnel, special functions and quadrature, metrics,
+//! albedo, fits and published presets. Pure f64 code: no I/O, no JSON, no drawing.
+
+pub mod albedo;
+pub mod dataset;
+pub mod domain;
+pub mod fit;
+pub mod fresnel;
+pub mod grid;
+pub mod masking;
+pub mod math;
+pub mod metrics;
+pub mod ndf;
+pub mod published;
+pub mod transform;

@@ -1,0 +1,301 @@
+//! The microfacet normal distribution functions of MATH.md: the [`Distribution`] trait each family
+//! file implements, and the one registry ([`families!`]) from which [`Family`], [`Ndf`], name lookup
+//! and dispatch are generated.
+//!
+//! Every NDF is normalized over projected area: 2π ∫₀^{π/2} D(θ) sin θ cos θ dθ = 1.
+//! Constructors validate their parameters against the domains their family states ([`Param`]) and
+//! compute normalization constants once; `eval` is pure f64 code with no allocation, the one
+//! evaluation path of every output. Adding a family: one file implementing [`Distribution`], one
+//! registry line below, one reference-data file, one README row.
+
+use crate::model::domain::{DomainError, Param};
+use std::fmt;
+
+/// An NDF family, as one file implements it: its names, its parameters with their domains, its
+/// colour, a validating constructor and D(θ).
+pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
+    /// The canonical name in curve JSON (`"ndf": "<name>"`).
+    const NAME: &'static str;
+    /// The family's name in prose and on figures (`Torrance–Sparrow`).
+    const TITLE: &'static str;
+    /// Other accepted names (`ggx` for Trowbridge–Reitz).
+    const ALIASES: &'static [&'static str] = &[];
+    /// The parameters in MATH.md's order, each with its domain and the reason for each bound: the only
+    /// statement of the bounds, which the constructor checks and everything else reads.
+    const PARAMS: &'static [Param];
+    /// Written before the parameter symbols of an automatic legend label when they alone do not name
+    /// the family (ABC and SGD share a₁, a₂; GTR's α and γ are generic): `"ABC"` gives `ABC a₁ = 10`.
+    const LEGEND_PREFIX: Option<&'static str> = None;
+    /// The notebook's Solarized-based colour, as 0xRRGGBB.
+    const COLOUR: u32;
+    /// Whether [`lambda`](Self::lambda) is a closed form; otherwise it is the generic quadrature
+    /// ([`crate::model::masking::lambda_integral`]).
+    const LAMBDA_CLOSED_FORM: bool = false;
+    /// A representative parameter set in [`PARAMS`](Self::PARAMS) order, the one the numpy peer times:
+    /// `ndfplot bench` and `cargo bench --bench eval` measure it.
+    const EXAMPLE: &'static [f64];
+
+    /// The validated NDF of `params` (in [`PARAMS`](Self::PARAMS) order, as many), or the error naming
+    /// the first value outside its domain.
+    fn from_params(params: &[f64]) -> Result<Self, DomainError>;
+
+    /// D(θ) for θ ∈ [0, π/2], normalized over projected area.
+    fn eval(&self, theta: f64) -> f64;
+
+    /// Smith's Λ(θo) for θo ∈ [0, π/2] (MATH.md "Masking–shadowing and albedo"), with G1 = 1/(1 + Λ): Λ(0) = 0,
+    /// non-decreasing in θo, finite and ≥ 0 (or +∞ where θo reaches π/2 if the family's Λ diverges there),
+    /// never NaN. Each family states its route (closed form or [`crate::model::masking::lambda_integral`]).
+    fn lambda(&self, theta_o: f64) -> f64;
+
+    /// The parameter values in [`PARAMS`](Self::PARAMS) order.
+    fn params(&self) -> Vec<f64>;
+}
+
+/// The registry: `Variant => module::Type` per family, in MATH.md's order. Declares the modules and
+/// generates [`Family`] (the family without values), [`Ndf`] (a validated NDF of any family) and
+/// their dispatch, each arm a static call of the family's [`Distribution`] implementation.
+macro_rules! families {
+    ($($variant:ident => $module:ident::$ty:ident,)+) => {
+        $(pub mod $module;)+
+        $(pub use $module::$ty;)+
+
+        /// An NDF family; its data lives in the family's [`Distribution`] implementation.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum Family {
+            $(#[doc = concat!("See [`", stringify!($ty), "`].")] $variant,)+
+        }
+
+        /// A validated NDF of any family.
+        #[derive(Debug, Clone, PartialEq)]
+        pub enum Ndf {
+            $(#[doc = concat!("See [`", stringify!($ty), "`].")] $variant($ty),)+
+        }
+
+        /// The number of families.
+        const FAMILY_COUNT: usize = [$(stringify!($variant)),+].len();
+        /// The number of accepted names, canonical names and aliases.
+        const NAME_COUNT: usize = FAMILY_COUNT $(+ <$ty as Distribution>::ALIASES.len())+;
+
+        impl Family {
+            /// Every family, in MATH.md's order.
+            pub const ALL: [Family; FAMILY_COUNT] = [$(Family::$variant),+];
+
+            /// Accepted names, canonical names first then aliases (for "did you mean" suggestions).
+            pub const NAMES: [&'static str; NAME_COUNT] = {
+                let mut names = [""; NAME_COUNT];
+                let mut i = 0;
+                $(
+                    names[i] = <$ty as Distribution>::NAME;
+                    i += 1;
+                )+
+                $(
+                    let aliases = <$ty as Distribution>::ALIASES;
+                    let mut k = 0;
+                    while k < aliases.len() {
+                        names[i] = aliases[k];
+                        i += 1;
+                        k += 1;
+                    }
+                )+
+                names
+            };
+
+            /// The canonical name used in curve JSON (`"ndf": "<name>"`).
+            pub fn name(self) -> &'static str {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::NAME,)+
+                }
+            }
+
+            /// The family's name in prose and on figures (see [`Distribution::TITLE`]).
+            pub fn title(self) -> &'static str {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::TITLE,)+
+                }
+            }
+
+            /// Other accepted names.
+            pub fn aliases(self) -> &'static [&'static str] {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::ALIASES,)+
+                }
+            }
+
+            /// The parameters in MATH.md's order, with their domains.
+            pub fn params(self) -> &'static [Param] {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::PARAMS,)+
+                }
+            }
+
+            /// See [`Distribution::LEGEND_PREFIX`].
+            pub fn legend_prefix(self) -> Option<&'static str> {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::LEGEND_PREFIX,)+
+                }
+            }
+
+            /// See [`Distribution::LAMBDA_CLOSED_FORM`].
+            pub fn lambda_closed_form(self) -> bool {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::LAMBDA_CLOSED_FORM,)+
+                }
+            }
+
+            /// The notebook's Solarized-based colour for the family, as 0xRRGGBB.
+            pub fn colour(self) -> u32 {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::COLOUR,)+
+                }
+            }
+
+            /// A representative parameter set (see [`Distribution::EXAMPLE`]).
+            pub fn example(self) -> &'static [f64] {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::EXAMPLE,)+
+                }
+            }
+
+            /// Builds a validated NDF of this family from its parameters, given in `params()` order.
+            ///
+            /// `params.len()` must equal `params().len()`.
+            pub fn build(self, params: &[f64]) -> Result<Ndf, DomainError> {
+                Ok(match self {
+                    $(Family::$variant => Ndf::$variant(<$ty as Distribution>::from_params(params)?),)+
+                })
+            }
+        }
+
+        impl Ndf {
+            /// D(θ) for θ ∈ [0, π/2], normalized over projected area.
+            #[inline]
+            pub fn eval(&self, theta: f64) -> f64 {
+                match self {
+                    $(Ndf::$variant(d) => d.eval(theta),)+
+                }
+            }
+
+            /// Smith's Λ(θo) for θo ∈ [0, π/2] (see [`Distribution::lambda`]).
+            #[inline]
+            pub fn lambda(&self, theta_o: f64) -> f64 {
+                match self {
+                    $(Ndf::$variant(d) => d.lambda(theta_o),)+
+                }
+            }
+
+            /// The family of this NDF.
+            pub fn family(&self) -> Family {
+                match self {
+                    $(Ndf::$variant(_) => Family::$variant,)+
+                }
+            }
+
+            /// The parameter values in `family().params()` order.
+            pub fn params(&self) -> Vec<f64> {
+                match self {
+                    $(Ndf::$variant(d) => d.params(),)+
+                }
+            }
+        }
+    };
+}
+
+families! {
+    Phong => phong::Phong,
+    Beckmann => beckmann::Beckmann,
+    TorranceSparrow => torrance_sparrow::TorranceSparrow,
+    TrowbridgeReitz => trowbridge_reitz::TrowbridgeReitz,
+    Abc => abc::Abc,
+    Sgd => sgd::Sgd,
+    Gtr => gtr::Gtr,
+}
+
+impl Family {
+    /// Looks a family up by canonical name or alias (`ggx` → Trowbridge–Reitz).
+    pub fn from_name(name: &str) -> Option<Family> {
+        Family::ALL
+            .into_iter()
+            .find(|f| f.name() == name || f.aliases().contains(&name))
+    }
+
+    /// Parameter names in MATH.md's order.
+    pub fn param_names(self) -> Vec<&'static str> {
+        self.params().iter().map(|p| p.name).collect()
+    }
+
+    /// The parameter domains in one line (for `--help`): `alpha_b in [1e-150, 1e4]`, parameters with
+    /// the same domain sharing it (`alpha_abc1, alpha_abc2 in (0, 1e100]`).
+    pub fn domain(self) -> String {
+        let mut groups: Vec<(Vec<&str>, String)> = Vec::new();
+        for param in self.params() {
+            let interval = param.interval();
+            match groups.last_mut() {
+                Some((names, last)) if *last == interval => names.push(param.name),
+                _ => groups.push((vec![param.name], interval)),
+            }
+        }
+        groups
+            .iter()
+            .map(|(names, interval)| format!("{} {interval}", names.join(", ")))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_list_canonical_names_then_aliases() {
+        assert_eq!(
+            Family::NAMES,
+            [
+                "phong",
+                "beckmann",
+                "torrance_sparrow",
+                "trowbridge_reitz",
+                "abc",
+                "sgd",
+                "gtr",
+                "ggx"
+            ]
+        );
+        assert_eq!(Family::from_name("ggx"), Some(Family::TrowbridgeReitz));
+        for family in Family::ALL {
+            assert_eq!(Family::from_name(family.name()), Some(family));
+            assert_eq!(
+                family.build(family.example()).unwrap().params(),
+                family.example()
+            );
+        }
+    }
+
+    /// README's table of curves states each family's domain as the registry does.
+    #[test]
+    fn readme_rows_state_the_registry_domains() {
+        let readme = include_str!("../../../README.md");
+        for family in Family::ALL {
+            let mut domain = family.domain();
+            for param in family.params() {
+                domain = domain.replace(param.name, &format!("`{}`", param.name));
+            }
+            let prefix = format!("| `ndf: {}`", family.name());
+            let row = readme
+                .lines()
+                .find(|l| l.starts_with(&prefix))
+                .unwrap_or_else(|| panic!("README has no row {prefix}"));
+            let cells: Vec<&str> = row.split(" | ").collect();
+            assert!(
+                cells[1].starts_with(&domain),
+                "README row {row:?} should state {domain:?}"
+            );
+            for alias in family.aliases() {
+                assert!(
+                    cells[0].contains(&format!("`{alias}`")),
+                    "{row:?} lacks alias {alias}"
+                );
+            }
+        }
+    }
+}
