@@ -493,7 +493,7 @@ pub struct AlbedoArgs {
     pub fresnel: Option<String>,
     /// The table: e (E per mu and r), average (E_avg per r) or split-sum (E_0..E_3 per mu and r).
     #[arg(long, value_name = "TABLE", default_value = "e",
-        value_parser = clap::builder::PossibleValuesParser::new(crate::cmd::albedo::Table::NAMES.map(|(name, _)| name)))]
+        value_parser = clap::builder::PossibleValuesParser::new(crate::model::albedo::Table::NAMES.map(|(name, _)| name)))]
     pub table: String,
     /// Output: CSV with # metadata lines, or one JSON object.
     #[arg(long, value_name = "FORMAT", default_value = "csv", value_parser = ["csv", "json"])]

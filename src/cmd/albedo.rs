@@ -11,9 +11,10 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 
 use crate::error::{Error, Result};
 use crate::model::albedo::{
-    self, RoughnessMap, average_albedo_table, average_fresnel, kulla_conty_fresnel,
+    self, RoughnessMap, Table, average_albedo_table, average_fresnel, kulla_conty_fresnel,
     kulla_conty_lobe, split_sum_tables, turquin_factor, unit_grid,
 };
+use crate::model::curve::{Curve, Kind};
 use crate::model::domain::DomainError;
 use crate::model::masking::G2Model;
 use crate::model::math::quad::QuadError;
@@ -22,7 +23,6 @@ use crate::model::ndf::{Family, Ndf};
 use crate::output::report::{Cell, Report};
 use crate::pipeline::progress::Progress;
 use crate::problem::{Problem, Problems};
-use crate::spec::curve::{Curve, Kind};
 
 /// Most points on one axis of a table.
 pub const MAX_AXIS: usize = 1024;
@@ -30,43 +30,6 @@ pub const MAX_AXIS: usize = 1024;
 pub const MAX_CELLS: usize = 1 << 18;
 /// Points per axis when neither `--size` nor a count is given: Cycles' 32.
 pub const DEFAULT_AXIS: usize = 32;
-
-/// Which table `--table` asks for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Table {
-    /// E(μ, r) (or E_F with a Fresnel factor) and Turquin's factor 1/E.
-    E,
-    /// E_avg(r), Kulla–Conty's 1/(π(1 − E_avg)) and, with a Fresnel factor, F_avg and F_ms.
-    Average,
-    /// The split-sum tables E_0 … E_3.
-    SplitSum,
-}
-
-impl Table {
-    /// Every table with its name in `--table`.
-    pub const NAMES: [(&'static str, Table); 3] = [
-        ("e", Table::E),
-        ("average", Table::Average),
-        ("split-sum", Table::SplitSum),
-    ];
-
-    /// The table named `name` in `--table`, if any.
-    pub fn from_name(name: &str) -> Option<Table> {
-        Table::NAMES
-            .iter()
-            .find(|(n, _)| *n == name)
-            .map(|&(_, table)| table)
-    }
-
-    /// The table's name in `--table`.
-    pub fn name(self) -> &'static str {
-        Table::NAMES
-            .iter()
-            .find(|&&(_, table)| table == self)
-            .map(|&(name, _)| name)
-            .expect("every table is named")
-    }
-}
 
 /// A family whose first parameter is the mapped roughness and whose others are fixed.
 #[derive(Debug, Clone, PartialEq)]

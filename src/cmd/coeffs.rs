@@ -2,9 +2,9 @@
 //! array of the same rows.
 
 use crate::error::{Error, Result};
+use crate::model::curve::Curve;
 use crate::model::fresnel::{Fresnel, Ior, basis};
 use crate::output::report::{Cell, Report};
-use crate::spec::curve::Curve;
 
 /// The material (complex index) behind a curve that names one: `belcour` or `exact`.
 fn material(curve: &Curve) -> Option<Ior> {

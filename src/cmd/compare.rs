@@ -7,12 +7,12 @@
 //! Owns the formatting, the bound checks and the batch run only; the metrics are [`crate::model::metrics`]'s.
 
 use crate::error::{Error, Result};
+use crate::model::curve::Curve;
 use crate::model::metrics::sampled::{Operand, compare_operands};
 use crate::model::metrics::{Comparison, LOG_RATIO_FLOOR, Metric, MetricError, ThetaRange};
 use crate::output::report::{Cell, Report};
 use crate::problem::{Problem, Problems, join_key, suggestion};
 use crate::spec::angle::AngleUnit;
-use crate::spec::curve::Curve;
 use rayon::prelude::*;
 
 /// A `--max-error <metric>=<x>` bound.

@@ -7,10 +7,10 @@
 use rayon::prelude::*;
 
 use crate::error::{Error, Result};
+use crate::model::curve::Curve;
 use crate::model::grid::linspace_at;
 use crate::output::csv::Table;
 use crate::spec::angle::AngleUnit;
-use crate::spec::curve::Curve;
 
 /// Largest θ count of a `start:stop:count` list (CONTRACTS.md).
 pub const MAX_THETA_COUNT: u64 = 10_000_000;

@@ -7,11 +7,11 @@
 //! argument or target, and the text of the output; the fitting itself is [`crate::model::fit`]'s.
 
 use crate::error::{Error, Result};
+use crate::model::curve::Curve;
 use crate::model::fit::{By, Fit, FitError, FitSpec, Subject};
 use crate::model::ndf::Family;
 use crate::output::csv::Table;
 use crate::problem::{Problem, Problems, suggestion};
-use crate::spec::curve::Curve;
 
 fn usage(source: &str, at: &str, message: String) -> Error {
     Error::input(Problems {

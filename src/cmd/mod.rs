@@ -13,10 +13,10 @@ pub mod schema;
 
 use crate::cli::{AlbedoArgs, CheckArgs, CoeffsArgs, Command, CompareArgs, EvalArgs, FitArgs};
 use crate::error::{Error, Result};
+use crate::model::curve::Curve;
 use crate::model::dataset::Dataset;
 use crate::model::metrics::sampled::{Operand, Samples};
 use crate::problem::{Problem, Problems, join_key};
-use crate::spec::curve::Curve;
 use crate::spec::input::Side;
 use crate::{output::stdout, pipeline::resolve, spec::input, spec::source};
 use std::io::Write;
@@ -268,7 +268,8 @@ fn run_check(args: CheckArgs) -> Result<()> {
 /// `ndfplot albedo`: every argument checked (and the output folder of `-o` made writable) before
 /// anything is integrated; the table goes to stdout or, with `-o`, to its file.
 fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
-    let table = albedo::Table::from_name(&args.table).expect("clap allows only table names");
+    let table =
+        crate::model::albedo::Table::from_name(&args.table).expect("clap allows only table names");
     let map = crate::model::albedo::RoughnessMap::from_key(&args.map)
         .expect("clap allows only map names");
     let g2 =

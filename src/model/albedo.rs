@@ -711,6 +711,43 @@ impl fmt::Display for RoughnessMap {
     }
 }
 
+/// The tables of a surface's albedo a renderer may store, by their names in `ndfplot albedo --table`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Table {
+    /// E(μ, r) (or E_F with a Fresnel factor) and Turquin's factor 1/E.
+    E,
+    /// E_avg(r), Kulla–Conty's 1/(π(1 − E_avg)) and, with a Fresnel factor, F_avg and F_ms.
+    Average,
+    /// The split-sum tables E_0 … E_3.
+    SplitSum,
+}
+
+impl Table {
+    /// Every table with its name in `--table`.
+    pub const NAMES: [(&'static str, Table); 3] = [
+        ("e", Table::E),
+        ("average", Table::Average),
+        ("split-sum", Table::SplitSum),
+    ];
+
+    /// The table named `name` in `--table`, if any.
+    pub fn from_name(name: &str) -> Option<Table> {
+        Table::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|&(_, table)| table)
+    }
+
+    /// The table's name in `--table`.
+    pub fn name(self) -> &'static str {
+        Table::NAMES
+            .iter()
+            .find(|&&(_, table)| table == self)
+            .map(|&(name, _)| name)
+            .expect("every table is named")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

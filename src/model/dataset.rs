@@ -184,12 +184,6 @@ pub struct DataPoints {
 }
 
 impl Dataset {
-    /// A canonical one-line JSON name, used as the CSV `curve` column: `{"data":<kind>,…}` with
-    /// the dataset's keys in the spec format's order, numbers in shortest round-trip form.
-    pub fn canonical_json(&self) -> String {
-        crate::spec::json::to_string(self)
-    }
-
     /// Whether the dataset's x is θ in radians (so it shares axes with curves).
     pub fn is_theta(&self) -> bool {
         matches!(self, Dataset::Csv { .. })

@@ -2,6 +2,7 @@
 //! albedo, fits and published presets. Pure f64 code: no I/O, no JSON, no drawing.
 
 pub mod albedo;
+pub mod curve;
 pub mod dataset;
 pub mod domain;
 pub mod fit;

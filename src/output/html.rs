@@ -16,8 +16,9 @@ mod maths;
 
 pub use maths::REL_TOL_PAGE;
 
+use crate::model::curve::Curve;
 use crate::model::fresnel::Fresnel;
-use crate::spec::curve::{Curve, Model};
+use crate::spec::curve::Model;
 use crate::spec::look::{Dash, LegendPlace, Scale, XUnit};
 use crate::spec::scene::interactive::Interactive;
 use crate::spec::scene::{Scene, SceneCurve};

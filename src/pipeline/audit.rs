@@ -10,11 +10,11 @@
 //! table and the verdict (exit 1 on a failure) are the command's (`cmd::check`).
 
 use crate::error::{Error, Result};
+use crate::model::curve::Curve;
 use crate::model::masking;
 use crate::model::math::tolerance::QUAD_REL_TOL;
 use crate::model::metrics::{Estimate, MetricError, lobe_width, maximum, projected_integral};
 use crate::model::ndf::Ndf;
-use crate::spec::curve::Curve;
 use crate::spec::scene::Scene;
 use rayon::prelude::*;
 use std::collections::HashSet;

@@ -127,7 +127,7 @@ fn static_title(scene: &Scene) -> String {
     let at = interactive
         .sliders
         .iter()
-        .map(|s| format!("{} = {}", s.label, crate::spec::curve::pretty(s.start)))
+        .map(|s| format!("{} = {}", s.label, crate::spec::numbers::pretty(s.start)))
         .collect::<Vec<_>>()
         .join(", ");
     if scene.title.is_empty() {

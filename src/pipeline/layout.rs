@@ -9,13 +9,6 @@
 
 use crate::spec::look::Scale;
 
-/// Default panel height / width: 1/φ, Mathematica's default `AspectRatio`.
-pub const DEFAULT_ASPECT_RATIO: f64 = 0.618_033_988_749_894_9;
-
-/// Extra default canvas height, in CSS pixels, of a figure with a title: room for the title
-/// (1.4 em of the default 14 px font) and its spacing.
-pub const DEFAULT_TITLE_BAND_PX: f64 = 40.0;
-
 /// Font sizes relative to `Canvas::font_px`: axis labels, panel titles, the figure title.
 pub const AXIS_LABEL_EM: f64 = 1.1;
 /// Panel title size relative to `Canvas::font_px`.
@@ -33,22 +26,6 @@ const NON_PLOT_HEIGHT_EM: f64 = 4.0;
 /// Height of the figure title band in base font sizes: the title ([`FIGURE_TITLE_EM`]) plus
 /// spacing.
 const FIGURE_TITLE_BAND_EM: f64 = 2.0;
-
-/// Default figure width in CSS pixels: 640 for one column, 480 per column otherwise.
-pub fn default_width(cols: usize) -> f64 {
-    if cols <= 1 {
-        640.0
-    } else {
-        480.0 * cols as f64
-    }
-}
-
-/// Default figure height in CSS pixels for `rows × cols` panels of aspect ratio `aspect` on a
-/// figure `width` wide, plus [`DEFAULT_TITLE_BAND_PX`] when `titled`; rounded, not yet clamped.
-pub fn default_height(rows: usize, cols: usize, width: f64, aspect: f64, titled: bool) -> f64 {
-    let title_band = if titled { DEFAULT_TITLE_BAND_PX } else { 0.0 };
-    (rows as f64 * width / cols as f64 * aspect + title_band).round()
-}
 
 /// The estimated plot area (width, height) in output pixels of one panel cell of a
 /// `width_px × height_px` figure with `rows × cols` cells and base font `font_px`, drawn at

@@ -3,7 +3,6 @@
 
 pub mod adaptive;
 pub mod audit;
-pub mod datafile;
 pub mod figure;
 pub mod layout;
 pub mod plan;

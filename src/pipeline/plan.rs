@@ -6,9 +6,9 @@
 //! requested (drawn figures, tables), and nothing that no series shows (the Fresnel basis is built
 //! only by a job that needs it). It decides, never evaluates.
 
+use crate::model::curve::Curve;
 use crate::model::dataset::Dataset;
 use crate::pipeline::adaptive::{Frame, Geometry};
-use crate::spec::curve::Curve;
 use crate::spec::look::PanelKind;
 use crate::spec::scene::{Sampling, Scene, ScenePanel};
 use std::collections::HashMap;

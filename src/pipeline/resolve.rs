@@ -8,11 +8,12 @@
 //! it still describes are reported with them ([`Invalid`]), so one run names them all.
 
 use crate::error::{Error, Result};
+use crate::model::curve::Curve;
 use crate::model::dataset::Dataset;
 use crate::model::fit;
 use crate::model::fresnel::Fresnel;
 use crate::problem::{Problem, Problems, excerpt, join_key};
-use crate::spec::curve::{self, Curve, CurveSpec, Fitted, Label, Model, ParamValue, Part};
+use crate::spec::curve::{self, CurveSpec, Fitted, Label, Model, ParamValue, Part};
 use crate::spec::scene::data::{CsvFile, DataSpec, MAX_DATA_POINTS};
 use crate::spec::scene::{
     Invalid, MAX_POINTS_PER_SCENE, Pending, Sampling, Scene, SceneCurve, SceneData, ScenePanel,
@@ -115,7 +116,7 @@ pub fn curve(spec: &CurveSpec) -> std::result::Result<Curve, Problem> {
             curve: Box::new(curve(inner)?),
         },
         CurveSpec::Quantity { quantity, ndf } => Curve::Quantity {
-            quantity: quantity.resolve(curve)?,
+            quantity: quantity.map_fresnel(curve)?,
             ndf: ndf_of(curve(ndf)?),
         },
     })
@@ -129,7 +130,7 @@ fn ndf_of(curve: Curve) -> crate::model::ndf::Ndf {
     }
 }
 
-/// Reads a CSV data file within its [`DataScope`](crate::pipeline::datafile::DataScope): its two columns as
+/// Reads a CSV data file within its [`DataScope`](crate::spec::datafile::DataScope): its two columns as
 /// finite numbers, θ converted to radians and checked within [0, π/2]. Problems are reported at the
 /// entry's `path` key, quoting the path (as an excerpt) and no more of the file than an excerpt of
 /// its header.
@@ -297,7 +298,7 @@ fn labelled(spec: &CurveSpec, label: &Label) -> std::result::Result<(Curve, Stri
         // A template's {e_avg} is an albedo's average.
         (CurveSpec::Quantity { quantity, ndf }, _) => {
             let (inner, mut text) = labelled(ndf, label)?;
-            let quantity = quantity.resolve(curve)?;
+            let quantity = quantity.map_fresnel(curve)?;
             let ndf = ndf_of(inner);
             match label {
                 Label::Auto(_) => {
@@ -345,7 +346,7 @@ fn text(label: &Label, curve: &Curve, fit: Option<(&Fitted, &FitOutcome)>) -> St
                     (Part::Fitted, Some((fitted, outcome))) => format!(
                         "{} = {} ({} fit to {})",
                         curve::symbol(fitted.name()),
-                        curve::pretty(outcome.value),
+                        crate::spec::numbers::pretty(outcome.value),
                         fitted.by.name(),
                         outcome.target_label
                     ),
@@ -408,7 +409,7 @@ fn fill_template(template: &str, curve: &Curve, values: &[(&str, ParamValue)]) -
 
     for (name, value) in values {
         let text = match value {
-            ParamValue::Number(v) => curve::pretty(*v),
+            ParamValue::Number(v) => crate::spec::numbers::pretty(*v),
             ParamValue::Flag(b) => b.to_string(),
         };
         label = label.replace(&format!("{{{name}}}"), &text);

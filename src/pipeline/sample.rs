@@ -8,11 +8,11 @@
 //! θ, so tables equal `ndfplot eval`.
 
 use crate::error::{Error, Result};
+use crate::model::curve::Curve;
 use crate::model::grid::linspace;
 use crate::model::ndf::Ndf;
 use crate::pipeline::adaptive::{self, Frame, PixelMap, Refined};
 use crate::pipeline::plan::{Job, Plan};
-use crate::spec::curve::Curve;
 use rayon::prelude::*;
 use std::sync::Arc;
 

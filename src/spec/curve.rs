@@ -9,94 +9,21 @@
 //! sweeps: scenes resolve the keys here, expand each parameter's values themselves, then call
 //! [`Resolved::build`] per combination.
 
+use crate::model::curve::quantity::Quantity;
+use crate::model::curve::{Curve, DiffOp, Kind};
 use crate::model::domain::DomainError;
+use crate::model::fit::By;
 use crate::model::fresnel::{self, Fresnel, FresnelModel, Ior, SchlickF0};
-use crate::model::ndf::{Family, Ndf};
+use crate::model::ndf::Family;
 use crate::model::published::{Channel, Preset, PresetError, Source};
 use crate::model::transform::Transform;
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::spec::json::{Node, Value};
 use crate::spec::keys::{self, Accepted};
-use crate::spec::quantity::{self, Quantity};
+use crate::spec::quantity;
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
-/// A validated curve: an NDF D(θ) or a Fresnel reflectance F(θ).
-#[derive(Debug, Clone, PartialEq)]
-pub enum Curve {
-    /// A normal distribution function.
-    Ndf(Ndf),
-    /// A Fresnel reflectance curve (θ is the angle of incidence).
-    Fresnel(Fresnel),
-    /// A difference series of two curves of the same kind: a − b or a / b at every θ.
-    Difference {
-        /// How the two values are combined.
-        op: DiffOp,
-        /// The first operand.
-        a: Box<Curve>,
-        /// The second operand.
-        b: Box<Curve>,
-    },
-    /// An NDF seen through a view transform (`projected`: D cos θ; `slope`: D cos⁴θ).
-    Transformed {
-        /// The transform.
-        transform: Transform,
-        /// The transformed NDF.
-        curve: Box<Curve>,
-    },
-    /// A quantity of an NDF's microfacet model other than D (Λ, G1, G2, albedo, furnace), a
-    /// function of the view angle θo.
-    Quantity {
-        /// The quantity.
-        quantity: Quantity<Curve>,
-        /// The NDF.
-        ndf: Ndf,
-    },
-}
-
-/// What a curve's values are, for the rules that pair curves (differences, `compare`) and for
-/// axis labels: an NDF quantity (`"d"` for D itself) or a Fresnel reflectance.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
-    /// A quantity of an NDF, by its name in curve JSON ([`quantity::NAMES`]).
-    Ndf(&'static str),
-    /// A Fresnel reflectance.
-    Fresnel,
-}
-
-impl Kind {
-    /// The kind in messages: `ndf`, `ndf quantity "g1"`, `fresnel`.
-    pub fn describe(self) -> String {
-        match self {
-            Kind::Ndf("d") => "ndf".to_string(),
-            Kind::Ndf(quantity) => format!("ndf quantity \"{quantity}\""),
-            Kind::Fresnel => "fresnel".to_string(),
-        }
-    }
-}
-
 impl Curve {
-    /// The curve's value at θ ∈ [0, π/2] (radians).
-    #[inline]
-    pub fn eval(&self, theta: f64) -> f64 {
-        match self {
-            Curve::Ndf(d) => d.eval(theta),
-            Curve::Fresnel(f) => f.eval(theta),
-            Curve::Difference { op, a, b } => op.apply(a.eval(theta), b.eval(theta)),
-            Curve::Transformed { transform, curve } => transform.apply(theta, curve.eval(theta)),
-            Curve::Quantity { quantity, ndf } => quantity.eval(ndf, theta),
-        }
-    }
-
-    /// What the curve's values are; a difference's are its first operand's (both share them).
-    pub fn kind(&self) -> Kind {
-        match self {
-            Curve::Ndf(_) | Curve::Transformed { .. } => Kind::Ndf("d"),
-            Curve::Quantity { quantity, .. } => Kind::Ndf(quantity.name()),
-            Curve::Fresnel(_) => Kind::Fresnel,
-            Curve::Difference { a, .. } => a.kind(),
-        }
-    }
-
     /// The model this curve belongs to; for a difference, the model of its first operand (both
     /// operands share their kind, so `model().key()` is the difference's kind, `ndf` or `fresnel`).
     pub fn model(&self) -> Model {
@@ -474,46 +401,6 @@ impl Serialize for ParamValue {
     }
 }
 
-/// How a fit matches its target (`"by"` of a fitted parameter, `fit --by`); [`crate::model::fit`] carries it out.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum By {
-    /// D_fit(0) = D_target(0).
-    Peak,
-    /// max_θ D_fit = max_θ D_target.
-    Max,
-    /// Minimal `l2_projected`.
-    L2,
-}
-
-impl By {
-    /// Every method, in the order shown in messages.
-    pub const ALL: [By; 3] = [By::Peak, By::Max, By::L2];
-
-    /// The method's name (`--by`, scene `"by"`).
-    pub fn name(self) -> &'static str {
-        match self {
-            By::Peak => "peak",
-            By::Max => "max",
-            By::L2 => "l2",
-        }
-    }
-
-    /// Looks a method up by name.
-    pub fn from_name(name: &str) -> Option<By> {
-        By::ALL.into_iter().find(|b| b.name() == name)
-    }
-
-    /// The name of the residual the fit reports (`residual=<x> (<metric>)`): the relative mismatch of
-    /// D(0) (`d0_rel`), of the maxima (`dmax_rel`), or `l2_projected`.
-    pub fn residual_name(self) -> &'static str {
-        match self {
-            By::Peak => "d0_rel",
-            By::Max => "dmax_rel",
-            By::L2 => "l2_projected",
-        }
-    }
-}
-
 /// A curve model: an NDF family or a Fresnel model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Model {
@@ -823,7 +710,7 @@ pub fn resolve<'a>(
         .map(|p| given.iter().find(|(k, _)| k == p.name).map(|(_, n)| n))
         .collect();
     let quantity = match model {
-        Model::Ndf(_) => quantity::parse(members, path).unwrap_or_else(|found| {
+        Model::Ndf(_) => quantity::parse(members, path, albedo_fresnel).unwrap_or_else(|found| {
             problems.extend(found);
             None
         }),
@@ -1260,39 +1147,6 @@ pub const DIFFERENCE_KEY: &str = "difference";
 /// Keys of a difference object besides the caller's extra keys.
 pub const DIFFERENCE_KEYS: &[&str] = &[DIFFERENCE_KEY, "a", "b"];
 
-/// How a difference series combines its operands.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum DiffOp {
-    /// a − b.
-    Minus,
-    /// a / b, with 0/0 = 1 (both curves vanish: they agree) and x/0 = +∞ for x ≠ 0, which every
-    /// consumer reports as an error at that θ instead of printing it.
-    Ratio,
-}
-
-impl DiffOp {
-    /// Every operation, in the order shown in messages.
-    pub const ALL: [DiffOp; 2] = [DiffOp::Minus, DiffOp::Ratio];
-
-    /// The name in curve JSON (`"difference": "minus"`).
-    pub fn name(self) -> &'static str {
-        match self {
-            DiffOp::Minus => "minus",
-            DiffOp::Ratio => "ratio",
-        }
-    }
-
-    /// a − b, or a / b with 0/0 = 1.
-    #[inline]
-    pub fn apply(self, a: f64, b: f64) -> f64 {
-        match self {
-            DiffOp::Minus => a - b,
-            DiffOp::Ratio if a == 0.0 && b == 0.0 => 1.0,
-            DiffOp::Ratio => a / b,
-        }
-    }
-}
-
 /// The members of the curve object `node` at `path` that accepts `keys` and `extra_keys` (which the
 /// caller handles), with the problems of its keys ([`keys::check`]; `object` names it in them); a
 /// value that is not an object is the one problem.
@@ -1418,25 +1272,19 @@ pub fn symbol(param: &str) -> &str {
         .map_or(param, |p| p.symbol)
 }
 
-/// A number for people: at most 6 significant digits, trailing zeros dropped (`10.499999999999998` → `10.5`).
-pub fn pretty(value: f64) -> String {
-    if value == 0.0 {
-        return "0".into();
+/// The nested Fresnel curve of an albedo: a plain Fresnel curve object.
+fn albedo_fresnel(node: &Node, path: &str) -> Result<CurveSpec, Vec<Problem>> {
+    let spec = parse(node, path)?;
+    if spec.kind() != Kind::Fresnel {
+        return Err(vec![Problem::new(
+            path,
+            format!(
+                "an albedo's Fresnel factor is a Fresnel curve (got {}, expected {{\"fresnel\": <model>, …}})",
+                spec.canonical_json()
+            ),
+        )]);
     }
-    let magnitude = value.abs().log10().floor();
-    if !(-4.0..6.0).contains(&magnitude) {
-        let text = format!("{value:.5e}");
-        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
-        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
-        return format!("{mantissa}e{exponent}");
-    }
-    let decimals = (5.0 - magnitude).max(0.0) as usize;
-    let text = format!("{value:.decimals$}");
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        text
-    }
+    Ok(spec)
 }
 
 #[cfg(test)]
@@ -1496,15 +1344,5 @@ mod tests {
             curve.canonical_json(),
             r#"{"ndf":"abc","alpha_abc1":1e-7,"alpha_abc2":2.0}"#
         );
-    }
-
-    #[test]
-    fn pretty_numbers() {
-        assert_eq!(pretty(10.499999999999998), "10.5");
-        assert_eq!(pretty(0.2027), "0.2027");
-        assert_eq!(pretty(2048.0), "2048");
-        assert_eq!(pretty(70312.0), "70312");
-        assert_eq!(pretty(1e-7), "1e-7");
-        assert_eq!(pretty(0.0068), "0.0068");
     }
 }

@@ -4,9 +4,9 @@
 //! Every problem of every argument is collected before failing, so one run reports them all.
 
 use crate::error::{Error, Result};
-use crate::pipeline::datafile::DataScope;
 use crate::problem::{Problem, Problems};
 use crate::spec::curve::{self, CurveSpec};
+use crate::spec::datafile::DataScope;
 use crate::spec::json;
 use crate::spec::scene::data::CsvFile;
 use std::io::Read;

@@ -5,10 +5,12 @@
 pub mod angle;
 pub mod catalogue;
 pub mod curve;
+pub mod datafile;
 pub mod input;
 pub mod json;
 pub mod keys;
 pub mod look;
+pub mod numbers;
 pub mod quantity;
 pub mod scene;
 pub mod schema;

@@ -10,11 +10,10 @@
 //! This module owns those keys: which quantity takes which, their defaults, their canonical JSON
 //! and their labels. Evaluation defers to [`crate::model::masking`] and [`crate::model::albedo`].
 
-use crate::model::albedo;
-use crate::model::masking::{self, G1Model, G2Model};
-use crate::model::ndf::{Family, Ndf};
+use crate::model::curve::quantity::{NAMES, Quantity, ThetaI};
+use crate::model::masking::{G1Model, G2Model};
+use crate::model::ndf::Family;
 use crate::problem::{Problem, join_key, suggestion};
-use crate::spec::curve::{self, Curve, CurveSpec};
 use crate::spec::json::{Node, Value};
 use serde::ser::{SerializeMap, Serializer};
 use std::f64::consts::FRAC_PI_2;
@@ -45,73 +44,10 @@ pub const OPTION_TAKERS: [(&str, &[&str]); 4] = [
 /// The largest light angle `theta_i` takes, radians (grazing); the smallest is 0.
 pub const THETA_I_MAX: f64 = FRAC_PI_2;
 
-/// The quantity names in curve JSON, the default first.
-pub const NAMES: [&str; 6] = ["d", "lambda", "g1", "g2", "albedo", "furnace"];
-
-/// The light's angle of a G2 curve.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum ThetaI {
-    /// θi = θo: the light in the view direction (a backscattering configuration).
-    Same,
-    /// A fixed θi in [0, π/2], radians.
-    Fixed(f64),
-}
-
-/// A quantity of an NDF other than D itself, whose nested Fresnel curve (an albedo's) is `F`: a
-/// [`CurveSpec`] as a spec describes it, a [`Curve`] once resolved.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Quantity<F> {
-    /// Smith Λ(θo).
-    Lambda,
-    /// Smith masking G1(θo) = 1/(1 + Λ(θo)).
-    G1,
-    /// Masking–shadowing G2(θo, θi) of the model.
-    G2 {
-        /// How masking and shadowing combine.
-        model: G2Model,
-        /// The light's angle.
-        theta_i: ThetaI,
-    },
-    /// The directional albedo E(μo) of the single-scattering microfacet BRDF
-    /// f = F D G2 / (4 cos θo cos θi), at μo = cos θo.
-    Albedo {
-        /// The G2 of the BRDF.
-        model: G2Model,
-        /// F(θd) at the angle θd between the view and the half vector; F = 1 without it.
-        fresnel: Option<Box<F>>,
-    },
-    /// The weak white furnace W(θo) = G1_used(θo) (1 + Λ(θo)): 1 for exact Smith masking.
-    Furnace {
-        /// The G1 audited.
-        g1: G1Model,
-    },
-}
+/// The placeholder of a label template that an albedo curve fills with its average E_avg.
+pub const E_AVG_PLACEHOLDER: &str = "{e_avg}";
 
 impl<F> Quantity<F> {
-    /// The quantity's name in curve JSON.
-    pub fn name(&self) -> &'static str {
-        match self {
-            Quantity::Lambda => "lambda",
-            Quantity::G1 => "g1",
-            Quantity::G2 { .. } => "g2",
-            Quantity::Albedo { .. } => "albedo",
-            Quantity::Furnace { .. } => "furnace",
-        }
-    }
-
-    /// The axis label of the quantity, math text.
-    pub fn axis_label(&self) -> &'static str {
-        match self {
-            Quantity::Lambda => "Λ(θ_o)",
-            Quantity::G1 => "G_1(θ_o)",
-            Quantity::G2 { .. } => "G_2(θ_o, θ_i)",
-            Quantity::Albedo { .. } => "E(cos θ_o)",
-            Quantity::Furnace { .. } => "W(θ_o) = G_1(θ_o) (1 + Λ(θ_o))",
-        }
-    }
-}
-
-impl Quantity<CurveSpec> {
     /// Checks what only the family tells: a Beckmann-based G1 needs a family with a Beckmann
     /// equivalent ([`masking::beckmann_equivalent_alpha`], asked of the family's example lobe).
     pub fn check_family(&self, family: Family, path: &str) -> Result<(), Problem> {
@@ -128,81 +64,6 @@ impl Quantity<CurveSpec> {
                 format!("{e} (got ndf \"{}\")", family.name()),
             )),
         }
-    }
-
-    /// The resolved quantity, its Fresnel curve resolved by `resolve`.
-    pub fn resolve<E>(
-        &self,
-        resolve: impl Fn(&CurveSpec) -> Result<Curve, E>,
-    ) -> Result<Quantity<Curve>, E> {
-        Ok(match self {
-            Quantity::Lambda => Quantity::Lambda,
-            Quantity::G1 => Quantity::G1,
-            Quantity::G2 { model, theta_i } => Quantity::G2 {
-                model: *model,
-                theta_i: *theta_i,
-            },
-            Quantity::Albedo { model, fresnel } => Quantity::Albedo {
-                model: *model,
-                fresnel: match fresnel {
-                    Some(spec) => Some(Box::new(resolve(spec)?)),
-                    None => None,
-                },
-            },
-            Quantity::Furnace { g1 } => Quantity::Furnace { g1: *g1 },
-        })
-    }
-}
-
-impl Quantity<Curve> {
-    /// The quantity of `ndf` at the view angle θo ∈ [0, π/2].
-    pub fn eval(&self, ndf: &Ndf, theta_o: f64) -> f64 {
-        match self {
-            Quantity::Lambda => ndf.lambda(theta_o),
-            Quantity::G1 => masking::g1(ndf.lambda(theta_o)),
-            Quantity::G2 { model, theta_i } => {
-                let theta_i = match theta_i {
-                    ThetaI::Same => theta_o,
-                    ThetaI::Fixed(theta_i) => *theta_i,
-                };
-                model.g2(ndf.lambda(theta_o), ndf.lambda(theta_i))
-            }
-            // A quadrature that fails, or a G1 the family lacks (refused when the spec is read),
-            // gives NaN, which evaluation reports as a non-finite value of the curve.
-            Quantity::Albedo { model, fresnel } => {
-                let surface = albedo::surface_of(ndf.clone(), *model);
-                let mu_o = theta_o.cos().clamp(0.0, 1.0);
-                let result = match fresnel {
-                    Some(f) => surface.albedo(mu_o, Some(&|t| f.eval(t))),
-                    None => surface.albedo(mu_o, None),
-                };
-                result.unwrap_or(f64::NAN)
-            }
-            Quantity::Furnace { g1 } => g1.weak_furnace(ndf, theta_o).unwrap_or(f64::NAN),
-        }
-    }
-}
-
-/// The placeholder of a label template that an albedo curve fills with its average E_avg.
-pub const E_AVG_PLACEHOLDER: &str = "{e_avg}";
-
-/// Absolute accuracy of the E_avg a label shows (to four decimals): far looser than the curve's own
-/// values, as the label rounds it, and ~100× faster to integrate.
-const LABEL_E_AVG_TOL: f64 = 1e-7;
-
-impl Quantity<Curve> {
-    /// For an albedo, E_avg = 2 ∫₀¹ E(μ) μ dμ of `ndf` with this albedo's G2 and Fresnel, to
-    /// [`LABEL_E_AVG_TOL`]; `None` for other quantities or when the quadrature fails.
-    pub fn label_average(&self, ndf: &Ndf) -> Option<f64> {
-        let Quantity::Albedo { model, fresnel } = self else {
-            return None;
-        };
-        let surface = albedo::surface_of(ndf.clone(), *model).with_tolerance(LABEL_E_AVG_TOL);
-        let result = match fresnel {
-            Some(f) => albedo::average_albedo(&surface, Some(&|t| f.eval(t))),
-            None => albedo::average_albedo(&surface, None),
-        };
-        result.ok()
     }
 }
 
@@ -243,7 +104,7 @@ pub fn label_parts<F>(quantity: &Quantity<F>) -> Vec<String> {
                 parts.push(model.name().to_string());
             }
             if let ThetaI::Fixed(theta) = theta_i {
-                parts.push(format!("θ_i = {}", curve::pretty(*theta)));
+                parts.push(format!("θ_i = {}", crate::spec::numbers::pretty(*theta)));
             }
         }
         Quantity::Albedo { model, .. } if *model != G2Model::HeightCorrelated => {
@@ -267,10 +128,11 @@ fn g1_title(g1: G1Model) -> &'static str {
 /// Reads the quantity keys of the NDF curve object `members` at `path`; `None` for D (no
 /// `"quantity"`, or `"d"`). Every problem is reported: an unknown name, a key the quantity does
 /// not take, a value of the wrong kind.
-pub fn parse(
+pub fn parse<F>(
     members: &[(String, Node)],
     path: &str,
-) -> Result<Option<Quantity<CurveSpec>>, Vec<Problem>> {
+    fresnel: impl Fn(&Node, &str) -> Result<F, Vec<Problem>>,
+) -> Result<Option<Quantity<F>>, Vec<Problem>> {
     let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, n)| n);
     let mut problems = Vec::new();
     let name = match get(QUANTITY_KEY) {
@@ -404,21 +266,6 @@ fn theta_i(node: &Node, path: &str) -> Result<ThetaI, Vec<Problem>> {
             ),
         )]),
     }
-}
-
-/// The nested Fresnel curve of an albedo: a plain Fresnel curve object.
-fn fresnel(node: &Node, path: &str) -> Result<CurveSpec, Vec<Problem>> {
-    let spec = curve::parse(node, path)?;
-    if spec.kind() != curve::Kind::Fresnel {
-        return Err(vec![Problem::new(
-            path,
-            format!(
-                "an albedo's Fresnel factor is a Fresnel curve (got {}, expected {{\"fresnel\": <model>, …}})",
-                spec.canonical_json()
-            ),
-        )]);
-    }
-    Ok(spec)
 }
 
 /// Serializes `quantity` of an NDF curve whose model key and parameters `write_model` writes.

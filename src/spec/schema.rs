@@ -14,17 +14,18 @@
 //! file system are the validator's alone. The root validates a scene file; a curve file of `eval`,
 //! `compare` and `fit` validates against `#/$defs/curve`.
 
+use crate::model::curve::DiffOp;
 use crate::model::dataset::{AlbedoValue, Coefficient, SpectrumQuantity};
 use crate::model::domain::Param;
+use crate::model::fit::By;
 use crate::model::fresnel::{self, FresnelModel};
 use crate::model::masking::{G1Model, G2Model};
 use crate::model::ndf::Family;
 use crate::model::published::{Channel, Source};
 use crate::model::transform::Transform;
-use crate::spec::curve::By;
 use crate::spec::curve::{
-    DIFFERENCE_KEY, DIFFERENCE_KEYS, DiffOp, Model, PUBLISHED_KEY, PUBLISHED_KEYS, ParamKind,
-    ParamSpec, TRANSFORM_KEY, TRANSFORM_KEYS,
+    DIFFERENCE_KEY, DIFFERENCE_KEYS, Model, PUBLISHED_KEY, PUBLISHED_KEYS, ParamKind, ParamSpec,
+    TRANSFORM_KEY, TRANSFORM_KEYS,
 };
 use crate::spec::quantity;
 use crate::spec::scene::interactive::{
@@ -491,7 +492,7 @@ fn signature(
 fn quantity_key(key: &str) -> Value {
     match key {
         quantity::QUANTITY_KEY => described(
-            strings(&quantity::NAMES),
+            strings(&crate::model::curve::quantity::NAMES),
             "what the curve shows: d (default) D(θ); lambda Smith Λ(θo); g1 G1(θo); g2 G2(θo, θi); albedo E(cos θo); furnace the weak white furnace of a G1",
         ),
         quantity::G2_KEY => described(

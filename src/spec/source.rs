@@ -6,9 +6,9 @@
 //! [`crate::pipeline::resolve::scenes`] takes what it returns.
 
 use crate::error::{Error, Result};
-use crate::pipeline::datafile::DataScope;
 use crate::problem::Problem;
 use crate::spec::catalogue::CATALOGUE;
+use crate::spec::datafile::DataScope;
 use crate::spec::input::{parse_json, read_file};
 use crate::spec::look::Theme;
 use crate::spec::scene::{self, Invalid, Scene, Spec};

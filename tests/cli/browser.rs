@@ -9,10 +9,10 @@
 //! /usr/bin/chromium the browser part prints why it was skipped.
 
 use crate::common::{files_in, ndfplot, render_into, root, scratch};
+use ndfplot::model::curve::Curve;
 use ndfplot::model::fresnel::Fresnel;
 use ndfplot::model::math::tolerance::floored_relative_difference;
 use ndfplot::output::html::REL_TOL_PAGE;
-use ndfplot::spec::curve::Curve;
 use ndfplot::spec::curve::{CurveSpec, parse};
 use serde_json::Value;
 use std::path::{Path, PathBuf};

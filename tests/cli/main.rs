@@ -22,4 +22,5 @@ mod readme;
 mod robustness;
 mod sampling;
 mod schema;
+mod structure;
 mod views;

@@ -3,10 +3,10 @@
 //! CSV series compares against the curve it was sampled from.
 
 use crate::common::{ndfplot, render_into, scratch, text};
+use ndfplot::model::curve::Curve;
 use ndfplot::model::math::quad::{QuadError, integrate};
 use ndfplot::model::math::tolerance::QUAD_REL_TOL;
 use ndfplot::model::metrics::lobe_width;
-use ndfplot::spec::curve::Curve;
 use ndfplot::spec::input::parse_json;
 use ndfplot::spec::scene;
 use std::f64::consts::{FRAC_PI_2, PI};

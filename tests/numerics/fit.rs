@@ -4,10 +4,11 @@
 //! fit input; difference series.
 
 use crate::common::{csv_records, number};
+use ndfplot::model::curve::{Curve, DiffOp};
 use ndfplot::model::fit::{By, FitError, Subject, fit};
 use ndfplot::model::metrics::{self, lobe_width, maximum};
 use ndfplot::model::ndf::Family;
-use ndfplot::spec::curve::{self, Curve, DiffOp};
+use ndfplot::spec::curve::{self};
 
 /// Relative agreement required with the mpmath peak fits: the brief's bound; the solver reaches ~1e-15.
 const PEAK_FIT_REL_TOL: f64 = 1e-7;

@@ -160,7 +160,7 @@ pub fn drawing_cases() -> Vec<Ndf> {
 }
 
 fn canonical(ndf: &Ndf) -> String {
-    crate::spec::curve::Curve::Ndf(ndf.clone()).canonical_json()
+    crate::model::curve::Curve::Ndf(ndf.clone()).canonical_json()
 }
 
 /// The pixel map of a one-panel figure showing `ndf` alone, with its true extent (peak included).
@@ -507,7 +507,7 @@ pub fn lambda_cases() -> Vec<LambdaCase> {
             let record = record.expect("lambda.csv is well-formed CSV");
             let node = crate::spec::json::parse(&record[1]).expect("curve_json is JSON");
             let ndf = match crate::spec::curve::parse(&node, "") {
-                Ok(crate::spec::curve::CurveSpec::Ready(crate::spec::curve::Curve::Ndf(ndf))) => {
+                Ok(crate::spec::curve::CurveSpec::Ready(crate::model::curve::Curve::Ndf(ndf))) => {
                     ndf
                 }
                 other => panic!("lambda.csv: {} is not an NDF: {other:?}", &record[1]),

@@ -106,7 +106,7 @@ fn short(case: &str) -> String {
         .step_by(2)
         .map(|w| {
             w.parse()
-                .map_or_else(|_| literal(w), crate::spec::curve::pretty)
+                .map_or_else(|_| literal(w), crate::spec::numbers::pretty)
         })
         .collect();
     match family_of(case) {

@@ -5,20 +5,20 @@
 //! (each family computes its own; see [`Ndf::lambda`]). Masking and shadowing together, for a view at
 //! θo and a light at θi, follow one of two [`G2Model`]s. Everything here is pure f64 code.
 //!
-//! - [`integral`]: Λ of any NDF by MATH.md's 1D integral ([`lambda_integral`], [`lambda_by_integral`]).
+//! - [`lambda_by_integral`]: Λ of any NDF by MATH.md's 1D integral ([`lambda_integral`], which lives with the
+//!   families that take it as their route).
 //! - [`engine`]: the G1 renderers use ([`G1Model`]: exact Smith, Walter's rational, the Beckmann-equivalent
 //!   Smith) and the weak white furnace value of each.
 //! - [`projected_area`]: the front-facing projected area, computed apart from Λ, to audit Λ against.
 
 pub mod engine;
-pub mod integral;
 pub mod projected_area;
 
 pub use engine::{G1Model, NoBeckmannEquivalent, beckmann_equivalent_alpha, walter_rational_g1};
-pub use integral::lambda_integral;
 pub use projected_area::{front_projected_area, smith_furnace};
 
 use crate::model::ndf::Ndf;
+use crate::model::ndf::lambda_integral::lambda_integral;
 use std::fmt;
 
 /// Λ(θo) of `ndf` by the generic 1D integral ([`lambda_integral`]), whatever route its family takes in

@@ -6,10 +6,10 @@
 //!
 //! Pure f64 code over [`Curve`]s and closures: no I/O, no formatting of reports.
 
+use crate::model::curve::Curve;
 use crate::model::grid::linspace;
 use crate::model::math::quad::{QuadError, integrate};
 use crate::model::math::tolerance::QUAD_REL_TOL;
-use crate::spec::curve::Curve;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::fmt;
 

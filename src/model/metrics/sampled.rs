@@ -9,7 +9,7 @@ use super::{
     Comparison, Extremum, MetricError, ThetaRange, l2_grid_nodes, log_ratio, peak_over,
     relative_difference,
 };
-use crate::spec::curve::Curve;
+use crate::model::curve::Curve;
 use std::f64::consts::PI;
 
 /// Values at θ, sorted by θ: one side of a comparison that was measured rather than computed.

@@ -14,7 +14,7 @@
 //!   θ → π/2: D → (1 + a₁)^{−a₂}/N, small but positive.
 //! - Stable form: D = exp(−a₂ log1p(2 a₁ sin²(θ/2)) − ln N), so that U^{−a₂} (e.g. (1e6)^{−1e4}) never
 //!   under- or overflows by itself.
-//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::masking::lambda_integral`], within
+//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
 //!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
 //!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
@@ -118,9 +118,9 @@ impl Distribution for Abc {
         (self.ln_peak - self.alpha_abc2 * (self.alpha_abc1 * one_minus_cos_theta).ln_1p()).exp()
     }
 
-    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::masking::lambda_integral`]): no closed form is known.
+    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
     fn lambda(&self, theta_o: f64) -> f64 {
-        crate::model::masking::lambda_integral(|theta| self.eval(theta), theta_o)
+        crate::model::ndf::lambda_integral::lambda_integral(|theta| self.eval(theta), theta_o)
     }
 
     fn params(&self) -> Vec<f64> {

@@ -22,7 +22,7 @@
 //!   q/q_peak ≤ 1 + k ≤ 1e300). Its relative error is ~γ times that of q/q_peak (a few ulps), plus for γ > 1
 //!   the rounding of 1/γ times ln D_peak (≤ 690 · 2⁻⁵³ ≈ 8e-14), where exp(ln D_peak − γ ln(q/q_peak)) would
 //!   add |ln D| ulps (up to ~1450).
-//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::masking::lambda_integral`], within
+//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
 //!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
 //!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
@@ -136,9 +136,9 @@ impl Distribution for Gtr {
         }
     }
 
-    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::masking::lambda_integral`]): no closed form is known.
+    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
     fn lambda(&self, theta_o: f64) -> f64 {
-        crate::model::masking::lambda_integral(|theta| self.eval(theta), theta_o)
+        crate::model::ndf::lambda_integral::lambda_integral(|theta| self.eval(theta), theta_o)
     }
 
     fn params(&self) -> Vec<f64> {

@@ -8,6 +8,8 @@
 //! evaluation path of every output. Adding a family: one file implementing [`Distribution`], one
 //! registry line below, one reference-data file, one README row.
 
+pub mod lambda_integral;
+
 use crate::model::domain::{DomainError, Param};
 use std::fmt;
 
@@ -29,7 +31,7 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
     /// The notebook's Solarized-based colour, as 0xRRGGBB.
     const COLOUR: u32;
     /// Whether [`lambda`](Self::lambda) is a closed form; otherwise it is the generic quadrature
-    /// ([`crate::model::masking::lambda_integral`]).
+    /// ([`crate::model::ndf::lambda_integral::lambda_integral`]).
     const LAMBDA_CLOSED_FORM: bool = false;
     /// A representative parameter set in [`PARAMS`](Self::PARAMS) order, the one the numpy peer times:
     /// `ndfplot bench` and `cargo bench --bench eval` measure it.
@@ -44,7 +46,7 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
 
     /// Smith's Λ(θo) for θo ∈ [0, π/2] (MATH.md "Masking–shadowing and albedo"), with G1 = 1/(1 + Λ): Λ(0) = 0,
     /// non-decreasing in θo, finite and ≥ 0 (or +∞ where θo reaches π/2 if the family's Λ diverges there),
-    /// never NaN. Each family states its route (closed form or [`crate::model::masking::lambda_integral`]).
+    /// never NaN. Each family states its route (closed form or [`crate::model::ndf::lambda_integral::lambda_integral`]).
     fn lambda(&self, theta_o: f64) -> f64;
 
     /// The parameter values in [`PARAMS`](Self::PARAMS) order.

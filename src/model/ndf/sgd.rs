@@ -14,7 +14,7 @@
 //! - Stable form: all in log space. e^{−a₁}/Γ(1 − a₂, a₁) is formed as 1/(e^{a₁} Γ(1 − a₂, a₁)), whose factors
 //!   alone under- and overflow for large a₁; (a₁² + x)^{−a₂} = a₁^{−2a₂} (1 + x/a₁²)^{−a₂} via log1p;
 //!   1/cos⁴θ = (1 + x)² via log1p. Then ln D = ln D(0) − x/a₁ − a₂ log1p(x/a₁²) + 2 log1p(x).
-//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::masking::lambda_integral`], within
+//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
 //!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
 //!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
@@ -110,9 +110,9 @@ impl Distribution for Sgd {
         .exp()
     }
 
-    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::masking::lambda_integral`]): no closed form is known.
+    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
     fn lambda(&self, theta_o: f64) -> f64 {
-        crate::model::masking::lambda_integral(|theta| self.eval(theta), theta_o)
+        crate::model::ndf::lambda_integral::lambda_integral(|theta| self.eval(theta), theta_o)
     }
 
     fn params(&self) -> Vec<f64> {

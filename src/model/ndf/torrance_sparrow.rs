@@ -13,7 +13,7 @@
 //! - θ → 0: D → 1/N ≈ 1/(π α²) for small α. θ → π/2: D → exp(−(π/(2α))²)/N, exactly 0 for small α.
 //! - Stable form: D = exp(ln(1/N) − (θ/α)²) in one exponential, so that exp(−(θ/α)²) cannot underflow while
 //!   D itself is still representable (1/N reaches 3e299).
-//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::masking::lambda_integral`], within
+//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
 //!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
 //!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
@@ -86,9 +86,9 @@ impl Distribution for TorranceSparrow {
         (self.ln_peak - (theta / self.alpha_ts).powi(2)).exp()
     }
 
-    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::masking::lambda_integral`]): no closed form is known.
+    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
     fn lambda(&self, theta_o: f64) -> f64 {
-        crate::model::masking::lambda_integral(|theta| self.eval(theta), theta_o)
+        crate::model::ndf::lambda_integral::lambda_integral(|theta| self.eval(theta), theta_o)
     }
 
     fn params(&self) -> Vec<f64> {

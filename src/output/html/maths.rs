@@ -83,9 +83,9 @@ pub fn basis_json(encode: &dyn Fn(&[f64]) -> Value) -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::curve::Curve;
     use crate::model::fresnel::{Fresnel, Ior, SchlickF0, approx};
     use crate::model::math::tolerance::floored_relative_difference;
-    use crate::spec::curve::Curve;
     use std::collections::BTreeMap;
     use std::f64::consts::FRAC_PI_2;
     use std::process::Command;

@@ -15,7 +15,7 @@ use super::theme::Look;
 use super::{PlotError, draw_err, outline};
 use crate::pipeline::figure::{Panel, Series};
 use crate::pipeline::layout::AXIS_LABEL_EM;
-use crate::pipeline::layout::DEFAULT_ASPECT_RATIO;
+use crate::spec::look::DEFAULT_ASPECT_RATIO;
 use crate::spec::look::{LegendPlace, Mark, Scale};
 
 /// Bar width as a fraction of the median spacing of a series' x values.

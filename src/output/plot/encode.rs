@@ -3,39 +3,13 @@
 //! here computes the record: it only embeds it.
 
 use super::PlotError;
+use super::device_size;
 use super::style::{EM_PER_SIZE, FONT_NAME};
 use crate::pipeline::provenance::Provenance;
 use crate::spec::look::Canvas;
 
 /// `font-family` written into the SVG: the embedded face, then the generic fallback.
 pub(super) const SVG_FONT_FAMILY: &str = "DejaVu Sans, sans-serif";
-
-/// Device size of `canvas` drawn at `scale` device units per CSS pixel, after checking that it
-/// can be drawn: positive finite scale and font size, at least one unit a side.
-pub(super) fn device_size(canvas: &Canvas, scale: f64) -> Result<(u32, u32), PlotError> {
-    let fail = |reason| PlotError::Canvas {
-        width_px: canvas.width_px,
-        height_px: canvas.height_px,
-        scale,
-        font_px: canvas.font_px,
-        reason,
-    };
-    if !(scale.is_finite() && scale > 0.0) {
-        return Err(fail("the scale must be a positive number"));
-    }
-    if !(canvas.font_px.is_finite() && canvas.font_px > 0.0) {
-        return Err(fail("the font size must be a positive number"));
-    }
-    let width = (f64::from(canvas.width_px) * scale).round();
-    let height = (f64::from(canvas.height_px) * scale).round();
-    if width < 1.0 || height < 1.0 {
-        return Err(fail("the raster would be empty"));
-    }
-    if width.max(height) > f64::from(u32::MAX) {
-        return Err(fail("a side would exceed 2^32 device units"));
-    }
-    Ok((width as u32, height as u32))
-}
 
 /// The PNG's size in pixels ([`Canvas::png_size`]), after checking it as [`device_size`] does
 /// and against [`Canvas::MAX_PNG_PIXELS`], the cap that validation enforces.

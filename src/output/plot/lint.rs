@@ -88,7 +88,7 @@ fn overlap(a: &Rect, b: &Rect, tolerance: f64) -> bool {
 
 /// What drawing `figure` (as its SVG is drawn) places.
 fn trace_of(figure: &Figure) -> Result<(Trace, (u32, u32)), PlotError> {
-    let size = super::encode::device_size(&figure.canvas, SVG_UNITS_PER_PX)?;
+    let size = super::device_size(&figure.canvas, SVG_UNITS_PER_PX)?;
     let mut document = String::new();
     let root = SVGBackend::with_string(&mut document, size).into_drawing_area();
     let trace = draw_figure(&root, figure, SVG_UNITS_PER_PX, Some(RefCell::default()))?

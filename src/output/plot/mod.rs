@@ -43,9 +43,9 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::plot3d::View;
 use crate::pipeline::figure::{Figure, Panel};
 use crate::pipeline::layout::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
-use crate::spec::look::PanelKind;
+use crate::spec::look::{Canvas, PanelKind};
 use cartesian::{Needs, Shared, draw_cartesian, draw_cartesian_shared};
-use encode::{device_size, encode_png, finish_svg, rasterize};
+use encode::{encode_png, finish_svg, rasterize};
 use heatmap::draw_heatmap;
 use lint::Recorder;
 pub use lint::lint;
@@ -370,6 +370,33 @@ where
     let corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)];
     area.draw(&PathElement::new(corners, style))
         .map_err(draw_err)
+}
+
+/// Device size of `canvas` drawn at `scale` device units per CSS pixel, after checking that it
+/// can be drawn: positive finite scale and font size, at least one unit a side.
+fn device_size(canvas: &Canvas, scale: f64) -> Result<(u32, u32), PlotError> {
+    let fail = |reason| PlotError::Canvas {
+        width_px: canvas.width_px,
+        height_px: canvas.height_px,
+        scale,
+        font_px: canvas.font_px,
+        reason,
+    };
+    if !(scale.is_finite() && scale > 0.0) {
+        return Err(fail("the scale must be a positive number"));
+    }
+    if !(canvas.font_px.is_finite() && canvas.font_px > 0.0) {
+        return Err(fail("the font size must be a positive number"));
+    }
+    let width = (f64::from(canvas.width_px) * scale).round();
+    let height = (f64::from(canvas.height_px) * scale).round();
+    if width < 1.0 || height < 1.0 {
+        return Err(fail("the raster would be empty"));
+    }
+    if width.max(height) > f64::from(u32::MAX) {
+        return Err(fail("a side would exceed 2^32 device units"));
+    }
+    Ok((width as u32, height as u32))
 }
 
 #[cfg(test)]

@@ -199,7 +199,7 @@ pub(super) fn given_log_labels(values: &[f64]) -> Vec<String> {
         }
         None => values
             .iter()
-            .map(|&v| crate::spec::curve::pretty(v))
+            .map(|&v| crate::spec::numbers::pretty(v))
             .collect(),
     }
 }

@@ -17,10 +17,11 @@ use super::sweep;
 use super::{Pending, SceneData, Spec, read_style};
 use crate::model::dataset::{AlbedoValue, Coefficient, Dataset, SpectrumQuantity};
 use crate::model::fresnel::{EDGE_TINT, REFLECTIVITY};
-use crate::pipeline::datafile::DataScope;
-use crate::spec::curve::{ParamKind, pretty};
+use crate::spec::curve::ParamKind;
+use crate::spec::datafile::DataScope;
 use crate::spec::json::{Node, Value};
 use crate::spec::look::Rgb;
+use crate::spec::numbers::pretty;
 
 /// Most points one data series may have; a 1000 × 1000 coefficient grid is already far beyond
 /// what a figure can show.
@@ -445,5 +446,12 @@ pub fn z_label(dataset: &DataSpec) -> String {
         DataSpec::Ready(Dataset::Gulbrandsen { z: Some(z), .. }) => symbol(*z).into(),
         DataSpec::Ready(Dataset::Albedo { value, .. }) => albedo_symbol(*value).into(),
         _ => "z".into(),
+    }
+}
+impl Dataset {
+    /// A canonical one-line JSON name, used as the CSV `curve` column: `{"data":<kind>,…}` with
+    /// the dataset's keys in the spec format's order, numbers in shortest round-trip form.
+    pub fn canonical_json(&self) -> String {
+        crate::spec::json::to_string(self)
     }
 }

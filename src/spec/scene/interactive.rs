@@ -522,8 +522,8 @@ fn check_live(
     path: &str,
 ) -> Option<()> {
     let live = match &curve.curve {
-        CurveSpec::Ready(crate::spec::curve::Curve::Ndf(_)) | CurveSpec::Belcour(_) => true,
-        CurveSpec::Ready(crate::spec::curve::Curve::Fresnel(f)) => {
+        CurveSpec::Ready(crate::model::curve::Curve::Ndf(_)) | CurveSpec::Belcour(_) => true,
+        CurveSpec::Ready(crate::model::curve::Curve::Fresnel(f)) => {
             !matches!(f, Fresnel::Normalized(_))
         }
         _ => false,
@@ -576,7 +576,7 @@ fn label_template(
                 Value::Object(inner) if inner.len() == 1 && inner[0].0 == FROM_BECKMANN_KEY => {
                     let alpha_b = match (&inner[0].1.value, slider_of(&inner[0].1, sliders)) {
                         (_, Some(s)) => format!("{{={}}}", sliders[s].name),
-                        (Value::Number(n), None) => crate::spec::curve::pretty(n.value),
+                        (Value::Number(n), None) => crate::spec::numbers::pretty(n.value),
                         _ => String::new(),
                     };
                     format!("{value} (α_b = {alpha_b})")

@@ -15,12 +15,13 @@ pub mod interactive;
 pub mod reader;
 pub mod sweep;
 
+use crate::model::curve::{Curve, Kind};
 use crate::model::dataset::Dataset;
 use crate::model::transform::Transform;
-use crate::pipeline::layout;
 use crate::problem::{Problem, join_index, join_key, suggestion};
-use crate::spec::curve::{self, Curve, CurveSpec, Fitted, Kind, Label, Model, ParamValue, Part};
+use crate::spec::curve::{self, CurveSpec, Fitted, Label, Model, ParamValue, Part};
 use crate::spec::json::{Node, Value};
+use crate::spec::look;
 use crate::spec::look::{
     Axes, Canvas, Corner, Dash, LegendPlace, Mark, PanelKind, Rgb, Scale, Style, Theme, TickChoice,
     XUnit, shade,
@@ -293,7 +294,7 @@ pub fn valid_id(id: &str) -> bool {
 /// folders allowed beside it (`None`: no data files); they are not read, nor is anything computed.
 pub fn parse(
     node: &Node,
-    data: Option<&crate::pipeline::datafile::DataScope>,
+    data: Option<&crate::spec::datafile::DataScope>,
 ) -> Result<Scene<Spec>, Invalid> {
     let mut reader = Reader {
         data: data.cloned(),
@@ -476,8 +477,8 @@ fn read_canvas(
     let side = |v: f64| (16.0..=MAX_SIDE_PX).contains(&(v * px_per_unit));
     let side_text = format!(
         "{} to {} {unit}",
-        crate::spec::curve::pretty(16.0 / px_per_unit),
-        crate::spec::curve::pretty(MAX_SIDE_PX / px_per_unit)
+        crate::spec::numbers::pretty(16.0 / px_per_unit),
+        crate::spec::numbers::pretty(MAX_SIDE_PX / px_per_unit)
     );
     let aspect = reader
         .number(
@@ -486,16 +487,16 @@ fn read_canvas(
             |v| (0.05..=20.0).contains(&v),
             "0.05 to 20",
         )
-        .unwrap_or(layout::DEFAULT_ASPECT_RATIO);
+        .unwrap_or(look::DEFAULT_ASPECT_RATIO);
     let width = reader
         .number(object, "width", side, &side_text)
         .map(|w| w * px_per_unit)
-        .unwrap_or(layout::default_width(cols));
+        .unwrap_or(look::default_width(cols));
     let height = reader
         .number(object, "height", side, &side_text)
         .map(|h| h * px_per_unit)
         .unwrap_or_else(|| {
-            layout::default_height(rows, cols, width, aspect, titled).clamp(16.0, MAX_SIDE_PX)
+            look::default_height(rows, cols, width, aspect, titled).clamp(16.0, MAX_SIDE_PX)
         });
     let one_of = |reader: &mut Reader, a: &str, b: &str| {
         let both = object.get(a).is_some() && object.get(b).is_some();

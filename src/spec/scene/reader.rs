@@ -23,7 +23,7 @@ pub struct Reader {
     pub problems: Vec<Problem>,
     /// Where the document's data files may be read from; `None` for documents not read from disk
     /// (the built-in catalogue, arguments).
-    pub data: Option<crate::pipeline::datafile::DataScope>,
+    pub data: Option<crate::spec::datafile::DataScope>,
     /// The fallible work (fits, data files) described so far, in the order met.
     pub pending: Vec<super::Pending>,
 }

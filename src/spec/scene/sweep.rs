@@ -8,11 +8,12 @@
 
 use super::reader::{self, Reader};
 use super::{Pending, SceneCurve, Spec, default_colour, read_curve_entry, read_style};
+use crate::model::curve::DiffOp;
+use crate::model::fit::By;
 use crate::model::grid;
 use crate::problem::{join_index, join_key};
-use crate::spec::curve::By;
 use crate::spec::curve::{
-    self, CurveSpec, DiffOp, Fitted, Label, Model, ParamKind, ParamSpec, ParamValue, symbol,
+    self, CurveSpec, Fitted, Label, Model, ParamKind, ParamSpec, ParamValue, symbol,
 };
 use crate::spec::json::{Node, Value};
 
@@ -56,7 +57,7 @@ pub fn expand(
     node: &Node,
     path: &str,
 ) -> Option<Sweep> {
-    let label = |v: f64| format!("{} = {}", symbol(name), crate::spec::curve::pretty(v));
+    let label = |v: f64| format!("{} = {}", symbol(name), crate::spec::numbers::pretty(v));
     match (&node.value, kind) {
         (Value::Bool(b), ParamKind::Flag) => Some(Sweep {
             values: vec![SweepValue {
@@ -260,7 +261,7 @@ fn from_beckmann(reader: &mut Reader, node: &Node, path: &str) -> Option<Sweep> 
         match phong_from_beckmann(alpha_b) {
             Some(alpha_p) => values.push(SweepValue {
                 value: ParamValue::Number(alpha_p),
-                label: format!("α_p = {} (α_b = {})", crate::spec::curve::pretty(alpha_p), crate::spec::curve::pretty(alpha_b)),
+                label: format!("α_p = {} (α_b = {})", crate::spec::numbers::pretty(alpha_p), crate::spec::numbers::pretty(alpha_b)),
             }),
             None => reader.report(
                 inner_path.clone(),

@@ -1,0 +1,123 @@
+//! The resolved curve: what every stage after `resolve` evaluates — an NDF, a Fresnel reflectance,
+//! a difference or a view of them, or a quantity of an NDF's microfacet model ([`quantity`]).
+//!
+//! Pure f64 evaluation: reading curves from JSON, their canonical JSON and their labels are the
+//! spec's (`crate::spec::curve`).
+
+pub mod quantity;
+
+use crate::model::fresnel::Fresnel;
+use crate::model::ndf::Ndf;
+use crate::model::transform::Transform;
+use quantity::Quantity;
+
+/// A validated curve: an NDF D(θ) or a Fresnel reflectance F(θ).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Curve {
+    /// A normal distribution function.
+    Ndf(Ndf),
+    /// A Fresnel reflectance curve (θ is the angle of incidence).
+    Fresnel(Fresnel),
+    /// A difference series of two curves of the same kind: a − b or a / b at every θ.
+    Difference {
+        /// How the two values are combined.
+        op: DiffOp,
+        /// The first operand.
+        a: Box<Curve>,
+        /// The second operand.
+        b: Box<Curve>,
+    },
+    /// An NDF seen through a view transform (`projected`: D cos θ; `slope`: D cos⁴θ).
+    Transformed {
+        /// The transform.
+        transform: Transform,
+        /// The transformed NDF.
+        curve: Box<Curve>,
+    },
+    /// A quantity of an NDF's microfacet model other than D (Λ, G1, G2, albedo, furnace), a
+    /// function of the view angle θo.
+    Quantity {
+        /// The quantity.
+        quantity: Quantity<Curve>,
+        /// The NDF.
+        ndf: Ndf,
+    },
+}
+
+/// What a curve's values are, for the rules that pair curves (differences, `compare`) and for
+/// axis labels: an NDF quantity (`"d"` for D itself) or a Fresnel reflectance.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// A quantity of an NDF, by its name in curve JSON ([`quantity::NAMES`]).
+    Ndf(&'static str),
+    /// A Fresnel reflectance.
+    Fresnel,
+}
+
+impl Kind {
+    /// The kind in messages: `ndf`, `ndf quantity "g1"`, `fresnel`.
+    pub fn describe(self) -> String {
+        match self {
+            Kind::Ndf("d") => "ndf".to_string(),
+            Kind::Ndf(quantity) => format!("ndf quantity \"{quantity}\""),
+            Kind::Fresnel => "fresnel".to_string(),
+        }
+    }
+}
+
+impl Curve {
+    /// The curve's value at θ ∈ [0, π/2] (radians).
+    #[inline]
+    pub fn eval(&self, theta: f64) -> f64 {
+        match self {
+            Curve::Ndf(d) => d.eval(theta),
+            Curve::Fresnel(f) => f.eval(theta),
+            Curve::Difference { op, a, b } => op.apply(a.eval(theta), b.eval(theta)),
+            Curve::Transformed { transform, curve } => transform.apply(theta, curve.eval(theta)),
+            Curve::Quantity { quantity, ndf } => quantity.eval(ndf, theta),
+        }
+    }
+
+    /// What the curve's values are; a difference's are its first operand's (both share them).
+    pub fn kind(&self) -> Kind {
+        match self {
+            Curve::Ndf(_) | Curve::Transformed { .. } => Kind::Ndf("d"),
+            Curve::Quantity { quantity, .. } => Kind::Ndf(quantity.name()),
+            Curve::Fresnel(_) => Kind::Fresnel,
+            Curve::Difference { a, .. } => a.kind(),
+        }
+    }
+}
+
+/// How a difference series combines its operands.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DiffOp {
+    /// a − b.
+    Minus,
+    /// a / b, with 0/0 = 1 (both curves vanish: they agree) and x/0 = +∞ for x ≠ 0, which every
+    /// consumer reports as an error at that θ instead of printing it.
+    Ratio,
+}
+
+impl DiffOp {
+    /// Every operation, in the order shown in messages.
+    pub const ALL: [DiffOp; 2] = [DiffOp::Minus, DiffOp::Ratio];
+
+    /// The name in curve JSON (`"difference": "minus"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            DiffOp::Minus => "minus",
+            DiffOp::Ratio => "ratio",
+        }
+    }
+
+    /// a − b, or a / b with 0/0 = 1.
+    #[inline]
+    pub fn apply(self, a: f64, b: f64) -> f64 {
+        match self {
+            DiffOp::Minus => a - b,
+            DiffOp::Ratio if a == 0.0 && b == 0.0 => 1.0,
+            DiffOp::Ratio => a / b,
+        }
+    }
+}
