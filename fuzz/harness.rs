@@ -10,16 +10,17 @@
 //! non-negative for an NDF and within [0, 1] for the exact, Schlick and Lazanyi Fresnel curves.
 //! 3 mod 4: `eval`'s path, a θ list and a curve (see [`eval`]).
 
-use ndfplot::spec::angle::AngleUnit;
 use ndfplot::cmd::eval::{parse_theta_list, write_table};
-use ndfplot::spec::curve::{Curve, Model, ParamKind};
-use ndfplot::pipeline::figure::Figure;
+use ndfplot::model::curve::Curve;
 use ndfplot::model::fresnel::FresnelModel;
 use ndfplot::output::{self, Format};
+use ndfplot::pipeline::figure::Figure;
 use ndfplot::pipeline::plan::{Outputs, plan};
 use ndfplot::pipeline::provenance::Provenance;
 use ndfplot::pipeline::resolve;
 use ndfplot::pipeline::sample::evaluate_all;
+use ndfplot::spec::angle::AngleUnit;
+use ndfplot::spec::curve::{Model, ParamKind};
 use ndfplot::spec::scene::Sampling;
 use ndfplot::spec::source::{self, CanvasOverride};
 use std::f64::consts::FRAC_PI_2;
@@ -155,7 +156,9 @@ fn spec(bytes: &[u8]) {
         .zip(plan.table.as_ref().expect("tables were planned"))
     {
         let figure = Figure::assemble(scene, &provenance, feeds, &evaluated);
-        let csv = output::encode(&figure, Format::Csv).expect("CSV encoding cannot fail");
+        let csv = output::encode(&figure, Format::Csv)
+            .expect("CSV encoding cannot fail")
+            .expect("every figure has a CSV");
         let text = String::from_utf8(csv).expect("the CSV is UTF-8");
         assert!(
             !text.contains("NaN") && !text.contains("inf"),

@@ -280,7 +280,7 @@ An NDF curve may add \"quantity\" (theta is then the view angle theta_o):
 /// Arguments of `ndfplot compare`.
 #[derive(Debug, Args)]
 #[command(
-    after_long_help = "Metrics over theta in [0, pi/2], or in --theta-range (CONTRACTS.md):\n  \
+    after_long_help = "Metrics over theta in [0, pi/2], or in --theta-range (docs/contracts.md):\n  \
     max_abs        max |a - b|, with the theta where it is reached\n  \
     max_rel        max |a - b| / max(|a|, |b|) (0 where both are 0), with its theta\n  \
     max_log_ratio  max |ln(a/b)| where both a and b exceed 1e-300, with its theta; undefined\n                 \
@@ -440,7 +440,7 @@ pub struct CheckArgs {
 #[derive(Debug, Args)]
 #[command(
     after_long_help = "Tables of the single-scattering microfacet BRDF f = F D G2 / (4 cos theta_o cos theta_i)\n\
-    (MATH.md \"Masking-shadowing and albedo\"), on Cycles' grid: mu = cos theta_o = i/(n_mu - 1),\n\
+    (docs/maths.md \"Masking–shadowing and albedo\"), on Cycles' grid: mu = cos theta_o = i/(n_mu - 1),\n\
     r = j/(n_r - 1), alpha = r^2 (--map r2) or r (--map r); r maps to the family's first parameter.\n\
     The mu = 0 row is the limit mu -> 0+, the r = 0 column the mirror limit alpha -> 0+ (E = F(theta_o)).\n\n\
     Tables (CSV columns):\n  \
@@ -511,7 +511,7 @@ pub struct AlbedoArgs {
     deviation from the true curve in px, narrow and broad lobes; uniform_needed: the fewest\n                 \
     uniform samples within 0.25 px\n  \
     normalization  Torrance-Sparrow (Dawson/Faddeeva vs quadrature), ABC (stable vs closed form vs\n                 \
-    quadrature): relative error against MATH.md's 15-digit values; SGD's e^a1 Gamma(1 - a2, a1)\n                 \
+    quadrature): relative error against docs/maths.md's 15-digit values; SGD's e^a1 Gamma(1 - a2, a1)\n                 \
     (series and continued fraction vs quadrature) against mpmath\n  \
     throughput     D values written per second by eval (the path of every output) on a 2^20-point\n                 \
     grid (two 2^16-point tasks per thread if that is more), on one thread and on all threads\n                 \

@@ -1,4 +1,4 @@
-//! The failures a command can end with, and the exit code of each (CONTRACTS.md).
+//! The failures a command can end with, and the exit code of each (docs/contracts.md).
 
 use crate::problem::{Problems, one_line};
 use std::fmt;

@@ -1,6 +1,6 @@
 //! Input problems with their location, collected so that every problem of a file is reported at once.
 //!
-//! Message shape (CONTRACTS.md): `error: <file or argument>: <JSON path or key>: <what> (got <value>, expected <…>)`.
+//! Message shape (docs/contracts.md): `error: <file or argument>: <JSON path or key>: <what> (got <value>, expected <…>)`.
 
 use std::fmt;
 

@@ -8,7 +8,7 @@
 
 use crate::error::{Error, Result};
 use crate::output::stored;
-use crate::output::{Format, encode_all, html, write};
+use crate::output::{Format, Points, encode_all, write};
 use crate::pipeline::figure::Figure;
 use crate::pipeline::plan::{Outputs, Plan, plan};
 use crate::pipeline::progress::Progress;
@@ -16,9 +16,9 @@ use crate::pipeline::provenance::Provenance;
 use crate::pipeline::resolve;
 use crate::pipeline::sample::{Evaluated, JobError, evaluate_all};
 use crate::problem::{Problem, Problems};
-use crate::spec::scene::Scene;
 use crate::spec::source::{CanvasOverride, Source, load_scenes, sources};
 use rayon::prelude::*;
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// What to render and where.
@@ -34,17 +34,6 @@ pub struct RenderOptions {
     pub canvas: CanvasOverride,
     /// Folders data files may also be read from, beside each spec's own (`--allow-read`).
     pub allow_read: Vec<PathBuf>,
-}
-
-/// The interactive page of every scene that has sliders.
-fn pages(scenes: &[Scene]) -> Vec<(String, Vec<u8>)> {
-    scenes
-        .iter()
-        .filter_map(|scene| {
-            let page = html::page(scene, scene.interactive.as_ref()?);
-            Some((format!("{}.html", scene.id), page))
-        })
-        .collect()
 }
 
 /// Renders the scenes of `options` into its output folder; returns the files written.
@@ -64,8 +53,8 @@ pub struct RenderStats {
     pub encoding: std::time::Duration,
     /// Curve evaluations over all jobs.
     pub evaluations: usize,
-    /// Outputs produced per format, in [`Format::ALL`] order without HTML: SVG, PNG, PDF, CSV.
-    pub produced: [usize; 4],
+    /// Outputs produced per format (formats with none left out).
+    pub produced: BTreeMap<Format, usize>,
 }
 
 /// [`run`], also returning where the time went.
@@ -222,19 +211,14 @@ fn encode_sources(
         .iter()
         .map(|(_, text, _)| Provenance::of_spec(text.as_bytes()))
         .collect();
-    let has = |f: Format| options.formats.contains(&f);
+    let needs = |points: Points| options.formats.iter().any(|f| f.points() == points);
     let outputs = Outputs {
-        drawn: has(Format::Svg) || has(Format::Png) || has(Format::Pdf),
-        table: has(Format::Csv),
+        drawn: needs(Points::Drawn),
+        table: needs(Points::Table),
     };
     let plan = plan(&scenes, outputs);
-    let encoded_formats = options
-        .formats
-        .iter()
-        .filter(|&&f| f != Format::Html)
-        .count();
     let progress = Progress::new(
-        (plan.jobs.len() + scenes.len() * encoded_formats) as u64,
+        (plan.jobs.len() + scenes.len() * options.formats.len()) as u64,
         quiet,
     );
     progress.stage("evaluating");
@@ -247,14 +231,14 @@ fn encode_sources(
         ..RenderStats::default()
     };
     let mut outputs: Vec<(String, Vec<u8>)> = Vec::new();
-    for (kind, feeds) in [(true, &plan.drawn), (false, &plan.table)] {
+    for (points, feeds) in [(Points::Drawn, &plan.drawn), (Points::Table, &plan.table)] {
         let Some(feeds) = feeds else { continue };
         let stage = std::time::Instant::now();
         let formats: Vec<Format> = options
             .formats
             .iter()
             .copied()
-            .filter(|&f| f != Format::Html && (f != Format::Csv) == kind)
+            .filter(|f| f.points() == points)
             .collect();
         let figures: Vec<Figure> = scenes
             .iter()
@@ -262,32 +246,29 @@ fn encode_sources(
             .zip(feeds)
             .map(|((s, p), f)| Figure::assemble(s, p, f, &evaluated))
             .collect();
-        let encoded: Vec<Vec<(String, Vec<u8>)>> = figures
+        let encoded: Vec<Vec<(Format, String, Vec<u8>)>> = figures
             .par_iter()
             .map(|fig| {
-                let bytes = encode_all(fig, &formats)?;
+                let encoded = encode_all(fig, &formats)?;
                 progress.advance(formats.len() as u64);
-                Ok(formats
-                    .iter()
-                    .map(|format| format!("{}.{}", fig.id, format.extension()))
-                    .zip(bytes)
+                Ok(encoded
+                    .into_iter()
+                    .map(|(format, bytes)| {
+                        (format, format!("{}.{}", fig.id, format.extension()), bytes)
+                    })
                     .collect())
             })
             .collect::<Result<_>>()?;
-        for &format in &formats {
-            stats.produced[format as usize] += figures.len();
+        for (format, name, bytes) in encoded.into_iter().flatten() {
+            *stats.produced.entry(format).or_default() += 1;
+            outputs.push((name, bytes));
         }
-        outputs.extend(encoded.into_iter().flatten());
-        *(if kind {
-            &mut stats.drawing
-        } else {
-            &mut stats.encoding
+        *(match points {
+            Points::Drawn => &mut stats.drawing,
+            Points::Table => &mut stats.encoding,
         }) += stage.elapsed();
     }
     let stage = std::time::Instant::now();
-    if has(Format::Html) {
-        outputs.extend(pages(&scenes));
-    }
     outputs.sort_by(|a, b| a.0.cmp(&b.0));
     stats.encoding += stage.elapsed();
     Ok((outputs, stats))

@@ -439,7 +439,7 @@ fn numbers(values: &[f64]) -> Vec<Cell> {
     values.iter().map(|&v| Cell::Number(v)).collect()
 }
 
-/// A number cell, or an empty one where the value is not finite (never printed, CONTRACTS.md).
+/// A number cell, or an empty one where the value is not finite (never printed, docs/contracts.md).
 fn finite(value: f64) -> Cell {
     if value.is_finite() {
         Cell::Number(value)

@@ -1,4 +1,4 @@
-//! `ndfplot coeffs`: the Belcour–Bati–Barla decomposition of materials, as CSV (CONTRACTS.md) or a JSON
+//! `ndfplot coeffs`: the Belcour–Bati–Barla decomposition of materials, as CSV (docs/contracts.md) or a JSON
 //! array of the same rows.
 
 use crate::error::{Error, Result};

@@ -1,4 +1,4 @@
-//! `ndfplot compare`: the metrics of two curves of the same kind (CONTRACTS.md) over the whole hemisphere
+//! `ndfplot compare`: the metrics of two curves of the same kind (docs/contracts.md) over the whole hemisphere
 //! or a `--theta-range`, as a readable table, one JSON object, one CSV row or the one number `--metric`
 //! names, and the `--max-error` bounds that turn them into a CI gate (exit 1 when exceeded). With
 //! `--pairs`, the same for every pair of a JSON Lines input, compared in parallel and written in input

@@ -97,7 +97,7 @@ fn escape(text: &str) -> String {
     }
 }
 
-/// The exit codes (CONTRACTS.md), one `.TP` item each.
+/// The exit codes (docs/contracts.md), one `.TP` item each.
 const EXIT_STATUS: &str = "\
   0  Success; also when stdout is closed early by the reader (ndfplot eval … | head).
   1  The run worked but a check failed: the check tolerance, compare --max-error, render --check differences (including a missing or extra CSV).

@@ -1,4 +1,4 @@
-//! `ndfplot eval`: a curve's values at given angles, as CSV on standard output (CONTRACTS.md).
+//! `ndfplot eval`: a curve's values at given angles, as CSV on standard output (docs/contracts.md).
 //!
 //! The table is streamed: rows are computed a batch at a time (in parallel, the same bytes on any
 //! number of threads) and written before the next batch is computed, so 10⁷ angles × many curves
@@ -12,7 +12,7 @@ use crate::model::grid::linspace_at;
 use crate::output::csv::Table;
 use crate::spec::angle::AngleUnit;
 
-/// Largest θ count of a `start:stop:count` list (CONTRACTS.md).
+/// Largest θ count of a `start:stop:count` list (docs/contracts.md).
 pub const MAX_THETA_COUNT: u64 = 10_000_000;
 
 /// Values (θ and curve values) computed and formatted per batch before it is written: with about

@@ -1,4 +1,4 @@
-//! `ndfplot fit` (CONTRACTS.md): per target, without `--format`, the fitted curve on stdout (one line of
+//! `ndfplot fit` (docs/contracts.md): per target, without `--format`, the fitted curve on stdout (one line of
 //! canonical curve JSON, ready for `eval`) and `residual=<x> (<metric>)` on stderr; with `--format jsonl`
 //! or `csv`, one record per target holding target, fit, residual and metric. A target that cannot be
 //! fitted becomes a problem of its source; the others are still written.

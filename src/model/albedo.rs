@@ -1,6 +1,6 @@
 //! Directional albedo of the single-scattering microfacet BRDF f = F D G2 / (4 cos θo cos θi), its
 //! cosine-weighted average, the energy-compensation factors built on them and the tables renderers
-//! precompute (MATH.md "Masking–shadowing and albedo").
+//! precompute (docs/maths.md "Masking–shadowing and albedo").
 //!
 //! # The integral
 //!

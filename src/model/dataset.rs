@@ -10,7 +10,7 @@ use crate::model::masking::G2Model;
 use crate::model::ndf::Family;
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
-/// Which number of the spectrum a spectrum series shows (MATH.md, basis step 6).
+/// Which number of the spectrum a spectrum series shows (docs/maths.md, basis step 6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum SpectrumQuantity {
     /// The singular values s_k.

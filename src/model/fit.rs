@@ -1,6 +1,6 @@
 //! Fitting the free parameters of an NDF family to a target curve (`ndfplot fit`, scene `{"fit": …}`):
 //! `peak` equates the values at the normal, D(0) — the notebook's manual method; `max` equates the maxima
-//! over θ; `l2` minimizes `l2_projected` (CONTRACTS.md, MATH.md "Parameter equivalences and fits").
+//! over θ; `l2` minimizes `l2_projected` (docs/contracts.md, docs/maths.md "Parameter equivalences and fits").
 //! Peak and max match one number, so they fit exactly one free parameter; L2 fits every parameter not
 //! fixed.
 //!

@@ -1,14 +1,14 @@
 //! Value grids with exact end points: numpy's `linspace` and Mathematica's `Range`, as
-//! CONTRACTS.md fixes them.
+//! docs/contracts.md fixes them.
 
 use std::fmt;
 
 /// Relative slack on (b − a)/s when counting `Range` values, so that floating drift in
-/// `(1.0 − 0.4)/0.1 = 5.999999999999999` never drops the end value (CONTRACTS.md).
+/// `(1.0 − 0.4)/0.1 = 5.999999999999999` never drops the end value (docs/contracts.md).
 pub const RANGE_COUNT_SLACK: f64 = 1e-9;
 
 /// Largest number of decimals for which `Range` values are rounded to the literals' precision;
-/// beyond it a double cannot carry the decimals anyway (CONTRACTS.md).
+/// beyond it a double cannot carry the decimals anyway (docs/contracts.md).
 pub const RANGE_MAX_DECIMALS: usize = 15;
 
 /// Why a grid could not be built.
@@ -63,7 +63,7 @@ pub fn linspace_at(start: f64, stop: f64, count: usize, i: usize) -> f64 {
     }
 }
 
-/// Mathematica's `Range[start, stop, step]`, made exact (CONTRACTS.md):
+/// Mathematica's `Range[start, stop, step]`, made exact (docs/contracts.md):
 /// n = floor((stop − start)/step + 1e-9) + 1 values v_k = start + k·step, each rounded to
 /// `decimals` places when given (≤ 15), and the last value exactly `stop` when (stop − start)/step
 /// is within 1e-9 of an integer. At most `cap` values.

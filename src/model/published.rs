@@ -3,13 +3,13 @@
 //! embedded verbatim and read into family curves on first use.
 //!
 //! Each source's parameters map onto an ndfplot family exactly, checked against the source's own
-//! definition (bbm's `include/ndf/*.h`, `include/bsdfmodel/*.h`) and MATH.md:
+//! definition (bbm's `include/ndf/*.h`, `include/bsdfmodel/*.h`) and docs/maths.md:
 //! - `bagher2012-sgd` (per RGB channel): bbm's D = K e^{−(α + x/α)} / ((α + x/α)^p π cos⁴θ) with
-//!   x = tan²θ. Since (a₁² + x)/a₁ = α + x/α and (a₁² + x)^{a₂} = α^p (α + x/α)^p, MATH.md's SGD with
+//!   x = tan²θ. Since (a₁² + x)/a₁ = α + x/α and (a₁² + x)^{a₂} = α^p (α + x/α)^p, docs/maths.md's SGD with
 //!   a₁ = α, a₂ = p is the same lobe with K = 1/(α Γ(1 − p, α)): `alpha` → `alpha_sgd1`, `p` →
 //!   `alpha_sgd2`, and the file's `K` (6 digits) must come out of it, as a test checks.
 //! - `low2012-abc`: Low et al.'s S = (1 + B(1 − cos θ))^{−C}, unnormalized (their `A` scales it), is
-//!   MATH.md's ABC lobe u: `B` → `alpha_abc1`, `C` → `alpha_abc2`; one lobe per material.
+//!   docs/maths.md's ABC lobe u: `B` → `alpha_abc1`, `C` → `alpha_abc2`; one lobe per material.
 //! - `low2012-cook-torrance`, `ngan2005-cook-torrance`: Beckmann's exp(−tan²θ/m²)/(m² cos⁴θ) (Low's
 //!   without the 1/π, which their scale absorbs): `roughness` m → `alpha_b`.
 //! - `ngan2005-blinn-phong`: Ngan et al.'s Blinn–Phong lobe cosⁿθ_h about the half vector, so

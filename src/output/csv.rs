@@ -1,6 +1,6 @@
 //! Every CSV ndfplot writes goes through [`Table`]: RFC 4180 quoting where a field needs it (as
 //! the csv crate's writer quotes, which a test holds it to), `\n` line ends, numbers in the
-//! shortest round-trip form of CONTRACTS.md. It also owns the figure CSV (CONTRACTS.md): long
+//! shortest round-trip form of docs/contracts.md. It also owns the figure CSV (docs/contracts.md): long
 //! format, one row per sampled point, `panel,series,curve,x,y` (plus `z` when the figure has
 //! surface panels).
 //!

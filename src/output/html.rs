@@ -2,7 +2,7 @@
 //! live in the browser, with a continuous slider and a number box per declared parameter, the
 //! plot redrawn as they change, a legend, axis labels, a y-axis lock, a linear/log toggle for y on
 //! NDF pages, "match peak" and "match L2" links on comparison pages, a permalink in the URL
-//! fragment, and `window.ndfplot` for scripts (CONTRACTS.md "Interactive page API").
+//! fragment, and `window.ndfplot` for scripts (docs/contracts.md "Interactive page API").
 //!
 //! The page evaluates each curve with `html/maths.js`, a port of the Rust definitions `eval` uses
 //! ([`maths`] embeds it with the parameter domains and the Fresnel basis, and tests their
@@ -18,30 +18,32 @@ pub use maths::REL_TOL_PAGE;
 
 use crate::model::curve::Curve;
 use crate::model::fresnel::Fresnel;
+use crate::pipeline::figure::Figure;
 use crate::spec::curve::Model;
-use crate::spec::look::{Dash, LegendPlace, Scale, XUnit};
-use crate::spec::scene::interactive::Interactive;
-use crate::spec::scene::{Scene, SceneCurve};
+use crate::spec::look::{Dash, LegendPlace, Scale, Style, XUnit};
 use serde_json::{Value, json};
 
 const TEMPLATE: &str = include_str!("html/page.html");
 const SCRIPT: &str = include_str!("html/page.js");
 const STYLES: &str = include_str!("html/page.css");
 
-/// The page of `scene`, whose `interactive` part drives the curves of its one panel.
-pub fn page(scene: &Scene, interactive: &Interactive) -> Vec<u8> {
-    let panel = &scene.panels[0];
-    let curves: Vec<Value> = panel
+/// The page of `figure`, whose [`Page`](crate::pipeline::figure::Page) drives the curves of its
+/// one panel; `None` for a figure without sliders.
+pub fn page(figure: &Figure) -> Option<Vec<u8>> {
+    let page = figure.page.as_ref()?;
+    let interactive = &page.interactive;
+    let axes = &figure.panels[0].axes;
+    let curves: Vec<Value> = page
         .curves
         .iter()
         .zip(&interactive.entries)
-        .map(|(shown, entry)| {
+        .map(|((curve, style), entry)| {
             let bindings: Vec<Value> = entry
                 .bindings
                 .iter()
                 .map(|b| json!({"param": b.param, "slider": b.slider, "from_beckmann": b.from_beckmann}))
                 .collect();
-            json!({"curve": shown.curve.canonical_json(), "label": entry.label, "style": style_json(shown), "bindings": bindings})
+            json!({"curve": curve.canonical_json(), "label": entry.label, "style": style_json(style), "bindings": bindings})
         })
         .collect();
     let sliders: Vec<Value> = interactive
@@ -49,31 +51,31 @@ pub fn page(scene: &Scene, interactive: &Interactive) -> Vec<u8> {
         .iter()
         .map(|s| json!({"name": s.name, "label": s.label, "min": s.min, "max": s.max, "start": s.start, "scale": scale_name(s.scale)}))
         .collect();
-    let uses_basis = panel.curves.iter().any(|c| {
+    let uses_basis = page.curves.iter().any(|(curve, _)| {
         matches!(
-            c.curve,
+            curve,
             Curve::Fresnel(Fresnel::Belcour(..) | Fresnel::Basis(_))
         )
     });
-    let ndf_page = panel
+    let ndf_page = page
         .curves
         .iter()
-        .all(|c| matches!(c.curve.model(), Model::Ndf(_)));
+        .all(|(curve, _)| matches!(curve.model(), Model::Ndf(_)));
     let data = json!({
-        "id": scene.id,
-        "title": scene.title,
-        "panel_title": panel.axes.title,
-        "x_label": panel.axes.x_label,
-        "y_label": panel.axes.y_label,
-        "degrees": panel.axes.x_unit == XUnit::Degrees,
-        "theta": [panel.axes.theta_range().0, panel.axes.theta_range().1],
-        "y_scale": scale_name(panel.axes.y_scale),
-        "log_toggle": ndf_page || panel.axes.y_scale == Scale::Log,
-        "y_range": panel.axes.y_range.map(|(a, b)| [a, b]),
-        "width": scene.canvas.width_px,
-        "height": scene.canvas.height_px,
-        "font_px": scene.canvas.font_px,
-        "legend": panel.axes.legend != LegendPlace::None,
+        "id": figure.id,
+        "title": page.title,
+        "panel_title": axes.title,
+        "x_label": axes.x_label,
+        "y_label": axes.y_label,
+        "degrees": axes.x_unit == XUnit::Degrees,
+        "theta": [axes.theta_range().0, axes.theta_range().1],
+        "y_scale": scale_name(axes.y_scale),
+        "log_toggle": ndf_page || axes.y_scale == Scale::Log,
+        "y_range": axes.y_range.map(|(a, b)| [a, b]),
+        "width": figure.canvas.width_px,
+        "height": figure.canvas.height_px,
+        "font_px": figure.canvas.font_px,
+        "legend": axes.legend != LegendPlace::None,
         "tolerance": REL_TOL_PAGE,
         "sliders": sliders,
         "curves": curves,
@@ -82,20 +84,22 @@ pub fn page(scene: &Scene, interactive: &Interactive) -> Vec<u8> {
     });
     // Inside <script>, "</" could close the element early: escape every '<' the JSON way.
     let data = data.to_string().replace('<', "\\u003c");
-    let title = if scene.title.is_empty() {
-        scene.id.as_str()
+    let title = if page.title.is_empty() {
+        figure.id.as_str()
     } else {
-        scene.title.as_str()
+        page.title.as_str()
     };
-    fill(&[
-        ("TITLE", &escape_html(title)),
-        ("STYLES", STYLES),
-        ("IMAGE", &escape_html(&format!("{}.png", scene.id))),
-        ("DATA", &data),
-        ("MATHS", maths::SCRIPT),
-        ("SCRIPT", SCRIPT),
-    ])
-    .into_bytes()
+    Some(
+        fill(&[
+            ("TITLE", &escape_html(title)),
+            ("STYLES", STYLES),
+            ("IMAGE", &escape_html(&format!("{}.png", figure.id))),
+            ("DATA", &data),
+            ("MATHS", &maths::script()),
+            ("SCRIPT", SCRIPT),
+        ])
+        .into_bytes(),
+    )
 }
 
 fn scale_name(scale: Scale) -> &'static str {
@@ -153,14 +157,14 @@ fn escape_html(text: &str) -> String {
 }
 
 /// The line style as the page draws it: colour, width (a multiple of the default) and dash.
-fn style_json(curve: &SceneCurve) -> Value {
-    let c = curve.style.colour;
-    let dash = match curve.style.dash {
+fn style_json(style: &Style) -> Value {
+    let c = style.colour;
+    let dash = match style.dash {
         Dash::Solid => "solid",
         Dash::Dashed => "dashed",
         Dash::Dotted => "dotted",
     };
-    json!({"colour": format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2), "width": curve.style.width, "dash": dash})
+    json!({"colour": format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2), "width": style.width, "dash": dash})
 }
 
 #[cfg(test)]

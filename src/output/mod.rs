@@ -20,6 +20,16 @@ use crate::error::{Error, Result};
 use crate::pipeline::figure::Figure;
 use csv::figure_csv;
 
+/// What a format is encoded from: the figure whose curves were sampled for drawing (adaptively,
+/// over the visible range) or the one sampled as a table (uniform θ grids).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Points {
+    /// The drawn figure.
+    Drawn,
+    /// The tabulated figure.
+    Table,
+}
+
 /// An output format of `render`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Format {
@@ -29,9 +39,9 @@ pub enum Format {
     Png,
     /// One-page vector PDF of the SVG, text in the embedded font; only when asked for.
     Pdf,
-    /// The sampled points, long format (CONTRACTS.md).
+    /// The sampled points, long format (docs/contracts.md).
     Csv,
-    /// A self-contained interactive page, for scenes with sliders only.
+    /// A self-contained interactive page, for figures with sliders only.
     Html,
 }
 
@@ -56,6 +66,15 @@ impl Format {
         }
     }
 
+    /// Which figure the format is encoded from: the CSV tabulates; the drawings, and the page
+    /// (whose static figure and axes are the drawing's), draw.
+    pub fn points(self) -> Points {
+        match self {
+            Format::Csv => Points::Table,
+            Format::Svg | Format::Png | Format::Pdf | Format::Html => Points::Drawn,
+        }
+    }
+
     /// Parses a comma-separated list such as `svg,csv`.
     pub fn parse_list(text: &str) -> Result<Vec<Format>> {
         let mut formats = Vec::new();
@@ -72,36 +91,38 @@ impl Format {
     }
 }
 
-/// The bytes of one output of a figure (see [`encode_all`]).
-pub fn encode(figure: &Figure, format: Format) -> Result<Vec<u8>> {
-    Ok(encode_all(figure, &[format])?.remove(0))
+/// The output of `figure` in `format` (see [`encode_all`]); `None` when the figure has none in
+/// it (a page of a figure without sliders).
+pub fn encode(figure: &Figure, format: Format) -> Result<Option<Vec<u8>>> {
+    Ok(encode_all(figure, &[format])?.pop().map(|(_, bytes)| bytes))
 }
 
-/// The bytes of each of `formats` of a figure, in order. The PNG and the PDF are converted from
-/// the figure's SVG, which is drawn once however many of the three are asked for.
-pub fn encode_all(figure: &Figure, formats: &[Format]) -> Result<Vec<Vec<u8>>> {
+/// The outputs of a figure in each of `formats`, as (format, bytes) in order; a format with no
+/// output for this figure (a page of a figure without sliders) is left out. The PNG and the PDF
+/// are converted from the figure's SVG, which is drawn once however many of the three are asked
+/// for.
+pub fn encode_all(figure: &Figure, formats: &[Format]) -> Result<Vec<(Format, Vec<u8>)>> {
     let plot_error =
         |e: plot::PlotError| Error::Numerics(format!("{}: drawing failed: {e}", figure.id));
     let mut svg: Option<Vec<u8>> = None;
     let mut encoded = Vec::with_capacity(formats.len());
     for &format in formats {
-        encoded.push(match format {
-            Format::Svg | Format::Png | Format::Pdf => {
-                let svg = match svg {
-                    Some(ref drawn) => drawn,
-                    None => svg.insert(plot::svg(figure).map_err(plot_error)?),
-                };
-                match format {
-                    Format::Svg => svg.clone(),
-                    Format::Png => plot::png(figure, svg).map_err(plot_error)?,
-                    _ => pdf::from_svg(svg, &figure.title, &figure.provenance).map_err(|e| {
-                        Error::Numerics(format!("{}: PDF conversion failed: {e}", figure.id))
-                    })?,
-                }
-            }
-            Format::Csv => figure_csv(figure),
-            Format::Html => unreachable!("pages are built from scenes, by `pages`"),
-        });
+        if matches!(format, Format::Svg | Format::Png | Format::Pdf) && svg.is_none() {
+            svg = Some(plot::svg(figure).map_err(plot_error)?);
+        }
+        let drawn = || svg.as_ref().expect("the SVG is drawn first");
+        let bytes = match format {
+            Format::Svg => Some(drawn().clone()),
+            Format::Png => Some(plot::png(figure, drawn()).map_err(plot_error)?),
+            Format::Pdf => Some(
+                pdf::from_svg(drawn(), &figure.title, &figure.provenance).map_err(|e| {
+                    Error::Numerics(format!("{}: PDF conversion failed: {e}", figure.id))
+                })?,
+            ),
+            Format::Csv => Some(figure_csv(figure)),
+            Format::Html => html::page(figure),
+        };
+        encoded.extend(bytes.map(|b| (format, b)));
     }
     Ok(encoded)
 }

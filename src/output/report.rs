@@ -1,7 +1,7 @@
 //! The reports of the commands that print tables (`compare`, `check`, `coeffs`) in the machine-readable
 //! forms of `--format`: one JSON object per line, a JSON array of row objects, or CSV with a header row. A
 //! [`Report`] is named columns and rows of [`Cell`]s; numbers are written in the shortest round-trip
-//! form of CONTRACTS.md in every form.
+//! form of docs/contracts.md in every form.
 //!
 //! Pure serialization into memory: the commands decide what the cells hold; the readable tables are
 //! theirs.

@@ -1,7 +1,7 @@
 //! The one place that writes command results to standard output.
 //!
 //! A reader that closes the pipe early (`ndfplot eval … | head -1`) is not an error: the write
-//! stops quietly and the command still succeeds (CONTRACTS.md, exit code 0).
+//! stops quietly and the command still succeeds (docs/contracts.md, exit code 0).
 
 use crate::error::{Error, Result};
 use std::io::{ErrorKind, Write};

@@ -4,7 +4,7 @@
 //! there is one), to catch changes that only affect the drawing (title, colours, styles, theme,
 //! legend, sizes).
 //!
-//! CSVs are compared cell by cell (CONTRACTS.md: across machines they agree to 1e-12 relative);
+//! CSVs are compared cell by cell (docs/contracts.md: across machines they agree to 1e-12 relative);
 //! SVGs token by token, the text exactly and the numbers inside tags within
 //! [`SVG_GRID_TOLERANCE`]; PNG bytes never. This module reads the folder and never writes anything.
 
@@ -14,7 +14,7 @@ use crate::problem::excerpt;
 use std::collections::BTreeMap;
 use std::path::Path;
 
-/// Default `--tolerance`: the cross-machine agreement CONTRACTS.md promises for figure CSVs.
+/// Default `--tolerance`: the cross-machine agreement docs/contracts.md promises for figure CSVs.
 pub const DEFAULT_TOLERANCE: f64 = 1e-12;
 
 /// Largest difference between two whole numbers inside SVG tags (coordinates on the quarter-pixel

@@ -3,7 +3,7 @@
 //! Each file is written as a hidden temporary `<dir>/.<name>.<unique>.tmp`, created exclusively
 //! (never through an existing file or symbolic link), and renamed into place, so an interrupted
 //! run never leaves a truncated file under a real name and two runs into one folder never touch
-//! each other's temporaries (the last rename wins per file; CONTRACTS.md).
+//! each other's temporaries (the last rename wins per file; docs/contracts.md).
 
 use crate::error::{Error, Result};
 use rayon::prelude::*;

@@ -1,12 +1,15 @@
 //! The evaluated figure: the one result type between the sampler and every exporter.
 //!
-//! Exporters (SVG, PNG, PDF, CSV) turn a [`Figure`] into bytes and never decide what to compute;
-//! [`Figure::assemble`] is the one place that joins a scene's description with its evaluated jobs.
+//! Exporters (SVG, PNG, PDF, CSV, the interactive page) turn a [`Figure`] into bytes and never
+//! decide what to compute; [`Figure::assemble`] is the one place that joins a scene's description
+//! with its evaluated jobs.
 
+use crate::model::curve::Curve;
 use crate::pipeline::provenance::Provenance;
 use crate::pipeline::sample::Evaluated;
 use crate::spec::look::{Axes, Canvas, Style, Theme, XUnit};
 use crate::spec::scene::Scene;
+use crate::spec::scene::interactive::Interactive;
 use std::sync::Arc;
 
 /// One drawn series: a polyline of (θ, value) points with its style and legend label.
@@ -56,6 +59,20 @@ pub struct Figure {
     pub panels: Vec<Panel>,
     /// Which ndfplot drew it from which spec; every drawn format embeds it, tables do not.
     pub provenance: Provenance,
+    /// What its interactive page computes live, for a scene with sliders; `None` otherwise.
+    pub page: Option<Page>,
+}
+
+/// What the interactive page of a figure needs besides the figure: its sliders, and the curves of
+/// its one panel at the sliders' start values with the parameters each slider drives.
+#[derive(Debug, Clone)]
+pub struct Page {
+    /// The scene's own title (the figure's also states the sliders' start values).
+    pub title: String,
+    /// The sliders and, per curve, its label template and slider bindings.
+    pub interactive: Interactive,
+    /// The panel's curves at the start values with their styles, in panel order.
+    pub curves: Vec<(Curve, Style)>,
 }
 
 impl Figure {
@@ -114,6 +131,15 @@ impl Figure {
             theme: scene.theme,
             panels,
             provenance: provenance.clone(),
+            page: scene.interactive.as_ref().map(|interactive| Page {
+                title: scene.title.clone(),
+                interactive: interactive.clone(),
+                curves: scene.panels[0]
+                    .curves
+                    .iter()
+                    .map(|c| (c.curve.clone(), c.style))
+                    .collect(),
+            }),
         }
     }
 }

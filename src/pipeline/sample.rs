@@ -10,7 +10,6 @@
 use crate::error::{Error, Result};
 use crate::model::curve::Curve;
 use crate::model::grid::linspace;
-use crate::model::ndf::Ndf;
 use crate::pipeline::adaptive::{self, Frame, PixelMap, Refined};
 use crate::pipeline::plan::{Job, Plan};
 use rayon::prelude::*;
@@ -30,14 +29,11 @@ pub struct Evaluated {
     pub evaluations: usize,
 }
 
-/// θ where a curve has a peak that an even grid could miss: the off-normal maximum of a
-/// super-rough Beckmann lobe, tan²θ = 2 α_b² − 1 (d ln D/d tan²θ = 2/(1 + tan²θ) − 1/α_b² = 0).
-/// Peaks at θ = 0 or π/2 are grid points already.
+/// θ where a curve has a peak that an even grid could miss: its NDF's off-normal maximum
+/// ([`Ndf::interior_peak`]). Peaks at θ = 0 or π/2 are grid points already.
 pub fn peak_hints(curve: &Curve) -> Vec<f64> {
     match curve {
-        Curve::Ndf(Ndf::Beckmann(d)) if d.alpha_b() > std::f64::consts::FRAC_1_SQRT_2 => {
-            vec![(2.0 * d.alpha_b().powi(2) - 1.0).sqrt().atan()]
-        }
+        Curve::Ndf(ndf) => ndf.interior_peak().into_iter().collect(),
         _ => Vec::new(),
     }
 }

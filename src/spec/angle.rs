@@ -1,5 +1,5 @@
 //! Angles as the command line reads and prints them: radians (any value may be a multiple of π such as
-//! `pi/2`), or degrees with `--degrees`, converted as θ = d·π/180 (CONTRACTS.md). `eval --theta` and
+//! `pi/2`), or degrees with `--degrees`, converted as θ = d·π/180 (docs/contracts.md). `eval --theta` and
 //! `compare --theta-range` read their angles here, and name and print θ in the unit they were given in.
 //!
 //! Text to numbers only: no curve is evaluated and nothing is printed here.

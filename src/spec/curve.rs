@@ -53,7 +53,7 @@ impl Curve {
         }
     }
 
-    /// Canonical curve JSON (CONTRACTS.md): compact, model key first, parameters in MATH.md's
+    /// Canonical curve JSON (docs/contracts.md): compact, model key first, parameters in docs/maths.md's
     /// order, numbers in shortest round-trip form, aliases replaced by canonical names. A
     /// difference is `{"difference":"minus"|"ratio","a":{…},"b":{…}}`, a transformed curve
     /// `{"transform":"projected"|"slope","curve":{…}}`.

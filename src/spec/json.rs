@@ -6,7 +6,7 @@
 //! decimals written in the JSON literal).
 //!
 //! Out: [`to_string`], the one way ndfplot writes JSON: serde_json, with every number in the
-//! shortest round-trip form of CONTRACTS.md.
+//! shortest round-trip form of docs/contracts.md.
 //!
 //! It never decides what a document means (that is `curve` and `scene`).
 
@@ -129,7 +129,7 @@ fn write_compact(value: &Value, out: &mut String) {
 
 /// Compact JSON text of `value` (serde_json), with every f64 in shortest round-trip form, as
 /// Rust's `{:?}` prints it (`1.0`, `0.1`, `1e-7`, `1e16`, `1000000000000000.0`): the number form
-/// of CONTRACTS.md, which serde_json's own float formatting does not follow (it prints `1e15` for
+/// of docs/contracts.md, which serde_json's own float formatting does not follow (it prints `1e15` for
 /// 1000000000000000.0). serde_json writes a non-finite f64 as `null`; ndfplot prints only finite
 /// numbers, so callers check before.
 pub fn to_string<T: Serialize + ?Sized>(value: &T) -> String {

@@ -1,5 +1,5 @@
 //! What a curve of an NDF shows: D(θ) itself, or a quantity of the microfacet model built on it
-//! (CONTRACTS.md "Quantities of an NDF"; MATH.md "Masking–shadowing and albedo").
+//! (docs/contracts.md "Quantities of an NDF"; docs/maths.md "Masking–shadowing and albedo").
 //!
 //! A curve object names it with `"quantity"`: `"d"` (the default, D(θm)), `"lambda"` (Smith Λ),
 //! `"g1"` (masking), `"g2"` (masking–shadowing, with `"g2"` naming the [`G2Model`] and

@@ -1,4 +1,4 @@
-//! The real `ndfplot` binary on fixtures: happy paths, the output contracts of CONTRACTS.md, and
+//! The real `ndfplot` binary on fixtures: happy paths, the output contracts of docs/contracts.md, and
 //! every kind of bad input (exit 2, nothing on stdout, one line per problem on stderr).
 
 use crate::common::{files_in, ndfplot, ndfplot_stdin, render_into, root, scratch, text};

@@ -1,4 +1,4 @@
-//! Quantities of an NDF through the command line (CONTRACTS.md "Quantities of an NDF"): `eval` of Λ, G1,
+//! Quantities of an NDF through the command line (docs/contracts.md "Quantities of an NDF"): `eval` of Λ, G1,
 //! G2, albedo and furnace curves against closed forms and published values computed here independently,
 //! their canonical JSON, the key rules with their messages, `compare` and differences pairing only one
 //! quantity, scenes' default axis labels and `check`'s Smith-consistency rows.

@@ -13,6 +13,7 @@ use ndfplot::pipeline::sample::evaluate_all;
 use ndfplot::render::{self, RenderOptions};
 use ndfplot::spec::look::{Dash, PanelKind, Rgb, Scale, XUnit};
 use ndfplot::spec::source::{self, CanvasOverride};
+use std::collections::BTreeMap;
 use std::f64::consts::FRAC_PI_2;
 use std::path::Path;
 
@@ -206,13 +207,13 @@ fn a_run_produces_only_the_requested_formats_and_needed_jobs() {
     let (_, svg_only) = render::run_with_stats(&options(vec![Format::Svg])).unwrap();
     assert_eq!(
         svg_only.produced,
-        [1, 0, 0, 0],
+        BTreeMap::from([(Format::Svg, 1)]),
         "an svg-only run never rasterizes nor tabulates"
     );
     let (_, pdf_only) = render::run_with_stats(&options(vec![Format::Pdf])).unwrap();
     assert_eq!(
         pdf_only.produced,
-        [0, 0, 1, 0],
+        BTreeMap::from([(Format::Pdf, 1)]),
         "a pdf-only run converts the drawing, never rasterizes nor tabulates"
     );
     assert_eq!(
@@ -220,7 +221,7 @@ fn a_run_produces_only_the_requested_formats_and_needed_jobs() {
         "a PDF is sampled as the SVG it is drawn from"
     );
     let (_, csv_only) = render::run_with_stats(&options(vec![Format::Csv])).unwrap();
-    assert_eq!(csv_only.produced, [0, 0, 0, 1]);
+    assert_eq!(csv_only.produced, BTreeMap::from([(Format::Csv, 1)]));
     // A CSV-only run evaluates the two uniform curves once each, however many panels show them.
     assert_eq!(csv_only.evaluations, 2 * 1000);
     let scenes = load(&dir, &scene(""));

@@ -333,3 +333,36 @@ fn the_reader_resolves_grouped_and_relative_paths() {
         ["model::ndf::Distribution", "model::math::special::ln_gamma"]
     );
 }
+
+/// Every document the code cites is in the repository, and every section it cites by name
+/// (`docs/maths.md "Fresnel"`) is a heading there.
+#[test]
+fn cited_documents_and_sections_exist() {
+    let mut cited = 0;
+    for (module, text) in modules() {
+        for (i, _) in text.match_indices("docs/") {
+            let rest = &text[i..];
+            let name: String = rest
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || matches!(c, '/' | '.' | '_' | '-'))
+                .collect();
+            let name = name.trim_end_matches('.');
+            if !name.ends_with(".md") {
+                continue;
+            }
+            let doc = fs::read_to_string(root().join(name)).unwrap_or_else(|_| {
+                panic!("{module} cites {name}, which is not in the repository")
+            });
+            cited += 1;
+            if let Some(section) = rest[name.len()..].strip_prefix(" \"") {
+                let section = &section[..section.find('"').unwrap_or(0)];
+                assert!(
+                    doc.lines()
+                        .any(|l| l.starts_with('#') && l.contains(section)),
+                    "{module} cites {name} \"{section}\", which has no such heading"
+                );
+            }
+        }
+    }
+    assert!(cited > 50, "only {cited} citations found");
+}

@@ -14,7 +14,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 /// Accepted relative deviation of a view's total mass from 1/(2π).
 const MASS_TOL: f64 = 1e-9;
 
-/// Every family at the ends and the middle of its domain (MATH.md), including ABC's exact a₂ = 1 and
+/// Every family at the ends and the middle of its domain (docs/maths.md), including ABC's exact a₂ = 1 and
 /// 2 and SGD's a₂ = 0.
 const CURVES: &[&str] = &[
     r#"{"ndf": "phong", "alpha_p": [0, 1, 100, 10000, 1000000]}"#,

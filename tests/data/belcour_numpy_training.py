@@ -1,7 +1,7 @@
 """Rebuilds the Belcour basis with numpy and compares it with reference/belcour_basis.csv.
 
 Documents the float64 procedure that src/fresnel/basis/numpy_f64.rs replicates bit for bit:
-the training rows (F - F0)/(1 - F0) of MATH.md's normative Fresnel form, evaluated in numpy
+the training rows (F - F0)/(1 - F0) of docs/maths.md's normative Fresnel form, evaluated in numpy
 complex128 as written in `fresnel` below. Training row k = 10 has 1 - F0 = 2e-5, so each ulp of
 F moves the basis by up to ~1e-11; with this exact operation order (w from e2 - (1 - c**2),
 np.abs(r)**2, F0 from the same function at c = 1) the basis matches the reference to ~1e-15,
@@ -56,7 +56,7 @@ def main():
     b1 = b1 / b1.max()
     vh = np.linalg.svd(curves - b1)[2]
     b2, b3 = (v / np.abs(v).max() for v in vh[:2])
-    # MATH.md's sign convention: the largest-magnitude entry is +1.
+    # docs/maths.md's sign convention: the largest-magnitude entry is +1.
     b2, b3 = (b * np.sign(b[np.argmax(np.abs(b))]) for b in (b2, b3))
     basis = np.stack([np.ones(N), b1, b2, b3], axis=1)
     reference = np.loadtxt(HERE / "reference" / "belcour_basis.csv", delimiter=",", skiprows=1)

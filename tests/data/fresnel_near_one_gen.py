@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 """Generate tests/data/fresnel_near_one.csv: exact Fresnel near the index 1, computed with mpmath.
 
-Independent of the Rust code: every value is MATH.md's normative form
+Independent of the Rust code: every value is docs/maths.md's normative form
 r_s = (c - w)/(c + w), r_p = (eta~^2 c - w)/(eta~^2 c + w), F = (|r_s|^2 + |r_p|^2)/2,
 w = sqrt(eta~^2 - 1 + c^2) (principal root), evaluated at 120 digits (the raw ratios cancel by up to
 |eta~^2 - 1| ~ 1e-12, and Gulbrandsen's kappa^2 by up to g) from the exact doubles written in the file,
-and printed to 20 significant digits. Gulbrandsen's (r, g) goes through MATH.md's map
+and printed to 20 significant digits. Gulbrandsen's (r, g) goes through docs/maths.md's map
 n = g (1 - r)/(1 + r) + (1 - g)(1 + sqrt r)/(1 - sqrt r), kappa^2 = (r (1 + n)^2 - (n - 1)^2)/(1 - r)
 (0 at g = 0); the generator checks F(0) = r for it and F(0) = ((n - 1)^2 + k^2)/((n + 1)^2 + k^2) for every index.
 

@@ -2,13 +2,13 @@
 """Generate tests/data/fresnel_normalized.csv: the normalized Fresnel curve (F - F0)/(1 - F0) from
 theta = 1e-12 to pi/2, computed with mpmath.
 
-Independent of the Rust code: every value is MATH.md's normative form
+Independent of the Rust code: every value is docs/maths.md's normative form
 r_s = (c - w)/(c + w), r_p = (eta~^2 c - w)/(eta~^2 c + w), F = (|r_s|^2 + |r_p|^2)/2,
 w = sqrt(eta~^2 - 1 + c^2) (principal root), F0 = F at c = 1, and the difference F - F0 taken as it
 stands, evaluated at 120 digits from the exact doubles written in the file and printed to 20
 significant digits. F - F0 ~ F0 theta^4 near theta = 0 (the theta^2 terms of |r_s|^2 and |r_p|^2
 cancel), so at theta = 1e-12 the difference keeps ~120 - 48 digits; 1 - F0 and eta~^2 - 1 lose at
-most 10 more. Gulbrandsen's (r, g) goes through MATH.md's map; both come from fresnel_near_one_gen.py.
+most 10 more. Gulbrandsen's (r, g) goes through docs/maths.md's map; both come from fresnel_near_one_gen.py.
 
 Regimes (the case id's second field):
 - dielectric: eta = 0.5, 0.9, 1 - 1e-9, 1 + 1e-9, 1.5, 3, 10 (kappa = 0); for eta < 1 past the
@@ -19,7 +19,7 @@ Regimes (the case id's second field):
   3 + 10i), and a weakly absorbing 1.5 + 1e-3 i;
 - gulbrandsen: (r, g) from r = 1e-12 (eta~ - 1 ~ 1e-6) to r = 0.99;
 - training-quirk: the basis training set's row k = 10, eta = -9.999950000513731e-6,
-  kappa = 0.9999999999472646 (MATH.md step 2; 1 - F0 = 2e-5). The curve model refuses eta < 0;
+  kappa = 0.9999999999472646 (docs/maths.md step 2; 1 - F0 = 2e-5). The curve model refuses eta < 0;
   the test evaluates this row through the library function directly.
 theta: 4 per decade from 1e-12 to 1, then 1.1 ... 1.5, 1.55, 1.57, 1.5707, 1.5707963 and the double
 nearest pi/2. Points where the value is ill-conditioned are left out: where |v'(theta)/v| times

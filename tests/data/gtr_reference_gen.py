@@ -5,7 +5,7 @@ Independent of the Rust code: D = c / (alpha^2 cos^2(theta) + sin^2(theta))^gamm
 normalization c = (gamma - 1)(alpha^2 - 1) / (pi (1 - (alpha^2)^(1 - gamma))) and its limits at gamma = 1
 (c = (alpha^2 - 1) / (pi ln alpha^2)) and alpha = 1 (c = 1/pi), evaluated with enough extra digits to absorb
 the textbook form's cancellation near alpha = 1 and gamma = 1, from the exact doubles written in the file.
-The generator checks c against MATH.md's exprel form and, for a few ordinary lobes, the normalization
+The generator checks c against docs/maths.md's exprel form and, for a few ordinary lobes, the normalization
 2 pi int_0^(pi/2) D sin cos dtheta = 1 by mpmath quadrature.
 
 Grid: alpha_gtr log-spaced over [1e-150, 1e3] plus 1 and 1 +- 1e-9, 1 +- 1e-6; gamma_gtr from the smallest
@@ -63,7 +63,7 @@ def norm_textbook(a, g):
 
 
 def norm_exprel(a, g):
-    """c = exprel(L) / (pi exprel((1 - gamma) L)), L = ln alpha^2 (MATH.md), as a cross-check."""
+    """c = exprel(L) / (pi exprel((1 - gamma) L)), L = ln alpha^2 (docs/maths.md), as a cross-check."""
     def exprel(x):
         return mpf(1) if x == 0 else mp.expm1(x) / x
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Generate tests/data/ndf_extreme.csv: NDF values at extreme parameters, computed with mpmath.
 
-Independent of the Rust code: every value comes from the textbook formula of MATH.md evaluated at
+Independent of the Rust code: every value comes from the textbook formula of docs/maths.md evaluated at
 60 significant digits from the exact doubles written in the file (parameters and theta), with the
 normalization N computed in high precision (closed form where it exists, its removable-singularity
 limit at a2 = 1 and 2, Dawson + Faddeeva for Torrance-Sparrow).

@@ -1,5 +1,5 @@
 //! Directional albedo (`ndfplot::model::albedo`) of the GGX microfacet BRDF against exact values, an
-//! mpmath reference, an independent quadrature, the values of MATH.md's research notes and Cycles'
+//! mpmath reference, an independent quadrature, the values of docs/maths.md's research notes and Cycles'
 //! precomputed tables, and its invariants (bounds, split-sum linearity).
 //!
 //! - `tests/data/albedo_reference.csv`: E(μ = 1) at 40-digit mpmath (`albedo_reference_gen.py`).

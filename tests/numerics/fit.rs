@@ -1,5 +1,5 @@
 //! Fits and metrics at library level: peak fits against 30-digit mpmath fits
-//! (`tests/data/reference/peak_fits.csv`) and the exact matches of MATH.md's table; the max and L2 fits
+//! (`tests/data/reference/peak_fits.csv`) and the exact matches of docs/maths.md's table; the max and L2 fits
 //! checked independently (the matched quantity equal, the L2 distance locally minimal); every kind of bad
 //! fit input; difference series.
 
@@ -89,7 +89,7 @@ fn peak_fits_reproduce_the_exact_matches_of_math_md() {
         );
         assert!(metrics::relative_difference(got.curve.eval(0.0), target.eval(0.0)) <= 1e-14);
     }
-    // To half a unit of the last digit MATH.md prints.
+    // To half a unit of the last digit docs/maths.md prints.
     for (alpha_b, expected, half_unit) in [(0.3, 0.0211927, 5e-8), (0.5, 0.00683542, 5e-9)] {
         let got = fit(
             &phong_of_beckmann(alpha_b),
@@ -177,7 +177,7 @@ fn gtr_fits_either_parameter_and_meets_trowbridge_reitz_at_gamma_2() {
 
 #[test]
 fn max_fits_equate_the_maxima_where_peak_fits_do_not() {
-    // SGD a₁ = 1, a₂ = 0.5 peaks away from the normal (CONTRACTS.md).
+    // SGD a₁ = 1, a₂ = 0.5 peaks away from the normal (docs/contracts.md).
     let target = ndf(Family::Sgd, &[1.0, 0.5]);
     let target_max = maximum(|t| target.eval(t), lobe_width(target.eval(0.0))).unwrap();
     assert!(

@@ -16,7 +16,7 @@ use ndfplot::model::math::tolerance::{REL_TOL_FRESNEL, floored_relative_differen
 const BELCOUR_ABS_TOL: f64 = 1e-12;
 /// Singular values, absolute in units of s₀: values below ~1e-13 s₀ are noise (reference/README.md).
 const SINGULAR_VALUE_TOL: f64 = 1e-12;
-/// Node reproduction of the interpolated tabulated curves (CONTRACTS.md `ndfplot eval`).
+/// Node reproduction of the interpolated tabulated curves (docs/contracts.md `ndfplot eval`).
 const NODE_TOL: f64 = 1e-13;
 
 /// Maps a reference `curve_json` onto the Fresnel model.

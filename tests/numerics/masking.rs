@@ -1,6 +1,6 @@
 //! Smith's Λ(θo) of the seven families against independent references and over their whole domains.
 //!
-//! - `tests/data/reference/lambda.csv` (`tests/data/lambda_reference_gen.py`, mpmath at 40 digits, MATH.md's
+//! - `tests/data/reference/lambda.csv` (`tests/data/lambda_reference_gen.py`, mpmath at 40 digits, docs/maths.md's
 //!   1D integral with the closed forms as a cross-check): every row by the family's own route, within
 //!   REL_TOL_LAMBDA_CLOSED_FORM for Trowbridge–Reitz, Beckmann and Phong (closed forms) and
 //!   REL_TOL_LAMBDA_INTEGRAL for the others (the integral is their only route); every row also by the generic

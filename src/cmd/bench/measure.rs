@@ -275,14 +275,14 @@ pub fn drawing(clock: &dyn Clock, settings: &Settings, cases: &[Ndf]) -> Vec<Row
     rows
 }
 
-/// Torrance–Sparrow check values of MATH.md (15 digits): (α_ts, N).
+/// Torrance–Sparrow check values of docs/maths.md (15 digits): (α_ts, N).
 const TS_REFERENCE: [(f64, f64); 4] = [
     (0.2027, 0.125601275797826),
     (0.552, 0.784586975070852),
     (1.81, 2.54561914769914),
     (100.0, 3.14136216800410),
 ];
-/// ABC check values of MATH.md (15 digits): (a₁, a₂, N).
+/// ABC check values of docs/maths.md (15 digits): (a₁, a₂, N).
 const ABC_REFERENCE: [(f64, f64, f64); 4] = [
     (10.0, 1.75, 0.562584587671993),
     (23.5, 1.75, 0.282172212012306),
@@ -317,14 +317,14 @@ pub fn sgd_gamma_quadrature(s: f64, x: f64, rel_tol: f64) -> f64 {
     integrate(|w| (x - w.ln()).powf(s - 1.0), 0.0, 1.0, rel_tol).unwrap_or(f64::NAN)
 }
 
-/// MATH.md's closed form of the ABC normalization, as the notebook wrote it:
+/// docs/maths.md's closed form of the ABC normalization, as the notebook wrote it:
 /// N = 2π (U^{2−a₂} − 1 + a₁(a₂ − 2)) / (a₁² (a₂ − 2)(a₂ − 1)), U = 1 + a₁ (0/0 at a₂ = 1, 2).
 pub fn abc_closed_form(a1: f64, a2: f64) -> f64 {
     let u = 1.0 + a1;
     2.0 * PI * (u.powf(2.0 - a2) - 1.0 + a1 * (a2 - 2.0)) / (a1 * a1 * (a2 - 2.0) * (a2 - 1.0))
 }
 
-/// Section (b): every normalization route against MATH.md's 15-digit values (Torrance–Sparrow, ABC)
+/// Section (b): every normalization route against docs/maths.md's 15-digit values (Torrance–Sparrow, ABC)
 /// and mpmath's (SGD's e^{a₁} Γ(1 − a₂, a₁)).
 pub fn normalization(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
     let mut rows = Vec::new();
@@ -480,7 +480,7 @@ pub fn throughput(clock: &dyn Clock, settings: &Settings, cases: &[Ndf]) -> Vec<
     rows
 }
 
-/// Smith Λ(θo) references: `tests/data/reference/lambda.csv` (mpmath at 40 digits, MATH.md's 1D
+/// Smith Λ(θo) references: `tests/data/reference/lambda.csv` (mpmath at 40 digits, docs/maths.md's 1D
 /// integral), rows `case_id,curve_json,theta_o,lambda` below a `#` provenance line.
 const LAMBDA_REFERENCE: &str = include_str!("../../../tests/data/reference/lambda.csv");
 
@@ -668,7 +668,7 @@ pub fn run(clock: &dyn Clock, settings: &Settings) -> Vec<Row> {
 }
 
 /// The rows as CSV: `section,case,method,setting,samples,seconds,error`, numbers in shortest
-/// round-trip form (CONTRACTS.md), fields quoted where they need it.
+/// round-trip form (docs/contracts.md), fields quoted where they need it.
 pub fn csv(rows: &[Row]) -> String {
     let header = [
         "section", "case", "method", "setting", "samples", "seconds", "error",

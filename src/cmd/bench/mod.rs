@@ -293,6 +293,7 @@ pub fn figure(rows: &[Row]) -> Figure {
         canvas: CANVAS,
         theme: Theme::Notebook,
         provenance: Provenance::without_spec(),
+        page: None,
         panels: vec![
             panel(
                 "(a) drawing a curve",

@@ -1,7 +1,7 @@
 //! Polynomial approximations of Fresnel reflectance: Schlick and Lazanyi–Schlick, and the
 //! Lazanyi correction term normalized to a maximum of 1.
 //!
-//! Formulas (MATH.md "Fresnel"), with c = cos θ and x = 1 − c:
+//! Formulas (docs/maths.md "Fresnel"), with c = cos θ and x = 1 − c:
 //! - Schlick (1994): F = F₀ + (1 − F₀) x⁵, F₀ = F(θ = 0) ∈ [0, 1].
 //! - Lazanyi–Schlick (Lazányi and Szirmay-Kalos 2005): F = F₀ + (1 − F₀) x⁵ − a c x⁶; a = 0 is Schlick.
 //! - The normalized Lazanyi term c x⁶ / ((1/7)(6/7)⁶), which the notebook compares with b₂.

@@ -1,5 +1,5 @@
 //! The Belcour–Bati–Barla four-term Fresnel basis (SIGGRAPH 2020, "Bringing an Accurate Fresnel to
-//! Real-Time Rendering: a Preintegrable Decomposition"), rebuilt exactly as MATH.md steps 1–7 and
+//! Real-Time Rendering: a Preintegrable Decomposition"), rebuilt exactly as docs/maths.md steps 1–7 and
 //! the notebook `seeds/004_a7d16ebd756ecf05.txt` do, and the projection of a material onto it.
 //!
 //! - Grid: 1000 nodes c_i = numpy `linspace(0, 1, 1000)` = i·(1/999), the last one exactly 1.
@@ -39,14 +39,14 @@ use crate::model::grid::linspace;
 #[cfg(test)]
 mod compute;
 
-/// Number of grid nodes c_i (MATH.md step 1).
+/// Number of grid nodes c_i (docs/maths.md step 1).
 pub const GRID_SIZE: usize = 1000;
 
 /// Index range of the dielectric training rows: η from 1.01 to 3.0 (the notebook's literals).
 const DIELECTRIC_ETA_MIN: f64 = 1.01;
 /// Upper end of the dielectric index range, for the training rows and the spectrum check.
 const DIELECTRIC_ETA_MAX: f64 = 3.0;
-/// Number of dielectrics in the spectrum check (MATH.md step 6).
+/// Number of dielectrics in the spectrum check (docs/maths.md step 6).
 const SPECTRUM_SIZE: usize = 100;
 
 /// The grid c_i = numpy `linspace(0, 1, 1000)`, i.e. i·fl(1/999) with c₉₉₉ = 1 exactly.
@@ -146,7 +146,7 @@ static BASIS: OnceLock<Basis> = OnceLock::new();
 /// gets the same bits; a test keeps it equal to the computation.
 const STORED: &str = include_str!("basis/stored.txt");
 
-/// The basis of MATH.md steps 1–4, read from [`STORED`] on first call and shared.
+/// The basis of docs/maths.md steps 1–4, read from [`STORED`] on first call and shared.
 pub fn basis() -> &'static Basis {
     BASIS.get_or_init(|| parse_stored(STORED))
 }
@@ -219,7 +219,7 @@ impl Basis {
         &self.functions[k]
     }
 
-    /// The critical indices [i₁, i₂] of MATH.md step 4: [128, 432].
+    /// The critical indices [i₁, i₂] of docs/maths.md step 4: [128, 432].
     pub fn critical_indices(&self) -> [usize; 2] {
         self.critical
     }
@@ -260,7 +260,7 @@ pub struct Coefficients {
     pub c3: f64,
 }
 
-/// The notebook's `fresnel2coeffs` (MATH.md step 5) for the exact Fresnel of `index` η̃ = η + iκ:
+/// The notebook's `fresnel2coeffs` (docs/maths.md step 5) for the exact Fresnel of `index` η̃ = η + iκ:
 /// c₀ = F(1), c₁ = 1 − c₀ (0 when c₀ = 0), and (c₂, c₃) from the 2×2 system at the critical nodes,
 /// solved by Cramer's rule. Computes the basis on first use.
 pub fn coeffs(index: Index) -> Coefficients {
@@ -316,7 +316,7 @@ impl Coefficients {
     }
 }
 
-/// The spectrum figure of MATH.md step 6.
+/// The spectrum figure of docs/maths.md step 6.
 #[derive(Debug, Clone)]
 pub struct Spectrum {
     /// The dielectric indices η = linspace(1.01, 3, 100), κ = 0.
@@ -331,7 +331,7 @@ pub struct Spectrum {
 
 static SPECTRUM: OnceLock<Spectrum> = OnceLock::new();
 
-/// The spectrum of MATH.md step 6, computed on first call (one 100 × 1000 SVD) and shared.
+/// The spectrum of docs/maths.md step 6, computed on first call (one 100 × 1000 SVD) and shared.
 pub fn spectrum() -> &'static Spectrum {
     SPECTRUM.get_or_init(|| {
         let etas = linspace(DIELECTRIC_ETA_MIN, DIELECTRIC_ETA_MAX, SPECTRUM_SIZE);

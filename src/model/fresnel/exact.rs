@@ -1,11 +1,11 @@
 //! Exact Fresnel reflectance of a smooth interface, from a medium of index 1 onto η̃ = η + iκ.
 //!
-//! Formula (MATH.md "Fresnel", the normative form): with c = cos θ and the principal complex root
+//! Formula (docs/maths.md "Fresnel", the normative form): with c = cos θ and the principal complex root
 //! w = √(η̃² − 1 + c²) = √(η̃² − sin²θ) (Re w ≥ 0; w = η̃ cos θ_t),
 //! r_s = (c − w)/(c + w),   r_p = (η̃² c − w)/(η̃² c + w),   F = (|r_s|² + |r_p|²)/2.
 //!
 //! Domain: any (η, κ) for which η̃² neither overflows nor underflows (see `Ior` in `mod.rs`); the
-//! basis training set also calls it with η < 0 (MATH.md step 2), where the principal root is what
+//! basis training set also calls it with η < 0 (docs/maths.md step 2), where the principal root is what
 //! makes F₀ = 0.99998. Behaviour: F(θ = 0) = ((η − 1)² + κ²)/((η + 1)² + κ²), F → 1 at θ → π/2.
 //!
 //! Stable forms and why:
@@ -14,7 +14,7 @@
 //!   given by Gulbrandsen's (r, g) carries η − 1 from its own closed form, since η itself rounds
 //!   η − 1 ~ √r away for small r.
 //! - Both numerators cancel near η̃ = 1. Multiplying through by the conjugate denominators:
-//!   r_s = −a/(c + w)², r_p = a (η̃² c² − sin²θ)/(η̃² c + w)² (η̃² c² − sin²θ is MATH.md's
+//!   r_s = −a/(c + w)², r_p = a (η̃² c² − sin²θ)/(η̃² c + w)² (η̃² c² − sin²θ is docs/maths.md's
 //!   c²(η̃² + 1) − 1). These are used everywhere: the denominators never cancel (Re w ≥ 0, c ≥ 0),
 //!   so they are at least as accurate as the raw ratios. |a| = |η̃ − 1| |η̃ + 1|, a product of norms.
 //! - The angle is an [`Incidence`]: c = cos θ and sin²θ, each accurate relative to itself. From θ,
@@ -126,7 +126,7 @@ impl Incidence {
     }
 }
 
-/// Exact unpolarized reflectance F(c; η̃) of MATH.md's normative form, in [0, 1].
+/// Exact unpolarized reflectance F(c; η̃) of docs/maths.md's normative form, in [0, 1].
 ///
 /// `incidence` is the angle of incidence θ (c = cos θ); `index` is η̃ = η + iκ, the medium entered
 /// from index 1. Exactly 0 for η̃ = 1, exactly 1 under total internal reflection (κ = 0,
@@ -383,7 +383,7 @@ mod tests {
 
     #[test]
     fn quirky_training_material_keeps_the_principal_branch() {
-        // MATH.md step 2: η ≈ −9.99995e-6, κ ≈ 1 gives F₀ = 0.99998 with the principal root.
+        // docs/maths.md step 2: η ≈ −9.99995e-6, κ ≈ 1 gives F₀ = 0.99998 with the principal root.
         let f0 = reflectance(Incidence::NORMAL, Index::new(-9.99995e-6, 1.0));
         assert!((f0 - 0.99998).abs() < 1e-6, "{f0}");
     }

@@ -1,14 +1,14 @@
 //! Gulbrandsen's artist-friendly parameterization of a complex index: reflectivity r and edge tint
 //! g, both in [0, 1], mapped to (η, κ) and back.
 //!
-//! Source: O. Gulbrandsen, "Artist Friendly Metallic Fresnel", JCGT 3(4), 2014; MATH.md "Fresnel".
+//! Source: O. Gulbrandsen, "Artist Friendly Metallic Fresnel", JCGT 3(4), 2014; docs/maths.md "Fresnel".
 //! With n_min = (1 − r)/(1 + r) and n_max = (1 + √r)/(1 − √r):
 //!   η = g n_min + (1 − g) n_max,   κ² = (r (1 + η)² − (η − 1)²)/(1 − r)   (0 when g ≤ 0),
 //! and the inverse r = ((η − 1)² + κ²)/((η + 1)² + κ²), g = (n_max − η)/(n_max − n_min).
 //! The notebook's remap ḡ = 1 − (1 − g)³ spreads the edge tint more evenly.
 //!
 //! Domain: r ∈ [0, 1) (r = 1 is singular: n_max = ∞), g ∈ [0, 1]; validation lives in `Ior`.
-//! The basis training set calls the forward map with r slightly above 1 and g = 1 (MATH.md step 2),
+//! The basis training set calls the forward map with r slightly above 1 and g = 1 (docs/maths.md step 2),
 //! where the n_max term has weight 0 and the result is finite.
 //!
 //! Stable forms and why:
@@ -28,7 +28,7 @@
 
 use super::exact::Index;
 
-/// Gulbrandsen's forward map (r, g) → (η, κ) of MATH.md in the notebook's operation order, κ²
+/// Gulbrandsen's forward map (r, g) → (η, κ) of docs/maths.md in the notebook's operation order, κ²
 /// clamped at 0; (1, 0) at r = 0. The basis training set's rounding; curves use [`index`].
 ///
 /// Meaningful for r ∈ [0, 1), g ∈ [0, 1] (and r slightly above 1 with g = 1); not validated here.

@@ -1,12 +1,12 @@
 //! Fresnel reflectance curves F(θ), θ the angle of incidence in [0, π/2]: validated material indices
 //! and the curve enum the rest of the crate evaluates.
 //!
-//! - `exact`: the exact complex-index Fresnel of MATH.md (the normative form).
+//! - `exact`: the exact complex-index Fresnel of docs/maths.md (the normative form).
 //! - `approx`: Schlick, Lazanyi–Schlick and the normalized Lazanyi term.
 //! - `gulbrandsen`: the (r, g) ↔ (η, κ) parameterization.
 //! - `basis`: the Belcour–Bati–Barla basis, its projection and the spectrum check.
 //!
-//! Constructors validate (CONTRACTS.md "Parameter domains"); `eval` then never fails. Physical
+//! Constructors validate (docs/contracts.md "Parameter domains"); `eval` then never fails. Physical
 //! curves (exact, Schlick, Lazanyi with `a` in range, the Lazanyi term) stay within [0, 1]; the
 //! `belcour` reconstruction and the `basis` functions are tabulated approximations that may not.
 //! Pure f64 code: no I/O.

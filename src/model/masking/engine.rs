@@ -1,4 +1,4 @@
-//! The G1 a renderer uses for an NDF, and what it does to energy (MATH.md "Masking–shadowing and albedo";
+//! The G1 a renderer uses for an NDF, and what it does to energy (docs/maths.md "Masking–shadowing and albedo";
 //! research: Walter et al. 2007, Heitz 2014).
 //!
 //! Engines rarely evaluate the exact Smith G1 of the NDF they shade with: Mitsuba 3, Cycles and bbm use Walter
@@ -105,18 +105,11 @@ pub struct NoBeckmannEquivalent {
     pub model: G1Model,
 }
 
-/// The Beckmann roughness α_b engines substitute for `ndf`: α_b itself for Beckmann; √(2/(α_p + 2)) for Phong
-/// (Walter et al. 2007; bbm's a = √(α_p/2 + 1) cot θo); α_ts and α_tr for Torrance–Sparrow and
-/// Trowbridge–Reitz (the notebook's rough equivalences α_ts = α_b, α_tr = α_b, MATH.md); None for ABC, SGD and
-/// GTR, which have none.
+/// The Beckmann roughness α_b engines substitute for `ndf` (its family's
+/// [`Distribution::beckmann_equivalent_alpha`](crate::model::ndf::Distribution::beckmann_equivalent_alpha)),
+/// or `None` where the family has none.
 pub fn beckmann_equivalent_alpha(ndf: &Ndf) -> Option<f64> {
-    match ndf {
-        Ndf::Beckmann(d) => Some(d.alpha_b()),
-        Ndf::Phong(d) => Some((2.0 / (d.alpha_p() + 2.0)).sqrt()),
-        Ndf::TorranceSparrow(d) => Some(d.alpha_ts()),
-        Ndf::TrowbridgeReitz(d) => Some(d.alpha_tr()),
-        Ndf::Abc(_) | Ndf::Sgd(_) | Ndf::Gtr(_) => None,
-    }
+    ndf.beckmann_equivalent_alpha()
 }
 
 /// Above this a, Walter's rational G1 is 1 (its own cut-off).

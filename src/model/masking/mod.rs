@@ -1,11 +1,11 @@
-//! Smith masking–shadowing (MATH.md "Masking–shadowing and albedo"; Heitz 2014, JCGT 3(2)).
+//! Smith masking–shadowing (docs/maths.md "Masking–shadowing and albedo"; Heitz 2014, JCGT 3(2)).
 //!
 //! For an isotropic NDF D normalized over projected area, the Smith masking of a view direction at
 //! angle θo from the normal is G1(θo) = 1/(1 + Λ(θo)), where Λ is the family's auxiliary function
 //! (each family computes its own; see [`Ndf::lambda`]). Masking and shadowing together, for a view at
 //! θo and a light at θi, follow one of two [`G2Model`]s. Everything here is pure f64 code.
 //!
-//! - [`lambda_by_integral`]: Λ of any NDF by MATH.md's 1D integral ([`lambda_integral`], which lives with the
+//! - [`lambda_by_integral`]: Λ of any NDF by docs/maths.md's 1D integral ([`lambda_integral`], which lives with the
 //!   families that take it as their route).
 //! - [`engine`]: the G1 renderers use ([`G1Model`]: exact Smith, Walter's rational, the Beckmann-equivalent
 //!   Smith) and the weak white furnace value of each.

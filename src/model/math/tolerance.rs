@@ -27,7 +27,7 @@ pub const ABS_FLOOR: f64 = 1e-280;
 
 /// |a − b| / max(|a|, |b|): symmetric, scale-free, at most 2 for finite values of opposite signs;
 /// 0 when a == b (both 0 included, so two vanishing curves agree). This is `compare`'s `max_rel`
-/// (CONTRACTS.md) and `render --check`'s measure.
+/// (docs/contracts.md) and `render --check`'s measure.
 #[inline]
 pub fn relative_difference(a: f64, b: f64) -> f64 {
     if a == b {
@@ -38,7 +38,7 @@ pub fn relative_difference(a: f64, b: f64) -> f64 {
 }
 
 /// [`relative_difference`] where max(|a|, |b|) > [`ABS_FLOOR`], and the absolute difference |a − b|
-/// at or below it, where relative precision is lost to gradual underflow (MATH.md's convention for
+/// at or below it, where relative precision is lost to gradual underflow (docs/maths.md's convention for
 /// reference values and measured errors).
 #[inline]
 pub fn floored_relative_difference(a: f64, b: f64) -> f64 {
@@ -64,7 +64,7 @@ pub const QUAD_REL_TOL: f64 = 1e-12;
 /// tail, so a few 1e-14 are expected and 1e-12 holds with margin.
 pub const REL_TOL_LAMBDA_CLOSED_FORM: f64 = 1e-12;
 
-/// Relative error allowed for Smith's Λ by MATH.md's 1D integral (`masking::lambda_integral`, the only route
+/// Relative error allowed for Smith's Λ by docs/maths.md's 1D integral (`masking::lambda_integral`, the only route
 /// of Torrance–Sparrow, ABC, SGD and GTR): geometric panels of a fixed 16-point rule carry no error
 /// estimate. Worst measured against the references: 2.4e-13 (SGD) for those families, 1.4e-12 for a
 /// super-rough Beckmann lobe (α_b = 5 at θo = 1°) and 9e-13 against the closed forms over their whole domains;

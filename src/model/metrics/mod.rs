@@ -1,5 +1,5 @@
 //! How far apart two curves are over θ ∈ [0, π/2] or a part of it ([`ThetaRange`]): the metrics of
-//! `ndfplot compare` (CONTRACTS.md),
+//! `ndfplot compare` (docs/contracts.md),
 //! and the building blocks they share with fitting and the normalization audit — the projected-area
 //! integral by piecewise adaptive quadrature, and maxima located by a dense scan refined by golden-section
 //! search.
@@ -16,7 +16,7 @@ use std::fmt;
 pub mod sampled;
 
 /// Nodes of the c-grid of `l2_grid`: c_i = numpy linspace(0, 1, 1000), θ_i = arccos c_i — the Fresnel
-/// notebook's grid (MATH.md, "The Belcour–Bati–Barla basis").
+/// notebook's grid (docs/maths.md, "The Belcour–Bati–Barla basis").
 pub const L2_GRID_NODES: usize = 1000;
 
 /// Uniform θ nodes of the scan that precedes the refinement of a maximum: 2048 intervals of ~7.7e-4 rad,
@@ -47,7 +47,7 @@ const ARGMAX_TOL: f64 = 1e-12;
 /// |a − b| = 1e-3 P, gives 2.2e-13), and leaves l2_projected exact to ~1e-9 P even for nearly equal curves.
 const L2_SHIFT: f64 = 1e-3;
 
-/// Both curves must exceed this for `max_log_ratio` to count a θ (CONTRACTS.md): ln of anything above it
+/// Both curves must exceed this for `max_log_ratio` to count a θ (docs/contracts.md): ln of anything above it
 /// is finite (ln 1e-300 ≈ −690.8), while values below it are the underflowing tails of lobes whose ratio
 /// says nothing about the shapes compared.
 pub const LOG_RATIO_FLOOR: f64 = 1e-300;
@@ -173,7 +173,7 @@ fn breakpoints(width: f64, range: ThetaRange) -> Vec<f64> {
     breaks
 }
 
-/// 2π ∫₀^{π/2} f(θ) sin θ cos θ dθ (the projected-area integral of MATH.md) by adaptive Gauss–Kronrod
+/// 2π ∫₀^{π/2} f(θ) sin θ cos θ dθ (the projected-area integral of docs/maths.md) by adaptive Gauss–Kronrod
 /// quadrature over pieces broken geometrically around `width` (see [`lobe_width`]) and towards grazing,
 /// each to relative accuracy `QUAD_REL_TOL`.
 ///
@@ -418,7 +418,7 @@ pub fn log_ratio(a: f64, b: f64) -> Option<f64> {
     (a > LOG_RATIO_FLOOR && b > LOG_RATIO_FLOOR).then(|| (a.ln() - b.ln()).abs())
 }
 
-/// The metrics of `ndfplot compare` (CONTRACTS.md), over one θ range.
+/// The metrics of `ndfplot compare` (docs/contracts.md), over one θ range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Comparison {
     /// The θ range the metrics were taken over.

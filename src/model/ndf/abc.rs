@@ -4,7 +4,7 @@
 //! - Domain: 0 < a₁ ≤ 1e100, 0 < a₂ ≤ 1e100. Every positive a₁ works (a₁ → 0 is uniform); the caps keep
 //!   e^{(2 − a₂) ln(1 + a₁)} ≤ 1e200 and D(0) = 1/N ≲ a₁ a₂/(2π) finite. Stated once, with these reasons,
 //!   in [`Abc::PARAMS`](super::Distribution::PARAMS).
-//! - Normalization (MATH.md), with U = 1 + a₁, L = ln U = log1p(a₁) and c = (2 − a₂) L:
+//! - Normalization (docs/maths.md), with U = 1 + a₁, L = ln U = log1p(a₁) and c = (2 − a₂) L:
 //!   N = 2π ∫₀¹ (1 + a₁ (1 − μ))^{−a₂} μ dμ = (2π L/a₁²) [U exprel((1 − a₂) L) − exprel((2 − a₂) L)],
 //!   exact through the removable singularities a₂ = 1 and 2 (exprel(0) = 1, no ε dodge). The bracket cancels
 //!   by a factor ~1/(1 − e^{−L}) as a₁ → 0, so for L ≤ 1 it is rewritten as a sum of positive terms:
@@ -14,7 +14,7 @@
 //!   θ → π/2: D → (1 + a₁)^{−a₂}/N, small but positive.
 //! - Stable form: D = exp(−a₂ log1p(2 a₁ sin²(θ/2)) − ln N), so that U^{−a₂} (e.g. (1e6)^{−1e4}) never
 //!   under- or overflows by itself.
-//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
+//! - Smith Λ: no closed form is known; docs/maths.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
 //!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
 //!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
@@ -104,8 +104,9 @@ impl Distribution for Abc {
     const PARAMS: &'static [Param] = &[ALPHA_ABC1, ALPHA_ABC2];
     const LEGEND_PREFIX: Option<&'static str> = Some("ABC");
     const COLOUR: u32 = 0x6C70C4;
-    /// The notebook's match of Trowbridge–Reitz α_tr = 0.3 (MATH.md).
+    /// The notebook's match of Trowbridge–Reitz α_tr = 0.3 (docs/maths.md).
     const EXAMPLE: &'static [f64] = &[23.5, 1.75];
+    const PAGE_FORMULA: &'static str = include_str!("abc.js");
 
     fn from_params(params: &[f64]) -> Result<Self, DomainError> {
         Abc::new(params[0], params[1])
@@ -118,9 +119,19 @@ impl Distribution for Abc {
         (self.ln_peak - self.alpha_abc2 * (self.alpha_abc1 * one_minus_cos_theta).ln_1p()).exp()
     }
 
-    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
+    /// Λ(θo) by docs/maths.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
     fn lambda(&self, theta_o: f64) -> f64 {
         crate::model::ndf::lambda_integral::lambda_integral(|theta| self.eval(theta), theta_o)
+    }
+
+    /// None: D falls monotonically from its peak at θ = 0 (or rises to θ = π/2).
+    fn interior_peak(&self) -> Option<f64> {
+        None
+    }
+
+    /// None: renderers have no Beckmann equivalent for this family.
+    fn beckmann_equivalent_alpha(&self) -> Option<f64> {
+        None
     }
 
     fn params(&self) -> Vec<f64> {
@@ -156,7 +167,7 @@ fn normalization(a1: f64, a2: f64) -> f64 {
 mod tests {
     use super::*;
 
-    /// MATH.md's 15-digit check values of N(a₁, a₂).
+    /// docs/maths.md's 15-digit check values of N(a₁, a₂).
     #[test]
     fn normalization_matches_math_md_checks() {
         for (a1, a2, want) in [

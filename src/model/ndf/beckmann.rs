@@ -1,4 +1,4 @@
-//! Beckmann NDF: D(θ) = exp(−tan²θ/α_b²) / (π α_b² cos⁴θ) (MATH.md "Beckmann"; Beckmann & Spizzichino 1963,
+//! Beckmann NDF: D(θ) = exp(−tan²θ/α_b²) / (π α_b² cos⁴θ) (docs/maths.md "Beckmann"; Beckmann & Spizzichino 1963,
 //! Walter et al. 2007), α_b the RMS microfacet slope.
 //!
 //! - Domain: 1e-150 ≤ α_b ≤ 1e4. Below, α_b² leaves the normal double range and D(0) = 1/(π α_b²) heads for
@@ -82,6 +82,7 @@ impl Distribution for Beckmann {
     const COLOUR: u32 = 0x2689D1;
     const LAMBDA_CLOSED_FORM: bool = true;
     const EXAMPLE: &'static [f64] = &[0.3];
+    const PAGE_FORMULA: &'static str = include_str!("beckmann.js");
 
     fn from_params(params: &[f64]) -> Result<Self, DomainError> {
         Beckmann::new(params[0])
@@ -98,6 +99,18 @@ impl Distribution for Beckmann {
     /// Λ(θo) = e^{−a²} [1/(2a√π) − erfcx(a)/2], a = cot θo/α_b (see [`smith_lambda`]).
     fn lambda(&self, theta_o: f64) -> f64 {
         smith_lambda(self.alpha_b, theta_o)
+    }
+
+    /// A super-rough lobe (α_b > 1/√2) peaks off the normal where d ln D/d tan²θ = 2/(1 + tan²θ) − 1/α_b²
+    /// vanishes: tan²θ = 2α_b² − 1.
+    fn interior_peak(&self) -> Option<f64> {
+        (self.alpha_b > std::f64::consts::FRAC_1_SQRT_2)
+            .then(|| (2.0 * self.alpha_b.powi(2) - 1.0).sqrt().atan())
+    }
+
+    /// α_b itself.
+    fn beckmann_equivalent_alpha(&self) -> Option<f64> {
+        Some(self.alpha_b)
     }
 
     fn params(&self) -> Vec<f64> {

@@ -1,4 +1,4 @@
-//! Generalized Trowbridge–Reitz NDF (Burley 2012, the Disney BRDF; MATH.md "Generalized Trowbridge–Reitz"):
+//! Generalized Trowbridge–Reitz NDF (Burley 2012, the Disney BRDF; docs/maths.md "Generalized Trowbridge–Reitz"):
 //! D(θ) = c / (α² cos²θ + sin²θ)^γ with α = `alpha_gtr` and γ = `gamma_gtr`. γ = 1 is Burley's GTR1 ("Berry"),
 //! γ = 2 is Trowbridge–Reitz with α_tr = α, γ → 0 and α = 1 are uniform.
 //!
@@ -22,7 +22,7 @@
 //!   q/q_peak ≤ 1 + k ≤ 1e300). Its relative error is ~γ times that of q/q_peak (a few ulps), plus for γ > 1
 //!   the rounding of 1/γ times ln D_peak (≤ 690 · 2⁻⁵³ ≈ 8e-14), where exp(ln D_peak − γ ln(q/q_peak)) would
 //!   add |ln D| ulps (up to ~1450).
-//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
+//! - Smith Λ: no closed form is known; docs/maths.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
 //!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
 //!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
@@ -118,6 +118,7 @@ impl Distribution for Gtr {
     const COLOUR: u32 = 0x2AA198;
     /// Between Berry (γ = 1) and Trowbridge–Reitz (γ = 2) at the catalogue's α = 0.3.
     const EXAMPLE: &'static [f64] = &[0.3, 1.5];
+    const PAGE_FORMULA: &'static str = include_str!("gtr.js");
 
     fn from_params(params: &[f64]) -> Result<Self, DomainError> {
         Gtr::new(params[0], params[1])
@@ -136,9 +137,19 @@ impl Distribution for Gtr {
         }
     }
 
-    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
+    /// Λ(θo) by docs/maths.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
     fn lambda(&self, theta_o: f64) -> f64 {
         crate::model::ndf::lambda_integral::lambda_integral(|theta| self.eval(theta), theta_o)
+    }
+
+    /// None: D falls monotonically from its peak at θ = 0 (or rises to θ = π/2).
+    fn interior_peak(&self) -> Option<f64> {
+        None
+    }
+
+    /// None: renderers have no Beckmann equivalent for this family.
+    fn beckmann_equivalent_alpha(&self) -> Option<f64> {
+        None
     }
 
     fn params(&self) -> Vec<f64> {

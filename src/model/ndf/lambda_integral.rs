@@ -1,4 +1,4 @@
-//! Smith's Λ(θo) of any isotropic NDF by MATH.md's 1D integral, fast enough to run per plotted sample.
+//! Smith's Λ(θo) of any isotropic NDF by docs/maths.md's 1D integral, fast enough to run per plotted sample.
 //!
 //! Λ(θo) = (2/cos θo) ∫_{π/2−θo}^{π/2} D(θm) [b sin φ₀ − a (π − φ₀)] sin θm dθm,
 //! a = cos θo cos θm, b = sin θo sin θm, φ₀ = arccos(−a/b): the back-facing projected area of the microfacets
@@ -49,7 +49,7 @@ const SERIES_MAX_R: f64 = 0.5;
 const FLAT_WIDTH_MAX_EXPONENT: i32 = 1100;
 
 /// Λ(θo) for θo ∈ [0, π/2] of the isotropic NDF `d` (D(θm) for θm ∈ [0, π/2], normalized over projected
-/// area), by MATH.md's 1D integral (module header). Λ(0) = 0; finite and ≥ 0 for every θo ≤ FRAC_PI_2 (where
+/// area), by docs/maths.md's 1D integral (module header). Λ(0) = 0; finite and ≥ 0 for every θo ≤ FRAC_PI_2 (where
 /// Λ ~ 1/cos θo is large but finite, cos FRAC_PI_2 = 6.1e-17); never NaN for finite non-negative D.
 pub fn lambda_integral(d: impl Fn(f64) -> f64, theta_o: f64) -> f64 {
     debug_assert!(

@@ -1,4 +1,4 @@
-//! The microfacet normal distribution functions of MATH.md: the [`Distribution`] trait each family
+//! The microfacet normal distribution functions of docs/maths.md: the [`Distribution`] trait each family
 //! file implements, and the one registry ([`families!`]) from which [`Family`], [`Ndf`], name lookup
 //! and dispatch are generated.
 //!
@@ -22,7 +22,7 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
     const TITLE: &'static str;
     /// Other accepted names (`ggx` for Trowbridge–Reitz).
     const ALIASES: &'static [&'static str] = &[];
-    /// The parameters in MATH.md's order, each with its domain and the reason for each bound: the only
+    /// The parameters in docs/maths.md's order, each with its domain and the reason for each bound: the only
     /// statement of the bounds, which the constructor checks and everything else reads.
     const PARAMS: &'static [Param];
     /// Written before the parameter symbols of an automatic legend label when they alone do not name
@@ -44,16 +44,32 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
     /// D(θ) for θ ∈ [0, π/2], normalized over projected area.
     fn eval(&self, theta: f64) -> f64;
 
-    /// Smith's Λ(θo) for θo ∈ [0, π/2] (MATH.md "Masking–shadowing and albedo"), with G1 = 1/(1 + Λ): Λ(0) = 0,
+    /// Smith's Λ(θo) for θo ∈ [0, π/2] (docs/maths.md "Masking–shadowing and albedo"), with G1 = 1/(1 + Λ): Λ(0) = 0,
     /// non-decreasing in θo, finite and ≥ 0 (or +∞ where θo reaches π/2 if the family's Λ diverges there),
     /// never NaN. Each family states its route (closed form or [`crate::model::ndf::lambda_integral::lambda_integral`]).
     fn lambda(&self, theta_o: f64) -> f64;
 
     /// The parameter values in [`PARAMS`](Self::PARAMS) order.
     fn params(&self) -> Vec<f64>;
+
+    /// θ ∈ (0, π/2) of an off-normal maximum of D, where the lobe has one (a super-rough
+    /// Beckmann's, say); `None` when D peaks at θ = 0 or π/2 (grid points of every sampling).
+    /// The sampler starts its adaptive grid there, so that no peak falls between samples.
+    fn interior_peak(&self) -> Option<f64>;
+
+    /// The Beckmann roughness α_b renderers substitute for this lobe in a Beckmann-based G1
+    /// (Walter's rational, the Beckmann-equivalent Smith), or `None` if the family has none.
+    fn beckmann_equivalent_alpha(&self) -> Option<f64>;
+
+    /// D for the interactive page, in JavaScript: an expression that takes the parameter array (in
+    /// [`PARAMS`](Self::PARAMS) order) and returns `θ => D(θ)`, in the same stable form and
+    /// operation order as [`eval`](Self::eval) (the page's test holds them to 1e-12). It may use
+    /// the helpers `maths.js` defines (`PI`, `powi`, `exprel`, `phi`, `upperGammaScaled`,
+    /// `integrate`); the page assembles its table of families from the registry.
+    const PAGE_FORMULA: &'static str;
 }
 
-/// The registry: `Variant => module::Type` per family, in MATH.md's order. Declares the modules and
+/// The registry: `Variant => module::Type` per family, in docs/maths.md's order. Declares the modules and
 /// generates [`Family`] (the family without values), [`Ndf`] (a validated NDF of any family) and
 /// their dispatch, each arm a static call of the family's [`Distribution`] implementation.
 macro_rules! families {
@@ -79,7 +95,7 @@ macro_rules! families {
         const NAME_COUNT: usize = FAMILY_COUNT $(+ <$ty as Distribution>::ALIASES.len())+;
 
         impl Family {
-            /// Every family, in MATH.md's order.
+            /// Every family, in docs/maths.md's order.
             pub const ALL: [Family; FAMILY_COUNT] = [$(Family::$variant),+];
 
             /// Accepted names, canonical names first then aliases (for "did you mean" suggestions).
@@ -123,7 +139,7 @@ macro_rules! families {
                 }
             }
 
-            /// The parameters in MATH.md's order, with their domains.
+            /// The parameters in docs/maths.md's order, with their domains.
             pub fn params(self) -> &'static [Param] {
                 match self {
                     $(Family::$variant => <$ty as Distribution>::PARAMS,)+
@@ -148,6 +164,13 @@ macro_rules! families {
             pub fn colour(self) -> u32 {
                 match self {
                     $(Family::$variant => <$ty as Distribution>::COLOUR,)+
+                }
+            }
+
+            /// D in JavaScript for the interactive page (see [`Distribution::PAGE_FORMULA`]).
+            pub fn page_formula(self) -> &'static str {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::PAGE_FORMULA,)+
                 }
             }
 
@@ -182,6 +205,20 @@ macro_rules! families {
             pub fn lambda(&self, theta_o: f64) -> f64 {
                 match self {
                     $(Ndf::$variant(d) => d.lambda(theta_o),)+
+                }
+            }
+
+            /// See [`Distribution::interior_peak`].
+            pub fn interior_peak(&self) -> Option<f64> {
+                match self {
+                    $(Ndf::$variant(d) => d.interior_peak(),)+
+                }
+            }
+
+            /// See [`Distribution::beckmann_equivalent_alpha`].
+            pub fn beckmann_equivalent_alpha(&self) -> Option<f64> {
+                match self {
+                    $(Ndf::$variant(d) => d.beckmann_equivalent_alpha(),)+
                 }
             }
 
@@ -220,7 +257,7 @@ impl Family {
             .find(|f| f.name() == name || f.aliases().contains(&name))
     }
 
-    /// Parameter names in MATH.md's order.
+    /// Parameter names in docs/maths.md's order.
     pub fn param_names(self) -> Vec<&'static str> {
         self.params().iter().map(|p| p.name).collect()
     }

@@ -1,4 +1,4 @@
-//! Phong NDF: D(θ) = (α_p + 2)/(2π) · cos^{α_p} θ (MATH.md "Phong", after Blinn 1977 with the projected-area
+//! Phong NDF: D(θ) = (α_p + 2)/(2π) · cos^{α_p} θ (docs/maths.md "Phong", after Blinn 1977 with the projected-area
 //! normalization).
 //!
 //! - Domain: α_p ≥ 0, any finite value. α_p = 0 is the uniform distribution 1/π; below it D → ∞ at grazing.
@@ -14,7 +14,7 @@
 //!   ≤ 2.9e307 is finite.
 //! - Smith Λ, exactly: Phong's slope distribution is Student's t (Ribardière et al. 2017) with γ = (α_p + 4)/2,
 //!   so its marginal slope density is P₂(q) = Γ(β)/(√π Γ(β − ½)) (1 + q²)^{−β} with β = (α_p + 3)/2, and
-//!   Λ = (1/μ̃) ∫_{μ̃}^∞ (q − μ̃) P₂(q) dq, μ̃ = cot θo (MATH.md's incomplete-beta form). That form subtracts two
+//!   Λ = (1/μ̃) ∫_{μ̃}^∞ (q − μ̃) P₂(q) dq, μ̃ = cot θo (docs/maths.md's incomplete-beta form). That form subtracts two
 //!   nearly equal terms wherever Λ is a far tail (they cancel by ~(α_p + 3) cos²θo), and the incomplete beta's
 //!   continued fraction needs ~√α_p terms near its switch point, so ndfplot integrates the excess itself:
 //!   substituting 1 + q² = (1 + μ̃²)(1 + y) and y = e^σ − 1,
@@ -91,8 +91,9 @@ impl Distribution for Phong {
     const PARAMS: &'static [Param] = &[ALPHA_P];
     const COLOUR: u32 = 0xDB2E2E;
     const LAMBDA_CLOSED_FORM: bool = true;
-    /// α_p = 2/α_b² − 2 of the notebook's α_b = 0.3 (MATH.md, Walter et al. 2007).
+    /// α_p = 2/α_b² − 2 of the notebook's α_b = 0.3 (docs/maths.md, Walter et al. 2007).
     const EXAMPLE: &'static [f64] = &[2.0 / (0.3 * 0.3) - 2.0];
+    const PAGE_FORMULA: &'static str = include_str!("phong.js");
 
     fn from_params(params: &[f64]) -> Result<Self, DomainError> {
         Phong::new(params[0])
@@ -125,6 +126,16 @@ impl Distribution for Phong {
         } else {
             (exponent + prefactor.ln()).exp()
         }
+    }
+
+    /// None: D falls monotonically from its peak at θ = 0 (or rises to θ = π/2).
+    fn interior_peak(&self) -> Option<f64> {
+        None
+    }
+
+    /// √(2/(α_p + 2)) (Walter et al. 2007; bbm's a = √(α_p/2 + 1) cot θo).
+    fn beckmann_equivalent_alpha(&self) -> Option<f64> {
+        Some((2.0 / (self.alpha_p + 2.0)).sqrt())
     }
 
     fn params(&self) -> Vec<f64> {

@@ -14,7 +14,7 @@
 //! - Stable form: all in log space. e^{−a₁}/Γ(1 − a₂, a₁) is formed as 1/(e^{a₁} Γ(1 − a₂, a₁)), whose factors
 //!   alone under- and overflow for large a₁; (a₁² + x)^{−a₂} = a₁^{−2a₂} (1 + x/a₁²)^{−a₂} via log1p;
 //!   1/cos⁴θ = (1 + x)² via log1p. Then ln D = ln D(0) − x/a₁ − a₂ log1p(x/a₁²) + 2 log1p(x).
-//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
+//! - Smith Λ: no closed form is known; docs/maths.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
 //!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
 //!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
@@ -94,6 +94,7 @@ impl Distribution for Sgd {
     const COLOUR: u32 = 0xB58800;
     /// One of the notebook's sgd-grid curves, as the numpy peer times it.
     const EXAMPLE: &'static [f64] = &[0.2, 0.5];
+    const PAGE_FORMULA: &'static str = include_str!("sgd.js");
 
     fn from_params(params: &[f64]) -> Result<Self, DomainError> {
         Sgd::new(params[0], params[1])
@@ -110,9 +111,31 @@ impl Distribution for Sgd {
         .exp()
     }
 
-    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
+    /// Λ(θo) by docs/maths.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
     fn lambda(&self, theta_o: f64) -> f64 {
         crate::model::ndf::lambda_integral::lambda_integral(|theta| self.eval(theta), theta_o)
+    }
+
+    /// With x = tan²θ, d ln D/dx = −1/a₁ − a₂/(a₁² + x) + 2/(1 + x) has the sign of −(x² + Bx + C),
+    /// B = (1 − a₁)² + a₁a₂, C = a₁(a₁ + a₂ − 2a₁²): D has an off-normal maximum at the larger root
+    /// x₊ of x² + Bx + C when it is real and positive (always when C < 0, i.e. D rises from θ = 0).
+    /// x₊ is formed without cancellation: (−B + √Δ)/2 for B < 0, else −2C/(B + √Δ).
+    fn interior_peak(&self) -> Option<f64> {
+        let (a1, a2) = (self.alpha_sgd1, self.alpha_sgd2);
+        let b = (1.0 - a1).powi(2) + a1 * a2;
+        let c = a1 * (a1 + a2 - 2.0 * a1 * a1);
+        let discriminant = b * b - 4.0 * c;
+        if !(discriminant > 0.0) {
+            return None;
+        }
+        let root = discriminant.sqrt();
+        let x = if b < 0.0 { (root - b) / 2.0 } else { -2.0 * c / (b + root) };
+        (x > 0.0 && x.is_finite()).then(|| x.sqrt().atan())
+    }
+
+    /// None: renderers have no Beckmann equivalent for this family.
+    fn beckmann_equivalent_alpha(&self) -> Option<f64> {
+        None
     }
 
     fn params(&self) -> Vec<f64> {

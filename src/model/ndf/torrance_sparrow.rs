@@ -1,4 +1,4 @@
-//! Torrance–Sparrow NDF (Gaussian in angle): D(θ) = exp(−(θ/α_ts)²) / N(α_ts) (MATH.md "Torrance–Sparrow";
+//! Torrance–Sparrow NDF (Gaussian in angle): D(θ) = exp(−(θ/α_ts)²) / N(α_ts) (docs/maths.md "Torrance–Sparrow";
 //! Torrance & Sparrow 1967).
 //!
 //! - Domain: 1e-150 ≤ α_ts ≤ 1e150. Below, N ≈ π α_ts² leaves the normal double range and D(0) = 1/N heads for
@@ -13,7 +13,7 @@
 //! - θ → 0: D → 1/N ≈ 1/(π α²) for small α. θ → π/2: D → exp(−(π/(2α))²)/N, exactly 0 for small α.
 //! - Stable form: D = exp(ln(1/N) − (θ/α)²) in one exponential, so that exp(−(θ/α)²) cannot underflow while
 //!   D itself is still representable (1/N reaches 3e299).
-//! - Smith Λ: no closed form is known; MATH.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
+//! - Smith Λ: no closed form is known; docs/maths.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
 //!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
 //!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
@@ -73,8 +73,9 @@ impl Distribution for TorranceSparrow {
     const TITLE: &'static str = "Torrance–Sparrow";
     const PARAMS: &'static [Param] = &[ALPHA_TS];
     const COLOUR: u32 = 0xFF9900;
-    /// The notebook's peak match of Phong at α_b = 0.3 (MATH.md).
+    /// The notebook's peak match of Phong at α_b = 0.3 (docs/maths.md).
     const EXAMPLE: &'static [f64] = &[0.3097];
+    const PAGE_FORMULA: &'static str = include_str!("torrance_sparrow.js");
 
     fn from_params(params: &[f64]) -> Result<Self, DomainError> {
         TorranceSparrow::new(params[0])
@@ -86,9 +87,19 @@ impl Distribution for TorranceSparrow {
         (self.ln_peak - (theta / self.alpha_ts).powi(2)).exp()
     }
 
-    /// Λ(θo) by MATH.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
+    /// Λ(θo) by docs/maths.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
     fn lambda(&self, theta_o: f64) -> f64 {
         crate::model::ndf::lambda_integral::lambda_integral(|theta| self.eval(theta), theta_o)
+    }
+
+    /// None: D falls monotonically from its peak at θ = 0 (or rises to θ = π/2).
+    fn interior_peak(&self) -> Option<f64> {
+        None
+    }
+
+    /// α_ts (the notebook's rough equivalence α_ts = α_b, docs/maths.md "Parameter equivalences and fits").
+    fn beckmann_equivalent_alpha(&self) -> Option<f64> {
+        Some(self.alpha_ts)
     }
 
     fn params(&self) -> Vec<f64> {
@@ -96,10 +107,10 @@ impl Distribution for TorranceSparrow {
     }
 }
 
-/// N(α) = π α [F(α) + (√π/2) e^{−y²} Im w(α + i y)] with y = π/(2α) (MATH.md).
+/// N(α) = π α [F(α) + (√π/2) e^{−y²} Im w(α + i y)] with y = π/(2α) (docs/maths.md).
 ///
 /// Derivation: 2 sin θ cos θ = sin 2θ and ∫₀^∞ e^{−θ²/α²} sin 2θ dθ = α F(α) (DLMF 7.7.6 family); the tail
-/// over (π/2, ∞) is −α (√π/2) e^{−y²} Im w(α + i y) (MATH.md; both checked against 50-digit quadrature).
+/// over (π/2, ∞) is −α (√π/2) e^{−y²} Im w(α + i y) (docs/maths.md; both checked against 50-digit quadrature).
 fn normalization(alpha: f64) -> f64 {
     let y = FRAC_PI_2 / alpha;
     let tail = if y * y > TAIL_EXPONENT_NEGLIGIBLE {

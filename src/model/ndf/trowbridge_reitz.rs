@@ -1,4 +1,4 @@
-//! Trowbridge–Reitz (GGX) NDF: D(θ) = α² / (π (sin²θ + α² cos²θ)²) with α = α_tr (MATH.md "Trowbridge–Reitz";
+//! Trowbridge–Reitz (GGX) NDF: D(θ) = α² / (π (sin²θ + α² cos²θ)²) with α = α_tr (docs/maths.md "Trowbridge–Reitz";
 //! Trowbridge & Reitz 1975, Walter et al. 2007).
 //!
 //! - Domain: 1e-150 ≤ α_tr ≤ 1e4. Below, α_tr² leaves the normal double range and D(0) = 1/(π α_tr²) heads for
@@ -67,6 +67,7 @@ impl Distribution for TrowbridgeReitz {
     const COLOUR: u32 = 0x849900;
     const LAMBDA_CLOSED_FORM: bool = true;
     const EXAMPLE: &'static [f64] = &[0.3];
+    const PAGE_FORMULA: &'static str = include_str!("trowbridge_reitz.js");
 
     fn from_params(params: &[f64]) -> Result<Self, DomainError> {
         TrowbridgeReitz::new(params[0])
@@ -84,6 +85,16 @@ impl Distribution for TrowbridgeReitz {
     fn lambda(&self, theta_o: f64) -> f64 {
         let x = (self.alpha_tr * theta_o.tan()).powi(2);
         x / (2.0 * ((1.0 + x).sqrt() + 1.0))
+    }
+
+    /// None: D falls monotonically from its peak at θ = 0 (or rises to θ = π/2).
+    fn interior_peak(&self) -> Option<f64> {
+        None
+    }
+
+    /// α_tr (the notebook's rough equivalence α_tr = α_b, docs/maths.md "Parameter equivalences and fits").
+    fn beckmann_equivalent_alpha(&self) -> Option<f64> {
+        Some(self.alpha_tr)
     }
 
     fn params(&self) -> Vec<f64> {

@@ -1,6 +1,6 @@
 // The curve maths of an interactive ndfplot page: a line-by-line port of the Rust definitions that
-// `ndfplot eval` uses (src/ndf/*.rs, src/fresnel/{exact,approx,gulbrandsen,basis}.rs,
-// src/math/special.rs), in the same stable forms and operation order, so that a page's values agree
+// `ndfplot eval` uses (src/model/ndf/*.rs, src/model/fresnel/{exact,approx,gulbrandsen,basis}.rs,
+// src/model/math/special.rs), in the same stable forms and operation order, so that a page's values agree
 // with `eval` to 1e-12 relative (src/output/html/maths.rs tests this over every family's domain).
 // The one change of method is the Torrance–Sparrow normalization: Rust forms it from Dawson's and
 // the Faddeeva function, which have no compact JavaScript port; here it is a Gauss–Legendre
@@ -25,7 +25,7 @@ function ndfplotMaths(domains, basis) {
     }
   }
 
-  // ---- src/math/special.rs ----
+  // ---- src/model/math/special.rs ----
   function exprel(x) {
     return x === 0 ? 1 : Math.expm1(x) / x;
   }
@@ -171,96 +171,11 @@ function ndfplotMaths(domains, basis) {
     return 0.5 * width * sum;
   }
 
-  // ---- src/ndf/*.rs: each returns {eval(θ), peak} with the Rust precomputations ----
-  // Torrance–Sparrow N = π ∫₀^{π/2} e^{−θ²/α²} sin 2θ dθ. For α ≤ 0.01 the tail beyond π/2 is
-  // below e^{−24674} and N = π α F(α) with Dawson's series F(α) = α − 2α³/3 + 4α⁵/15 − 8α⁷/105
-  // (next term 16α⁹/945 < 2e-18 relative). Beyond, the integrand is below 2.4e-19 of its peak
-  // for θ > 6.5α: 16 panels of 20 Gauss nodes over [0, min(π/2, 6.5α)] resolve it to ~1e-16.
-  const TS_SERIES_MAX_ALPHA = 0.01;
-  const TS_CUTOFF_WIDTHS = 6.5;
-  const TS_PANELS = 16;
-  function torranceSparrowNormalization(alpha) {
-    if (alpha <= TS_SERIES_MAX_ALPHA) {
-      const a2 = alpha * alpha;
-      return PI * a2 * (1 + a2 * (-2 / 3 + a2 * (4 / 15 - (8 / 105) * a2)));
-    }
-    const hi = Math.min(PI / 2, TS_CUTOFF_WIDTHS * alpha);
-    return PI * integrate((t) => Math.exp(-powi(t / alpha, 2)) * Math.sin(2 * t), 0, hi, TS_PANELS);
-  }
-  const ABC_SERIES_MAX_LN_U = 1;
-  const ABC_SERIES_MAX_TERMS = 40;
-  function abcNormalization(a1, a2) {
-    const lnU = Math.log1p(a1);
-    if (lnU <= ABC_SERIES_MAX_LN_U) {
-      const c = (2 - a2) * lnU;
-      let sum = 0;
-      let lnUPower = 1;
-      for (let m = 0; m < ABC_SERIES_MAX_TERMS; m++) {
-        const term = lnUPower * phi(m + 2, c);
-        sum += term;
-        if (term <= EPS * sum) break;
-        lnUPower *= lnU;
-      }
-      return 2 * PI * powi(lnU / a1, 2) * sum;
-    }
-    const bracketOverA1 = (1 + 1 / a1) * exprel((1 - a2) * lnU) - exprel((2 - a2) * lnU) / a1;
-    return 2 * PI * (lnU / a1) * bracketOverA1;
-  }
-  function gtrPeak(k, gamma) {
-    if (k === 0) return 1 / PI;
-    const m = Math.log1p(k);
-    const y = (1 - gamma) * m;
-    if (y > 1) return ((1 - gamma) * k) / (PI * ((1 + k) * Math.pow(1 + k, -gamma) - 1));
-    return k / m / (PI * exprel(y));
-  }
-  const NDFS = {
-    phong([alphaP]) {
-      const lnInvN = Math.log((alphaP + 2) / (2 * PI));
-      return (t) => Math.exp(lnInvN - 0.5 * alphaP * Math.log1p(powi(Math.tan(t), 2)));
-    },
-    beckmann([alphaB]) {
-      const lnPeak = -Math.log(PI) - 2 * Math.log(alphaB);
-      return (t) => {
-        const tan = Math.tan(t);
-        return Math.exp(lnPeak - powi(tan / alphaB, 2) + 2 * Math.log1p(tan * tan));
-      };
-    },
-    torrance_sparrow([alphaTs]) {
-      const lnPeak = -Math.log(torranceSparrowNormalization(alphaTs));
-      return (t) => Math.exp(lnPeak - powi(t / alphaTs, 2));
-    },
-    trowbridge_reitz([alphaTr]) {
-      const alpha2 = alphaTr * alphaTr;
-      return (t) => {
-        const [s, c] = [Math.sin(t), Math.cos(t)];
-        return powi(alphaTr / (s * s + alpha2 * c * c), 2) * (1 / PI);
-      };
-    },
-    abc([a1, a2]) {
-      const lnPeak = -Math.log(abcNormalization(a1, a2));
-      return (t) => Math.exp(lnPeak - a2 * Math.log1p(a1 * (2 * powi(Math.sin(0.5 * t), 2))));
-    },
-    sgd([a1, a2]) {
-      const lnPeak = -(a2 + 1) * Math.log(a1) - Math.log(upperGammaScaled(1 - a2, a1)) - Math.log(PI);
-      return (t) => {
-        const tan = Math.tan(t);
-        const tan2 = tan * tan;
-        return Math.exp(lnPeak - tan2 / a1 - a2 * Math.log1p(powi(tan / a1, 2)) + 2 * Math.log1p(tan2));
-      };
-    },
-    gtr([alpha, gamma]) {
-      const [kSin, kCos] = alpha < 1 ? [((1 - alpha) * (1 + alpha)) / (alpha * alpha), 0] : [0, (alpha - 1) * (alpha + 1)];
-      const peak = gtrPeak(kSin + kCos, gamma);
-      const scale = gamma <= 1 ? peak : Math.pow(peak, 1 / gamma);
-      return (t) => {
-        const [s, c] = [Math.sin(t), Math.cos(t)];
-        const q = 1 + kSin * s * s + kCos * c * c;
-        return gamma <= 1 ? scale * Math.pow(q, -gamma) : Math.pow(scale / q, gamma);
-      };
-    },
-  };
+  // ---- the NDF families: each family's PAGE_FORMULA (src/model/ndf/<family>.js), assembled by
+  // src/output/html/maths.rs from the registry into {name: parameters → θ → D(θ)} ----
+  const NDFS = NDF_FORMULAS;
 
-  // ---- src/fresnel/exact.rs: complex numbers as [re, im] ----
+  // ---- src/model/fresnel/exact.rs: complex numbers as [re, im] ----
   const cMul = (a, b) => [a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0]];
   const cNorm = (z) => Math.hypot(z[0], z[1]);
   function principalSqrt(z) {
@@ -301,7 +216,7 @@ function ndfplotMaths(domains, basis) {
     return Math.min(0.5 * (rS * rS + rP * rP), 1);
   }
 
-  // ---- src/fresnel/gulbrandsen.rs ----
+  // ---- src/model/fresnel/gulbrandsen.rs ----
   function gulbrandsenEta(r, g) {
     const sqrtR = Math.sqrt(r);
     const etaMin = (1 - r) / (1 + r);
@@ -323,7 +238,7 @@ function ndfplotMaths(domains, basis) {
     return gulbrandsenIndex(p.r, g);
   }
 
-  // ---- src/fresnel/approx.rs ----
+  // ---- src/model/fresnel/approx.rs ----
   const LAZANYI_TERM_PEAK = (1 / 7) * (6 / 7) * (6 / 7) * (6 / 7) * (6 / 7) * (6 / 7) * (6 / 7);
   function oneMinusCos(t) {
     if (t < PI / 3) {
@@ -351,7 +266,7 @@ function ndfplotMaths(domains, basis) {
     return [-5 * (1 - f0), Math.min(h(lo), h(hi))];
   }
 
-  // ---- src/fresnel/basis.rs: the embedded basis (null on pages without Belcour curves), linear
+  // ---- src/model/fresnel/basis.rs: the embedded basis (null on pages without Belcour curves), linear
   // in c between its 1000 nodes ----
   const GRID = basis ? basis.functions[0].length : 0;
   const cosGrid = Array.from({ length: GRID }, (_, i) => (i + 1 === GRID ? 1 : i * (1 / (GRID - 1))));
@@ -414,7 +329,7 @@ function ndfplotMaths(domains, basis) {
     },
   };
 
-  // ---- domains (src/domain.rs Param::contains), embedded from the Rust registry ----
+  // ---- domains (src/model/domain.rs Param::contains), embedded from the Rust registry ----
   function contains(domain, v) {
     const above = domain.min_inclusive ? v >= domain.min : v > domain.min;
     const below = domain.max_inclusive ? v <= domain.max : v < domain.max;
@@ -430,7 +345,7 @@ function ndfplotMaths(domains, basis) {
     return domain && !contains(domain, v) ? name + " must be " + domain.expected + " (got " + v + ")" : null;
   }
 
-  // A number as Rust's {:?} prints it (CONTRACTS.md "Numbers"): shortest round-trip digits, in
+  // A number as Rust's {:?} prints it (docs/contracts.md "Numbers"): shortest round-trip digits, in
   // exponent form below 1e-4 and from 1e16, else decimal with at least one fractional digit.
   function formatNumber(v) {
     if (v === 0) return Object.is(v, -0) ? "-0.0" : "0.0";

@@ -9,8 +9,39 @@ use crate::model::fresnel::{self, basis};
 use crate::model::ndf::Family;
 use serde_json::{Map, Value, json};
 
-/// The page's port of the curve definitions; defines `ndfplotMaths(domains, basis)`.
-pub const SCRIPT: &str = include_str!("maths.js");
+/// The page's port of the curve definitions, without the families' formulas.
+const SCRIPT: &str = include_str!("maths.js");
+
+/// Where [`SCRIPT`] takes the families' formulas.
+const NDF_FORMULAS: &str = "NDF_FORMULAS";
+
+/// The page's curve maths: [`SCRIPT`] with every registered family's D
+/// ([`Family::page_formula`]) in its table, by canonical name; defines
+/// `ndfplotMaths(domains, basis)`.
+pub fn script() -> String {
+    let formulas: Vec<String> = Family::ALL
+        .iter()
+        .map(|family| {
+            let formula = family.page_formula().trim_end();
+            let (comments, expression): (Vec<&str>, Vec<&str>) =
+                formula.lines().partition(|line| line.starts_with("//"));
+            let mut lines: Vec<String> = comments.iter().map(|l| format!("    {l}")).collect();
+            for (i, line) in expression.iter().enumerate() {
+                lines.push(match i {
+                    0 => format!("    {:?}: {line}", family.name()),
+                    _ if line.is_empty() => String::new(),
+                    _ => format!("    {line}"),
+                });
+            }
+            lines.join("\n")
+        })
+        .collect();
+    SCRIPT.replacen(
+        NDF_FORMULAS,
+        &format!("{{\n{},\n  }}", formulas.join(",\n")),
+        1,
+    )
+}
 
 /// Largest relative difference between a page's value and `ndfplot eval`'s (floored below
 /// [`crate::model::math::tolerance::ABS_FLOOR`]): both sides exponentiate exponents of up to ~1450 whose
@@ -256,7 +287,7 @@ process.stdout.write(JSON.stringify(out));
         std::fs::create_dir_all(&dir).unwrap();
         let (input_path, script_path) = (dir.join("input.json"), dir.join("run.js"));
         std::fs::write(&input_path, input.to_string()).unwrap();
-        std::fs::write(&script_path, format!("{SCRIPT}\n{HARNESS}")).unwrap();
+        std::fs::write(&script_path, format!("{}\n{HARNESS}", script())).unwrap();
         let out = Command::new("node")
             .arg(&script_path)
             .arg(&input_path)

@@ -91,6 +91,7 @@ pub(super) fn figure(panels: Vec<Panel>) -> Figure {
         theme: Theme::Notebook,
         panels,
         provenance: Provenance::of_spec(SPEC),
+        page: None,
     }
 }
 
@@ -122,7 +123,7 @@ pub(super) const BLACK: u32 = 0x000000;
 pub(super) const STEEL: u32 = 0x1F77B4;
 
 /// Singular values of a Fresnel curve matrix, normalized by their sum: the first three
-/// from MATH.md's spectrum check, then a geometric tail.
+/// from docs/maths.md's spectrum check, then a geometric tail.
 fn spectrum() -> Vec<f64> {
     let mut values = vec![0.91356, 0.97961 - 0.91356, 0.99477 - 0.97961];
     let tail = 1.0 - 0.99477;

@@ -30,7 +30,7 @@ use reader::Reader;
 use std::f64::consts::FRAC_PI_2;
 use sweep::{MAX_CURVES_PER_SCENE, Sweep};
 
-/// Most samples one curve may have (CONTRACTS.md).
+/// Most samples one curve may have (docs/contracts.md).
 pub const MAX_SAMPLES_PER_CURVE: usize = 10_000_000;
 /// Most points one scene's table may have, summed over its curves (curves × uniform samples) and
 /// data series: the default 1000 samples for 5000 curves (the 10 000 curves of
@@ -277,7 +277,7 @@ pub enum Pending {
     Csv(data::CsvFile),
 }
 
-/// Whether `id` is a valid scene id: `^[a-z0-9][a-z0-9_-]{0,63}$` (CONTRACTS.md). Such an id
+/// Whether `id` is a valid scene id: `^[a-z0-9][a-z0-9_-]{0,63}$` (docs/contracts.md). Such an id
 /// cannot name a path outside the output folder, a hidden file or a device.
 pub fn valid_id(id: &str) -> bool {
     let bytes = id.as_bytes();

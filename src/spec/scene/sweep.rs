@@ -1,5 +1,5 @@
 //! Parameter sweeps in scene curves: a number, a list, `{"range": [a, b, s]}` (Mathematica's
-//! `Range`, exact per CONTRACTS.md) or, for Phong's exponent, `{"from_beckmann": …}` through
+//! `Range`, exact per docs/contracts.md) or, for Phong's exponent, `{"from_beckmann": …}` through
 //! Walter et al.'s equivalence α_p = 2/α_b² − 2. A parameter may also be fitted, one value per
 //! target curve (`{"fit": {"target": <curve or sweep>, "by": "peak"}}`), and a curve entry may be a
 //! difference series of two curves or matched sweeps (`{"difference": "minus", "a": …, "b": …}`).
@@ -17,7 +17,7 @@ use crate::spec::curve::{
 };
 use crate::spec::json::{Node, Value};
 
-/// Most curves one scene may expand to (CONTRACTS.md).
+/// Most curves one scene may expand to (docs/contracts.md).
 pub const MAX_CURVES_PER_SCENE: usize = 10_000;
 
 /// Keys of a sweep object: `{"range": [start, stop, step]}` or `{"linspace": [start, stop, count]}`.
@@ -179,7 +179,7 @@ fn numbers(reader: &mut Reader, node: &Node, path: &str) -> Option<(Vec<f64>, bo
     }
 }
 
-/// Reads `[start, stop, step]` at `path` as Mathematica's exact `Range` (CONTRACTS.md), at most
+/// Reads `[start, stop, step]` at `path` as Mathematica's exact `Range` (docs/contracts.md), at most
 /// `cap` values.
 pub(super) fn range(reader: &mut Reader, node: &Node, path: &str, cap: usize) -> Option<Vec<f64>> {
     let Value::Array(items) = &node.value else {

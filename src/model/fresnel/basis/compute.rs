@@ -1,4 +1,4 @@
-//! How the stored basis ([`super::STORED`]) is made: MATH.md steps 1–4 run as the notebook runs
+//! How the stored basis ([`super::STORED`]) is made: docs/maths.md steps 1–4 run as the notebook runs
 //! them, with faer. Compiled for the tests, which check the stored table against it; with
 //! `NDFPLOT_WRITE_BASIS=1` set, `cargo test --lib stored_basis` writes the table anew instead.
 //!
@@ -21,7 +21,7 @@ use crate::model::fresnel::gulbrandsen;
 
 mod numpy_f64;
 
-/// Number of materials in the training set (MATH.md step 2).
+/// Number of materials in the training set (docs/maths.md step 2).
 const TRAINING_SIZE: usize = 1000;
 
 /// Share of the training set made of Gulbrandsen conductors (the notebook's `alpha = 0.01`).
@@ -34,7 +34,7 @@ const REFLECTIVITY_OFFSET: f64 = 1.0e-5;
 /// only row 0 keeps its value.
 const TRAINING_ETA_START: f64 = 1.1;
 
-/// The training materials (η, κ) of MATH.md step 2, built outside user validation (row k = 10 has
+/// The training materials (η, κ) of docs/maths.md step 2, built outside user validation (row k = 10 has
 /// η ≈ −9.99995e-6, κ ≈ 1), with the notebook's operation order.
 fn training_set() -> Vec<(f64, f64)> {
     let mut materials = vec![(TRAINING_ETA_START, 0.0)];
@@ -143,7 +143,7 @@ fn argmax(values: impl Iterator<Item = f64>) -> usize {
     best.0
 }
 
-/// The basis of MATH.md steps 1–4, computed: two partial SVDs of 1000 × 1000 matrices.
+/// The basis of docs/maths.md steps 1–4, computed: two partial SVDs of 1000 × 1000 matrices.
 pub(super) fn computed() -> Basis {
     let cos_theta = grid();
     let curves = training_matrix(&cos_theta);

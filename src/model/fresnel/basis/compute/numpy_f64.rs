@@ -121,7 +121,7 @@ impl Complex128 {
     }
 }
 
-/// F(c) of MATH.md's normative form in numpy's float64 rounding (see the module documentation).
+/// F(c) of docs/maths.md's normative form in numpy's float64 rounding (see the module documentation).
 fn reflectance(c: f64, eta2: Complex128) -> f64 {
     let c_complex = Complex128::new(c, 0.0);
     let w = eta2.sub(Complex128::new(1.0 - c * c, 0.0)).sqrt();
