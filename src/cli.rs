@@ -1,5 +1,7 @@
 //! The command line: clap types that mirror the arguments, and nothing else.
 
+use crate::output::report::{RecordFormat, ReportFormat};
+use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -115,8 +117,9 @@ pub struct CoeffsArgs {
     )]
     pub curve: Vec<String>,
     /// Output: CSV, or a JSON array of one object per curve.
-    #[arg(long, value_name = "FORMAT", default_value = "csv", value_parser = ["csv", "json"])]
-    pub format: String,
+    #[arg(long, value_name = "FORMAT", default_value = "csv",
+        value_parser = choice(&ReportFormat::NAMES, &[ReportFormat::Csv, ReportFormat::Json]))]
+    pub format: ReportFormat,
 }
 
 /// Arguments of `ndfplot render`.
@@ -180,6 +183,25 @@ pub struct RenderArgs {
     /// inside the folder of the spec naming it. Repeatable.
     #[arg(long = "allow-read", value_name = "DIR")]
     pub allow_read: Vec<PathBuf>,
+}
+
+/// A clap value parser of one of `offered`, a choice named by its `names` table (a `named!` enum's
+/// `NAMES`): `--help` lists the offered names and the parsed value is the typed choice.
+fn choice<T: Copy + PartialEq + Send + Sync + 'static>(
+    names: &'static [(&'static str, T)],
+    offered: &'static [T],
+) -> impl TypedValueParser<Value = T> {
+    let offered_names = names
+        .iter()
+        .filter(|(_, v)| offered.contains(v))
+        .map(|(n, _)| *n);
+    PossibleValuesParser::new(offered_names).map(move |name| {
+        names
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|&(_, v)| v)
+            .expect("clap accepts only the offered names")
+    })
 }
 
 /// A clap value parser for a finite number within [low, high].
@@ -346,8 +368,9 @@ pub struct CompareArgs {
     pub degrees: bool,
     /// Output: a readable table, one JSON object (per line, one per pair), or CSV (a header and one
     /// row per pair) for scripts.
-    #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = ["table", "json", "csv"])]
-    pub format: String,
+    #[arg(long, value_name = "FORMAT", default_value = "table",
+        value_parser = choice(&ReportFormat::NAMES, &ReportFormat::ALL))]
+    pub format: ReportFormat,
     /// Print only this number (max_abs, max_rel_theta, max_log_ratio, l2_projected, a_peak, …;
     /// any name of --format json); exit 2 when it is undefined.
     #[arg(long, value_name = "NAME", conflicts_with = "format")]
@@ -400,8 +423,8 @@ pub struct FitArgs {
     #[arg(long, value_name = "METHOD", default_value = "peak")]
     pub by: String,
     /// Write one record per target with its fit and residual: jsonl or csv (nothing on stderr).
-    #[arg(long, value_name = "FORMAT", value_parser = ["jsonl", "csv"])]
-    pub format: Option<String>,
+    #[arg(long, value_name = "FORMAT", value_parser = choice(&RecordFormat::NAMES, &RecordFormat::ALL))]
+    pub format: Option<RecordFormat>,
 }
 
 /// Arguments of `ndfplot check`.
@@ -428,8 +451,9 @@ pub struct CheckArgs {
     #[arg(long, value_name = "X", default_value_t = crate::pipeline::audit::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]
     pub tolerance: f64,
     /// Output: a readable table, a JSON array of one object per row, or CSV.
-    #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = ["table", "json", "csv"])]
-    pub format: String,
+    #[arg(long, value_name = "FORMAT", default_value = "table",
+        value_parser = choice(&ReportFormat::NAMES, &ReportFormat::ALL))]
+    pub format: ReportFormat,
     /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
     /// inside the folder of the spec naming it. Repeatable.
     #[arg(long = "allow-read", value_name = "DIR")]
@@ -496,8 +520,9 @@ pub struct AlbedoArgs {
         value_parser = clap::builder::PossibleValuesParser::new(crate::model::albedo::Table::NAMES.map(|(name, _)| name)))]
     pub table: String,
     /// Output: CSV with # metadata lines, or one JSON object.
-    #[arg(long, value_name = "FORMAT", default_value = "csv", value_parser = ["csv", "json"])]
-    pub format: String,
+    #[arg(long, value_name = "FORMAT", default_value = "csv",
+        value_parser = choice(&ReportFormat::NAMES, &[ReportFormat::Csv, ReportFormat::Json]))]
+    pub format: ReportFormat,
     /// Write the table to FILE (atomically: a temporary renamed into place) instead of stdout.
     #[arg(short, long, value_name = "FILE")]
     pub out: Option<PathBuf>,

@@ -10,6 +10,7 @@ use crate::error::{Error, Result};
 use crate::model::curve::Curve;
 use crate::model::metrics::sampled::{Operand, compare_operands};
 use crate::model::metrics::{Comparison, LOG_RATIO_FLOOR, Metric, MetricError, ThetaRange};
+use crate::output::report::ReportFormat;
 use crate::output::report::{Cell, Report};
 use crate::problem::{Problem, Problems, join_key, suggestion};
 use crate::spec::angle::AngleUnit;
@@ -298,14 +299,13 @@ pub enum Output {
 }
 
 impl Output {
-    /// The output of `--format` (`table`, `json` or `csv`) or, when given, `--metric NAME` in `unit`
-    /// ([`Field::from_name`]).
-    pub fn parse(format: &str, metric: Option<&str>, unit: AngleUnit) -> Result<Output> {
+    /// The output of `--format` or, when given, `--metric NAME` in `unit` ([`Field::from_name`]).
+    pub fn of(format: ReportFormat, metric: Option<&str>, unit: AngleUnit) -> Result<Output> {
         Ok(match (metric, format) {
             (Some(name), _) => Output::Metric(Field::from_name(name, unit)?),
-            (None, "json") => Output::Json,
-            (None, "csv") => Output::Csv,
-            (None, _) => Output::Table,
+            (None, ReportFormat::Json) => Output::Json,
+            (None, ReportFormat::Csv) => Output::Csv,
+            (None, ReportFormat::Table) => Output::Table,
         })
     }
 }

@@ -11,6 +11,7 @@ use crate::model::curve::Curve;
 use crate::model::fit::{By, Fit, FitError, FitSpec, Subject};
 use crate::model::ndf::Family;
 use crate::output::csv::Table;
+use crate::output::report::RecordFormat;
 use crate::problem::{Problem, Problems, suggestion};
 
 fn usage(source: &str, at: &str, message: String) -> Error {
@@ -112,17 +113,12 @@ pub enum Format {
 }
 
 impl Format {
-    /// The format of `--format` (`jsonl`, `csv`; `None` for none given).
-    pub fn parse(name: Option<&str>) -> Result<Format> {
-        match name {
-            None => Ok(Format::Curves),
-            Some("jsonl") => Ok(Format::Jsonl),
-            Some("csv") => Ok(Format::Csv),
-            Some(other) => Err(usage(
-                "--format",
-                other,
-                format!("unknown format (got \"{other}\", expected jsonl or csv)"),
-            )),
+    /// The format of `--format` (`None` for none given).
+    pub fn of(format: Option<RecordFormat>) -> Format {
+        match format {
+            None => Format::Curves,
+            Some(RecordFormat::Jsonl) => Format::Jsonl,
+            Some(RecordFormat::Csv) => Format::Csv,
         }
     }
 }

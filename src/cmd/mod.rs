@@ -16,6 +16,7 @@ use crate::error::{Error, Result};
 use crate::model::curve::Curve;
 use crate::model::dataset::Dataset;
 use crate::model::metrics::sampled::{Operand, Samples};
+use crate::output::report::ReportFormat;
 use crate::problem::{Problem, Problems, join_key};
 use crate::spec::input::Side;
 use crate::{output::stdout, pipeline::resolve, spec::input, spec::source};
@@ -64,10 +65,9 @@ fn run_eval(args: EvalArgs) -> Result<()> {
 fn run_coeffs(args: CoeffsArgs) -> Result<()> {
     let curves = load_curves(&args.curve, "--curve")?;
     let report = coeffs::report(&curves)?;
-    stdout::print(&if args.format == "json" {
-        report.json_array()
-    } else {
-        report.csv()
+    stdout::print(&match args.format {
+        ReportFormat::Json => report.json_array(),
+        ReportFormat::Csv | ReportFormat::Table => report.csv(),
     })
 }
 
@@ -154,7 +154,7 @@ fn run_compare(args: CompareArgs) -> Result<()> {
         args.theta_range.as_deref(),
         crate::spec::angle::AngleUnit::of(args.degrees),
     )?;
-    let output = compare::Output::parse(&args.format, args.metric.as_deref(), span.unit)?;
+    let output = compare::Output::of(args.format, args.metric.as_deref(), span.unit)?;
     let (a, b) = match (&args.pairs, args.a.as_deref(), args.b.as_deref()) {
         (Some(pairs), None, None) => {
             return run_compare_pairs(pairs, &args.allow_read, &span, output, &bounds);
@@ -217,7 +217,7 @@ fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {
     let family = fit::parse_family("--family", &args.family)?;
     let by = fit::parse_by(&args.by)?;
     let fixed = fit::parse_fixed(&args.fix)?;
-    let format = fit::Format::parse(args.format.as_deref())?;
+    let format = fit::Format::of(args.format);
     let spec = crate::model::fit::FitSpec::new(family, &fixed, by).map_err(fit::fit_error)?;
     let targets = load_targets(&args.target, "--target")?;
     let report = fit::run(&spec, targets, format);
@@ -257,10 +257,10 @@ fn run_check(args: CheckArgs) -> Result<()> {
         source::CanvasOverride::default(),
     ))?;
     let audits = crate::pipeline::audit::audit_scenes(&scenes)?;
-    stdout::print(&match args.format.as_str() {
-        "json" => check::report(&audits, args.tolerance).json_array(),
-        "csv" => check::report(&audits, args.tolerance).csv(),
-        _ => check::table(&audits, args.tolerance),
+    stdout::print(&match args.format {
+        ReportFormat::Json => check::report(&audits, args.tolerance).json_array(),
+        ReportFormat::Csv => check::report(&audits, args.tolerance).csv(),
+        ReportFormat::Table => check::table(&audits, args.tolerance),
     })?;
     check::verdict(&audits, args.tolerance)
 }
@@ -297,10 +297,9 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
     progress.stage("integrating");
     let output = request.compute(&progress)?;
     progress.finish();
-    let text = if args.format == "json" {
-        output.json()
-    } else {
-        output.csv()
+    let text = match args.format {
+        ReportFormat::Json => output.json(),
+        ReportFormat::Csv | ReportFormat::Table => output.csv(),
     };
     match destination {
         Some((dir, name)) => crate::output::write::write_files(dir, &[(name, text)]).map(drop),

@@ -68,6 +68,7 @@ use crate::model::fresnel::basis::basis;
 use crate::model::masking::{G2Model, g1};
 use crate::model::math::quad::{QuadError, integrate};
 use crate::model::math::tolerance::{ALBEDO_QUAD_REL_TOL, ALBEDO_TABULATED_TOL};
+use crate::model::names::named;
 use crate::model::ndf::Ndf;
 
 /// A Fresnel factor as a function of θd, the angle between the view ωo and the half-vector h, in
@@ -711,40 +712,15 @@ impl fmt::Display for RoughnessMap {
     }
 }
 
-/// The tables of a surface's albedo a renderer may store, by their names in `ndfplot albedo --table`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Table {
-    /// E(μ, r) (or E_F with a Fresnel factor) and Turquin's factor 1/E.
-    E,
-    /// E_avg(r), Kulla–Conty's 1/(π(1 − E_avg)) and, with a Fresnel factor, F_avg and F_ms.
-    Average,
-    /// The split-sum tables E_0 … E_3.
-    SplitSum,
-}
-
-impl Table {
-    /// Every table with its name in `--table`.
-    pub const NAMES: [(&'static str, Table); 3] = [
-        ("e", Table::E),
-        ("average", Table::Average),
-        ("split-sum", Table::SplitSum),
-    ];
-
-    /// The table named `name` in `--table`, if any.
-    pub fn from_name(name: &str) -> Option<Table> {
-        Table::NAMES
-            .iter()
-            .find(|(n, _)| *n == name)
-            .map(|&(_, table)| table)
-    }
-
-    /// The table's name in `--table`.
-    pub fn name(self) -> &'static str {
-        Table::NAMES
-            .iter()
-            .find(|&&(_, table)| table == self)
-            .map(|&(name, _)| name)
-            .expect("every table is named")
+named! {
+    /// The tables of a surface's albedo a renderer may store, by their names in `ndfplot albedo --table`.
+    pub enum Table {
+        /// E(μ, r) (or E_F with a Fresnel factor) and Turquin's factor 1/E.
+        E = "e",
+        /// E_avg(r), Kulla–Conty's 1/(π(1 − E_avg)) and, with a Fresnel factor, F_avg and F_ms.
+        Average = "average",
+        /// The split-sum tables E_0 … E_3.
+        SplitSum = "split-sum",
     }
 }
 

@@ -7,67 +7,37 @@
 use crate::model::albedo::{RoughnessMap, albedo_table, surface_of};
 use crate::model::fresnel::{basis, gulbrandsen};
 use crate::model::masking::G2Model;
+use crate::model::names::named;
 use crate::model::ndf::Family;
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
-/// Which number of the spectrum a spectrum series shows (docs/maths.md, basis step 6).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum SpectrumQuantity {
-    /// The singular values s_k.
-    SingularValue,
-    /// s_k / Σ s.
-    Normalized,
-    /// Running sums of the normalized values.
-    Cumulative,
-}
-
-impl SpectrumQuantity {
-    /// Every quantity, by its JSON name.
-    pub const NAMES: [(&'static str, SpectrumQuantity); 3] = [
-        ("singular_value", SpectrumQuantity::SingularValue),
-        ("normalized", SpectrumQuantity::Normalized),
-        ("cumulative", SpectrumQuantity::Cumulative),
-    ];
-
-    fn name(self) -> &'static str {
-        Self::NAMES
-            .iter()
-            .find(|(_, q)| *q == self)
-            .map(|(n, _)| *n)
-            .expect("every quantity is named")
+named! {
+    /// Which number of the spectrum a spectrum series shows (docs/maths.md, basis step 6).
+    pub enum SpectrumQuantity {
+        /// The singular values s_k.
+        SingularValue = "singular_value",
+        /// s_k / Σ s.
+        Normalized = "normalized",
+        /// Running sums of the normalized values.
+        Cumulative = "cumulative",
     }
 }
 
-/// A decomposition coefficient, as an axis of a Gulbrandsen dataset.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Coefficient {
-    /// c₀ = F₀.
-    C0,
-    /// c₁ = 1 − c₀.
-    C1,
-    /// c₂.
-    C2,
-    /// c₃.
-    C3,
+named! {
+    /// A decomposition coefficient, as an axis of a Gulbrandsen dataset.
+    pub enum Coefficient {
+        /// c₀ = F₀.
+        C0 = "c0",
+        /// c₁ = 1 − c₀.
+        C1 = "c1",
+        /// c₂.
+        C2 = "c2",
+        /// c₃.
+        C3 = "c3",
+    }
 }
 
 impl Coefficient {
-    /// Every coefficient, by its JSON name.
-    pub const NAMES: [(&'static str, Coefficient); 4] = [
-        ("c0", Coefficient::C0),
-        ("c1", Coefficient::C1),
-        ("c2", Coefficient::C2),
-        ("c3", Coefficient::C3),
-    ];
-
-    fn name(self) -> &'static str {
-        Self::NAMES
-            .iter()
-            .find(|(_, c)| *c == self)
-            .map(|(n, _)| *n)
-            .expect("every coefficient is named")
-    }
-
     fn of(self, c: &basis::Coefficients) -> f64 {
         match self {
             Coefficient::C0 => c.c0,
@@ -78,26 +48,13 @@ impl Coefficient {
     }
 }
 
-/// Which number of the directional albedo an albedo dataset shows.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum AlbedoValue {
-    /// E(μ, r) itself.
-    Albedo,
-    /// 1 − E(μ, r): the energy single scattering loses.
-    Loss,
-}
-
-impl AlbedoValue {
-    /// Every value, by its JSON name.
-    pub const NAMES: [(&'static str, AlbedoValue); 2] =
-        [("E", AlbedoValue::Albedo), ("loss", AlbedoValue::Loss)];
-
-    fn name(self) -> &'static str {
-        Self::NAMES
-            .iter()
-            .find(|(_, v)| *v == self)
-            .map(|(n, _)| *n)
-            .expect("every albedo value is named")
+named! {
+    /// Which number of the directional albedo an albedo dataset shows.
+    pub enum AlbedoValue {
+        /// E(μ, r) itself.
+        Albedo = "E",
+        /// 1 − E(μ, r): the energy single scattering loses.
+        Loss = "loss",
     }
 }
 

@@ -18,6 +18,7 @@ use crate::model::domain::{DomainError, Param};
 use crate::model::math::roots::{RootError, brent, expand_bracket_log};
 use crate::model::math::simplex::{self, Bounds};
 use crate::model::metrics::{self, MetricError, golden_section_max, lobe_width, maximum};
+use crate::model::names::named;
 use crate::model::ndf::Family;
 use crate::problem::suggestion;
 use rayon::prelude::*;
@@ -25,35 +26,19 @@ use std::collections::HashMap;
 use std::fmt;
 use std::sync::{Mutex, OnceLock};
 
-/// How a fit matches its target (`"by"` of a fitted parameter, `fit --by`); [`fit`] carries it out.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum By {
-    /// D_fit(0) = D_target(0).
-    Peak,
-    /// max_θ D_fit = max_θ D_target.
-    Max,
-    /// Minimal `l2_projected`.
-    L2,
+named! {
+    /// How a fit matches its target (`"by"` of a fitted parameter, `fit --by`); [`fit`] carries it out.
+    pub enum By {
+        /// D_fit(0) = D_target(0).
+        Peak = "peak",
+        /// max_θ D_fit = max_θ D_target.
+        Max = "max",
+        /// Minimal `l2_projected`.
+        L2 = "l2",
+    }
 }
 
 impl By {
-    /// Every method, in the order shown in messages.
-    pub const ALL: [By; 3] = [By::Peak, By::Max, By::L2];
-
-    /// The method's name (`--by`, scene `"by"`).
-    pub fn name(self) -> &'static str {
-        match self {
-            By::Peak => "peak",
-            By::Max => "max",
-            By::L2 => "l2",
-        }
-    }
-
-    /// Looks a method up by name.
-    pub fn from_name(name: &str) -> Option<By> {
-        By::ALL.into_iter().find(|b| b.name() == name)
-    }
-
     /// The name of the residual the fit reports (`residual=<x> (<metric>)`): the relative mismatch of
     /// D(0) (`d0_rel`), of the maxima (`dmax_rel`), or `l2_projected`.
     pub fn residual_name(self) -> &'static str {

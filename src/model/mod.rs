@@ -11,6 +11,7 @@ pub mod grid;
 pub mod masking;
 pub mod math;
 pub mod metrics;
+pub mod names;
 pub mod ndf;
 pub mod published;
 pub mod transform;

@@ -3,43 +3,22 @@
 //! Pure f64 code. A transform maps (θ, D(θ)) to the plotted value; the x axis that goes with it
 //! (θ, or tan θ for the slope view) is the plot's business.
 
+use crate::model::names::named;
 use std::f64::consts::FRAC_PI_2;
 
-/// A value transform applied to an NDF.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Transform {
-    /// D(θ) cos θ: the projected-area density, which integrates to 1/(2π) against sin θ dθ
-    /// (BRDF Explorer's "× N·L").
-    Projected,
-    /// The slope-space density P₂₂ = D(θ) cos⁴θ at slope tan θ (Bagher et al. 2012's native view,
-    /// ∫∫ P₂₂ dp dq = 1).
-    Slope,
+named! {
+    /// A value transform applied to an NDF.
+    pub enum Transform {
+        /// D(θ) cos θ: the projected-area density, which integrates to 1/(2π) against sin θ dθ
+        /// (BRDF Explorer's "× N·L").
+        Projected = "projected",
+        /// The slope-space density P₂₂ = D(θ) cos⁴θ at slope tan θ (Bagher et al. 2012's native view,
+        /// ∫∫ P₂₂ dp dq = 1).
+        Slope = "slope",
+    }
 }
 
 impl Transform {
-    /// Every transform with its JSON name.
-    pub const NAMES: [(&'static str, Transform); 2] = [
-        ("projected", Transform::Projected),
-        ("slope", Transform::Slope),
-    ];
-
-    /// The JSON name.
-    pub fn name(self) -> &'static str {
-        Self::NAMES
-            .iter()
-            .find(|(_, t)| *t == self)
-            .map(|(n, _)| *n)
-            .expect("every transform is named")
-    }
-
-    /// Looks a transform up by JSON name.
-    pub fn from_name(name: &str) -> Option<Transform> {
-        Self::NAMES
-            .iter()
-            .find(|(n, _)| *n == name)
-            .map(|(_, t)| *t)
-    }
-
     /// The transformed value at θ of an NDF whose value there is `d`. At θ = π/2 (the double
     /// nearest it) cos θ is taken as 0, the limit, so grazing values are exactly 0.
     #[inline]

@@ -18,6 +18,7 @@ pub mod write;
 
 use crate::error::{Error, Result};
 use crate::pipeline::figure::Figure;
+use crate::model::names::named;
 use csv::figure_csv;
 
 /// What a format is encoded from: the figure whose curves were sampled for drawing (adaptively,
@@ -30,40 +31,27 @@ pub enum Points {
     Table,
 }
 
-/// An output format of `render`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Format {
-    /// Scalable vector graphics with text kept as text.
-    Svg,
-    /// Raster image with text drawn from the embedded font.
-    Png,
-    /// One-page vector PDF of the SVG, text in the embedded font; only when asked for.
-    Pdf,
-    /// The sampled points, long format (docs/contracts.md).
-    Csv,
-    /// A self-contained interactive page, for figures with sliders only.
-    Html,
+named! {
+    /// An output format of `render`, named by its file extension.
+    #[derive(PartialOrd, Ord)]
+    pub enum Format {
+        /// Scalable vector graphics with text kept as text.
+        Svg = "svg",
+        /// Raster image with text drawn from the embedded font.
+        Png = "png",
+        /// One-page vector PDF of the SVG, text in the embedded font; only when asked for.
+        Pdf = "pdf",
+        /// The sampled points, long format (docs/contracts.md).
+        Csv = "csv",
+        /// A self-contained interactive page, for figures with sliders only.
+        Html = "html",
+    }
 }
 
 impl Format {
-    /// Every format, in output order.
-    pub const ALL: [Format; 5] = [
-        Format::Svg,
-        Format::Png,
-        Format::Pdf,
-        Format::Csv,
-        Format::Html,
-    ];
-
-    /// File extension.
+    /// File extension: the format's name.
     pub fn extension(self) -> &'static str {
-        match self {
-            Format::Svg => "svg",
-            Format::Png => "png",
-            Format::Pdf => "pdf",
-            Format::Csv => "csv",
-            Format::Html => "html",
-        }
+        self.name()
     }
 
     /// Which figure the format is encoded from: the CSV tabulates; the drawings, and the page
@@ -79,8 +67,12 @@ impl Format {
     pub fn parse_list(text: &str) -> Result<Vec<Format>> {
         let mut formats = Vec::new();
         for word in text.split(',').map(str::trim) {
-            let format = Format::ALL.into_iter().find(|f| f.extension() == word).ok_or_else(|| {
-                Error::Usage(format!("--format: unknown format (got \"{word}\", expected a comma list of svg, png, pdf, csv, html)"))
+            let format = Format::from_name(word).ok_or_else(|| {
+                let names: Vec<&str> = Format::NAMES.iter().map(|(n, _)| *n).collect();
+                Error::Usage(format!(
+                    "--format: unknown format (got \"{word}\", expected a comma list of {})",
+                    names.join(", ")
+                ))
             })?;
             if !formats.contains(&format) {
                 formats.push(format);

@@ -7,8 +7,32 @@
 //! theirs.
 
 use super::csv::Table;
+use crate::model::names::named;
 use serde::ser::{Serialize, SerializeMap, SerializeSeq, Serializer};
 use serde_json::value::RawValue;
+
+named! {
+    /// The forms of a command's report, as `--format` names them; each command offers those it has
+    /// (`coeffs` and `albedo` no readable table).
+    pub enum ReportFormat {
+        /// The readable table the command prints.
+        Table = "table",
+        /// JSON: an array of row objects, or one object per line where the command streams.
+        Json = "json",
+        /// CSV with a header row.
+        Csv = "csv",
+    }
+}
+
+named! {
+    /// The record formats of `fit --format`: one record per target.
+    pub enum RecordFormat {
+        /// One JSON object per line.
+        Jsonl = "jsonl",
+        /// CSV with a header row.
+        Csv = "csv",
+    }
+}
 
 /// One cell of a report.
 #[derive(Debug, Clone, PartialEq)]

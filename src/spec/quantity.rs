@@ -219,7 +219,8 @@ pub fn parse<F>(
         "furnace" => Some(Quantity::Furnace {
             g1: g1.unwrap_or(G1Model::Smith),
         }),
-        _ => None,
+        "d" => None,
+        other => unreachable!("quantity \"{other}\" is named but has no parse arm"),
     })
 }
 
@@ -278,4 +279,23 @@ pub fn serialize_curve<S: Serializer, F: serde::Serialize>(
     write_model(&mut map)?;
     serialize_members(&mut map, quantity)?;
     map.end()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every quantity name parses to the quantity of that name (D to none): a name added to the
+    /// table without its parse arm fails here.
+    #[test]
+    fn every_named_quantity_parses_to_itself() {
+        for name in NAMES {
+            let node = crate::spec::json::parse(&format!(r#"{{"quantity":"{name}"}}"#)).unwrap();
+            let crate::spec::json::Value::Object(members) = &node.value else {
+                unreachable!()
+            };
+            let parsed = parse(members, "", |_, _| Ok(())).unwrap();
+            assert_eq!(parsed.map_or("d", |q| q.name()), name);
+        }
+    }
 }

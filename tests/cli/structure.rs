@@ -27,7 +27,7 @@ fn level(module: &str) -> (u32, u32) {
         "model" => (
             1,
             match second {
-                "math" | "domain" | "grid" => 0,
+                "math" | "domain" | "grid" | "names" => 0,
                 "ndf" | "fresnel" | "transform" => 1,
                 "masking" => 2,
                 _ => 3,

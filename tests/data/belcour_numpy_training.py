@@ -1,6 +1,6 @@
 """Rebuilds the Belcour basis with numpy and compares it with reference/belcour_basis.csv.
 
-Documents the float64 procedure that src/fresnel/basis/numpy_f64.rs replicates bit for bit:
+Documents the float64 procedure that src/model/fresnel/basis/compute/numpy_f64.rs replicates bit for bit:
 the training rows (F - F0)/(1 - F0) of docs/maths.md's normative Fresnel form, evaluated in numpy
 complex128 as written in `fresnel` below. Training row k = 10 has 1 - F0 = 2e-5, so each ulp of
 F moves the basis by up to ~1e-11; with this exact operation order (w from e2 - (1 - c**2),

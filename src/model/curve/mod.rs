@@ -7,6 +7,7 @@
 pub mod quantity;
 
 use crate::model::fresnel::Fresnel;
+use crate::model::names::named;
 use crate::model::ndf::Ndf;
 use crate::model::transform::Transform;
 use quantity::Quantity;
@@ -89,28 +90,18 @@ impl Curve {
     }
 }
 
-/// How a difference series combines its operands.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum DiffOp {
-    /// a − b.
-    Minus,
-    /// a / b, with 0/0 = 1 (both curves vanish: they agree) and x/0 = +∞ for x ≠ 0, which every
-    /// consumer reports as an error at that θ instead of printing it.
-    Ratio,
+named! {
+    /// How a difference series combines its operands.
+    pub enum DiffOp {
+        /// a − b.
+        Minus = "minus",
+        /// a / b, with 0/0 = 1 (both curves vanish: they agree) and x/0 = +∞ for x ≠ 0, which every
+        /// consumer reports as an error at that θ instead of printing it.
+        Ratio = "ratio",
+    }
 }
 
 impl DiffOp {
-    /// Every operation, in the order shown in messages.
-    pub const ALL: [DiffOp; 2] = [DiffOp::Minus, DiffOp::Ratio];
-
-    /// The name in curve JSON (`"difference": "minus"`).
-    pub fn name(self) -> &'static str {
-        match self {
-            DiffOp::Minus => "minus",
-            DiffOp::Ratio => "ratio",
-        }
-    }
-
     /// a − b, or a / b with 0/0 = 1.
     #[inline]
     pub fn apply(self, a: f64, b: f64) -> f64 {

@@ -192,7 +192,7 @@ fn parse_stored(text: &str) -> Basis {
 fn stored_text(basis: &Basis) -> String {
     let mut text = String::from(
         "# The Belcour–Bati–Barla Fresnel basis b1…b3 on c_i = linspace(0, 1, 1000) and its critical \
-         nodes, as src/fresnel/basis/compute.rs computes it; shortest round-trip doubles.\n",
+         nodes, as src/model/fresnel/basis/compute.rs computes it; shortest round-trip doubles.\n",
     );
     text.push_str(&format!(
         "critical {} {}\n",

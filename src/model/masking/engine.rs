@@ -6,46 +6,24 @@
 //! [`G1Model`] names the three choices; its weak white furnace value W(θo) = G1_used(θo) (1 + Λ_exact(θo))
 //! is 1 for exact Smith and measures the energy an approximation gains or loses at θo.
 
+use crate::model::names::named;
 use crate::model::ndf::{Family, Ndf, beckmann};
 use std::fmt;
 
-/// Which G1(θo) an engine uses for an NDF.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum G1Model {
-    /// G1 = 1/(1 + Λ(θo)) with the family's exact Λ ([`Ndf::lambda`]).
-    Smith,
-    /// Walter 2007's rational Beckmann G1 ([`walter_rational_g1`]) at a = cot θo/α, α the family's
-    /// Beckmann-equivalent roughness ([`beckmann_equivalent_alpha`]): Mitsuba 3, Cycles, bbm.
-    WalterRational,
-    /// The exact Smith G1 of the Beckmann lobe of the family's Beckmann-equivalent roughness.
-    BeckmannEquivalent,
+named! {
+    /// Which G1(θo) an engine uses for an NDF.
+    pub enum G1Model {
+        /// G1 = 1/(1 + Λ(θo)) with the family's exact Λ ([`Ndf::lambda`]).
+        Smith = "smith",
+        /// Walter 2007's rational Beckmann G1 ([`walter_rational_g1`]) at a = cot θo/α, α the family's
+        /// Beckmann-equivalent roughness ([`beckmann_equivalent_alpha`]): Mitsuba 3, Cycles, bbm.
+        WalterRational = "walter-rational",
+        /// The exact Smith G1 of the Beckmann lobe of the family's Beckmann-equivalent roughness.
+        BeckmannEquivalent = "beckmann-equivalent",
+    }
 }
 
 impl G1Model {
-    /// The three models with their names in curve JSON, the exact one first.
-    pub const NAMES: [(&'static str, G1Model); 3] = [
-        ("smith", G1Model::Smith),
-        ("walter-rational", G1Model::WalterRational),
-        ("beckmann-equivalent", G1Model::BeckmannEquivalent),
-    ];
-
-    /// The model's name in curve JSON.
-    pub fn name(self) -> &'static str {
-        match self {
-            G1Model::Smith => "smith",
-            G1Model::WalterRational => "walter-rational",
-            G1Model::BeckmannEquivalent => "beckmann-equivalent",
-        }
-    }
-
-    /// The model named `name` in curve JSON, if any.
-    pub fn from_name(name: &str) -> Option<G1Model> {
-        G1Model::NAMES
-            .iter()
-            .find(|(n, _)| *n == name)
-            .map(|(_, model)| *model)
-    }
-
     /// G1(θo) ∈ [0, 1] (Walter's rational reaches 1.0000613) for θo ∈ [0, π/2] as this model computes it
     /// for `ndf`; an error for the two Beckmann-based models when the family has no Beckmann equivalent.
     pub fn g1(self, ndf: &Ndf, theta_o: f64) -> Result<f64, NoBeckmannEquivalent> {

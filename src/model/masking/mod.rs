@@ -17,6 +17,7 @@ pub mod projected_area;
 pub use engine::{G1Model, NoBeckmannEquivalent, beckmann_equivalent_alpha, walter_rational_g1};
 pub use projected_area::{front_projected_area, smith_furnace};
 
+use crate::model::names::named;
 use crate::model::ndf::Ndf;
 use crate::model::ndf::lambda_integral::lambda_integral;
 use std::fmt;
@@ -27,39 +28,18 @@ pub fn lambda_by_integral(ndf: &Ndf, theta_o: f64) -> f64 {
     lambda_integral(|theta| ndf.eval(theta), theta_o)
 }
 
-/// How masking (view) and shadowing (light) combine into G2.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum G2Model {
-    /// G2 = 1/(1 + Λ(θo) + Λ(θi)) (Heitz 2014 eq. 99): a microfacet high on the surface is likelier to
-    /// be both visible and lit. pbrt-v4, Cycles, Filament and MaterialX use it.
-    HeightCorrelated,
-    /// G2 = G1(θo) G1(θi): masking and shadowing independent (Mitsuba 3's `G`).
-    Separable,
+named! {
+    /// How masking (view) and shadowing (light) combine into G2.
+    pub enum G2Model {
+        /// G2 = 1/(1 + Λ(θo) + Λ(θi)) (Heitz 2014 eq. 99): a microfacet high on the surface is likelier to
+        /// be both visible and lit. pbrt-v4, Cycles, Filament and MaterialX use it.
+        HeightCorrelated = "height-correlated",
+        /// G2 = G1(θo) G1(θi): masking and shadowing independent (Mitsuba 3's `G`).
+        Separable = "separable",
+    }
 }
 
 impl G2Model {
-    /// Both models with their names in curve JSON (`"g2": "<name>"`), the default first.
-    pub const NAMES: [(&'static str, G2Model); 2] = [
-        ("height-correlated", G2Model::HeightCorrelated),
-        ("separable", G2Model::Separable),
-    ];
-
-    /// The model's name in curve JSON.
-    pub fn name(self) -> &'static str {
-        match self {
-            G2Model::HeightCorrelated => "height-correlated",
-            G2Model::Separable => "separable",
-        }
-    }
-
-    /// The model named `name` in curve JSON, if any.
-    pub fn from_name(name: &str) -> Option<G2Model> {
-        G2Model::NAMES
-            .iter()
-            .find(|(n, _)| *n == name)
-            .map(|(_, model)| *model)
-    }
-
     /// G2 from Λ(θo) and Λ(θi), both ≥ 0 (possibly +∞ at grazing, where G2 is 0).
     #[inline]
     pub fn g2(self, lambda_o: f64, lambda_i: f64) -> f64 {

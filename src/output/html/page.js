@@ -125,7 +125,7 @@
     return ticks.map((t) => ({ value: t, text: t.toFixed(decimals) }));
   }
 
-  // A number for people, as ndfplot's legends write it (src/curve.rs `pretty`): at most 6
+  // A number for people, as ndfplot's legends write it (src/spec/numbers.rs `pretty`): at most 6
   // significant digits, trailing zeros dropped, exponent form below 1e-4 and from 1e6.
   function pretty(v) {
     if (v === 0) return "0";
