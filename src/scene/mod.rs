@@ -20,8 +20,8 @@ use crate::dataset::Dataset;
 use crate::json::{Node, Value};
 use crate::layout;
 use crate::look::{
-    Axes, Canvas, Corner, Dash, LegendPlace, Mark, PanelKind, Rgb, Scale, Style, Theme, TickChoice,
-    XUnit, shade,
+    Axes, Canvas, Corner, Dash, LegendPlace, Mark, PanelKind, Rgb, Scale, Style, SweepMember, Theme,
+    TickChoice, XUnit, shade,
 };
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::transform::Transform;
@@ -1265,6 +1265,7 @@ fn sweep_style(style: Style, k: usize, n: usize) -> Style {
     } else {
         Style {
             colour: shade(style.colour, k, n),
+            sweep: Some(SweepMember { index: k, count: n }),
             ..style
         }
     }
@@ -1290,6 +1291,7 @@ pub(crate) fn read_style(
         width: 1.0,
         dash: Dash::Solid,
         mark: Mark::Line,
+        sweep: None,
     };
     let before = reader.problems.len();
     if let Some(node) = entry.get("style") {

@@ -260,7 +260,11 @@ fn from_beckmann(reader: &mut Reader, node: &Node, path: &str) -> Option<Sweep> 
         match phong_from_beckmann(alpha_b) {
             Some(alpha_p) => values.push(SweepValue {
                 value: ParamValue::Number(alpha_p),
-                label: format!("α_p = {} (α_b = {})", crate::curve::pretty(alpha_p), crate::curve::pretty(alpha_b)),
+                label: format!(
+                    "α_p = {} (α_b = {})",
+                    crate::curve::significant(alpha_p, crate::curve::LEGEND_DIGITS),
+                    crate::curve::pretty(alpha_b)
+                ),
             }),
             None => reader.report(
                 inner_path.clone(),

@@ -29,20 +29,20 @@ pub(super) const Y_TICK_SPACING_EM: f64 = 3.0;
 
 /// A 2D panel laid out alone in its area: its legend, the area's size, the frame filling it, and
 /// whether the legend belongs outside that frame's plot area (as its place and the curves decide).
-struct Alone<'a> {
-    legend: Option<Legend<'a>>,
+struct Alone {
+    legend: Option<Legend>,
     size: (u32, u32),
     full: Frame,
     legend_outside: bool,
 }
 
-impl<'a> Alone<'a> {
+impl Alone {
     fn of<DB: DrawingBackend>(
         area: &DrawingArea<DB, Shift>,
-        panel: &'a Panel,
+        panel: &Panel,
         looks: &[Look],
         m: &Metrics,
-    ) -> Result<Alone<'a>, PlotError>
+    ) -> Result<Alone, PlotError>
     where
         DB::ErrorType: 'static,
     {

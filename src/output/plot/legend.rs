@@ -13,12 +13,13 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::clip::{Clipped, clip};
 use super::mathtext;
+use super::summary::summarize;
 use super::style::{MARKER_RADIUS_PX, Metrics, SURFACE_OPACITY, mesh_colour, stroke};
 use super::text::MIN_SHRINK;
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
-use crate::figure::{Panel, Series};
-use crate::look::{Corner, LegendPlace, Mark};
+use crate::figure::{Figure, Panel, Series};
+use crate::look::{Corner, LegendPlace, Mark, PanelKind, SweepMember};
 
 /// Number of heights tried for the legend box, from the top to the bottom of the plot area.
 pub(super) const LEGEND_HEIGHTS: i32 = 5;
@@ -119,9 +120,117 @@ pub(super) struct Outside {
     pub(super) strip: (f64, f64),
 }
 
-/// A panel's legend: its labelled entries and their label widths at the full size.
-pub(super) struct Legend<'a> {
-    entries: Vec<(&'a Series, Look, Sample)>,
+/// One row of a legend: a series, or a whole sweep summarized.
+struct Entry {
+    /// The label drawn.
+    label: String,
+    /// The line width of its series, in multiples of the default.
+    width: f64,
+    /// The looks of its series, darkest shade first for a sweep (one look for a single series).
+    looks: Vec<Look>,
+    /// What is drawn next to the label.
+    sample: Sample,
+}
+
+/// Most shades a sweep's legend sample shows side by side: the ends of the ramp and evenly
+/// spaced members between them.
+const MAX_SWATCH_SHADES: usize = 5;
+
+/// The legend rows of `series` drawn in `looks`, each shown by `sample(series)`: a run of the
+/// members of one sweep (consecutive, index 0 to count − 1, drawn alike but for colour) is one
+/// row when their labels merge ([`summarize`]); every other labelled series is its own row.
+fn entries(
+    series: &[Series],
+    looks: &[Look],
+    sample: impl Fn(&Series) -> Sample,
+) -> Vec<Entry> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < series.len().min(looks.len()) {
+        let s = &series[i];
+        let run = match s.style.sweep {
+            Some(member) if member.index == 0 && i + member.count <= series.len() => {
+                let members = &series[i..i + member.count];
+                let alike = members.iter().enumerate().all(|(k, m)| {
+                    m.style.sweep == Some(SweepMember { index: k, count: member.count })
+                        && m.style.width == s.style.width
+                        && m.style.dash == s.style.dash
+                        && m.style.mark == s.style.mark
+                        && !m.label.is_empty()
+                });
+                let labels: Vec<&str> = members.iter().map(|m| m.label.as_str()).collect();
+                alike.then(|| summarize(&labels)).flatten().map(|label| (member.count, label))
+            }
+            _ => None,
+        };
+        match run {
+            Some((count, label)) => {
+                let picks = count.min(MAX_SWATCH_SHADES);
+                let looks = (0..picks)
+                    .map(|j| looks[i + (j * (count - 1)).div_ceil((picks - 1).max(1))])
+                    .collect();
+                out.push(Entry {
+                    label,
+                    width: s.style.width,
+                    looks,
+                    sample: sample(s),
+                });
+                i += count;
+            }
+            None => {
+                if !s.label.is_empty() {
+                    out.push(Entry {
+                        label: s.label.clone(),
+                        width: s.style.width,
+                        looks: vec![looks[i]],
+                        sample: sample(s),
+                    });
+                }
+                i += 1;
+            }
+        }
+    }
+    out
+}
+
+/// Which panels of `figure` (series drawn in `looks`) draw their legend: each panel whose legend
+/// is on, except when an earlier panel draws one with the same place and the same rows (label,
+/// width, shades, sample). A legend that several panels share is drawn once, in the first of
+/// them, as a figure legend would be.
+pub(super) fn drawn_legends(figure: &Figure, looks: &[Vec<Look>]) -> Vec<bool> {
+    type Row = (String, u64, Vec<Look>, Sample);
+    let rows = |panel: &Panel, looks: &[Look]| -> Vec<Row> {
+        entries(&panel.series, looks, |s| Sample::of(s.style.mark))
+            .into_iter()
+            .map(|e| (e.label, e.width.to_bits(), e.looks, e.sample))
+            .collect()
+    };
+    let mut drawn: Vec<(LegendPlace, Vec<Row>)> = Vec::new();
+    figure
+        .panels
+        .iter()
+        .zip(looks)
+        .map(|(panel, looks)| {
+            let place = panel.axes.legend;
+            if place == LegendPlace::None || panel.axes.kind != PanelKind::Cartesian {
+                return true;
+            }
+            let rows = rows(panel, looks);
+            if rows.is_empty() {
+                return true;
+            }
+            let repeated = drawn.iter().any(|(p, r)| *p == place && *r == rows);
+            if !repeated {
+                drawn.push((place, rows));
+            }
+            !repeated
+        })
+        .collect()
+}
+
+/// A panel's legend: its rows and their label widths at the full size.
+pub(super) struct Legend {
+    entries: Vec<Entry>,
     widths: Vec<f64>,
 }
 
@@ -131,37 +240,35 @@ const SPACING_EM: (f64, f64, f64, f64) = (0.5, 2.2, 0.5, 1.35);
 /// Distance between the legend box and the edge of its area, in base text sizes.
 const INSET_EM: f64 = 0.6;
 
-impl<'a> Legend<'a> {
-    /// The legend of `panel`'s series in their `looks`, each shown by `sample(series)`, the
-    /// labels measured in the tick font on `area`; `None` when the panel has its legend off or
-    /// no series has a label (no legend is drawn).
+impl Legend {
+    /// The legend of `panel`'s series in their `looks`, each shown by `sample(series)` and each
+    /// sweep summarized in one row ([`entries`]), the labels measured in the tick font on `area`;
+    /// `None` when the panel has its legend off or no series has a label (no legend is drawn).
     pub(super) fn of_panel<DB: DrawingBackend>(
         area: &DrawingArea<DB, Shift>,
-        panel: &'a Panel,
+        panel: &Panel,
         looks: &[Look],
         sample: impl Fn(&Series) -> Sample,
         m: &Metrics,
-    ) -> Result<Option<Legend<'a>>, PlotError>
+    ) -> Result<Option<Legend>, PlotError>
     where
         DB::ErrorType: 'static,
     {
+        if panel.axes.legend == LegendPlace::None {
+            return Ok(None);
+        }
         let font = m.font(1.0);
-        let entries: Vec<(&Series, Look, Sample)> = panel
-            .series
-            .iter()
-            .zip(looks)
-            .filter(|(s, _)| panel.axes.legend != LegendPlace::None && !s.label.is_empty())
-            .map(|(s, &look)| (s, look, sample(s)))
-            .collect();
+        let entries = entries(&panel.series, looks, sample);
         if entries.is_empty() {
             return Ok(None);
         }
         let mut widths = Vec::with_capacity(entries.len());
-        for (s, _, _) in &entries {
-            widths.push(mathtext::width(area, &s.label, &font)?);
+        for entry in &entries {
+            widths.push(mathtext::width(area, &entry.label, &font)?);
         }
         Ok(Some(Legend { entries, widths }))
     }
+
 
     /// Distance between the box and the edge of its area, in device pixels.
     pub(super) fn inset(m: &Metrics) -> f64 {
@@ -328,22 +435,26 @@ impl<'a> Legend<'a> {
         let rows = rows(self.entries.len(), setting.columns);
         let mut left = at.0 + pad;
         for (column, chunk) in self.entries.chunks(rows).enumerate() {
-            for (i, (s, look, kind)) in chunk.iter().enumerate() {
+            for (i, entry) in chunk.iter().enumerate() {
+                let kind = &entry.sample;
                 let cy = (at.1 + pad + row * (i as f64 + 0.5)).round() as i32;
                 let sx = left.round() as i32;
                 let sample_px = sample.round() as i32;
                 let mid = sx + sample_px / 2;
                 let (half_w, half_h) = (sample_px / 4, (row * 0.3).round() as i32);
                 let patch = [(mid - half_w, cy - half_h), (mid + half_w, cy + half_h)];
-                let colour = look.colour;
+                // A sweep's sample shows its shades side by side, darkest first; its mark takes
+                // the middle shade.
+                let shades = entry.looks.len() as i32;
+                let colour = entry.looks[entry.looks.len() / 2].colour;
                 if matches!(kind, Sample::Line | Sample::LineDot) {
-                    let style = m.curve_style(colour, s.style.width);
-                    stroke(
-                        area,
-                        vec![(sx, cy), (sx + sample_px, cy)],
-                        style,
-                        look.pattern,
-                    )?;
+                    for (j, look) in entry.looks.iter().enumerate() {
+                        let j = j as i32;
+                        let style = m.curve_style(look.colour, entry.width);
+                        let (from, to) =
+                            (sx + sample_px * j / shades, sx + sample_px * (j + 1) / shades);
+                        stroke(area, vec![(from, cy), (to, cy)], style, look.pattern)?;
+                    }
                 }
                 match kind {
                     Sample::Line => {}
@@ -366,7 +477,7 @@ impl<'a> Legend<'a> {
                 let text_x = (left + sample + gap).round() as i32;
                 mathtext::draw(
                     area,
-                    &s.label,
+                    &entry.label,
                     &label_style,
                     (f64::from(text_x), f64::from(cy)),
                     m,
