@@ -340,6 +340,18 @@ pub enum Corner {
     LowerRight,
 }
 
+impl Corner {
+    /// The corner as a spec names it (`upper right`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Corner::UpperRight => "upper right",
+            Corner::UpperLeft => "upper left",
+            Corner::LowerLeft => "lower left",
+            Corner::LowerRight => "lower right",
+        }
+    }
+}
+
 /// Ticks a spec asks for on an axis of a 2D panel.
 #[derive(Debug, Clone, PartialEq)]
 pub enum TickChoice {

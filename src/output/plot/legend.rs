@@ -12,6 +12,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::clip::{Clipped, clip};
+use super::lint::record_warning;
 use super::mathtext;
 use super::summary::summarize;
 use super::style::{MARKER_RADIUS_PX, Metrics, SURFACE_OPACITY, mesh_colour, stroke};
@@ -298,15 +299,36 @@ impl Legend {
         (hidden <= HIDE_TOLERANCE_EM * m.unit).then_some(at)
     }
 
-    /// The top-left corner of the full-size box at `corner` of a plot area of `plot` pixels, inset
-    /// from its edges; `None` when it does not fit there.
-    pub(super) fn at_corner(
+    /// The setting of the box at `corner` of a plot area of `plot` pixels and its top-left corner:
+    /// the full size when it fits there, else the largest of the outside scales in the fewest
+    /// columns that fits; `None` when none does.
+    pub(super) fn corner_setting(
         &self,
         plot: (f64, f64),
         corner: Corner,
         m: &Metrics,
+    ) -> Option<(Setting, (f64, f64))> {
+        OUTSIDE_SCALES
+            .iter()
+            .flat_map(|&scale| {
+                (1..=self.entries.len().max(1)).map(move |columns| Setting { scale, columns })
+            })
+            .find_map(|setting| {
+                self.at_corner_set(plot, corner, setting, m)
+                    .map(|at| (setting, at))
+            })
+    }
+
+    /// The top-left corner of the box set as `setting` at `corner` of a plot area of `plot`
+    /// pixels, inset from its edges; `None` when it does not fit there.
+    fn at_corner_set(
+        &self,
+        plot: (f64, f64),
+        corner: Corner,
+        setting: Setting,
+        m: &Metrics,
     ) -> Option<(f64, f64)> {
-        let (w, h) = self.size(Setting::FULL, m);
+        let (w, h) = self.size(setting, m);
         let inset = Self::inset(m);
         if w + 2.0 * inset > plot.0 || h + 2.0 * inset > plot.1 {
             return None;
@@ -333,7 +355,8 @@ impl Legend {
     ) -> bool {
         match place {
             LegendPlace::Best => self.inside(plot, covered, m).is_some(),
-            LegendPlace::Corner(corner) => self.at_corner(plot, corner, m).is_some(),
+            // A corner asked for is kept (shrunk to fit, or with a warning).
+            LegendPlace::Corner(_) => true,
             LegendPlace::Right | LegendPlace::Below | LegendPlace::None => false,
         }
     }
@@ -351,13 +374,22 @@ impl Legend {
         DB::ErrorType: 'static,
     {
         let (w, h) = plot.dim_in_pixel();
-        let corner = match place {
-            LegendPlace::Corner(corner) => self.at_corner((f64::from(w), f64::from(h)), corner, m),
-            _ => None,
+        let LegendPlace::Corner(corner) = place else {
+            return self.draw_over(plot, covered, m);
         };
-        match corner {
-            Some(at) => self.draw(plot, at, Setting::FULL, m),
-            None => self.draw_over(plot, covered, m),
+        match self.corner_setting((f64::from(w), f64::from(h)), corner, m) {
+            Some((setting, at)) => self.draw(plot, at, setting, m),
+            None => {
+                record_warning(
+                    &m.trace,
+                    format!(
+                        "the legend {:?} does not fit its {} corner ({w} × {h} px plot area): drawn where it hides the least",
+                        self.entries.first().map_or("", |e| e.label.as_str()),
+                        corner.name()
+                    ),
+                );
+                self.draw_over(plot, covered, m)
+            }
         }
     }
 
@@ -378,6 +410,14 @@ impl Legend {
     /// restricted to its strip below).
     pub(super) fn below(&self, area: (f64, f64), m: &Metrics) -> Outside {
         self.outside(area, m, |w, h| (w >= area.0).then_some(h))
+    }
+
+    /// Whether the legend fits over a plot area of `plot` pixels at a readable size: at the full
+    /// setting, or as [`Legend::draw_over`] would set it, at no less than the smallest of the
+    /// outside scales.
+    pub(super) fn fits_over(&self, plot: (f64, f64), m: &Metrics) -> bool {
+        let smallest = OUTSIDE_SCALES[OUTSIDE_SCALES.len() - 1];
+        self.outside(plot, m, |_, _| Some(0.0)).setting.scale >= smallest
     }
 
     /// Draws the legend over `area` where it hides the least of the `covered` curves (area
