@@ -17,8 +17,8 @@ pub mod svg_tree;
 pub mod write;
 
 use crate::error::{Error, Result};
-use crate::pipeline::figure::Figure;
 use crate::model::names::named;
+use crate::pipeline::figure::Figure;
 use csv::figure_csv;
 
 /// What a format is encoded from: the figure whose curves were sampled for drawing (adaptively,

@@ -346,7 +346,10 @@ fn text(label: &Label, curve: &Curve, fit: Option<(&Fitted, &FitOutcome)>) -> St
                     (Part::Fitted, Some((fitted, outcome))) => format!(
                         "{} = {} ({} fit to {})",
                         curve::symbol(fitted.name()),
-                        crate::spec::numbers::pretty(outcome.value),
+                        crate::spec::numbers::significant(
+                            outcome.value,
+                            crate::spec::numbers::LEGEND_DIGITS
+                        ),
                         fitted.by.name(),
                         outcome.target_label
                     ),
@@ -358,7 +361,17 @@ fn text(label: &Label, curve: &Curve, fit: Option<(&Fitted, &FitOutcome)>) -> St
             with_family_prefix(curve, &parts.join(", "))
         }
         Label::Template { template, values } => {
-            let fitted_value = fit.map(|(_, outcome)| ParamValue::Number(outcome.value));
+            // A fitted value is computed: shown to the legend's digits, as written values are not.
+            let fitted_value = fit.map(|(_, outcome)| {
+                ParamValue::Number(
+                    crate::spec::numbers::significant(
+                        outcome.value,
+                        crate::spec::numbers::LEGEND_DIGITS,
+                    )
+                    .parse()
+                    .unwrap_or(outcome.value),
+                )
+            });
             let values: Vec<(&str, ParamValue)> = values
                 .iter()
                 .filter_map(|(name, value)| Some((*name, value.or(fitted_value)?)))
@@ -399,6 +412,9 @@ fn belcour_l2(curve: &Curve) -> Option<f64> {
     }
 }
 
+/// Most significant digits of a number a label template shows.
+const TEMPLATE_DIGITS: usize = 4;
+
 /// Replaces `{param}` in a label template by the parameter's value (`"TS {alpha_ts}"`), and `{l2}`
 /// by a Belcour reconstruction's error (two decimals, as the notebook prints it).
 fn fill_template(template: &str, curve: &Curve, values: &[(&str, ParamValue)]) -> String {
@@ -409,7 +425,9 @@ fn fill_template(template: &str, curve: &Curve, values: &[(&str, ParamValue)]) -
 
     for (name, value) in values {
         let text = match value {
-            ParamValue::Number(v) => crate::spec::numbers::pretty(*v),
+            // Written values keep four digits (`0.2027`), converted ones lose the rest
+            // (`20.2222` → `20.22`); the CSV has them exactly.
+            ParamValue::Number(v) => crate::spec::numbers::significant(*v, TEMPLATE_DIGITS),
             ParamValue::Flag(b) => b.to_string(),
         };
         label = label.replace(&format!("{{{name}}}"), &text);
@@ -520,10 +538,10 @@ mod tests {
             .map(|c| c.label.as_str())
             .collect();
         assert!(
-            labels[0].ends_with("a₁ = 11.5819 (peak fit to α_{tr} = 0.4)"),
+            labels[0].ends_with("a₁ = 11.6 (peak fit to α_{tr} = 0.4)"),
             "{labels:?}"
         );
-        assert_eq!(labels[1], "11.5819 by 1.75");
+        assert_eq!(labels[1], "11.6 by 1.75", "a fitted value to three digits");
         assert_eq!(
             labels[2..],
             ["α_{tr} = 0.4 − α_{tr} = 0.5", "α_{tr} = 0.6 − α_{tr} = 0.5"]

@@ -140,6 +140,18 @@ pub struct Style {
     pub dash: Dash,
     /// How points are marked.
     pub mark: Mark,
+    /// Which member of its entry's sweep the series is (its shade of the entry's colour), when the
+    /// entry gives several curves: a legend shows the sweep as one entry.
+    pub sweep: Option<SweepMember>,
+}
+
+/// A series' place in the sweep of its spec entry: member `index` of `count` (≥ 2), darkest first.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct SweepMember {
+    /// 0-based position in the entry's curves.
+    pub index: usize,
+    /// Number of curves the entry gives.
+    pub count: usize,
 }
 
 /// What the x axis shows: θ (data always in radians) in a display unit, or a plain quantity.
@@ -326,6 +338,18 @@ pub enum Corner {
     LowerLeft,
     /// Bottom right.
     LowerRight,
+}
+
+impl Corner {
+    /// The corner as a spec names it (`upper right`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Corner::UpperRight => "upper right",
+            Corner::UpperLeft => "upper left",
+            Corner::LowerLeft => "lower left",
+            Corner::LowerRight => "lower right",
+        }
+    }
 }
 
 /// Ticks a spec asks for on an axis of a 2D panel.

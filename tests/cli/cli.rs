@@ -309,12 +309,14 @@ fn render_writes_svg_png_csv_and_csv_values_equal_eval() {
         svg.starts_with("<svg") || svg.starts_with("<?xml"),
         "not an SVG"
     );
-    // `α_b = 0.4` is typeset: α, then b as a subscript run, then the rest.
+    // The sweep is one legend row, `α_b = 0.4 … 1`, typeset: α, then b as a subscript run, then
+    // the rest; no row per member.
     assert!(
         svg.contains("Test figure")
             && svg.contains(">α</text>")
             && svg.contains(">b</text>")
-            && svg.contains("> = 0.4</text>")
+            && svg.contains("> = 0.4 … 1</text>")
+            && !svg.contains("> = 0.7</text>")
             && !svg.contains("α_b"),
         "labels missing from SVG"
     );
@@ -1016,9 +1018,10 @@ fn scene_fits_and_differences_render_with_fitted_values_in_the_csv() {
         r#""{""difference"":""ratio"",""a"":{""ndf"":""trowbridge_reitz"",""alpha_tr"":0.6}"#
     ));
     let svg = std::fs::read_to_string(dir.join("fits.svg")).unwrap();
-    // The fit's label names its target, `α_{tr}` typeset with tr as a subscript run.
+    // The fits are one legend row naming their targets, `α_{tr}` typeset with tr as a subscript
+    // run, fitted values to three digits.
     assert!(
-        svg.contains("a₁ = 11.5819 (peak fit to α</text>") && svg.contains(">tr</text>"),
+        svg.contains("a₁ = 11.6 … 3.57 (peak fit to α</text>") && svg.contains(">tr</text>"),
         "legend"
     );
     std::fs::write(

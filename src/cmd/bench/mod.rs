@@ -62,6 +62,7 @@ fn style(colour: u32, dash: Dash, mark: Mark) -> Style {
         width: 1.0,
         dash,
         mark,
+        sweep: None,
     }
 }
 

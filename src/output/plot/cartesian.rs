@@ -29,20 +29,20 @@ pub(super) const Y_TICK_SPACING_EM: f64 = 3.0;
 
 /// A 2D panel laid out alone in its area: its legend, the area's size, the frame filling it, and
 /// whether the legend belongs outside that frame's plot area (as its place and the curves decide).
-struct Alone<'a> {
-    legend: Option<Legend<'a>>,
+struct Alone {
+    legend: Option<Legend>,
     size: (u32, u32),
     full: Frame,
     legend_outside: bool,
 }
 
-impl<'a> Alone<'a> {
+impl Alone {
     fn of<DB: DrawingBackend>(
         area: &DrawingArea<DB, Shift>,
-        panel: &'a Panel,
+        panel: &Panel,
         looks: &[Look],
         m: &Metrics,
-    ) -> Result<Alone<'a>, PlotError>
+    ) -> Result<Alone, PlotError>
     where
         DB::ErrorType: 'static,
     {
@@ -112,6 +112,22 @@ where
     };
     let chart_h = height.saturating_sub(band.ceil() as u32).max(1);
     let frame = Frame::fit(area, (width, chart_h), panel, m, (0, 0))?;
+    // A band that would leave the plot less than its share is not taken: the legend goes over
+    // the plot instead, where it hides the least.
+    let asked_outside = matches!(panel.axes.legend, LegendPlace::Right | LegendPlace::Below);
+    let over = |legend: &Legend| legend.fits_over(alone.full.plot_f(), m);
+    if band > 0.0
+        && !asked_outside
+        && !keeps_share(frame.plot, (width, height))
+        && alone.legend.as_ref().is_some_and(over)
+    {
+        let full = &alone.full;
+        return Ok(Needs {
+            x_area: full.x_area,
+            y_area: full.y_area,
+            band: 0.0,
+        });
+    }
     Ok(Needs {
         x_area: frame.x_area,
         y_area: frame.y_area,
@@ -198,15 +214,24 @@ where
         }),
         _ => None,
     };
-    let (chart_area, frame) = match outside {
-        None => (area.clone(), full),
+    let (chart_area, frame, outside) = match outside {
+        None => (area.clone(), full, None),
         Some(Outside { side, strip, .. }) => {
             let chart_area = match side {
                 Side::Right => area.split_horizontally(width - strip.0.ceil() as u32).0,
                 Side::Below => area.split_vertically(height - strip.1.ceil() as u32).0,
             };
             let frame = Frame::fit(&chart_area, chart_area.dim_in_pixel(), panel, m, (0, 0))?;
-            (chart_area, frame)
+            let asked = matches!(panel.axes.legend, LegendPlace::Right | LegendPlace::Below);
+            let over = legend
+                .as_ref()
+                .is_some_and(|l| l.fits_over(full.plot_f(), m));
+            if asked || !over || keeps_share(frame.plot, (width, height)) {
+                (chart_area, frame, outside)
+            } else {
+                // Beside or below, the plot would lose its share: the legend goes over it.
+                (area.clone(), full, None)
+            }
         }
     };
     let plot = draw_chart(&chart_area, panel, looks, &frame, m)?;
@@ -259,6 +284,18 @@ const LABEL_GAP_EM: f64 = 0.5;
 /// Smallest plot area an outside legend may leave, as the width of the largest rectangle of
 /// the default panel aspect 1/φ inside it, in base text sizes: two x tick spacings.
 const MIN_PLOT_EM: f64 = 2.0 * X_TICK_SPACING_EM;
+
+/// Least share of its area's width and of its height (the panel's cell below its title) a plot
+/// area keeps when a legend is placed: a legend that would leave less beside or below the plot
+/// goes over it instead. With the title and tick labels this keeps the plot above about a third of
+/// its cell, which the figure lint checks ([`super::lint::MIN_PLOT_SHARE`]).
+pub(super) const MIN_PLOT_SHARE: f64 = 0.45;
+
+/// Whether a plot area of `plot` pixels keeps [`MIN_PLOT_SHARE`] of an `area` each way.
+fn keeps_share(plot: (u32, u32), area: (u32, u32)) -> bool {
+    f64::from(plot.0) >= MIN_PLOT_SHARE * f64::from(area.0)
+        && f64::from(plot.1) >= MIN_PLOT_SHARE * f64::from(area.1)
+}
 
 /// The layout of a chart in an area: its axes, the sizes of the tick-label areas and of the
 /// plot area, in device pixels.

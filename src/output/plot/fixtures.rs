@@ -36,6 +36,7 @@ pub(super) fn series(
             width,
             dash,
             mark: Mark::Line,
+            sweep: None,
         },
         points: Arc::new(points),
         z: None,

@@ -12,13 +12,15 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::clip::{Clipped, clip};
+use super::lint::record_warning;
 use super::mathtext;
 use super::style::{MARKER_RADIUS_PX, Metrics, SURFACE_OPACITY, mesh_colour, stroke};
+use super::summary::summarize;
 use super::text::MIN_SHRINK;
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
-use crate::pipeline::figure::{Panel, Series};
-use crate::spec::look::{Corner, LegendPlace, Mark};
+use crate::pipeline::figure::{Figure, Panel, Series};
+use crate::spec::look::{Corner, LegendPlace, Mark, PanelKind, SweepMember};
 
 /// Number of heights tried for the legend box, from the top to the bottom of the plot area.
 pub(super) const LEGEND_HEIGHTS: i32 = 5;
@@ -119,9 +121,120 @@ pub(super) struct Outside {
     pub(super) strip: (f64, f64),
 }
 
-/// A panel's legend: its labelled entries and their label widths at the full size.
-pub(super) struct Legend<'a> {
-    entries: Vec<(&'a Series, Look, Sample)>,
+/// One row of a legend: a series, or a whole sweep summarized.
+struct Entry {
+    /// The label drawn.
+    label: String,
+    /// The line width of its series, in multiples of the default.
+    width: f64,
+    /// The looks of its series, darkest shade first for a sweep (one look for a single series).
+    looks: Vec<Look>,
+    /// What is drawn next to the label.
+    sample: Sample,
+}
+
+/// Most shades a sweep's legend sample shows side by side: the ends of the ramp and evenly
+/// spaced members between them.
+const MAX_SWATCH_SHADES: usize = 5;
+
+/// The legend rows of `series` drawn in `looks`, each shown by `sample(series)`: a run of the
+/// members of one sweep (consecutive, index 0 to count − 1, drawn alike but for colour) is one
+/// row when their labels merge ([`summarize`]); every other labelled series is its own row.
+fn entries(series: &[Series], looks: &[Look], sample: impl Fn(&Series) -> Sample) -> Vec<Entry> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < series.len().min(looks.len()) {
+        let s = &series[i];
+        let run = match s.style.sweep {
+            Some(member) if member.index == 0 && i + member.count <= series.len() => {
+                let members = &series[i..i + member.count];
+                let alike = members.iter().enumerate().all(|(k, m)| {
+                    m.style.sweep
+                        == Some(SweepMember {
+                            index: k,
+                            count: member.count,
+                        })
+                        && m.style.width == s.style.width
+                        && m.style.dash == s.style.dash
+                        && m.style.mark == s.style.mark
+                        && !m.label.is_empty()
+                });
+                let labels: Vec<&str> = members.iter().map(|m| m.label.as_str()).collect();
+                alike
+                    .then(|| summarize(&labels))
+                    .flatten()
+                    .map(|label| (member.count, label))
+            }
+            _ => None,
+        };
+        match run {
+            Some((count, label)) => {
+                let picks = count.min(MAX_SWATCH_SHADES);
+                let looks = (0..picks)
+                    .map(|j| looks[i + (j * (count - 1)).div_ceil((picks - 1).max(1))])
+                    .collect();
+                out.push(Entry {
+                    label,
+                    width: s.style.width,
+                    looks,
+                    sample: sample(s),
+                });
+                i += count;
+            }
+            None => {
+                if !s.label.is_empty() {
+                    out.push(Entry {
+                        label: s.label.clone(),
+                        width: s.style.width,
+                        looks: vec![looks[i]],
+                        sample: sample(s),
+                    });
+                }
+                i += 1;
+            }
+        }
+    }
+    out
+}
+
+/// Which panels of `figure` (series drawn in `looks`) draw their legend: each panel whose legend
+/// is on, except when an earlier panel draws one with the same place and the same rows (label,
+/// width, shades, sample). A legend that several panels share is drawn once, in the first of
+/// them, as a figure legend would be.
+pub(super) fn drawn_legends(figure: &Figure, looks: &[Vec<Look>]) -> Vec<bool> {
+    type Row = (String, u64, Vec<Look>, Sample);
+    let rows = |panel: &Panel, looks: &[Look]| -> Vec<Row> {
+        entries(&panel.series, looks, |s| Sample::of(s.style.mark))
+            .into_iter()
+            .map(|e| (e.label, e.width.to_bits(), e.looks, e.sample))
+            .collect()
+    };
+    let mut drawn: Vec<(LegendPlace, Vec<Row>)> = Vec::new();
+    figure
+        .panels
+        .iter()
+        .zip(looks)
+        .map(|(panel, looks)| {
+            let place = panel.axes.legend;
+            if place == LegendPlace::None || panel.axes.kind != PanelKind::Cartesian {
+                return true;
+            }
+            let rows = rows(panel, looks);
+            if rows.is_empty() {
+                return true;
+            }
+            let repeated = drawn.iter().any(|(p, r)| *p == place && *r == rows);
+            if !repeated {
+                drawn.push((place, rows));
+            }
+            !repeated
+        })
+        .collect()
+}
+
+/// A panel's legend: its rows and their label widths at the full size.
+pub(super) struct Legend {
+    entries: Vec<Entry>,
     widths: Vec<f64>,
 }
 
@@ -131,34 +244,31 @@ const SPACING_EM: (f64, f64, f64, f64) = (0.5, 2.2, 0.5, 1.35);
 /// Distance between the legend box and the edge of its area, in base text sizes.
 const INSET_EM: f64 = 0.6;
 
-impl<'a> Legend<'a> {
-    /// The legend of `panel`'s series in their `looks`, each shown by `sample(series)`, the
-    /// labels measured in the tick font on `area`; `None` when the panel has its legend off or
-    /// no series has a label (no legend is drawn).
+impl Legend {
+    /// The legend of `panel`'s series in their `looks`, each shown by `sample(series)` and each
+    /// sweep summarized in one row ([`entries`]), the labels measured in the tick font on `area`;
+    /// `None` when the panel has its legend off or no series has a label (no legend is drawn).
     pub(super) fn of_panel<DB: DrawingBackend>(
         area: &DrawingArea<DB, Shift>,
-        panel: &'a Panel,
+        panel: &Panel,
         looks: &[Look],
         sample: impl Fn(&Series) -> Sample,
         m: &Metrics,
-    ) -> Result<Option<Legend<'a>>, PlotError>
+    ) -> Result<Option<Legend>, PlotError>
     where
         DB::ErrorType: 'static,
     {
+        if panel.axes.legend == LegendPlace::None {
+            return Ok(None);
+        }
         let font = m.font(1.0);
-        let entries: Vec<(&Series, Look, Sample)> = panel
-            .series
-            .iter()
-            .zip(looks)
-            .filter(|(s, _)| panel.axes.legend != LegendPlace::None && !s.label.is_empty())
-            .map(|(s, &look)| (s, look, sample(s)))
-            .collect();
+        let entries = entries(&panel.series, looks, sample);
         if entries.is_empty() {
             return Ok(None);
         }
         let mut widths = Vec::with_capacity(entries.len());
-        for (s, _, _) in &entries {
-            widths.push(mathtext::width(area, &s.label, &font)?);
+        for entry in &entries {
+            widths.push(mathtext::width(area, &entry.label, &font)?);
         }
         Ok(Some(Legend { entries, widths }))
     }
@@ -191,15 +301,36 @@ impl<'a> Legend<'a> {
         (hidden <= HIDE_TOLERANCE_EM * m.unit).then_some(at)
     }
 
-    /// The top-left corner of the full-size box at `corner` of a plot area of `plot` pixels, inset
-    /// from its edges; `None` when it does not fit there.
-    pub(super) fn at_corner(
+    /// The setting of the box at `corner` of a plot area of `plot` pixels and its top-left corner:
+    /// the full size when it fits there, else the largest of the outside scales in the fewest
+    /// columns that fits; `None` when none does.
+    pub(super) fn corner_setting(
         &self,
         plot: (f64, f64),
         corner: Corner,
         m: &Metrics,
+    ) -> Option<(Setting, (f64, f64))> {
+        OUTSIDE_SCALES
+            .iter()
+            .flat_map(|&scale| {
+                (1..=self.entries.len().max(1)).map(move |columns| Setting { scale, columns })
+            })
+            .find_map(|setting| {
+                self.at_corner_set(plot, corner, setting, m)
+                    .map(|at| (setting, at))
+            })
+    }
+
+    /// The top-left corner of the box set as `setting` at `corner` of a plot area of `plot`
+    /// pixels, inset from its edges; `None` when it does not fit there.
+    fn at_corner_set(
+        &self,
+        plot: (f64, f64),
+        corner: Corner,
+        setting: Setting,
+        m: &Metrics,
     ) -> Option<(f64, f64)> {
-        let (w, h) = self.size(Setting::FULL, m);
+        let (w, h) = self.size(setting, m);
         let inset = Self::inset(m);
         if w + 2.0 * inset > plot.0 || h + 2.0 * inset > plot.1 {
             return None;
@@ -226,7 +357,8 @@ impl<'a> Legend<'a> {
     ) -> bool {
         match place {
             LegendPlace::Best => self.inside(plot, covered, m).is_some(),
-            LegendPlace::Corner(corner) => self.at_corner(plot, corner, m).is_some(),
+            // A corner asked for is kept (shrunk to fit, or with a warning).
+            LegendPlace::Corner(_) => true,
             LegendPlace::Right | LegendPlace::Below | LegendPlace::None => false,
         }
     }
@@ -244,13 +376,22 @@ impl<'a> Legend<'a> {
         DB::ErrorType: 'static,
     {
         let (w, h) = plot.dim_in_pixel();
-        let corner = match place {
-            LegendPlace::Corner(corner) => self.at_corner((f64::from(w), f64::from(h)), corner, m),
-            _ => None,
+        let LegendPlace::Corner(corner) = place else {
+            return self.draw_over(plot, covered, m);
         };
-        match corner {
-            Some(at) => self.draw(plot, at, Setting::FULL, m),
-            None => self.draw_over(plot, covered, m),
+        match self.corner_setting((f64::from(w), f64::from(h)), corner, m) {
+            Some((setting, at)) => self.draw(plot, at, setting, m),
+            None => {
+                record_warning(
+                    &m.trace,
+                    format!(
+                        "the legend {:?} does not fit its {} corner ({w} × {h} px plot area): drawn where it hides the least",
+                        self.entries.first().map_or("", |e| e.label.as_str()),
+                        corner.name()
+                    ),
+                );
+                self.draw_over(plot, covered, m)
+            }
         }
     }
 
@@ -271,6 +412,14 @@ impl<'a> Legend<'a> {
     /// restricted to its strip below).
     pub(super) fn below(&self, area: (f64, f64), m: &Metrics) -> Outside {
         self.outside(area, m, |w, h| (w >= area.0).then_some(h))
+    }
+
+    /// Whether the legend fits over a plot area of `plot` pixels at a readable size: at the full
+    /// setting, or as [`Legend::draw_over`] would set it, at no less than the smallest of the
+    /// outside scales.
+    pub(super) fn fits_over(&self, plot: (f64, f64), m: &Metrics) -> bool {
+        let smallest = OUTSIDE_SCALES[OUTSIDE_SCALES.len() - 1];
+        self.outside(plot, m, |_, _| Some(0.0)).setting.scale >= smallest
     }
 
     /// Draws the legend over `area` where it hides the least of the `covered` curves (area
@@ -328,22 +477,28 @@ impl<'a> Legend<'a> {
         let rows = rows(self.entries.len(), setting.columns);
         let mut left = at.0 + pad;
         for (column, chunk) in self.entries.chunks(rows).enumerate() {
-            for (i, (s, look, kind)) in chunk.iter().enumerate() {
+            for (i, entry) in chunk.iter().enumerate() {
+                let kind = &entry.sample;
                 let cy = (at.1 + pad + row * (i as f64 + 0.5)).round() as i32;
                 let sx = left.round() as i32;
                 let sample_px = sample.round() as i32;
                 let mid = sx + sample_px / 2;
                 let (half_w, half_h) = (sample_px / 4, (row * 0.3).round() as i32);
                 let patch = [(mid - half_w, cy - half_h), (mid + half_w, cy + half_h)];
-                let colour = look.colour;
+                // A sweep's sample shows its shades side by side, darkest first; its mark takes
+                // the middle shade.
+                let shades = entry.looks.len() as i32;
+                let colour = entry.looks[entry.looks.len() / 2].colour;
                 if matches!(kind, Sample::Line | Sample::LineDot) {
-                    let style = m.curve_style(colour, s.style.width);
-                    stroke(
-                        area,
-                        vec![(sx, cy), (sx + sample_px, cy)],
-                        style,
-                        look.pattern,
-                    )?;
+                    for (j, look) in entry.looks.iter().enumerate() {
+                        let j = j as i32;
+                        let style = m.curve_style(look.colour, entry.width);
+                        let (from, to) = (
+                            sx + sample_px * j / shades,
+                            sx + sample_px * (j + 1) / shades,
+                        );
+                        stroke(area, vec![(from, cy), (to, cy)], style, look.pattern)?;
+                    }
                 }
                 match kind {
                     Sample::Line => {}
@@ -366,7 +521,7 @@ impl<'a> Legend<'a> {
                 let text_x = (left + sample + gap).round() as i32;
                 mathtext::draw(
                     area,
-                    &s.label,
+                    &entry.label,
                     &label_style,
                     (f64::from(text_x), f64::from(cy)),
                     m,

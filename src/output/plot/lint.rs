@@ -1,7 +1,8 @@
 //! The figure lint: what the drawing placed, recorded while it draws ([`Trace`]), and the rules a
 //! publication figure keeps ([`lint`]): no literal markup, at least three labelled ticks per axis
-//! of a 2D panel, equal plot areas along a row, no text overlapping other text or leaving the
-//! canvas, every curve at 3:1 contrast with the page, and no two legend entries alike in a panel.
+//! of a 2D panel, plot areas that keep their share of the cell, equal plot areas along a row, no
+//! text overlapping other text or leaving the canvas, every curve at 3:1 contrast with the page,
+//! no two legend entries alike in a panel, and nothing the drawing could not do as asked.
 
 use std::cell::RefCell;
 
@@ -13,6 +14,9 @@ use plotters::prelude::*;
 
 /// Least labelled ticks per axis of a 2D panel.
 pub const MIN_LABELLED_TICKS: usize = 3;
+/// Least share of its grid cell's width and of its height a 2D panel's plot area keeps (the
+/// cell's height including the figure title's share, so that the rule is on the safe side).
+pub const MIN_PLOT_SHARE: f64 = 0.3;
 /// Least WCAG contrast of a curve with its page.
 pub const MIN_CONTRAST: f64 = 3.0;
 /// Plot areas of one row may differ by this much, in CSS pixels.
@@ -51,6 +55,8 @@ pub(super) struct Trace {
     pub(super) texts: Vec<DrawnText>,
     /// Every 2D panel's plot area and tick count.
     pub(super) panels: Vec<PanelTrace>,
+    /// What the drawing could not do as asked (a legend that fits no corner), in words.
+    pub(super) warnings: Vec<String>,
 }
 
 /// The record a drawing writes into, when one is kept.
@@ -64,6 +70,13 @@ pub(super) fn record_text(recorder: &Recorder, text: &str, label: &str, rect: Re
             label: label.to_owned(),
             rect,
         });
+    }
+}
+
+/// Records `warning`, when a trace is kept.
+pub(super) fn record_warning(recorder: &Recorder, warning: String) {
+    if let Some(trace) = recorder {
+        trace.borrow_mut().warnings.push(warning);
     }
 }
 
@@ -109,7 +122,11 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
     let id = &figure.id;
     let px = |device: f64| device / SVG_UNITS_PER_PX;
     let slack = OVERLAP_TOLERANCE_PX * SVG_UNITS_PER_PX;
-    let mut findings = Vec::new();
+    let mut findings: Vec<String> = trace
+        .warnings
+        .iter()
+        .map(|w| format!("{id}: {w}"))
+        .collect();
 
     for t in &trace.texts {
         let escaped = t.label.contains("\\_") || t.label.contains("\\^");
@@ -146,6 +163,24 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
         if x < MIN_LABELLED_TICKS || y < MIN_LABELLED_TICKS {
             findings.push(format!(
                 "{id}: panel {panel} has {x} labelled x ticks and {y} labelled y ticks (expected at least {MIN_LABELLED_TICKS} each)"
+            ));
+        }
+    }
+    let rows = figure.rows.max(1);
+    let cell = (
+        f64::from(width) / cols as f64,
+        f64::from(height) / rows as f64,
+    );
+    for (traced, &panel) in trace.panels.iter().zip(&cartesian) {
+        let [l, t, r, b] = traced.plot;
+        let share = ((r - l) / cell.0).min((b - t) / cell.1);
+        if share < MIN_PLOT_SHARE {
+            findings.push(format!(
+                "{id}: panels[{panel}]: plot area {:.0} % of its cell (expected at least {:.0} %) at {:.0} × {:.0} px",
+                100.0 * share,
+                100.0 * MIN_PLOT_SHARE,
+                px(f64::from(width)),
+                px(f64::from(height)),
             ));
         }
     }
@@ -234,6 +269,68 @@ mod tests {
     }
 
     #[test]
+    fn plots_keep_their_share_at_paper_size_and_asked_corners_are_kept_or_warned() {
+        // Two panels of ten curves with labels that do not merge, at 7 × 2.6 in with 8 pt text
+        // (672 × 250 CSS px, 10.67 px): their legends no longer fit beside or below the plots.
+        let curves = |tag: &str| -> Vec<crate::pipeline::figure::Series> {
+            (0..10)
+                .map(|i| {
+                    let slope = 1.0 + f64::from(i);
+                    series(
+                        &format!("{tag} curve {i}"),
+                        RED,
+                        1.0,
+                        Dash::Solid,
+                        vec![(0.0, 0.0), (1.0, slope)],
+                    )
+                })
+                .collect()
+        };
+        let mut fig = figure(vec![
+            panel(XUnit::Radians, Scale::Linear, curves("left")),
+            panel(XUnit::Radians, Scale::Linear, curves("right")),
+        ]);
+        (fig.rows, fig.cols) = (1, 2);
+        (fig.canvas.width_px, fig.canvas.height_px) = (672, 250);
+        fig.canvas.font_px = 8.0 * 96.0 / 72.0;
+        for p in &mut fig.panels {
+            p.axes.title = "α = 0.4 … 1.0".to_owned();
+        }
+        let (trace, size) = trace_of(&fig).unwrap();
+        let cell_h = f64::from(size.1);
+        for p in &trace.panels {
+            let share = (p.plot[3] - p.plot[1]) / cell_h;
+            assert!(
+                share >= MIN_PLOT_SHARE,
+                "plot {:.0} % of the cell",
+                100.0 * share
+            );
+        }
+        let found = findings(&fig, &trace, size);
+        assert!(!found.iter().any(|f| f.contains("plot area")), "{found:?}");
+        // A corner asked for keeps the legend there, shrunk; one too small for it is a warning.
+        fig.panels[0].axes.legend =
+            crate::spec::look::LegendPlace::Corner(crate::spec::look::Corner::UpperLeft);
+        let (trace, _) = trace_of(&fig).unwrap();
+        assert!(trace.warnings.is_empty(), "{:?}", trace.warnings);
+        (fig.canvas.width_px, fig.canvas.height_px) = (240, 100);
+        let (trace, size) = trace_of(&fig).unwrap();
+        assert!(
+            trace
+                .warnings
+                .iter()
+                .any(|w| w.contains("does not fit its upper left corner")),
+            "{:?}",
+            trace.warnings
+        );
+        assert!(
+            findings(&fig, &trace, size)
+                .iter()
+                .any(|f| f.contains("upper left"))
+        );
+    }
+
+    #[test]
     fn each_rule_is_reported() {
         let line = |label: &str| series(label, RED, 1.0, Dash::Solid, vec![(0.0, 1.0), (1.0, 2.0)]);
         let mut twin = figure(vec![
@@ -263,6 +360,7 @@ mod tests {
                     ticks: (5, 5),
                 },
             ],
+            warnings: vec!["the legend \"a\" does not fit its upper right corner".to_owned()],
         };
         let found = findings(&twin, &trace, (1600, 1000)).join("\n");
         for expected in [
@@ -272,6 +370,7 @@ mod tests {
             "panel 0 has 2 labelled x ticks",
             "panels 0 and 1 share a row but their plot areas differ by 5.0 px",
             "two legend entries \"a\" look alike",
+            "sample: the legend \"a\" does not fit its upper right corner",
         ] {
             assert!(found.contains(expected), "{expected} not in:\n{found}");
         }

@@ -31,6 +31,7 @@ mod lint;
 mod mathtext;
 mod polar;
 mod style;
+mod summary;
 mod surface;
 mod text;
 mod theme;
@@ -170,6 +171,7 @@ where
     let body = titled(root, &figure.title, FIGURE_TITLE_EM, 0, &m)?;
     let cells = body.split_evenly((rows, cols));
     let looks = theme::looks(figure);
+    let figure = &without_repeated_legends(figure, &looks);
     let layout = grid_layout(&cells, figure, &looks, cols, &m)?;
     for (((panel, looks), cell), place) in figure.panels.iter().zip(&looks).zip(&cells).zip(layout)
     {
@@ -177,6 +179,19 @@ where
     }
     root.present().map_err(draw_err)?;
     Ok(m.trace)
+}
+
+/// `figure` with the legend of every panel turned off whose legend an earlier panel already draws
+/// ([`legend::drawn_legends`]): one legend for the panels that share it.
+fn without_repeated_legends(figure: &Figure, looks: &[Vec<Look>]) -> Figure {
+    let drawn = legend::drawn_legends(figure, looks);
+    let mut figure = figure.clone();
+    for (panel, drawn) in figure.panels.iter_mut().zip(drawn) {
+        if !drawn {
+            panel.axes.legend = crate::spec::look::LegendPlace::None;
+        }
+    }
+    figure
 }
 
 /// The layout every panel of a grid shares with its row and column: the row's title band (the
@@ -787,6 +802,57 @@ mod tests {
             .collect()
     }
 
+    /// Six TR curves `α_tr = 0.4 … 0.9` in the shades of one sweep, and a thick one apart.
+    fn tr_sweep(first: f64) -> Vec<Series> {
+        let tr = |alpha: f64| {
+            sampled(move |t: f64| {
+                let (a2, c2) = (alpha * alpha, t.cos().powi(2));
+                a2 / (PI * (c2 * (a2 - 1.0) + 1.0).powi(2))
+            })
+        };
+        let mut out: Vec<Series> = (0..6)
+            .map(|k| {
+                let alpha = first + 0.1 * k as f64;
+                let mut s = series(
+                    &format!("α_{{tr}} = {}", crate::spec::numbers::pretty(alpha)),
+                    0x849900,
+                    1.0,
+                    Dash::Solid,
+                    tr(alpha),
+                );
+                s.style.colour = crate::spec::look::shade(s.style.colour, k, 6);
+                s.style.sweep = Some(crate::spec::look::SweepMember { index: k, count: 6 });
+                s
+            })
+            .collect();
+        out.push(series("α_{tr} = 1", 0x849900, 2.0, Dash::Solid, tr(1.0)));
+        out
+    }
+
+    #[test]
+    fn a_sweep_is_one_legend_row_and_panels_that_share_a_legend_draw_it_once() {
+        let sweep_panel = |first: f64| panel(XUnit::Radians, Scale::Linear, tr_sweep(first));
+        let mut fig = figure(vec![sweep_panel(0.4), sweep_panel(0.4), sweep_panel(0.3)]);
+        (fig.canvas.width_px, fig.canvas.height_px) = (1200, 400);
+        let text = String::from_utf8(svg(&fig).unwrap()).unwrap();
+        let doc = roxmltree::Document::parse(&text).unwrap();
+        // Panels 0 and 1 share theirs; panel 2's differs.
+        assert_eq!(legend_boxes(&doc).len(), 2);
+        let texts: Vec<&str> = doc
+            .descendants()
+            .filter(|n| n.has_tag_name("text"))
+            .filter_map(|n| n.text())
+            .collect();
+        let rows = |range: &str| texts.iter().filter(|t| t.contains(range)).count();
+        assert_eq!(rows(" = 0.4 … 0.9"), 1, "{texts:?}");
+        assert_eq!(rows(" = 0.3 … 0.8"), 1);
+        assert_eq!(rows(" = 1"), 2, "the thick curve keeps its row");
+        assert!(
+            !texts.iter().any(|t| t.contains(" = 0.5")),
+            "no member rows"
+        );
+    }
+
     #[test]
     fn long_legends_stay_in_their_panel_cells_clear_of_the_axis_labels() {
         // Ten Beckmann curves a panel under a panel title, as in the catalogue's comparisons, at
@@ -832,8 +898,12 @@ mod tests {
             let mut fig = figure(panels);
             fig.title.clear();
             fig.canvas.font_px = 14.0;
-            for p in &mut fig.panels {
+            for (i, p) in fig.panels.iter_mut().enumerate() {
                 p.axes.title = "α_b = 0.2 … 0.92".to_owned();
+                // Legends of their own: panels with equal legends would share one.
+                for s in &mut p.series {
+                    s.label.push_str(&format!(" #{i}"));
+                }
             }
             (fig.rows, fig.cols) = (rows, cols);
             (fig.canvas.width_px, fig.canvas.height_px) = (width, height);

@@ -23,8 +23,8 @@ use crate::spec::curve::{self, CurveSpec, Fitted, Label, Model, ParamValue, Part
 use crate::spec::json::{Node, Value};
 use crate::spec::look;
 use crate::spec::look::{
-    Axes, Canvas, Corner, Dash, LegendPlace, Mark, PanelKind, Rgb, Scale, Style, Theme, TickChoice,
-    XUnit, shade,
+    Axes, Canvas, Corner, Dash, LegendPlace, Mark, PanelKind, Rgb, Scale, Style, SweepMember,
+    Theme, TickChoice, XUnit, shade,
 };
 use reader::Reader;
 use std::f64::consts::FRAC_PI_2;
@@ -1266,6 +1266,7 @@ fn sweep_style(style: Style, k: usize, n: usize) -> Style {
     } else {
         Style {
             colour: shade(style.colour, k, n),
+            sweep: Some(SweepMember { index: k, count: n }),
             ..style
         }
     }
@@ -1291,6 +1292,7 @@ pub(crate) fn read_style(
         width: 1.0,
         dash: Dash::Solid,
         mark: Mark::Line,
+        sweep: None,
     };
     let before = reader.problems.len();
     if let Some(node) = entry.get("style") {

@@ -261,7 +261,11 @@ fn from_beckmann(reader: &mut Reader, node: &Node, path: &str) -> Option<Sweep> 
         match phong_from_beckmann(alpha_b) {
             Some(alpha_p) => values.push(SweepValue {
                 value: ParamValue::Number(alpha_p),
-                label: format!("α_p = {} (α_b = {})", crate::spec::numbers::pretty(alpha_p), crate::spec::numbers::pretty(alpha_b)),
+                label: format!(
+                    "α_p = {} (α_b = {})",
+                    crate::spec::numbers::significant(alpha_p, crate::spec::numbers::LEGEND_DIGITS),
+                    crate::spec::numbers::pretty(alpha_b)
+                ),
             }),
             None => reader.report(
                 inner_path.clone(),

@@ -247,7 +247,10 @@ mod tests {
     fn stored_basis_is_the_computed_one() {
         let computed = computed();
         if std::env::var_os("NDFPLOT_WRITE_BASIS").is_some() {
-            let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/model/fresnel/basis/stored.txt");
+            let path = concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/src/model/fresnel/basis/stored.txt"
+            );
             std::fs::write(path, super::super::stored_text(&computed)).unwrap();
         }
         let stored = basis();
