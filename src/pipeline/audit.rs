@@ -84,13 +84,20 @@ pub fn normalization(d: impl Fn(f64) -> f64) -> std::result::Result<Estimate, Me
 pub const FURNACE_ANGLES_DEG: [f64; 9] = [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0, 89.0, 89.9];
 
 /// The audit quantities of a curve: an NDF's normalization and Smith consistency (also for a view or a
-/// quantity of it, through the NDF behind it), a Fresnel curve's average; none for a difference series.
+/// quantity of it, through the NDF behind it; the consistency not for a lobe unbounded at grazing), a
+/// Fresnel curve's average; none for a difference series.
 pub fn audit(curve: &Curve) -> Vec<std::result::Result<(Quantity, Estimate), MetricError>> {
     match curve {
-        Curve::Ndf(d) => vec![
-            normalization(|t| d.eval(t)).map(|e| (Quantity::Normalization, e)),
-            smith_consistency(d).map(|e| (Quantity::SmithConsistency, e)),
-        ],
+        // A lobe unbounded at grazing keeps mass beyond what any double θ resolves: its Smith
+        // consistency is not auditable by quadrature over θ, and is left out.
+        Curve::Ndf(d) => {
+            std::iter::once(normalization(|t| d.eval(t)).map(|e| (Quantity::Normalization, e)))
+                .chain(
+                    (!d.unbounded_at_grazing())
+                        .then(|| smith_consistency(d).map(|e| (Quantity::SmithConsistency, e))),
+                )
+                .collect()
+        }
         // 2 ∫₀¹ F(c) c dc = (1/π) · 2π ∫₀^{π/2} F sin θ cos θ dθ.
         Curve::Fresnel(f) => vec![
             projected_integral(|t| f.eval(t), lobe_width(1.0), AUDIT_SHIFT).map(|e| {

@@ -47,7 +47,10 @@ fn build(curve_json: &str) -> Ndf {
 fn reproduces_the_lambda_reference() {
     let mut worst: BTreeMap<(String, &str), (f64, String)> = BTreeMap::new();
     let mut failures = Vec::new();
-    for record in csv_records("tests/data/reference/lambda.csv") {
+    let records = ["lambda.csv", "student_t_lambda.csv"]
+        .into_iter()
+        .flat_map(|file| csv_records(&format!("tests/data/reference/{file}")));
+    for record in records {
         let ndf = build(&record[1]);
         let (theta_o, want) = (number(&record, 2), number(&record, 3));
         let family = ndf.family();
@@ -55,7 +58,12 @@ fn reproduces_the_lambda_reference() {
         // exp(−tan²θm/α²) vanish at grazing, its relative error there is ~α_p · 2.2e-16/(π/2 − θm), which the
         // integral over [π/2 − θo, π/2] inherits for tiny θo (1.6e-10 for Phong α_p = 20 at θo = 1e-6). Their
         // closed forms do not take θm at all; the integral is compared to them from θo = 1e-3 on.
-        let integral_applies = !family.lambda_closed_form() || theta_o >= 1e-3;
+        // A Student-t lobe with γ < 3 (but for γ = 2, Trowbridge–Reitz) keeps D ~ cos^{2γ−4}θm at grazing, a
+        // weak power the integral's width test does not grade for (up to 100 % off below γ = 2, where most of Λ
+        // comes from slopes beyond tan θm = 1.6e16, closer to grazing than any double θm).
+        let heavy_grazing =
+            matches!(&ndf, Ndf::StudentT(d) if d.gamma_std() < 3.0 && d.gamma_std() != 2.0);
+        let integral_applies = (!family.lambda_closed_form() || theta_o >= 1e-3) && !heavy_grazing;
         for (route, got, tol) in [
             ("own", ndf.lambda(theta_o), lambda_tol(family)),
             (
@@ -259,8 +267,10 @@ fn domain_points(family: Family, index: usize) -> Vec<f64> {
             .collect();
     }
     let mut points = Vec::new();
-    let lo = if min > 0.0 {
+    let lo = if min > 0.0 && param.min.inclusive {
         min
+    } else if min > 0.0 {
+        min.next_up()
     } else if param.min.inclusive {
         points.push(0.0);
         1e-3
@@ -335,8 +345,12 @@ fn closed_forms_equal_the_generic_integral_over_their_domains() {
     for family in Family::ALL.into_iter().filter(|f| f.lambda_closed_form()) {
         // Phong's cos^α_p θ with 0 < α_p < 1 has a power singularity at grazing the generic integral does not
         // grade for (see `masking::integral`): the closed form is the only route there.
-        let smooth_at_grazing =
-            |ndf: &Ndf| !matches!(ndf, Ndf::Phong(p) if p.alpha_p() > 0.0 && p.alpha_p() < 1.0);
+        let smooth_at_grazing = |ndf: &Ndf| match ndf {
+            Ndf::Phong(p) => !(p.alpha_p() > 0.0 && p.alpha_p() < 1.0),
+            // D ~ cos^{2γ−4}θ at grazing: the same weak power for γ < 3 (γ = 2 is Trowbridge–Reitz).
+            Ndf::StudentT(d) => d.gamma_std() >= 3.0 || d.gamma_std() == 2.0,
+            _ => true,
+        };
         for ndf in domain_grid(family).into_iter().filter(smooth_at_grazing) {
             // From θo = 1e-3 on (see reproduces_the_lambda_reference for why not below).
             for theta_o in theta_o_grid().into_iter().filter(|&t| t >= 1e-3) {
@@ -357,8 +371,12 @@ fn closed_forms_equal_the_generic_integral_over_their_domains() {
 #[test]
 fn the_weak_white_furnace_holds_for_exact_smith() {
     let thetas = [1e-3, 0.3, 0.7, 1.0, 1.3, 1.5, FRAC_PI_2 - 1e-6];
+    // A Student-t lobe with γ < 2 is unbounded at grazing, and most of its Λ comes from slopes closer to
+    // grazing than any double θ: no quadrature over θ can see that mass (its closed form is held to the
+    // 50-digit references instead).
+    let resolvable = |ndf: &Ndf| !ndf.unbounded_at_grazing();
     for family in Family::ALL {
-        for ndf in domain_grid(family) {
+        for ndf in domain_grid(family).into_iter().filter(resolvable) {
             for theta_o in thetas {
                 let furnace = smith_furnace(&ndf, theta_o)
                     .unwrap_or_else(|e| panic!("{ndf:?} θo = {theta_o}: {e}"));

@@ -6,7 +6,7 @@ use crate::common::log_grid;
 use ndfplot::model::math::quad::{QuadError, integrate};
 use ndfplot::model::math::tolerance::{NORMALIZATION_TOL, QUAD_REL_TOL};
 use ndfplot::model::ndf::{
-    Abc, Beckmann, Family, Gtr, Ndf, Phong, Sgd, TorranceSparrow, TrowbridgeReitz,
+    Abc, Beckmann, Family, Gtr, Ndf, Phong, Sgd, StudentT, TorranceSparrow, TrowbridgeReitz,
 };
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -193,6 +193,24 @@ fn gtr_over_its_domain() {
         .iter()
         .flat_map(|&a| gamma_grid.iter().map(move |&g| (a, g)));
     assert_all("gtr", pairs.map(|(a, g)| Ndf::Gtr(Gtr::new(a, g).unwrap())));
+}
+
+#[test]
+fn student_t_over_its_domain() {
+    let (alpha_min, alpha_max) = bounds(Family::StudentT, 0);
+    let mut alpha_grid = log_grid(alpha_min, alpha_max, 52);
+    alpha_grid.extend([0.3, 1.0]);
+    // γ's lower bound is an excluded 1.5: the grid starts at the next double, and runs to the largest.
+    let (gamma_min, gamma_max) = bounds(Family::StudentT, 1);
+    let mut gamma_grid = log_grid(gamma_min.next_up(), gamma_max, 17);
+    gamma_grid.extend([1.5 + 1e-12, 1.6, 1.9, 2.0, 2.1, 2.5, 3.0, 1e8]);
+    let pairs = alpha_grid
+        .iter()
+        .flat_map(|&a| gamma_grid.iter().map(move |&g| (a, g)));
+    assert_all(
+        "student_t",
+        pairs.map(|(a, g)| Ndf::StudentT(StudentT::new(a, g).unwrap())),
+    );
 }
 
 /// The next double after `v` towards +∞ (`outward` = 1) or −∞ (−1); `v` finite.

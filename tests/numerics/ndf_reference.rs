@@ -80,6 +80,11 @@ fn reproduces_the_gtr_reference() {
 }
 
 #[test]
+fn reproduces_the_student_t_reference() {
+    assert_file("tests/data/reference/student_t_d.csv");
+}
+
+#[test]
 fn reproduces_the_visible_reference() {
     assert_file("tests/data/reference/ndf_visible.csv");
 }

@@ -57,6 +57,11 @@ fn axis(param: &Param, n: usize) -> Vec<f64> {
     } else {
         vec![]
     };
+    let lo = if param.min.inclusive || lo == 0.0 {
+        lo
+    } else {
+        lo.next_up()
+    };
     [zero, log_grid(lo.max(LOG_FLOOR), hi, n)].concat()
 }
 
@@ -94,6 +99,11 @@ fn monotone(ndf: &Ndf) -> bool {
         Ndf::TrowbridgeReitz(d) => d.alpha_tr() <= 1.0,
         Ndf::Beckmann(d) => d.alpha_b() <= FRAC_1_SQRT_2,
         Ndf::Gtr(d) => d.alpha_gtr() <= 1.0,
+        // ln D's slope in tan²θ is 2 − γ/(α²(γ − 1)) at θ = 0 and rises with θ for γ ≥ 2.
+        Ndf::StudentT(d) => {
+            d.gamma_std() >= 2.0
+                && 2.0 * d.alpha_std().powi(2) * (d.gamma_std() - 1.0) <= d.gamma_std()
+        }
         _ => false,
     }
 }
@@ -203,18 +213,26 @@ fn abc_sgd_and_gtr_are_continuous_across_their_removable_singularities() {
 }
 
 macro_rules! family_tests {
-    ($($slice:ident, $full:ident, $family:expr;)*) => {$(
-        #[test]
-        fn $slice() {
-            run($family, SLICE_STRIDE, SLICE_NORMALIZED_EVERY);
-        }
+    ($($slice:ident, $full:ident, $family:expr;)*) => {
+        $(
+            #[test]
+            fn $slice() {
+                run($family, SLICE_STRIDE, SLICE_NORMALIZED_EVERY);
+            }
 
+            #[test]
+            #[ignore = "full domain, 10⁵ points: cargo test --release --test numerics stress -- --ignored"]
+            fn $full() {
+                run($family, 1, 1);
+            }
+        )*
+
+        /// The list above names every registered family, in the registry's order.
         #[test]
-        #[ignore = "full domain, 10⁵ points: cargo test --release --test numerics stress -- --ignored"]
-        fn $full() {
-            run($family, 1, 1);
+        fn every_family_is_stressed() {
+            assert_eq!([$($family),*], Family::ALL);
         }
-    )*};
+    };
 }
 
 family_tests! {
@@ -225,4 +243,5 @@ family_tests! {
     abc_slice, abc_full, Family::Abc;
     sgd_slice, sgd_full, Family::Sgd;
     gtr_slice, gtr_full, Family::Gtr;
+    student_t_slice, student_t_full, Family::StudentT;
 }

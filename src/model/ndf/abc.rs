@@ -129,6 +129,11 @@ impl Distribution for Abc {
         None
     }
 
+    /// False: D is bounded by its value at θ = 0.
+    fn unbounded_at_grazing(&self) -> bool {
+        false
+    }
+
     /// None: renderers have no Beckmann equivalent for this family.
     fn beckmann_equivalent_alpha(&self) -> Option<f64> {
         None

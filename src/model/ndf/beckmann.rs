@@ -108,6 +108,11 @@ impl Distribution for Beckmann {
             .then(|| (2.0 * self.alpha_b.powi(2) - 1.0).sqrt().atan())
     }
 
+    /// False: D → 0 at grazing: e^{−tan²θ/α_b²} beats 1/cos⁴θ.
+    fn unbounded_at_grazing(&self) -> bool {
+        false
+    }
+
     /// α_b itself.
     fn beckmann_equivalent_alpha(&self) -> Option<f64> {
         Some(self.alpha_b)

@@ -147,6 +147,11 @@ impl Distribution for Gtr {
         None
     }
 
+    /// False: D → c at grazing (sin²θ + α² cos²θ → 1).
+    fn unbounded_at_grazing(&self) -> bool {
+        false
+    }
+
     /// None: renderers have no Beckmann equivalent for this family.
     fn beckmann_equivalent_alpha(&self) -> Option<f64> {
         None

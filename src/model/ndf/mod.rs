@@ -57,6 +57,11 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
     /// The sampler starts its adaptive grid there, so that no peak falls between samples.
     fn interior_peak(&self) -> Option<f64>;
 
+    /// Whether D → +∞ as θ → π/2 (an integrable singularity: a Student-t lobe with γ < 2). Such a lobe
+    /// keeps mass closer to grazing than any double θ resolves, so quadratures over θ that weigh
+    /// grazing (the weak white furnace audit) cannot check it.
+    fn unbounded_at_grazing(&self) -> bool;
+
     /// The Beckmann roughness α_b renderers substitute for this lobe in a Beckmann-based G1
     /// (Walter's rational, the Beckmann-equivalent Smith), or `None` if the family has none.
     fn beckmann_equivalent_alpha(&self) -> Option<f64>;
@@ -215,6 +220,13 @@ macro_rules! families {
                 }
             }
 
+            /// See [`Distribution::unbounded_at_grazing`].
+            pub fn unbounded_at_grazing(&self) -> bool {
+                match self {
+                    $(Ndf::$variant(d) => d.unbounded_at_grazing(),)+
+                }
+            }
+
             /// See [`Distribution::beckmann_equivalent_alpha`].
             pub fn beckmann_equivalent_alpha(&self) -> Option<f64> {
                 match self {
@@ -247,6 +259,7 @@ families! {
     Abc => abc::Abc,
     Sgd => sgd::Sgd,
     Gtr => gtr::Gtr,
+    StudentT => student_t::StudentT,
 }
 
 impl Family {
@@ -297,7 +310,9 @@ mod tests {
                 "abc",
                 "sgd",
                 "gtr",
-                "ggx"
+                "student_t",
+                "ggx",
+                "std"
             ]
         );
         assert_eq!(Family::from_name("ggx"), Some(Family::TrowbridgeReitz));

@@ -133,6 +133,11 @@ impl Distribution for Phong {
         None
     }
 
+    /// False: cos^{α_p}θ/N is bounded by its value at θ = 0 (α_p ≥ 0).
+    fn unbounded_at_grazing(&self) -> bool {
+        false
+    }
+
     /// √(2/(α_p + 2)) (Walter et al. 2007; bbm's a = √(α_p/2 + 1) cot θo).
     fn beckmann_equivalent_alpha(&self) -> Option<f64> {
         Some((2.0 / (self.alpha_p + 2.0)).sqrt())

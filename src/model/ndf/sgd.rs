@@ -133,6 +133,11 @@ impl Distribution for Sgd {
         (x > 0.0 && x.is_finite()).then(|| x.sqrt().atan())
     }
 
+    /// False: D → 0 at grazing: e^{−tan²θ/a₁} beats 1/cos⁴θ.
+    fn unbounded_at_grazing(&self) -> bool {
+        false
+    }
+
     /// None: renderers have no Beckmann equivalent for this family.
     fn beckmann_equivalent_alpha(&self) -> Option<f64> {
         None

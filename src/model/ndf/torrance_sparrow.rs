@@ -97,6 +97,11 @@ impl Distribution for TorranceSparrow {
         None
     }
 
+    /// False: e^{−θ²/α_ts²}/N is bounded by its value at θ = 0.
+    fn unbounded_at_grazing(&self) -> bool {
+        false
+    }
+
     /// α_ts (the notebook's rough equivalence α_ts = α_b, docs/maths.md "Parameter equivalences and fits").
     fn beckmann_equivalent_alpha(&self) -> Option<f64> {
         Some(self.alpha_ts)

@@ -92,6 +92,11 @@ impl Distribution for TrowbridgeReitz {
         None
     }
 
+    /// False: D → α_tr²/π at grazing.
+    fn unbounded_at_grazing(&self) -> bool {
+        false
+    }
+
     /// α_tr (the notebook's rough equivalence α_tr = α_b, docs/maths.md "Parameter equivalences and fits").
     fn beckmann_equivalent_alpha(&self) -> Option<f64> {
         Some(self.alpha_tr)
