@@ -98,7 +98,7 @@ pub fn verdict(audits: &[Audit], tolerance: f64) -> Result<()> {
 mod tests {
     use super::*;
     use crate::model::ndf::{Distribution, Phong};
-    use crate::pipeline::audit::{DEFAULT_TOLERANCE, Quantity, normalization};
+    use crate::pipeline::audit::{DEFAULT_TOLERANCE, Measure, normalization};
 
     #[test]
     fn an_unnormalized_lobe_fails_the_check_with_exit_1() {
@@ -108,7 +108,7 @@ mod tests {
         let row = |integral| Audit {
             scene: "s".into(),
             curve: "c".into(),
-            quantity: Quantity::Normalization,
+            quantity: Measure::Normalization,
             integral,
         };
         let audits = [row(good), row(bad)];

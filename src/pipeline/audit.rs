@@ -32,7 +32,7 @@ const AUDIT_SHIFT: f64 = 1e-3 / PI;
 
 /// What an audit row measures.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Quantity {
+pub enum Measure {
     /// 2π ∫ D sin θ cos θ dθ of an NDF; should be 1.
     Normalization,
     /// 2 ∫₀¹ F(c) c dc of a Fresnel curve.
@@ -42,13 +42,13 @@ pub enum Quantity {
     SmithConsistency,
 }
 
-impl Quantity {
+impl Measure {
     /// The name shown in the table.
     pub fn name(self) -> &'static str {
         match self {
-            Quantity::Normalization => "normalization",
-            Quantity::HemisphericalAverage => "hemispherical_average",
-            Quantity::SmithConsistency => "smith_consistency",
+            Measure::Normalization => "normalization",
+            Measure::HemisphericalAverage => "hemispherical_average",
+            Measure::SmithConsistency => "smith_consistency",
         }
     }
 }
@@ -61,7 +61,7 @@ pub struct Audit {
     /// The curve's canonical JSON.
     pub curve: String,
     /// What was integrated.
-    pub quantity: Quantity,
+    pub quantity: Measure,
     /// The integral and its error estimate.
     pub integral: Estimate,
 }
@@ -69,7 +69,7 @@ pub struct Audit {
 impl Audit {
     /// |integral − 1| for a normalization or a Smith consistency, `None` for a Fresnel average.
     pub fn deviation(&self) -> Option<f64> {
-        (self.quantity != Quantity::HemisphericalAverage).then(|| (self.integral.value - 1.0).abs())
+        (self.quantity != Measure::HemisphericalAverage).then(|| (self.integral.value - 1.0).abs())
     }
 }
 
@@ -86,15 +86,15 @@ pub const FURNACE_ANGLES_DEG: [f64; 9] = [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 85.
 /// The audit quantities of a curve: an NDF's normalization and Smith consistency (also for a view or a
 /// quantity of it, through the NDF behind it; the consistency not for a lobe unbounded at grazing), a
 /// Fresnel curve's average; none for a difference series.
-pub fn audit(curve: &Curve) -> Vec<std::result::Result<(Quantity, Estimate), MetricError>> {
+pub fn audit(curve: &Curve) -> Vec<std::result::Result<(Measure, Estimate), MetricError>> {
     match curve {
         // A lobe unbounded at grazing keeps mass beyond what any double θ resolves: its Smith
         // consistency is not auditable by quadrature over θ, and is left out.
         Curve::Ndf(d) => {
-            std::iter::once(normalization(|t| d.eval(t)).map(|e| (Quantity::Normalization, e)))
+            std::iter::once(normalization(|t| d.eval(t)).map(|e| (Measure::Normalization, e)))
                 .chain(
                     (!d.unbounded_at_grazing())
-                        .then(|| smith_consistency(d).map(|e| (Quantity::SmithConsistency, e))),
+                        .then(|| smith_consistency(d).map(|e| (Measure::SmithConsistency, e))),
                 )
                 .collect()
         }
@@ -102,7 +102,7 @@ pub fn audit(curve: &Curve) -> Vec<std::result::Result<(Quantity, Estimate), Met
         Curve::Fresnel(f) => vec![
             projected_integral(|t| f.eval(t), lobe_width(1.0), AUDIT_SHIFT).map(|e| {
                 (
-                    Quantity::HemisphericalAverage,
+                    Measure::HemisphericalAverage,
                     Estimate {
                         value: e.value / PI,
                         error: e.error / PI,

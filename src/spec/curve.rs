@@ -7,7 +7,7 @@
 //! a Belcour reconstruction's coefficients and a fitted parameter are left to [`crate::pipeline::resolve`],
 //! which turns a [`CurveSpec`] into the [`Curve`] the later stages evaluate. It does not expand
 //! sweeps: scenes resolve the keys here, expand each parameter's values themselves, then call
-//! [`Resolved::build`] per combination.
+//! [`Keyed::build`] per combination.
 
 use crate::model::curve::quantity::Quantity;
 use crate::model::curve::{Curve, DiffOp, Kind};
@@ -556,7 +556,7 @@ fn whole_index(value: f64) -> Result<usize, DomainError> {
 /// A curve object whose keys have been checked: the model, the chosen signature and, per key of
 /// that signature, the node given for it (`None` where the default applies).
 #[derive(Debug, Clone)]
-pub struct Resolved<'a> {
+pub struct Keyed<'a> {
     /// The model.
     pub model: Model,
     /// Index into `model.signatures()`.
@@ -569,7 +569,7 @@ pub struct Resolved<'a> {
     pub quantity: Option<Quantity<CurveSpec>>,
 }
 
-impl Resolved<'_> {
+impl Keyed<'_> {
     /// Describes the curve ([`Model::build`]) and the quantity it shows, reporting a domain error
     /// at the path of the offending key.
     pub fn build(&self, values: &[ParamValue], path: &str) -> Result<CurveSpec, Problem> {
@@ -611,11 +611,11 @@ pub fn domain_problem(error: &DomainError, path: &str) -> Problem {
 /// known name, no duplicate keys, no unknown keys (beyond `extra_keys`, which the caller handles,
 /// such as a scene's `style`), no keys from exclusive signatures mixed, no required key missing.
 /// Every problem is reported.
-pub fn resolve<'a>(
+pub fn read_keys<'a>(
     node: &'a Node,
     path: &str,
     extra_keys: &[&str],
-) -> Result<Resolved<'a>, Vec<Problem>> {
+) -> Result<Keyed<'a>, Vec<Problem>> {
     let Value::Object(members) = &node.value else {
         let got = node.to_string();
         return Err(vec![Problem::new(
@@ -652,7 +652,7 @@ pub fn resolve<'a>(
     };
     let Some(model) = model else {
         // Without a model the accepted keys are unknown; only duplicates can be told.
-        let mut problems = keys::check(members, path, None);
+        let mut problems = keys::validate(members, path, None);
         problems.extend(model_problems);
         return Err(problems);
     };
@@ -674,7 +674,7 @@ pub fn resolve<'a>(
         listed: &all_keys,
         unlisted: &[model.key()],
     };
-    let mut problems = keys::check(members, path, Some(&accepted));
+    let mut problems = keys::validate(members, path, Some(&accepted));
     if !problems.is_empty() {
         return Err(problems);
     }
@@ -730,7 +730,7 @@ pub fn resolve<'a>(
         }
     }
     if problems.is_empty() {
-        Ok(Resolved {
+        Ok(Keyed {
             model,
             signature,
             params,
@@ -786,7 +786,7 @@ fn parse_transformed(members: &[(String, Node)], path: &str) -> Result<CurveSpec
         listed: TRANSFORM_KEYS,
         unlisted: &[],
     };
-    let mut problems = keys::check(members, path, Some(&accepted));
+    let mut problems = keys::validate(members, path, Some(&accepted));
     let names: Vec<&str> = Transform::NAMES.iter().map(|(n, _)| *n).collect();
     let transform = members
         .iter()
@@ -907,14 +907,14 @@ pub fn parse(node: &Node, path: &str) -> Result<CurveSpec, Vec<Problem>> {
             (a, b) => Err(a.err().into_iter().chain(b.err()).flatten().collect()),
         };
     }
-    let resolved = resolve(node, path, &[])?;
+    let keyed = read_keys(node, path, &[])?;
     let mut values = Vec::new();
     let mut problems = Vec::new();
-    for (spec, node) in resolved.params.iter().zip(&resolved.nodes) {
+    for (spec, node) in keyed.params.iter().zip(&keyed.nodes) {
         match node {
             None => values.push(
                 spec.default
-                    .expect("resolve() reports missing required keys"),
+                    .expect("read_keys() reports missing required keys"),
             ),
             Some(node) => match scalar(node, spec.kind, &join_key(path, spec.name)) {
                 Ok(value) => values.push(value),
@@ -925,7 +925,7 @@ pub fn parse(node: &Node, path: &str) -> Result<CurveSpec, Vec<Problem>> {
     if !problems.is_empty() {
         return Err(problems);
     }
-    resolved.build(&values, path).map_err(|p| vec![p])
+    keyed.build(&values, path).map_err(|p| vec![p])
 }
 
 /// The model key of a published fit: `{"published": <source>, "material": <MERL name>, "channel": …}`.
@@ -1148,7 +1148,7 @@ pub const DIFFERENCE_KEY: &str = "difference";
 pub const DIFFERENCE_KEYS: &[&str] = &[DIFFERENCE_KEY, "a", "b"];
 
 /// The members of the curve object `node` at `path` that accepts `keys` and `extra_keys` (which the
-/// caller handles), with the problems of its keys ([`keys::check`]; `object` names it in them); a
+/// caller handles), with the problems of its keys ([`keys::validate`]; `object` names it in them); a
 /// value that is not an object is the one problem.
 /// An object's members with the problems of its keys, as [`keyed_object`] returns them.
 type KeyedMembers<'a> = (&'a [(String, Node)], Vec<Problem>);
@@ -1172,7 +1172,7 @@ fn keyed_object<'a>(
         listed: &allowed,
         unlisted: &[],
     };
-    let problems = keys::check(members, path, Some(&accepted));
+    let problems = keys::validate(members, path, Some(&accepted));
     Ok((members, problems))
 }
 

@@ -206,7 +206,7 @@ fn parse_pair(line: &str, source: &str, scope: &DataScope) -> std::result::Resul
         listed: &listed,
         unlisted: &[],
     };
-    let mut list = crate::spec::keys::check(members, "", Some(&accepted));
+    let mut list = crate::spec::keys::validate(members, "", Some(&accepted));
     let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, v)| v);
     let given: Vec<[&'static str; 2]> = PAIR_SIDES
         .into_iter()

@@ -29,7 +29,11 @@ impl Accepted<'_> {
 /// key (at its second and later occurrences) as a duplicate, and, when `accepted` is given, every
 /// other key outside it as unknown, `(got <value>, expected one of: <listed>)` plus a "did you
 /// mean" when a listed key is near.
-pub fn check(members: &[(String, Node)], path: &str, accepted: Option<&Accepted>) -> Vec<Problem> {
+pub fn validate(
+    members: &[(String, Node)],
+    path: &str,
+    accepted: Option<&Accepted>,
+) -> Vec<Problem> {
     let mut problems = Vec::new();
     for (i, (key, value)) in members.iter().enumerate() {
         if members[..i].iter().any(|(k, _)| k == key) {
@@ -79,7 +83,7 @@ mod tests {
             listed: &["style", "label"],
             unlisted: &["ndf"],
         };
-        let found = check(
+        let found = validate(
             &members(r#"{"ndf":1,"stlye":2,"label":3,"label":4,"x":5}"#),
             "p",
             Some(&accepted),
@@ -109,7 +113,7 @@ mod tests {
 
     #[test]
     fn without_accepted_keys_only_duplicates_are_reported() {
-        let found = check(&members(r#"{"a":1,"b":2,"a":3}"#), "", None);
+        let found = validate(&members(r#"{"a":1,"b":2,"a":3}"#), "", None);
         assert_eq!(found.len(), 1);
         assert_eq!(found[0].at, "a");
     }

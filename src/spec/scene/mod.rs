@@ -1106,7 +1106,7 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
     if curve::is_published(node) {
         return sweep::published_entry(reader, node, path, out);
     }
-    let Some(resolved) = reader.accept(curve::resolve(node, path, CURVE_EXTRA_KEYS)) else {
+    let Some(resolved) = reader.accept(curve::read_keys(node, path, CURVE_EXTRA_KEYS)) else {
         return;
     };
     let Some((entry, label_template)) = entry_with_label(reader, node, path) else {

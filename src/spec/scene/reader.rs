@@ -64,7 +64,7 @@ impl Reader {
     }
 
     /// Reads `node` as an object whose keys must all be in `allowed`; unknown keys (with a
-    /// "did you mean") and duplicates are reported ([`keys::check`]), the object is still returned.
+    /// "did you mean") and duplicates are reported ([`keys::validate`]), the object is still returned.
     pub fn object<'a>(
         &mut self,
         node: &'a Node,
@@ -81,7 +81,7 @@ impl Reader {
             unlisted: &[],
         };
         self.problems
-            .extend(keys::check(members, path, Some(&accepted)));
+            .extend(keys::validate(members, path, Some(&accepted)));
         Some(Object { members, path })
     }
 
