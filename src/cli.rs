@@ -126,7 +126,10 @@ pub struct CoeffsArgs {
     hidden temporaries and renamed into place (with -o -, the one output goes to stdout). A spec read\n\
     from stdin (-) resolves its data paths against the working directory. With --check nothing is written: the CSVs and SVGs are\n\
     re-rendered and compared with DIR's, every CSV cell and, for figures whose values match, the\n\
-    drawing of the stored SVG (exit 1 on any difference, a missing or an extra CSV).\n\n\
+    drawing of the stored SVG (exit 1 on any difference, a missing or an extra CSV). DIR is untrusted:\n\
+    only its regular files are read, never through a symbolic link (a link, FIFO, device or folder under\n\
+    a compared name exits 2), up to 8 times the rendered file's size plus 1 MiB (a larger one differs,\n\
+    unread); stored text is quoted only in short excerpts, control characters escaped.\n\n\
     Examples:\n  \
     ndfplot render\n  \
     ndfplot render configs/abc-vs-tr.json my-scenes/ -o out --format svg,csv\n  \

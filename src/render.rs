@@ -91,7 +91,7 @@ pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -
     } else {
         Err(Error::CheckFailed(format!(
             "error: render --check: the figures differ from {}",
-            dir.display()
+            crate::problem::one_line(&dir.display().to_string())
         )))
     }
 }

@@ -800,3 +800,174 @@ fn inputs_over_the_size_cap_are_refused_by_name() {
     }
     assert!(files_in(&out).is_empty(), "nothing written");
 }
+
+/// What a planted link or file must never bring to the output: set in the environment of the
+/// checking run (so `/proc/self/environ` holds it) and written in a file outside the checked folder.
+const PLANTED: &str = "planted-secret-7f3a";
+
+/// Runs `render SPEC --check PLOTS` with [`PLANTED`] in its environment; fails the test if it runs
+/// for more than 30 s (a FIFO in the folder must not block it).
+fn check_hostile(spec: &Path, plots: &Path) -> Output {
+    let child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .args([
+            "render",
+            spec.to_str().unwrap(),
+            "--check",
+            plots.to_str().unwrap(),
+        ])
+        .env("NDFPLOT_PLANTED", PLANTED)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    finish_within(child, Duration::from_secs(30), "render --check")
+}
+
+/// Whether the tests run as root, who alone may create device nodes.
+fn is_root() -> bool {
+    std::fs::read_to_string("/proc/self/status").is_ok_and(|s| {
+        s.lines()
+            .any(|l| l.starts_with("Uid:") && l.split_whitespace().nth(1) == Some("0"))
+    })
+}
+
+#[test]
+fn render_check_reads_only_regular_files_in_its_folder_and_names_what_it_refuses() {
+    let (spec, plots) = rendered("check-hostile");
+    let csv = plots.join("checked.csv");
+    let svg = plots.join("checked.svg");
+    let outside = plots.parent().unwrap().join("outside.csv");
+    std::fs::write(&outside, format!("{PLANTED}\n")).unwrap();
+    let passwd_first_line = std::fs::read_to_string("/etc/passwd")
+        .ok()
+        .and_then(|t| t.lines().next().map(str::to_string));
+    let refused = |what: &str, name: &str, needle: &str| {
+        let out = check_hostile(&spec, &plots);
+        let (stdout, stderr) = (text(&out.stdout), text(&out.stderr));
+        assert_eq!(out.status.code(), Some(2), "{what}: {stdout}{stderr}");
+        assert!(
+            stderr.contains(name) && stderr.contains(needle),
+            "{what}: {stderr}"
+        );
+        let all = stdout + &stderr;
+        assert!(!all.contains(PLANTED), "{what}: {all}");
+        if let Some(line) = &passwd_first_line {
+            assert!(!all.contains(line.as_str()), "{what}: {all}");
+        }
+    };
+    std::fs::rename(&csv, plots.join("kept")).unwrap();
+    for target in [
+        Path::new("/proc/self/environ"),
+        Path::new("/etc/passwd"),
+        &outside,
+    ] {
+        std::os::unix::fs::symlink(target, &csv).unwrap();
+        refused(
+            &format!("a link to {}", target.display()),
+            "checked.csv",
+            "symbolic link",
+        );
+        std::fs::remove_file(&csv).unwrap();
+    }
+    assert!(Command::new("mkfifo").arg(&csv).status().unwrap().success());
+    refused("a FIFO", "checked.csv", "not a regular file");
+    std::fs::remove_file(&csv).unwrap();
+    std::fs::create_dir(&csv).unwrap();
+    refused("a folder", "checked.csv", "not a regular file");
+    std::fs::remove_dir(&csv).unwrap();
+    if is_root() {
+        // /dev/zero's numbers: reading it would never end.
+        let made = Command::new("mknod")
+            .arg(&csv)
+            .args(["c", "1", "5"])
+            .status();
+        assert!(made.unwrap().success());
+        refused("a device", "checked.csv", "not a regular file");
+        std::fs::remove_file(&csv).unwrap();
+    } else {
+        eprintln!("note: not root, so no device node was planted in the checked folder");
+    }
+    // The stored SVG is read through the same door.
+    std::fs::rename(plots.join("kept"), &csv).unwrap();
+    std::os::unix::fs::symlink(&outside, &svg).unwrap();
+    refused("an SVG linked out", "checked.svg", "symbolic link");
+    std::fs::remove_file(&svg).unwrap();
+    assert_eq!(check_hostile(&spec, &plots).status.code(), Some(0));
+}
+
+#[test]
+fn render_check_quotes_stored_text_only_in_short_escaped_excerpts_and_bounds_what_it_reads() {
+    let (spec, plots) = rendered("check-echo");
+    let csv = plots.join("checked.csv");
+    let original = std::fs::read_to_string(&csv).unwrap();
+    let long = "L".repeat(500);
+    let first_row = original.lines().nth(1).unwrap().to_string();
+    let first_curve = first_row.split(",0.0,").next().unwrap().to_string();
+    for (what, stored) in [
+        (
+            "a header",
+            format!(
+                "panel,series,curve,x,\x1b[2J{long}\n{}",
+                &original[original.find('\n').unwrap() + 1..]
+            ),
+        ),
+        (
+            "a curve cell",
+            original.replacen(&first_curve, &format!("0,0,\x1b]0;owned\x07{long}"), 1),
+        ),
+        (
+            "an index cell",
+            original.replacen(
+                &first_row,
+                &first_row.replacen('0', &format!("\x1b[31m{long}"), 1),
+                1,
+            ),
+        ),
+        (
+            "a value cell",
+            original.replacen(
+                &first_row,
+                &format!("{first_curve},0.0,\u{202e}\x1b[8m{long}"),
+                1,
+            ),
+        ),
+    ] {
+        std::fs::write(&csv, &stored).unwrap();
+        std::fs::write(plots.join("evil\x1b[2J\u{7}.csv"), "").unwrap();
+        let out = check_hostile(&spec, &plots);
+        let all = text(&out.stdout) + &text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{what}: {all}");
+        assert!(
+            !all.contains(&long)
+                && !all.chars().any(|c| c.is_control() && c != '\n')
+                && !all.contains('\u{202e}'),
+            "{what}: {all:?}"
+        );
+        assert!(
+            all.contains("evil\\u001b[2J\\u0007.csv: extra in"),
+            "{what}: {all}"
+        );
+        assert!(
+            all.lines().all(|l| l.chars().count() < 400),
+            "{what}: {all}"
+        );
+    }
+    // A stored file far larger than any that could match is a difference, not read.
+    std::fs::write(&csv, "").unwrap();
+    std::fs::File::options()
+        .write(true)
+        .open(&csv)
+        .unwrap()
+        .set_len(64 << 20)
+        .unwrap();
+    let out = check_hostile(&spec, &plots);
+    let stdout = text(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{stdout}{}", text(&out.stderr));
+    assert!(
+        stdout.contains("checked.csv: stored file too large to match") && stdout.len() < 4096,
+        "{}",
+        &stdout[..stdout.len().min(4096)]
+    );
+}
+
