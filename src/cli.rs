@@ -78,7 +78,8 @@ pub struct ShowArgs {
 #[derive(Debug, Args)]
 pub struct ManArgs {
     /// Write ndfplot.1 and one ndfplot-<subcommand>.1 per subcommand into DIR (created if needed)
-    /// instead of printing the top page.
+    /// instead of printing the top page. A page name taken by something other than a regular file
+    /// (device, FIFO, socket, folder) is refused (exit 2), and so is - (not a folder).
     #[arg(long, value_name = "DIR")]
     pub dir: Option<std::path::PathBuf>,
 }
@@ -143,8 +144,10 @@ pub struct RenderArgs {
     /// spec on stdin. None: the built-in catalogue of notebook figures.
     #[arg(value_name = "SPEC.json|DIR|ID|-")]
     pub paths: Vec<PathBuf>,
-    /// Output folder (created if missing); files are <DIR>/<id>.<ext>. - writes the one figure in
-    /// the one --format to stdout instead (exit 2 for several figures or formats).
+    /// Output folder (created if missing); files are <DIR>/<id>.<ext>, and a name taken by something
+    /// other than a regular file or a link (device, FIFO, socket, folder) is refused before any file
+    /// is written (exit 2). - writes the one figure in the one --format to stdout instead (exit 2
+    /// for several figures or formats).
     #[arg(
         short,
         long,
@@ -501,7 +504,9 @@ pub struct AlbedoArgs {
     /// Output: CSV with # metadata lines, or one JSON object.
     #[arg(long, value_name = "FORMAT", default_value = "csv", value_parser = ["csv", "json"])]
     pub format: String,
-    /// Write the table to FILE (atomically: a temporary renamed into place) instead of stdout.
+    /// Write the table to FILE (atomically: a temporary renamed into place) instead of stdout; an
+    /// existing FILE that is not a regular file (device, FIFO, socket, folder) is refused (exit 2).
+    /// - is stdout.
     #[arg(short, long, value_name = "FILE")]
     pub out: Option<PathBuf>,
 }
@@ -529,7 +534,8 @@ pub struct AlbedoArgs {
     ndfplot bench -o plots/bench"
 )]
 pub struct BenchArgs {
-    /// Output folder (created if missing) for bench.csv, bench.svg and bench.png.
+    /// Output folder (created if missing) for bench.csv, bench.svg and bench.png; names taken by
+    /// something other than a regular file are refused (exit 2), and so is - (not a folder).
     #[arg(short, long, value_name = "DIR", default_value = "plots/bench")]
     pub out: PathBuf,
 }

@@ -971,3 +971,127 @@ fn render_check_quotes_stored_text_only_in_short_escaped_excerpts_and_bounds_wha
     );
 }
 
+/// Runs the binary with `args` in the working directory `dir`, killed after 60 s.
+fn run_in(dir: &Path, args: &[&str]) -> Output {
+    let child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    finish_within(child, Duration::from_secs(60), &args.join(" "))
+}
+
+#[test]
+fn no_writer_replaces_what_is_not_a_regular_file() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = scratch("robustness-special-targets");
+    std::fs::write(dir.join("spec.json"), SPEC).unwrap();
+    let fifo = |path: &Path| assert!(Command::new("mkfifo").arg(path).status().unwrap().success());
+    // Each special file, planted where an output goes; (description, plant, still-there check).
+    let mut planted: Vec<(&str, Box<dyn Fn(&Path)>, fn(&std::fs::FileType) -> bool)> = vec![
+        ("a FIFO", Box::new(fifo), |t| t.is_fifo()),
+        (
+            "a folder",
+            Box::new(|p: &Path| std::fs::create_dir(p).unwrap()),
+            |t| t.is_dir(),
+        ),
+        (
+            "a socket",
+            Box::new(|p: &Path| {
+                std::mem::forget(std::os::unix::net::UnixListener::bind(p).unwrap())
+            }),
+            |t| t.is_socket(),
+        ),
+    ];
+    if is_root() {
+        planted.push((
+            "a character device",
+            Box::new(|p: &Path| {
+                // /dev/null's numbers.
+                let made = Command::new("mknod").arg(p).args(["c", "1", "3"]).status();
+                assert!(made.unwrap().success());
+            }),
+            |t| t.is_char_device(),
+        ));
+    } else {
+        eprintln!("note: not root, so no device node was planted where an output goes");
+    }
+    for (i, (what, plant, still)) in planted.iter().enumerate() {
+        let out_dir = dir.join(format!("out-{i}"));
+        std::fs::create_dir(&out_dir).unwrap();
+        let cases: [(&str, Vec<String>, &str); 3] = [
+            (
+                "table.csv",
+                ["albedo", "--size", "2", "-o", "OUT/table.csv"]
+                    .map(String::from)
+                    .to_vec(),
+                "-o",
+            ),
+            (
+                "checked.csv",
+                ["render", "spec.json", "-o", "OUT", "--format", "svg,csv"]
+                    .map(String::from)
+                    .to_vec(),
+                "-o",
+            ),
+            (
+                "ndfplot-render.1",
+                ["man", "--dir", "OUT"].map(String::from).to_vec(),
+                "--dir",
+            ),
+        ];
+        for (name, args, flag) in cases {
+            let target = out_dir.join(name);
+            plant(&target);
+            let args: Vec<String> = args
+                .iter()
+                .map(|a| a.replace("OUT", out_dir.to_str().unwrap()))
+                .collect();
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            let out = run_in(&dir, &args);
+            let err = text(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{what} at {name}: {err}");
+            assert!(
+                err.contains(&format!(
+                    "error: {flag}: {}: not a regular file",
+                    target.display()
+                )) && err.contains(what),
+                "{what} at {name}: {err}"
+            );
+            let kind = std::fs::symlink_metadata(&target).unwrap().file_type();
+            assert!(still(&kind), "{what} at {name} was replaced");
+            assert_eq!(
+                files_in(&out_dir),
+                [name],
+                "{what} at {name}: wrote beside it"
+            );
+            let _ = std::fs::remove_file(&target).or_else(|_| std::fs::remove_dir(&target));
+        }
+    }
+}
+
+#[test]
+fn dash_is_standard_output_or_refused_never_a_file_named_dash() {
+    let dir = scratch("robustness-dash");
+    let out = run_in(&dir, &["albedo", "--size", "2", "-o", "-"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(text(&out.stdout).contains("mu,r,alpha,E,turquin_f0_1"));
+    for (args, flag) in [
+        (&["man", "--dir", "-"][..], "--dir"),
+        (&["bench", "-o", "-"][..], "-o"),
+        (&["render", "--check", "-"][..], "--check"),
+    ] {
+        let out = run_in(&dir, args);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.starts_with(&format!("error: {flag}: - is not a folder")),
+            "{args:?}: {err}"
+        );
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+    assert!(files_in(&dir).is_empty(), "wrote {:?}", files_in(&dir));
+}
