@@ -1152,3 +1152,82 @@ fn objects_with_two_hundred_thousand_keys_are_checked_in_linear_time() {
         &err[..err.len().min(600)]
     );
 }
+
+#[test]
+fn a_leading_utf8_byte_order_mark_is_skipped_on_every_json_input() {
+    const BOM: &str = "\u{feff}";
+    let dir = scratch("robustness-bom");
+    std::fs::write(dir.join("spec.json"), format!("{BOM}{SPEC}")).unwrap();
+    let curve = r#"{"ndf": "beckmann", "alpha_b": 0.5}"#;
+    std::fs::write(dir.join("curve.json"), format!("{BOM}{curve}\n")).unwrap();
+    std::fs::write(
+        dir.join("pairs.jsonl"),
+        format!("{BOM}{{\"a\": {curve}, \"b\": {curve}}}\n"),
+    )
+    .unwrap();
+    let run = |args: &[&str], stdin: &str| {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+            .args(args)
+            .current_dir(&dir)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        use std::io::Write;
+        child
+            .stdin
+            .take()
+            .unwrap()
+            .write_all(stdin.as_bytes())
+            .unwrap();
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{args:?}: {}",
+            text(&out.stderr)
+        );
+        text(&out.stdout)
+    };
+    run(&["render", "spec.json", "-o", "out", "--format", "csv"], "");
+    run(
+        &["render", "-", "-o", "stdin", "--format", "csv"],
+        &format!("{BOM}{SPEC}"),
+    );
+    assert_eq!(
+        std::fs::read(dir.join("out/checked.csv")).unwrap(),
+        std::fs::read(dir.join("stdin/checked.csv")).unwrap()
+    );
+    let value = run(&["eval", "--curve", "@curve.json", "--theta", "0"], "");
+    assert_eq!(
+        value,
+        run(
+            &["eval", "--curve", "-", "--theta", "0"],
+            &format!("{BOM}{curve}\n")
+        )
+    );
+    assert!(
+        run(
+            &["compare", "--pairs", "pairs.jsonl", "--format", "csv"],
+            ""
+        )
+        .lines()
+        .count()
+            == 2
+    );
+    assert!(
+        run(
+            &["compare", "--pairs", "-", "--format", "csv"],
+            &format!("{BOM}{{\"a\": {curve}, \"b\": {curve}}}\n")
+        )
+        .lines()
+        .count()
+            == 2
+    );
+    let fit = run(
+        &["fit", "--target", "-", "--family", "ggx", "--format", "csv"],
+        &format!("{BOM}{curve}\n"),
+    );
+    assert!(fit.contains("trowbridge_reitz"), "{fit}");
+}
