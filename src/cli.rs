@@ -448,7 +448,9 @@ pub struct CheckArgs {
     after_long_help = "Tables of the single-scattering microfacet BRDF f = F D G2 / (4 cos theta_o cos theta_i)\n\
     (docs/maths.md \"Masking–shadowing and albedo\"), on Cycles' grid: mu = cos theta_o = i/(n_mu - 1),\n\
     r = j/(n_r - 1), alpha = r^2 (--map r2) or r (--map r); r maps to the family's first parameter.\n\
-    The mu = 0 row is the limit mu -> 0+, the r = 0 column the mirror limit alpha -> 0+ (E = F(theta_o)).\n\n\
+    The mu = 0 row is the limit mu -> 0+, the r = 0 column the family's lobe at alpha = 0: the mirror\n\
+    limit alpha -> 0+ (E = F(theta_o)) for a width, the uniform lobe 1/pi for phong and abc; gtr with\n\
+    gamma_gtr < 1, whose lobe tends to (1 - gamma)/(pi sin^(2 gamma) theta), is refused.\n\n\
     Tables (CSV columns):\n  \
     e          mu,r,alpha,E,turquin_f0_1: E(mu) and Turquin's compensation factor 1/E (F0 = 1);\n             \
     with --fresnel mu,r,alpha,E_F, the albedo with F(theta_d)\n  \
