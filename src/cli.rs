@@ -80,7 +80,8 @@ pub struct ShowArgs {
 #[derive(Debug, Args)]
 pub struct ManArgs {
     /// Write ndfplot.1 and one ndfplot-<subcommand>.1 per subcommand into DIR (created if needed)
-    /// instead of printing the top page.
+    /// instead of printing the top page. A page name taken by something other than a regular file
+    /// (device, FIFO, socket, folder) is refused (exit 2), and so is - (not a folder).
     #[arg(long, value_name = "DIR")]
     pub dir: Option<std::path::PathBuf>,
 }
@@ -129,7 +130,10 @@ pub struct CoeffsArgs {
     hidden temporaries and renamed into place (with -o -, the one output goes to stdout). A spec read\n\
     from stdin (-) resolves its data paths against the working directory. With --check nothing is written: the CSVs and SVGs are\n\
     re-rendered and compared with DIR's, every CSV cell and, for figures whose values match, the\n\
-    drawing of the stored SVG (exit 1 on any difference, a missing or an extra CSV).\n\n\
+    drawing of the stored SVG (exit 1 on any difference, a missing or an extra CSV). DIR is untrusted:\n\
+    only its regular files are read, never through a symbolic link (a link, FIFO, device or folder under\n\
+    a compared name exits 2), up to 8 times the rendered file's size plus 1 MiB (a larger one differs,\n\
+    unread); stored text is quoted only in short excerpts, control characters escaped.\n\n\
     Examples:\n  \
     ndfplot render\n  \
     ndfplot render configs/abc-vs-tr.json my-scenes/ -o out --format svg,csv\n  \
@@ -143,8 +147,10 @@ pub struct RenderArgs {
     /// spec on stdin. None: the built-in catalogue of notebook figures.
     #[arg(value_name = "SPEC.json|DIR|ID|-")]
     pub paths: Vec<PathBuf>,
-    /// Output folder (created if missing); files are <DIR>/<id>.<ext>. - writes the one figure in
-    /// the one --format to stdout instead (exit 2 for several figures or formats).
+    /// Output folder (created if missing); files are <DIR>/<id>.<ext>, and a name taken by something
+    /// other than a regular file or a link (device, FIFO, socket, folder) is refused before any file
+    /// is written (exit 2). - writes the one figure in the one --format to stdout instead (exit 2
+    /// for several figures or formats).
     #[arg(
         short,
         long,
@@ -466,7 +472,9 @@ pub struct CheckArgs {
     after_long_help = "Tables of the single-scattering microfacet BRDF f = F D G2 / (4 cos theta_o cos theta_i)\n\
     (docs/maths.md \"Masking–shadowing and albedo\"), on Cycles' grid: mu = cos theta_o = i/(n_mu - 1),\n\
     r = j/(n_r - 1), alpha = r^2 (--map r2) or r (--map r); r maps to the family's first parameter.\n\
-    The mu = 0 row is the limit mu -> 0+, the r = 0 column the mirror limit alpha -> 0+ (E = F(theta_o)).\n\n\
+    The mu = 0 row is the limit mu -> 0+, the r = 0 column the family's lobe at alpha = 0: the mirror\n\
+    limit alpha -> 0+ (E = F(theta_o)) for a width, the uniform lobe 1/pi for phong and abc; gtr with\n\
+    gamma_gtr < 1, whose lobe tends to (1 - gamma)/(pi sin^(2 gamma) theta), is refused.\n\n\
     Tables (CSV columns):\n  \
     e          mu,r,alpha,E,turquin_f0_1: E(mu) and Turquin's compensation factor 1/E (F0 = 1);\n             \
     with --fresnel mu,r,alpha,E_F, the albedo with F(theta_d)\n  \
@@ -523,7 +531,9 @@ pub struct AlbedoArgs {
     #[arg(long, value_name = "FORMAT", default_value = "csv",
         value_parser = choice(&ReportFormat::NAMES, &[ReportFormat::Csv, ReportFormat::Json]))]
     pub format: ReportFormat,
-    /// Write the table to FILE (atomically: a temporary renamed into place) instead of stdout.
+    /// Write the table to FILE (atomically: a temporary renamed into place) instead of stdout; an
+    /// existing FILE that is not a regular file (device, FIFO, socket, folder) is refused (exit 2).
+    /// - is stdout.
     #[arg(short, long, value_name = "FILE")]
     pub out: Option<PathBuf>,
 }
@@ -551,7 +561,8 @@ pub struct AlbedoArgs {
     ndfplot bench -o plots/bench"
 )]
 pub struct BenchArgs {
-    /// Output folder (created if missing) for bench.csv, bench.svg and bench.png.
+    /// Output folder (created if missing) for bench.csv, bench.svg and bench.png; names taken by
+    /// something other than a regular file are refused (exit 2), and so is - (not a folder).
     #[arg(short, long, value_name = "DIR", default_value = "plots/bench")]
     pub out: PathBuf,
 }

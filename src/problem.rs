@@ -64,10 +64,29 @@ impl fmt::Display for Problems {
 
 impl std::error::Error for Problems {}
 
-/// `text` with its control characters escaped as in JSON (`\n`, `\u0007`), so that a message
-/// quoting a key or value that holds a line break still takes exactly one line.
+/// Characters that reorder the text around them on a terminal (the Unicode bidirectional
+/// controls): escaped by [`one_line`] like control characters, so a quoted value cannot make a
+/// message read differently from what it says.
+const BIDI_CONTROLS: [(char, char); 4] = [
+    ('\u{061c}', '\u{061c}'),
+    ('\u{200e}', '\u{200f}'),
+    ('\u{202a}', '\u{202e}'),
+    ('\u{2066}', '\u{2069}'),
+];
+
+/// Whether [`one_line`] escapes `c`: a control character or a bidirectional control.
+fn escaped(c: char) -> bool {
+    c.is_control()
+        || BIDI_CONTROLS
+            .iter()
+            .any(|&(first, last)| (first..=last).contains(&c))
+}
+
+/// `text` with its control characters (and the bidirectional controls) escaped as in JSON (`\n`,
+/// `\u0007`, `\u202e`), so that a message quoting a key or value that holds a line break still
+/// takes exactly one line, and a quoted file's bytes cannot drive the terminal.
 pub fn one_line(text: &str) -> std::borrow::Cow<'_, str> {
-    if !text.chars().any(char::is_control) {
+    if !text.chars().any(escaped) {
         return std::borrow::Cow::Borrowed(text);
     }
     let mut out = String::with_capacity(text.len() + 8);
@@ -76,7 +95,7 @@ pub fn one_line(text: &str) -> std::borrow::Cow<'_, str> {
             '\n' => out.push_str("\\n"),
             '\r' => out.push_str("\\r"),
             '\t' => out.push_str("\\t"),
-            c if c.is_control() => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c if escaped(c) => out.push_str(&format!("\\u{:04x}", c as u32)),
             c => out.push(c),
         }
     }
@@ -118,9 +137,13 @@ pub fn did_you_mean<'a>(
     word: &str,
     candidates: impl IntoIterator<Item = &'a str>,
 ) -> Option<&'a str> {
-    let limit = (word.chars().count() / 3).max(1);
+    let length = word.chars().count();
+    let limit = (length / 3).max(1);
+    // The distance is at least the difference of the lengths: a candidate farther than the limit
+    // by length alone is not compared (a long unknown key costs no quadratic table).
     candidates
         .into_iter()
+        .filter(|c| c.chars().count().abs_diff(length) <= limit)
         .map(|c| (edit_distance(word, c), c))
         .filter(|&(d, _)| d <= limit)
         .min_by_key(|&(d, _)| d)

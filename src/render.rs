@@ -69,7 +69,7 @@ pub fn run_with_progress(
 ) -> Result<(Vec<PathBuf>, RenderStats)> {
     let (outputs, mut stats) = encode_outputs(options, quiet)?;
     let stage = std::time::Instant::now();
-    let written = write::write_files(&options.out, &outputs)?;
+    let written = write::write_files("-o", &options.out, &outputs)?;
     stats.encoding += stage.elapsed();
     Ok((written, stats))
 }
@@ -91,7 +91,7 @@ pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -
     } else {
         Err(Error::CheckFailed(format!(
             "error: render --check: the figures differ from {}",
-            dir.display()
+            crate::problem::one_line(&dir.display().to_string())
         )))
     }
 }

@@ -11,15 +11,14 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 
 use crate::error::{Error, Result};
 use crate::model::albedo::{
-    self, RoughnessMap, Table, average_albedo_table, average_fresnel, kulla_conty_fresnel,
+    self, NoLobe, RoughnessMap, Table, average_albedo_table, average_fresnel, kulla_conty_fresnel,
     kulla_conty_lobe, split_sum_tables, turquin_factor, unit_grid,
 };
 use crate::model::curve::{Curve, Kind};
-use crate::model::domain::DomainError;
 use crate::model::masking::G2Model;
 use crate::model::math::quad::QuadError;
 use crate::model::math::tolerance::{ALBEDO_QUAD_REL_TOL, ALBEDO_TABULATED_TOL, ALBEDO_TOL};
-use crate::model::ndf::{Family, Ndf};
+use crate::model::ndf::{Family, Ndf, ZeroLimit};
 use crate::output::report::{Cell, Report};
 use crate::pipeline::progress::Progress;
 use crate::problem::{Problem, Problems};
@@ -92,42 +91,76 @@ impl Surface {
         })
     }
 
-    /// The NDF at roughness parameter α (the mapped first parameter), or the error naming the value
-    /// outside its domain.
-    pub fn ndf(&self, alpha: f64) -> std::result::Result<Ndf, DomainError> {
+    /// The lobe at roughness parameter α (the mapped first parameter) — `None` for the mirror —
+    /// or why there is none ([`albedo::lobe`]: at α = 0 the family's own limit).
+    pub fn lobe(&self, alpha: f64) -> std::result::Result<Option<Ndf>, NoLobe> {
         let mut params = self.params.clone();
         params[0] = alpha;
-        self.family.build(&params)
+        albedo::lobe(self.family, &params)
     }
 
-    /// Checks that every r of an `n_r`-point axis but r = 0 (the mirror limit, no NDF) gives an NDF:
-    /// an error names `--fix` for a fixed value out of its domain, `--map` for a mapped one, with r.
+    /// What the r = 0 column is, for the metadata: the family's lobe at α = 0 when that is in its
+    /// domain, else its limit there.
+    fn zero_column(&self) -> String {
+        let mapped = &self.family.params()[0];
+        if mapped.contains(self.map.alpha(0.0)) {
+            format!("r = 0 is {} = 0, inside the family's domain", mapped.name)
+        } else if self.family.zero_limit(&self.params[1..]) == ZeroLimit::Uniform {
+            "r = 0 is the limit alpha -> 0+, the uniform lobe D = 1/pi".to_string()
+        } else {
+            "r = 0 is the mirror limit alpha -> 0+".to_string()
+        }
+    }
+
+    /// Checks that every r of an `n_r`-point axis gives a lobe (at r = 0 the family's limit): an
+    /// error names `--fix` for a fixed value out of its domain (or one for which the family has no
+    /// limit at r = 0 that ndfplot evaluates), `--map` for a mapped one, with r.
     pub fn check(&self, n_r: usize) -> Result<()> {
         let mapped = self.family.params()[0].name;
-        for r in unit_grid(n_r).into_iter().filter(|&r| r > 0.0) {
-            if let Err(e) = self.ndf(self.map.alpha(r)) {
-                let (source, message) = if e.param == mapped {
-                    (
-                        "--map",
-                        format!(
-                            "out of domain at r = {r:?} (got {} = {:?} from {}, expected {})",
-                            e.param,
-                            e.value,
-                            self.map.name(),
-                            e.expected
-                        ),
-                    )
-                } else {
-                    (
-                        "--fix",
-                        format!("out of domain (got {:?}, expected {})", e.value, e.expected),
-                    )
-                };
-                return Err(Error::input(Problems {
-                    source: source.into(),
-                    list: vec![Problem::new(e.param, message)],
-                }));
-            }
+        let others = &self.family.param_names()[1..];
+        for r in unit_grid(n_r) {
+            let e = match self.lobe(self.map.alpha(r)) {
+                Ok(_) => continue,
+                Err(NoLobe::Limit(what)) => {
+                    let fixed: Vec<String> = others
+                        .iter()
+                        .zip(&self.params[1..])
+                        .map(|(name, value)| format!("{name}={value:?}"))
+                        .collect();
+                    return Err(Error::input(Problems {
+                        source: "--fix".into(),
+                        list: vec![Problem::new(
+                            others.first().copied().unwrap_or(mapped),
+                            format!(
+                                "no limit at r = 0, where {mapped} = 0 (got {}: {what}; expected values whose lobe tends to the mirror or the uniform lobe as {mapped} -> 0, as every table has an r = 0 column)",
+                                fixed.join(", ")
+                            ),
+                        )],
+                    }));
+                }
+                Err(NoLobe::Domain(e)) => e,
+            };
+            let (source, message) = if e.param == mapped {
+                (
+                    "--map",
+                    format!(
+                        "out of domain at r = {r:?} (got {} = {:?} from {}, expected {})",
+                        e.param,
+                        e.value,
+                        self.map.name(),
+                        e.expected
+                    ),
+                )
+            } else {
+                (
+                    "--fix",
+                    format!("out of domain (got {:?}, expected {})", e.value, e.expected),
+                )
+            };
+            return Err(Error::input(Problems {
+                source: source.into(),
+                list: vec![Problem::new(e.param, message)],
+            }));
         }
         Ok(())
     }
@@ -280,11 +313,10 @@ impl Request {
     pub fn compute(&self, progress: &Progress) -> Result<Output> {
         let tick = |_: usize, _: usize| progress.advance(1);
         let surface = |alpha: f64| {
-            let ndf = self
-                .surface
-                .ndf(alpha)
-                .expect("every alpha of the grid was checked by Request::new");
-            albedo::surface_of(ndf, self.g2)
+            self.surface
+                .lobe(alpha)
+                .expect("every alpha of the grid was checked by Request::new")
+                .map(|ndf| albedo::surface_of(ndf, self.g2))
         };
         let evaluate = self
             .fresnel
@@ -394,16 +426,16 @@ impl Request {
             }
             None => "r = j/(r_count - 1), alpha = map(r)",
         };
-        let limits = match self.table {
-            Table::Average => "r = 0 is the mirror limit alpha -> 0+ (E_avg = 1)".to_string(),
-            _ => format!(
-                "mu = 0 is the limit mu -> 0+; r = 0 is the mirror limit alpha -> 0+, {}",
-                if self.table == Table::SplitSum {
-                    "E_k = b_k(theta_o)"
-                } else {
-                    "E = F(theta_o)"
-                }
-            ),
+        let zero = self.surface.zero_column();
+        let mirror = self.surface.lobe(self.surface.map.alpha(0.0)) == Ok(None);
+        let limits = match (self.table, mirror) {
+            (Table::Average, true) => format!("{zero} (E_avg = 1)"),
+            (Table::Average, false) => zero,
+            (Table::SplitSum, true) => {
+                format!("mu = 0 is the limit mu -> 0+; {zero}, E_k = b_k(theta_o)")
+            }
+            (_, true) => format!("mu = 0 is the limit mu -> 0+; {zero}, E = F(theta_o)"),
+            (_, false) => format!("mu = 0 is the limit mu -> 0+; {zero}"),
         };
         let accuracy = match self.table {
             Table::SplitSum => format!(

@@ -20,9 +20,16 @@ pub fn completions(shell: Shell) -> Result<()> {
 
 /// Prints the top manual page (roff), or with `dir` writes every page of [`man_pages`] there.
 pub fn man(dir: Option<&Path>) -> Result<()> {
+    if let Some(dir) = dir {
+        crate::output::write::refuse_dash_folder(
+            "--dir",
+            dir,
+            "without --dir the top page goes to standard output",
+        )?;
+    }
     let pages = man_pages()?;
     match dir {
-        Some(dir) => write_files(dir, &pages).map(drop),
+        Some(dir) => write_files("--dir", dir, &pages).map(drop),
         None => stdout::print(&String::from_utf8_lossy(&pages[0].1)),
     }
 }

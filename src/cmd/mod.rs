@@ -285,13 +285,15 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
         None => None,
     };
     let request = albedo::Request::new(table, surface, g2, grid, fresnel)?;
+    // `-o -` is standard output, as without -o.
     let destination = args
         .out
         .as_deref()
+        .filter(|path| path.as_os_str() != "-")
         .map(|path| crate::output::write::split_file_path("-o", path))
         .transpose()?;
-    if let Some((dir, _)) = destination {
-        crate::output::write::check_writable(dir)?;
+    if let Some((dir, name)) = destination {
+        crate::output::write::check_writable("-o", dir, &[name])?;
     }
     let progress = crate::pipeline::progress::Progress::new(request.steps() as u64, quiet);
     progress.stage("integrating");
@@ -302,7 +304,9 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
         ReportFormat::Csv | ReportFormat::Table => output.csv(),
     };
     match destination {
-        Some((dir, name)) => crate::output::write::write_files(dir, &[(name, text)]).map(drop),
+        Some((dir, name)) => {
+            crate::output::write::write_files("-o", dir, &[(name, text)]).map(drop)
+        }
         None => stdout::print(&text),
     }
 }

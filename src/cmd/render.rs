@@ -24,7 +24,14 @@ pub fn run(args: RenderArgs, quiet: bool) -> Result<()> {
         allow_read: args.allow_read,
     };
     match &args.check {
-        Some(dir) => render::check(&options, dir, args.tolerance, quiet),
+        Some(dir) => {
+            crate::output::write::refuse_dash_folder(
+                "--check",
+                dir,
+                "render --check compares with the files of a folder",
+            )?;
+            render::check(&options, dir, args.tolerance, quiet)
+        }
         None if options.out.as_os_str() == "-" => {
             crate::output::stdout::write_bytes(&render::to_stdout(&options, quiet)?)
         }

@@ -53,8 +53,9 @@
 //! # Tables
 //!
 //! [`albedo_table`] follows Cycles' grid convention (μ = i/(n_μ − 1), r = j/(n_r − 1), α = map(r),
-//! rows μ): its μ = 0 row is the limit above, and its r = 0 column the mirror limit α → 0⁺,
-//! E = F(θo) (Cycles instead clamps μ and r to 1e-4). [`average_albedo_table`] gives E_avg(r),
+//! rows μ): its μ = 0 row is the limit above, and its r = 0 column the family's lobe at α = 0
+//! ([`lobe`]): for a width parameter the mirror limit α → 0⁺, E = F(θo) (Cycles instead clamps μ
+//! and r to 1e-4). [`average_albedo_table`] gives E_avg(r),
 //! [`split_sum_tables`] the Belcour–Bati–Barla tables E_k (F = b_k, k = 0…3).
 
 use std::cell::Cell;
@@ -64,12 +65,13 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use rayon::prelude::*;
 
+use crate::model::domain::DomainError;
 use crate::model::fresnel::basis::basis;
 use crate::model::masking::{G2Model, g1};
 use crate::model::math::quad::{QuadError, integrate};
 use crate::model::math::tolerance::{ALBEDO_QUAD_REL_TOL, ALBEDO_TABULATED_TOL};
 use crate::model::names::named;
-use crate::model::ndf::Ndf;
+use crate::model::ndf::{Family, Ndf, Phong, ZeroLimit};
 
 /// A Fresnel factor as a function of θd, the angle between the view ωo and the half-vector h, in
 /// [0, π/2]; `None` is F ≡ 1. It must be ≥ 0 wherever the integrals are to converge to a relative
@@ -365,6 +367,40 @@ fn integrate_to(
     }
 }
 
+/// Why [`lobe`] gives no lobe.
+#[derive(Debug, Clone, PartialEq)]
+pub enum NoLobe {
+    /// A parameter outside its domain (the first one nonzero).
+    Domain(DomainError),
+    /// The first parameter is 0, outside the domain, and the family's lobe tends there to one
+    /// ndfplot does not evaluate (what [`ZeroLimit::Other`] says).
+    Limit(&'static str),
+}
+
+/// The lobe of `family` with `params` (in the family's order, the first the roughness parameter α
+/// a table maps r to): the NDF where every parameter is in its domain, and at α = 0 outside it the
+/// family's own limit there ([`crate::model::ndf::Distribution::zero_limit`]) — `None` for the
+/// mirror, the uniform lobe (Phong's α_p = 0) for [`ZeroLimit::Uniform`]. The one statement of
+/// what an albedo table's r = 0 column is.
+pub fn lobe(family: Family, params: &[f64]) -> Result<Option<Ndf>, NoLobe> {
+    match family.build(params) {
+        Ok(ndf) => Ok(Some(ndf)),
+        Err(e) if params[0] == 0.0 && e.param == family.params()[0].name => {
+            for (param, &value) in family.params()[1..].iter().zip(&params[1..]) {
+                param.check(value).map_err(NoLobe::Domain)?;
+            }
+            match family.zero_limit(&params[1..]) {
+                ZeroLimit::Mirror => Ok(None),
+                ZeroLimit::Uniform => Ok(Some(Ndf::Phong(
+                    Phong::new(0.0).expect("α_p = 0 is in Phong's domain"),
+                ))),
+                ZeroLimit::Other(what) => Err(NoLobe::Limit(what)),
+            }
+        }
+        Err(e) => Err(NoLobe::Domain(e)),
+    }
+}
+
 /// The microfacet surface of `ndf` under `g2`: D by [`Ndf::eval`], Λ by [`Ndf::lambda`], the width
 /// its [`median_slope`] ([`Microfacet::new`]). The one way the crate turns an NDF into a surface.
 pub fn surface_of(
@@ -560,15 +596,16 @@ pub fn unit_grid(n: usize) -> Vec<f64> {
     (0..n).map(|i| i as f64 / (n - 1) as f64).collect()
 }
 
-/// E(μ, r) on the n_μ × n_r grid of [`AlbedoTable`]: `surface(α)` builds the surface for each α > 0
-/// (once per column); the r = 0 column is the mirror limit E = F(θo) (1 without Fresnel) and the
-/// μ = 0 row the grazing limit of [`Microfacet::albedo`]. Cells are computed in parallel (rayon),
+/// E(μ, r) on the n_μ × n_r grid of [`AlbedoTable`]: `surface(α)` builds the surface for each
+/// column's α, or `None` where the lobe is the mirror (the caller's family decides what its lobe is
+/// at α = 0, [`crate::model::ndf::Distribution::zero_limit`]), whose column is E = F(θo) (1 without
+/// Fresnel); the μ = 0 row is the grazing limit of [`Microfacet::albedo`]. Cells are computed in parallel (rayon),
 /// each value's quadrature sequentially; `progress` is told after each cell.
 pub fn albedo_table<D, L>(
     n_mu: usize,
     n_r: usize,
     map: RoughnessMap,
-    surface: impl Fn(f64) -> Microfacet<D, L> + Sync,
+    surface: impl Fn(f64) -> Option<Microfacet<D, L>> + Sync,
     fresnel: Fresnel,
     progress: Option<ProgressFn>,
 ) -> Result<AlbedoTable, QuadError>
@@ -590,7 +627,7 @@ fn grid_values<D, L, const N: usize>(
     n_mu: usize,
     n_r: usize,
     map: RoughnessMap,
-    surface: &(impl Fn(f64) -> Microfacet<D, L> + Sync),
+    surface: &(impl Fn(f64) -> Option<Microfacet<D, L>> + Sync),
     fresnels: [Fresnel; N],
     progress: Option<ProgressFn>,
 ) -> Result<[Vec<f64>; N], QuadError>
@@ -601,7 +638,7 @@ where
     let (mu, roughness) = (unit_grid(n_mu), unit_grid(n_r));
     let surfaces: Vec<Option<Microfacet<D, L>>> = roughness
         .par_iter()
-        .map(|&r| (r > 0.0).then(|| surface(map.alpha(r))))
+        .map(|&r| surface(map.alpha(r)))
         .collect();
     let total = n_mu * n_r;
     let done = AtomicUsize::new(0);
@@ -629,12 +666,12 @@ where
 }
 
 /// E_avg(r_j) = 2 ∫₀¹ E(μ, α_j) μ dμ ([`average_albedo`]) at r_j = j/(n_r − 1), α_j = map(r_j), in
-/// parallel over r; r = 0 is the mirror limit 2 ∫₀¹ F(arccos μ) μ dμ ([`average_fresnel`]; 1 without
-/// Fresnel). `progress` is told after each r.
+/// parallel over r; where `surface` gives `None`, the mirror (as for [`albedo_table`]),
+/// 2 ∫₀¹ F(arccos μ) μ dμ ([`average_fresnel`]; 1 without Fresnel). `progress` is told after each r.
 pub fn average_albedo_table<D, L>(
     n_r: usize,
     map: RoughnessMap,
-    surface: impl Fn(f64) -> Microfacet<D, L> + Sync,
+    surface: impl Fn(f64) -> Option<Microfacet<D, L>> + Sync,
     fresnel: Fresnel,
     progress: Option<ProgressFn>,
 ) -> Result<Vec<f64>, QuadError>
@@ -646,13 +683,12 @@ where
     unit_grid(n_r)
         .into_par_iter()
         .map(|r| {
-            let value = if r > 0.0 {
-                average_albedo(&surface(map.alpha(r)), fresnel)?
-            } else {
-                match fresnel {
+            let value = match surface(map.alpha(r)) {
+                Some(surface) => average_albedo(&surface, fresnel)?,
+                None => match fresnel {
                     Some(f) => average_fresnel(f)?,
                     None => 1.0,
-                }
+                },
             };
             let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
             if let Some(progress) = progress {
@@ -675,14 +711,14 @@ pub fn split_sum_tables<D, L>(
     n_mu: usize,
     n_r: usize,
     map: RoughnessMap,
-    surface: impl Fn(f64) -> Microfacet<D, L> + Sync,
+    surface: impl Fn(f64) -> Option<Microfacet<D, L>> + Sync,
     progress: Option<ProgressFn>,
 ) -> Result<[AlbedoTable; 4], QuadError>
 where
     D: Fn(f64) -> f64 + Sync + Send,
     L: Fn(f64) -> f64 + Sync + Send,
 {
-    let surface = |alpha: f64| surface(alpha).with_tolerance(ALBEDO_TABULATED_TOL);
+    let surface = |alpha: f64| surface(alpha).map(|s| s.with_tolerance(ALBEDO_TABULATED_TOL));
     let basis = basis();
     let shifted = |k: usize| move |theta_d: f64| 1.0 + basis.interpolate(k, theta_d.cos());
     let (b1, b2, b3) = (shifted(1), shifted(2), shifted(3));

@@ -4,7 +4,7 @@
 //!
 //! A dataset is validated data (like a curve) and evaluates to points; it never draws or writes.
 
-use crate::model::albedo::{RoughnessMap, albedo_table, surface_of};
+use crate::model::albedo::{RoughnessMap, albedo_table, lobe, surface_of};
 use crate::model::fresnel::{basis, gulbrandsen};
 use crate::model::masking::G2Model;
 use crate::model::names::named;
@@ -104,7 +104,8 @@ pub enum Dataset {
     /// The directional albedo E (or the loss 1 − E) of the single-scattering BRDF with F = 1 of
     /// a one-parameter NDF family whose parameter is its width α, on Cycles' grid
     /// ([`albedo_table`]): μ_i = i/(mu − 1) (rows, x) by r_j = j/(r − 1) (columns, y), α = map(r);
-    /// z per point. The r = 0 column is the mirror limit and the μ = 0 row the grazing limit.
+    /// z per point. The r = 0 column is the mirror limit (the families' limit at α = 0, [`lobe`])
+    /// and the μ = 0 row the grazing limit.
     Albedo {
         /// The NDF family (its one parameter is α).
         family: Family,
@@ -234,10 +235,9 @@ impl Dataset {
                 r,
             } => {
                 let surface = |alpha: f64| {
-                    let ndf = family
-                        .build(&[alpha])
-                        .expect("the spec admits only families whose width domain holds (0, 1]");
-                    surface_of(ndf, *g2)
+                    lobe(*family, &[alpha])
+                        .expect("the spec admits only families whose width domain holds (0, 1]")
+                        .map(|ndf| surface_of(ndf, *g2))
                 };
                 match albedo_table(*mu, *r, *map, surface, None, None) {
                     Ok(table) => {

@@ -7,10 +7,17 @@
 //! CSVs are compared cell by cell (docs/contracts.md: across machines they agree to 1e-12 relative);
 //! SVGs token by token, the text exactly and the numbers inside tags within
 //! [`SVG_GRID_TOLERANCE`]; PNG bytes never. This module reads the folder and never writes anything.
+//!
+//! What the folder holds is untrusted input: a stored file is read only when it is a regular file
+//! in the folder itself (never through a symbolic link, never a FIFO or a device) and no larger
+//! than [`stored_limit`]; anything else is refused by name. The report never prints a stored
+//! header, cell or file name whole: stored text appears only as a short [`excerpt`] with its
+//! control characters escaped.
 
 use crate::error::{Error, Result};
 use crate::model::math::tolerance::relative_difference;
-use crate::problem::excerpt;
+use crate::problem::{excerpt, one_line};
+use crate::spec::datafile::{Refused, read_regular};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -21,6 +28,26 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-12;
 /// grid) that still counts as the same drawing: a value's last bits, which may differ across
 /// machines, can move a rounded vertex by one grid step.
 pub const SVG_GRID_TOLERANCE: f64 = 1.0;
+
+/// How many times larger than its rendered counterpart a stored file may be and still be read. A
+/// stored CSV that matches has the same rows, the same `curve` text, and numbers that differ in
+/// their last digits: a rendered row is at least 14 bytes (`0,0,c,0.0,0.0`), the same row with
+/// every number at its longest (24 characters, `-2.2250738585072014e-308`) under 4.5 times that;
+/// a matching SVG differs by at most a digit per coordinate. A stored file beyond the bound cannot
+/// match, so it is reported as differing without being read: reading it could only cost memory
+/// (a parsed CSV takes about 20 times its size).
+pub const STORED_SIZE_FACTOR: u64 = 8;
+
+/// Added to [`STORED_SIZE_FACTOR`] times the rendered size: room for small files, line-end and
+/// header variants, 1 MiB.
+pub const STORED_SIZE_SLACK: u64 = 1 << 20;
+
+/// The most bytes read of a stored file whose rendered counterpart has `rendered` bytes.
+pub fn stored_limit(rendered: usize) -> u64 {
+    (rendered as u64)
+        .saturating_mul(STORED_SIZE_FACTOR)
+        .saturating_add(STORED_SIZE_SLACK)
+}
 
 /// One series of a figure CSV: the `curve` column of its first row, and every row's cells from
 /// `curve` on (`curve`, `x`, `y`, and `z` when present).
@@ -40,19 +67,19 @@ fn parse_table(bytes: &[u8]) -> std::result::Result<Table, String> {
     let mut reader = csv::ReaderBuilder::new().flexible(true).from_reader(bytes);
     let header: Vec<String> = reader
         .headers()
-        .map_err(|e| e.to_string())?
+        .map_err(|e| one_line(&e.to_string()).into_owned())?
         .iter()
         .map(str::to_string)
         .collect();
     if header.len() < 5 || header[..3] != ["panel", "series", "curve"] {
         return Err(format!(
             "not a figure CSV (got header \"{}\", expected panel,series,curve,x,y[,z])",
-            header.join(",")
+            excerpt(&header.join(","))
         ));
     }
     let mut series: BTreeMap<(u64, u64), SeriesRows> = BTreeMap::new();
     for (i, record) in reader.records().enumerate() {
-        let record = record.map_err(|e| e.to_string())?;
+        let record = record.map_err(|e| one_line(&e.to_string()).into_owned())?;
         let row = i + 2;
         if record.len() != header.len() {
             return Err(format!(
@@ -65,7 +92,8 @@ fn parse_table(bytes: &[u8]) -> std::result::Result<Table, String> {
             record[k].parse::<u64>().map_err(|_| {
                 format!(
                     "row {row}: {} is not an index (got \"{}\")",
-                    header[k], &record[k]
+                    excerpt(&header[k]),
+                    excerpt(&record[k])
                 )
             })
         };
@@ -131,13 +159,14 @@ fn compare_rows(
 }
 
 /// Every difference between the figure CSV `rendered` and the stored `stored` of the file `name`,
-/// one line each, naming the panel, the series and its curve.
+/// one line each, naming the panel, the series and its curve. Stored text (a header, a curve) is
+/// quoted only as an [`excerpt`].
 fn compare_tables(name: &str, rendered: &Table, stored: &Table, tolerance: f64) -> Vec<String> {
     if rendered.header != stored.header {
         return vec![format!(
             "{name}: header differs (rendered {}, stored {})",
-            rendered.header.join(","),
-            stored.header.join(",")
+            excerpt(&rendered.header.join(",")),
+            excerpt(&stored.header.join(","))
         )];
     }
     let mut lines = Vec::new();
@@ -148,25 +177,26 @@ fn compare_tables(name: &str, rendered: &Table, stored: &Table, tolerance: f64) 
         match (rendered.series.get(key), stored.series.get(key)) {
             (Some(a), None) => lines.push(format!(
                 "{at} {}: missing from the stored CSV ({} rows)",
-                a.curve,
+                one_line(&a.curve),
                 a.rows.len()
             )),
             (None, Some(b)) => lines.push(format!(
                 "{at} {}: extra in the stored CSV ({} rows)",
-                b.curve,
+                excerpt(&b.curve),
                 b.rows.len()
             )),
             (Some(a), Some(b)) if a.curve != b.curve => {
                 lines.push(format!(
                     "{at}: curve differs (rendered {}, stored {})",
-                    a.curve, b.curve
+                    one_line(&a.curve),
+                    excerpt(&b.curve)
                 ));
             }
             (Some(a), Some(b)) => {
                 if a.rows.len() != b.rows.len() {
                     lines.push(format!(
                         "{at} {}: {} rows rendered, {} stored",
-                        a.curve,
+                        one_line(&a.curve),
                         a.rows.len(),
                         b.rows.len()
                     ));
@@ -179,9 +209,9 @@ fn compare_tables(name: &str, rendered: &Table, stored: &Table, tolerance: f64) 
                     };
                     lines.push(format!(
                         "{at} {}: {} differs{by} at x = {} (rendered {}, stored {}; {} of {} rows differ)",
-                        a.curve,
-                        w.column,
-                        w.x,
+                        one_line(&a.curve),
+                        one_line(&w.column),
+                        excerpt(&w.x),
                         excerpt(&w.rendered),
                         excerpt(&w.stored),
                         w.rows_differing,
@@ -283,12 +313,16 @@ fn drawing_difference(rendered: &str, stored: &str) -> Option<String> {
 /// from the one in `dir` (see [`drawing_difference`]; figures without a stored SVG are not
 /// compared). Returns the report (one line per difference, then a summary naming how many figures
 /// differ in their values and in their drawing only) and whether everything matched.
+///
+/// A stored file is read only through [`read_stored`]: a link, a FIFO, a device or a folder under
+/// a name the run compares is an error naming it (exit 2); one beyond [`stored_limit`] is listed
+/// as differing, unread.
 pub fn compare(
     dir: &Path,
     rendered: &[(String, Vec<u8>)],
     tolerance: f64,
 ) -> Result<(String, bool)> {
-    let shown = dir.display().to_string();
+    let shown = one_line(&dir.display().to_string()).into_owned();
     let entries = std::fs::read_dir(dir).map_err(|e| Error::io(&shown, e))?;
     let mut stored_names = Vec::new();
     for entry in entries {
@@ -302,10 +336,7 @@ pub fn compare(
         }
     }
     stored_names.sort();
-    let read = |name: &str| {
-        let path = dir.join(name);
-        std::fs::read(&path).map_err(|e| Error::io(path.display().to_string(), e))
-    };
+    let read = |name: &str, rendered: &[u8]| read_stored(&dir.join(name), rendered.len());
     let csvs: Vec<&(String, Vec<u8>)> = rendered
         .iter()
         .filter(|(n, _)| n.ends_with(".csv"))
@@ -317,17 +348,19 @@ pub fn compare(
         if !stored_names.contains(name) {
             lines.push(format!("{name}: missing from {shown}"));
         } else {
-            let stored = read(name)?;
-            match (parse_table(bytes), parse_table(&stored)) {
-                (Ok(a), Ok(b)) => lines.extend(compare_tables(name, &a, &b, tolerance)),
-                (_, Err(message)) => {
-                    lines.push(format!("{name}: stored CSV unreadable: {message}"))
-                }
-                (Err(message), _) => {
-                    return Err(Error::Numerics(format!(
-                        "{name}: rendered CSV unreadable: {message}"
-                    )));
-                }
+            match read(name, bytes)? {
+                Err(too_large) => lines.push(format!("{name}: {too_large}")),
+                Ok(stored) => match (parse_table(bytes), parse_table(&stored)) {
+                    (Ok(a), Ok(b)) => lines.extend(compare_tables(name, &a, &b, tolerance)),
+                    (_, Err(message)) => {
+                        lines.push(format!("{name}: stored CSV unreadable: {message}"))
+                    }
+                    (Err(message), _) => {
+                        return Err(Error::Numerics(format!(
+                            "{name}: rendered CSV unreadable: {message}"
+                        )));
+                    }
+                },
             }
         }
         if lines.len() > before {
@@ -337,11 +370,13 @@ pub fn compare(
         let svg_name = name.replace(".csv", ".svg");
         let drawn = rendered.iter().find(|(n, _)| *n == svg_name);
         if let (Some((_, drawn)), true) = (drawn, stored_names.contains(&svg_name)) {
-            let stored = read(&svg_name)?;
-            let difference = drawing_difference(
-                &String::from_utf8_lossy(drawn),
-                &String::from_utf8_lossy(&stored),
-            );
+            let difference = match read(&svg_name, drawn)? {
+                Err(too_large) => Some(format!(": {too_large}")),
+                Ok(stored) => drawing_difference(
+                    &String::from_utf8_lossy(drawn),
+                    &String::from_utf8_lossy(&stored),
+                ),
+            };
             if let Some(difference) = difference {
                 lines.push(format!(
                     "{svg_name}: the drawing differs though every value matches (title, colours, styles, theme, legend or size){difference}"
@@ -355,7 +390,8 @@ pub fn compare(
         .filter(|n| n.ends_with(".csv") && !csvs.iter().any(|(r, _)| r == *n))
     {
         lines.push(format!(
-            "{name}: extra in {shown} (no scene of this run writes it)"
+            "{}: extra in {shown} (no scene of this run writes it)",
+            one_line(name)
         ));
         values_differ += 1;
     }
@@ -372,6 +408,30 @@ pub fn compare(
         )
     });
     Ok((lines.join("\n") + "\n", ok))
+}
+
+/// The bytes of the stored file `path`, whose rendered counterpart has `rendered` bytes, read
+/// with [`read_regular`] up to [`stored_limit`]: `Ok(Err(line))` with the report's words when it
+/// is too large to match (nothing read); an error naming the file when it is a symbolic link, not
+/// a regular file or cannot be read.
+fn read_stored(path: &Path, rendered: usize) -> Result<std::result::Result<Vec<u8>, String>> {
+    let limit = stored_limit(rendered);
+    let shown = path.display().to_string();
+    match read_regular(path, limit) {
+        Ok(bytes) => Ok(Ok(bytes)),
+        Err(Refused::TooLarge(len)) => Ok(Err(format!(
+            "stored file too large to match (got {len} bytes, expected at most {limit}: \
+             {STORED_SIZE_FACTOR} times the rendered {rendered} bytes plus {} MiB); not read",
+            STORED_SIZE_SLACK >> 20
+        ))),
+        Err(Refused::Io(e)) => Err(Error::io(shown, e)),
+        Err(refused) => Err(Error::io(
+            shown,
+            std::io::Error::other(format!(
+                "not read: {refused}; render --check reads only the regular files in its folder"
+            )),
+        )),
+    }
 }
 
 #[cfg(test)]

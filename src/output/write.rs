@@ -4,6 +4,12 @@
 //! (never through an existing file or symbolic link), and renamed into place, so an interrupted
 //! run never leaves a truncated file under a real name and two runs into one folder never touch
 //! each other's temporaries (the last rename wins per file; docs/contracts.md).
+//!
+//! A rename replaces whatever has the name, so each target is checked first: an existing regular
+//! file or symbolic link (the link itself is replaced, never written through) is replaced; anything
+//! else — a device node, a FIFO, a socket, a folder — is refused, naming the option and the path,
+//! before any file of the call is written. `-` is never a file or folder name here: each command
+//! maps it to standard output or refuses it ([`refuse_dash_folder`]) before calling.
 
 use crate::error::{Error, Result};
 use rayon::prelude::*;
@@ -27,22 +33,62 @@ const SUFFIX: &str = ".tmp";
 /// Writes `bytes` to `dir/name` atomically (exclusive temporary with a unique name, rename).
 /// `name` must be a plain file name (the caller validated the scene id it comes from). The file
 /// gets the permissions a plain create would give (0666 less the umask).
-fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<()> {
+fn write_atomic(flag: &str, dir: &Path, name: &str, bytes: &[u8]) -> Result<()> {
     debug_assert!(!name.contains(['/', '\\']) && !name.starts_with('.'));
-    let target = dir.join(name);
+    let target = joined(dir, name);
     let shown = target.display().to_string();
-    let result = (|| {
-        let mut file = tempfile::Builder::new()
-            .prefix(&prefix(name))
-            .suffix(SUFFIX)
-            .permissions(fs::Permissions::from_mode(0o666))
-            .tempfile_in(dir)?;
-        file.write_all(bytes)?;
-        file.persist(&target).map_err(|e| e.error)?;
-        Ok(())
-    })();
-    // On failure the temporary was removed when dropped.
-    result.map_err(|e| Error::io(shown, e))
+    let mut file = tempfile::Builder::new()
+        .prefix(&prefix(name))
+        .suffix(SUFFIX)
+        .permissions(fs::Permissions::from_mode(0o666))
+        .tempfile_in(dir)
+        .map_err(|e| Error::io(&shown, e))?;
+    file.write_all(bytes).map_err(|e| Error::io(&shown, e))?;
+    // Checked again just before the rename: the target may have changed since the first check.
+    // On failure the temporary is removed when dropped.
+    check_target(flag, &target)?;
+    file.persist(&target)
+        .map_err(|e| Error::io(shown, e.error))?;
+    Ok(())
+}
+
+/// `dir/name`, or `name` alone when `dir` is `.` (the folder of a bare `-o FILE`), as messages
+/// show it.
+fn joined(dir: &Path, name: &str) -> std::path::PathBuf {
+    if dir == Path::new(".") {
+        name.into()
+    } else {
+        dir.join(name)
+    }
+}
+
+/// Refuses `target` when it exists and is neither a regular file nor a symbolic link: renaming
+/// over it would replace a device node, a FIFO or a socket (or fail on a folder after the work).
+/// The message names `flag`, the option the path came from, and what the path is.
+pub fn check_target(flag: &str, target: &Path) -> Result<()> {
+    match fs::symlink_metadata(target) {
+        Ok(meta) if !meta.is_file() && !meta.file_type().is_symlink() => {
+            Err(Error::Usage(format!(
+                "{flag}: {}: not a regular file, left as it is (got {}, expected a regular file to \
+             replace or a name not yet taken)",
+                target.display(),
+                crate::spec::datafile::file_kind(meta.file_type())
+            )))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// The one rule for `-` given to an option `flag` that names a folder (docs/contracts.md: `-` is
+/// standard output or input where that makes sense, or is refused; never a file or folder named
+/// `-`): refused, with `instead` saying what to do.
+pub fn refuse_dash_folder(flag: &str, dir: &Path, instead: &str) -> Result<()> {
+    if dir.as_os_str() == "-" {
+        return Err(Error::Usage(format!(
+            "{flag}: - is not a folder (got -, expected a folder; {instead})"
+        )));
+    }
+    Ok(())
 }
 
 /// Removes the temporaries of the files `names` in `dir` that are older than `age`: those a killed
@@ -77,20 +123,25 @@ fn remove_abandoned(dir: &Path, names: &[&str], age: Duration) -> Result<()> {
     Ok(())
 }
 
-/// Writes every (file name, bytes) of `files` into `dir` with [`write_atomic`], creating `dir` if
-/// needed and first removing the [abandoned](ABANDONED_AFTER) temporaries of those names; returns
-/// the paths written, in order. The files are written in parallel; when some fail, the error
-/// is the first failure in `files`' order.
+/// Writes every (file name, bytes) of `files` into `dir`, the folder given with the option `flag`,
+/// with [`write_atomic`], creating `dir` if needed and first removing the
+/// [abandoned](ABANDONED_AFTER) temporaries of those names; returns the paths written, in order.
+/// Every target is [checked](check_target) before any file is written. The files are written in
+/// parallel; when some fail, the error is the first failure in `files`' order.
 pub fn write_files<N: AsRef<str> + Sync, B: AsRef<[u8]> + Sync>(
+    flag: &str,
     dir: &Path,
     files: &[(N, B)],
 ) -> Result<Vec<std::path::PathBuf>> {
-    ensure_dir(dir)?;
+    ensure_dir(flag, dir)?;
     let names: Vec<&str> = files.iter().map(|(name, _)| name.as_ref()).collect();
+    for name in &names {
+        check_target(flag, &joined(dir, name))?;
+    }
     remove_abandoned(dir, &names, ABANDONED_AFTER)?;
     let results: Vec<Result<()>> = files
         .par_iter()
-        .map(|(name, bytes)| write_atomic(dir, name.as_ref(), bytes.as_ref()))
+        .map(|(name, bytes)| write_atomic(flag, dir, name.as_ref(), bytes.as_ref()))
         .collect();
     results.into_iter().collect::<Result<()>>()?;
     Ok(names.iter().map(|name| dir.join(name)).collect())
@@ -118,10 +169,15 @@ pub fn split_file_path<'a>(flag: &str, path: &'a Path) -> Result<(&'a Path, &'a 
     Ok((dir, name))
 }
 
-/// Creates `dir` if needed and checks that a file can be created in it (a temporary, removed at
-/// once), so a long run can fail before its work rather than after it.
-pub fn check_writable(dir: &Path) -> Result<()> {
-    ensure_dir(dir)?;
+/// Creates `dir` (given with the option `flag`) if needed, checks that a file can be created in it
+/// (a temporary, removed at once) and that none of the files `names` it is to hold is something a
+/// rename must not replace ([`check_target`]), so a long run can fail before its work rather than
+/// after it.
+pub fn check_writable(flag: &str, dir: &Path, names: &[&str]) -> Result<()> {
+    ensure_dir(flag, dir)?;
+    for name in names {
+        check_target(flag, &joined(dir, name))?;
+    }
     tempfile::Builder::new()
         .prefix(".ndfplot-probe.")
         .suffix(SUFFIX)
@@ -130,7 +186,25 @@ pub fn check_writable(dir: &Path) -> Result<()> {
         .map_err(|e| Error::io(dir.display().to_string(), e))
 }
 
-/// Creates the output folder (and its parents) if needed.
-fn ensure_dir(dir: &Path) -> Result<()> {
-    fs::create_dir_all(dir).map_err(|e| Error::io(dir.display().to_string(), e))
+/// Creates the output folder `dir` of the option `flag` (and its parents) if needed. When it cannot,
+/// because the path is taken by something other than a folder (a file, a link to nothing), the
+/// message says so instead of the system's "File exists".
+fn ensure_dir(flag: &str, dir: &Path) -> Result<()> {
+    let error = match fs::create_dir_all(dir) {
+        Ok(()) => return Ok(()),
+        Err(error) => error,
+    };
+    let taken = |got: &str| {
+        Err(Error::Usage(format!(
+            "{flag}: {}: not a folder (got {got}, expected a folder or a name not yet taken)",
+            dir.display()
+        )))
+    };
+    match (fs::symlink_metadata(dir), fs::metadata(dir)) {
+        (Ok(link), Err(_)) if link.file_type().is_symlink() => taken("a symbolic link to nothing"),
+        (Ok(_), Ok(meta)) if !meta.is_dir() => {
+            taken(crate::spec::datafile::file_kind(meta.file_type()))
+        }
+        _ => Err(Error::io(dir.display().to_string(), error)),
+    }
 }

@@ -4,8 +4,11 @@
 //! A path resolves against the folder of the document that names it (a spec's folder; the working
 //! directory for an inline `compare` side) and may not leave it — neither by an absolute path or
 //! `..`, nor through a symbolic link — unless it lies inside a folder allowed with `--allow-read`.
-//! Only regular files are read, up to [`MAX_DATA_FILE_BYTES`]. Messages never quote a file's
-//! contents; [`crate::problem::excerpt`] bounds and sanitizes what they quote of its header.
+//! Only regular files are read, up to [`MAX_DATA_FILE_BYTES`], by [`read_regular`]: the one reader
+//! of untrusted files (also `render --check`'s of the stored outputs), which checks what a path
+//! names before opening it and opens it without following a link or blocking. Messages never quote
+//! a file's contents; [`crate::problem::excerpt`] bounds and sanitizes what they quote of its
+//! header.
 
 use std::io::Read;
 use std::path::{Component, Path, PathBuf};
@@ -60,28 +63,110 @@ impl DataScope {
         if !inside {
             return Err(leaves(" through a symbolic link"));
         }
-        let regular = |meta: &std::fs::Metadata| {
-            if !meta.is_file() {
-                Err("not a regular file".to_string())
-            } else if meta.len() > MAX_DATA_FILE_BYTES {
-                Err(too_large(meta.len()))
-            } else {
-                Ok(())
-            }
-        };
-        // Checked before opening, as opening a FIFO would block.
-        regular(&std::fs::metadata(&real).map_err(|e| io_message(&e))?)?;
-        let file = std::fs::File::open(&real).map_err(|e| io_message(&e))?;
-        regular(&file.metadata().map_err(|e| io_message(&e))?)?;
-        let mut bytes = Vec::new();
-        file.take(MAX_DATA_FILE_BYTES + 1)
-            .read_to_end(&mut bytes)
-            .map_err(|e| io_message(&e))?;
-        if bytes.len() as u64 > MAX_DATA_FILE_BYTES {
-            return Err(too_large(bytes.len() as u64));
+        match read_regular(&real, MAX_DATA_FILE_BYTES) {
+            Ok(bytes) => Ok(bytes),
+            Err(Refused::TooLarge(len)) => Err(too_large(len)),
+            Err(Refused::Io(e)) => Err(io_message(&e)),
+            Err(refused) => Err(refused.to_string()),
         }
-        Ok(bytes)
     }
+}
+
+/// Why [`read_regular`] read nothing.
+#[derive(Debug)]
+pub enum Refused {
+    /// The path names a symbolic link, which is not followed.
+    Link,
+    /// The path names something other than a regular file: what it is (`a FIFO`, `a folder`).
+    NotRegular(&'static str),
+    /// The file holds more bytes (at least this many) than the limit.
+    TooLarge(u64),
+    /// Opening or reading failed.
+    Io(std::io::Error),
+}
+
+impl std::fmt::Display for Refused {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Refused::Link => f.write_str("a symbolic link, not followed (expected a regular file)"),
+            Refused::NotRegular(what) => {
+                write!(
+                    f,
+                    "not a regular file (got {what}, expected a regular file)"
+                )
+            }
+            Refused::TooLarge(len) => write!(f, "too large (got {len} bytes)"),
+            Refused::Io(e) => f.write_str(&io_message(e)),
+        }
+    }
+}
+
+/// What a file that is not regular is, for messages: `a folder`, `a FIFO`, …
+pub fn file_kind(file_type: std::fs::FileType) -> &'static str {
+    use std::os::unix::fs::FileTypeExt;
+    if file_type.is_dir() {
+        "a folder"
+    } else if file_type.is_symlink() {
+        "a symbolic link"
+    } else if file_type.is_fifo() {
+        "a FIFO"
+    } else if file_type.is_socket() {
+        "a socket"
+    } else if file_type.is_char_device() {
+        "a character device"
+    } else if file_type.is_block_device() {
+        "a block device"
+    } else if file_type.is_file() {
+        "a regular file"
+    } else {
+        "a special file"
+    }
+}
+
+/// The bytes of the file at `path`, read as untrusted input: only when `path` itself (not a link
+/// it names) is a regular file of at most `limit` bytes. What the path names is checked before
+/// it is opened (opening a FIFO blocks, opening a device may act on it); the file is then opened
+/// without following a link (`O_NOFOLLOW`) or blocking (`O_NONBLOCK`), and the opened file must be
+/// the one checked (same device and inode, still regular), so a swap between the check and the
+/// open is refused too. At most `limit + 1` bytes are ever read.
+pub fn read_regular(path: &Path, limit: u64) -> Result<Vec<u8>, Refused> {
+    use std::os::unix::fs::{MetadataExt, OpenOptionsExt};
+    let checked = std::fs::symlink_metadata(path).map_err(Refused::Io)?;
+    let regular = |meta: &std::fs::Metadata| {
+        if meta.file_type().is_symlink() {
+            Err(Refused::Link)
+        } else if !meta.is_file() {
+            Err(Refused::NotRegular(file_kind(meta.file_type())))
+        } else if meta.len() > limit {
+            Err(Refused::TooLarge(meta.len()))
+        } else {
+            Ok(())
+        }
+    };
+    regular(&checked)?;
+    let file = std::fs::File::options()
+        .read(true)
+        .custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK)
+        .open(path)
+        .map_err(|e| match e.raw_os_error() {
+            Some(libc::ELOOP) => Refused::Link,
+            _ => Refused::Io(e),
+        })?;
+    let opened = file.metadata().map_err(Refused::Io)?;
+    regular(&opened)?;
+    if (opened.dev(), opened.ino()) != (checked.dev(), checked.ino()) {
+        return Err(Refused::Io(std::io::Error::other(
+            "replaced while being opened",
+        )));
+    }
+    let mut bytes = Vec::new();
+    file.take(limit + 1)
+        .read_to_end(&mut bytes)
+        .map_err(Refused::Io)?;
+    if bytes.len() as u64 > limit {
+        return Err(Refused::TooLarge(bytes.len() as u64));
+    }
+    Ok(bytes)
 }
 
 fn too_large(bytes: u64) -> String {

@@ -15,7 +15,7 @@ use std::io::Read;
 /// any scene within the curve caps needs, and small enough that parsing it stays well under 1 GiB.
 pub const MAX_INPUT_BYTES: u64 = 16 << 20;
 
-/// Reads a text file, naming it in the error. Only regular files of at most [`MAX_INPUT_BYTES`]
+/// Reads a text file, naming it in the error; a leading byte order mark is skipped. Only regular files of at most [`MAX_INPUT_BYTES`]
 /// are read: a FIFO or a device is refused before it is opened (opening a FIFO would block).
 pub fn read_file(path: &str) -> Result<String> {
     let meta = std::fs::metadata(path).map_err(|e| Error::io(path, e))?;
@@ -31,7 +31,7 @@ pub fn read_file(path: &str) -> Result<String> {
     }
     let file = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
     let bytes = read_capped(file).map_err(|e| Error::io(path, e))?;
-    String::from_utf8(bytes).map_err(|e| {
+    String::from_utf8(bytes).map(without_bom).map_err(|e| {
         let (line, column) = line_column(&e.as_bytes()[..e.utf8_error().valid_up_to()]);
         Error::Usage(format!(
             "{path}: {line}:{column}: not UTF-8 text (a byte sequence that is not UTF-8 starts here)"
@@ -39,11 +39,11 @@ pub fn read_file(path: &str) -> Result<String> {
     })
 }
 
-/// Standard input as text, at most [`MAX_INPUT_BYTES`] of it; more, or bytes that are not UTF-8,
+/// Standard input as text (a leading byte order mark skipped), at most [`MAX_INPUT_BYTES`] of it; more, or bytes that are not UTF-8,
 /// is an `InvalidData` error saying so.
 pub fn read_stdin() -> std::io::Result<String> {
     let bytes = read_capped(std::io::stdin().lock())?;
-    String::from_utf8(bytes).map_err(|e| {
+    String::from_utf8(bytes).map(without_bom).map_err(|e| {
         let (line, column) = line_column(&e.as_bytes()[..e.utf8_error().valid_up_to()]);
         std::io::Error::new(
             std::io::ErrorKind::InvalidData,
@@ -52,6 +52,16 @@ pub fn read_stdin() -> std::io::Result<String> {
             ),
         )
     })
+}
+
+/// `text` without a leading UTF-8 byte order mark, which some editors write at the start of a
+/// file: an invisible character JSON does not allow, skipped as RFC 8259 permits. Every spec,
+/// `@FILE`, `--pairs` file and standard input goes through here.
+fn without_bom(text: String) -> String {
+    match text.strip_prefix('\u{feff}') {
+        Some(rest) => rest.to_string(),
+        None => text,
+    }
 }
 
 /// Everything `reader` gives, up to [`MAX_INPUT_BYTES`]; a longer input is an `InvalidData`

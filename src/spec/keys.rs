@@ -29,14 +29,16 @@ impl Accepted<'_> {
 /// key (at its second and later occurrences) as a duplicate, and, when `accepted` is given, every
 /// other key outside it as unknown, `(got <value>, expected one of: <listed>)` plus a "did you
 /// mean" when a listed key is near.
+/// Linear in the number of members: the keys seen so far are kept in a hash set.
 pub fn validate(
     members: &[(String, Node)],
     path: &str,
     accepted: Option<&Accepted>,
 ) -> Vec<Problem> {
     let mut problems = Vec::new();
-    for (i, (key, value)) in members.iter().enumerate() {
-        if members[..i].iter().any(|(k, _)| k == key) {
+    let mut seen = std::collections::HashSet::with_capacity(members.len());
+    for (key, value) in members {
+        if !seen.insert(key.as_str()) {
             problems.push(Problem::new(join_key(path, key), duplicate_key(value)));
         } else if let Some(accepted) = accepted.filter(|a| !a.contains(key)) {
             let object = accepted

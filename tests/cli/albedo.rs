@@ -364,3 +364,60 @@ fn dash_o_writes_the_file_and_nothing_on_stdout() {
         .collect();
     assert_eq!(names, ["ggx_E.csv"], "no temporary is left");
 }
+
+#[test]
+fn the_r_0_column_is_the_familys_own_limit_not_always_the_mirror() {
+    // μ = 0, ½, 1 at θ = acos μ.
+    let thetas: Vec<f64> = [0.0f64, 0.5, 1.0].iter().map(|m| m.acos()).collect();
+    let uniform = eval(
+        &[r#"{"ndf":"phong","alpha_p":0,"quantity":"albedo"}"#.to_string()],
+        &thetas,
+    );
+    let uniform: Vec<f64> = uniform.iter().map(|row| row[0]).collect();
+    assert!((uniform[2] - 0.3069).abs() < 1e-4, "{uniform:?}");
+    // Phong's α_p = 0 is in its domain, the uniform lobe; ABC's a₁ → 0 tends to the same lobe.
+    // (Their average tables take the same lobe at r = 0, but a minute to compute at r = 1.)
+    for (args, limit) in [
+        (&["--ndf", "phong", "--map", "r"][..], "alpha_p = 0"),
+        (
+            &["--ndf", "abc", "--fix", "alpha_abc2=1.75"][..],
+            "the uniform lobe",
+        ),
+    ] {
+        let mut all = args.to_vec();
+        all.extend(["--size", "3"]);
+        let table = albedo(&all);
+        let (r, e) = (table.column("r"), table.column("E"));
+        let column: Vec<f64> = table
+            .rows
+            .iter()
+            .filter(|row| row[r] == 0.0)
+            .map(|row| row[e])
+            .collect();
+        for (value, expected) in column.iter().zip(&uniform) {
+            assert!((value - expected).abs() <= 1e-10, "{args:?}: {column:?}");
+        }
+        assert!(
+            table.meta("limits").contains(limit),
+            "{args:?}: {}",
+            table.meta("limits")
+        );
+    }
+    // GTR with γ < 1 tends to a lobe ∝ sin^(−2γ) θ, not the mirror: refused, not a wrong 1.
+    let out = ndfplot(&[
+        "albedo",
+        "--ndf",
+        "gtr",
+        "--fix",
+        "gamma_gtr=0.5",
+        "--size",
+        "2",
+    ]);
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.starts_with("error: --fix: gamma_gtr: no limit at r = 0"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty());
+}

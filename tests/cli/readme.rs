@@ -8,7 +8,7 @@
 //!   command prints (standard output and standard error together, in the order written). Every
 //!   command of a block runs, in order, in one `sh` whose working directory is a fresh folder that
 //!   holds the repository's files (`configs/`, `examples/`, `tests/data/`, … as links; `plots/` a
-//!   folder of links to the committed outputs, so that commands writing there replace a link and
+//!   folder of hard links to the committed outputs, so that commands writing there replace a link and
 //!   never the repository's file), with the built binary's folder first on `PATH` and `LC_ALL=C`
 //!   (so that `seq` and `printf` write `0.05`, never `0,05`). So `cd`, files a command writes and
 //!   files an earlier command of the block wrote behave as on a fresh clone. Commands write only into
@@ -97,7 +97,7 @@ fn steps(block: &Block) -> Vec<Step> {
 }
 
 /// A fresh folder holding links to the repository's files: one per top-level entry but `.git`,
-/// `target` and `plots`, and `plots/` a real folder of links to the committed outputs.
+/// `target` and `plots`, and `plots/` a real folder of hard links to the committed outputs.
 fn workspace(name: &str) -> PathBuf {
     let dir = scratch(name);
     let link = |from: &Path, to: &Path| std::os::unix::fs::symlink(from, to).unwrap();
@@ -109,9 +109,18 @@ fn workspace(name: &str) -> PathBuf {
         }
         if name == "plots" {
             std::fs::create_dir(dir.join("plots")).unwrap();
+            // Hard links (copies across file systems), as `render --check plots` reads no
+            // symbolic link; a command writing there renames over the link, never into the file.
             for output in std::fs::read_dir(entry.path()).unwrap() {
                 let output = output.unwrap();
-                link(&output.path(), &dir.join("plots").join(output.file_name()));
+                let to = dir.join("plots").join(output.file_name());
+                if output.file_type().unwrap().is_file() {
+                    if std::fs::hard_link(output.path(), &to).is_err() {
+                        std::fs::copy(output.path(), &to).unwrap();
+                    }
+                } else {
+                    link(&output.path(), &to);
+                }
             }
         } else {
             link(&entry.path(), &dir.join(&name));

@@ -800,3 +800,434 @@ fn inputs_over_the_size_cap_are_refused_by_name() {
     }
     assert!(files_in(&out).is_empty(), "nothing written");
 }
+
+/// What a planted link or file must never bring to the output: set in the environment of the
+/// checking run (so `/proc/self/environ` holds it) and written in a file outside the checked folder.
+const PLANTED: &str = "planted-secret-7f3a";
+
+/// Runs `render SPEC --check PLOTS` with [`PLANTED`] in its environment; fails the test if it runs
+/// for more than 30 s (a FIFO in the folder must not block it).
+fn check_hostile(spec: &Path, plots: &Path) -> Output {
+    let child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .args([
+            "render",
+            spec.to_str().unwrap(),
+            "--check",
+            plots.to_str().unwrap(),
+        ])
+        .env("NDFPLOT_PLANTED", PLANTED)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    finish_within(child, Duration::from_secs(30), "render --check")
+}
+
+/// Whether the tests run as root, who alone may create device nodes.
+fn is_root() -> bool {
+    std::fs::read_to_string("/proc/self/status").is_ok_and(|s| {
+        s.lines()
+            .any(|l| l.starts_with("Uid:") && l.split_whitespace().nth(1) == Some("0"))
+    })
+}
+
+#[test]
+fn render_check_reads_only_regular_files_in_its_folder_and_names_what_it_refuses() {
+    let (spec, plots) = rendered("check-hostile");
+    let csv = plots.join("checked.csv");
+    let svg = plots.join("checked.svg");
+    let outside = plots.parent().unwrap().join("outside.csv");
+    std::fs::write(&outside, format!("{PLANTED}\n")).unwrap();
+    let passwd_first_line = std::fs::read_to_string("/etc/passwd")
+        .ok()
+        .and_then(|t| t.lines().next().map(str::to_string));
+    let refused = |what: &str, name: &str, needle: &str| {
+        let out = check_hostile(&spec, &plots);
+        let (stdout, stderr) = (text(&out.stdout), text(&out.stderr));
+        assert_eq!(out.status.code(), Some(2), "{what}: {stdout}{stderr}");
+        assert!(
+            stderr.contains(name) && stderr.contains(needle),
+            "{what}: {stderr}"
+        );
+        let all = stdout + &stderr;
+        assert!(!all.contains(PLANTED), "{what}: {all}");
+        if let Some(line) = &passwd_first_line {
+            assert!(!all.contains(line.as_str()), "{what}: {all}");
+        }
+    };
+    std::fs::rename(&csv, plots.join("kept")).unwrap();
+    for target in [
+        Path::new("/proc/self/environ"),
+        Path::new("/etc/passwd"),
+        &outside,
+    ] {
+        std::os::unix::fs::symlink(target, &csv).unwrap();
+        refused(
+            &format!("a link to {}", target.display()),
+            "checked.csv",
+            "symbolic link",
+        );
+        std::fs::remove_file(&csv).unwrap();
+    }
+    assert!(Command::new("mkfifo").arg(&csv).status().unwrap().success());
+    refused("a FIFO", "checked.csv", "not a regular file");
+    std::fs::remove_file(&csv).unwrap();
+    std::fs::create_dir(&csv).unwrap();
+    refused("a folder", "checked.csv", "not a regular file");
+    std::fs::remove_dir(&csv).unwrap();
+    if is_root() {
+        // /dev/zero's numbers: reading it would never end.
+        let made = Command::new("mknod")
+            .arg(&csv)
+            .args(["c", "1", "5"])
+            .status();
+        assert!(made.unwrap().success());
+        refused("a device", "checked.csv", "not a regular file");
+        std::fs::remove_file(&csv).unwrap();
+    } else {
+        eprintln!("note: not root, so no device node was planted in the checked folder");
+    }
+    // The stored SVG is read through the same door.
+    std::fs::rename(plots.join("kept"), &csv).unwrap();
+    std::os::unix::fs::symlink(&outside, &svg).unwrap();
+    refused("an SVG linked out", "checked.svg", "symbolic link");
+    std::fs::remove_file(&svg).unwrap();
+    assert_eq!(check_hostile(&spec, &plots).status.code(), Some(0));
+}
+
+#[test]
+fn render_check_quotes_stored_text_only_in_short_escaped_excerpts_and_bounds_what_it_reads() {
+    let (spec, plots) = rendered("check-echo");
+    let csv = plots.join("checked.csv");
+    let original = std::fs::read_to_string(&csv).unwrap();
+    let long = "L".repeat(500);
+    let first_row = original.lines().nth(1).unwrap().to_string();
+    let first_curve = first_row.split(",0.0,").next().unwrap().to_string();
+    for (what, stored) in [
+        (
+            "a header",
+            format!(
+                "panel,series,curve,x,\x1b[2J{long}\n{}",
+                &original[original.find('\n').unwrap() + 1..]
+            ),
+        ),
+        (
+            "a curve cell",
+            original.replacen(&first_curve, &format!("0,0,\x1b]0;owned\x07{long}"), 1),
+        ),
+        (
+            "an index cell",
+            original.replacen(
+                &first_row,
+                &first_row.replacen('0', &format!("\x1b[31m{long}"), 1),
+                1,
+            ),
+        ),
+        (
+            "a value cell",
+            original.replacen(
+                &first_row,
+                &format!("{first_curve},0.0,\u{202e}\x1b[8m{long}"),
+                1,
+            ),
+        ),
+    ] {
+        std::fs::write(&csv, &stored).unwrap();
+        std::fs::write(plots.join("evil\x1b[2J\u{7}.csv"), "").unwrap();
+        let out = check_hostile(&spec, &plots);
+        let all = text(&out.stdout) + &text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{what}: {all}");
+        assert!(
+            !all.contains(&long)
+                && !all.chars().any(|c| c.is_control() && c != '\n')
+                && !all.contains('\u{202e}'),
+            "{what}: {all:?}"
+        );
+        assert!(
+            all.contains("evil\\u001b[2J\\u0007.csv: extra in"),
+            "{what}: {all}"
+        );
+        assert!(
+            all.lines().all(|l| l.chars().count() < 400),
+            "{what}: {all}"
+        );
+    }
+    // A stored file far larger than any that could match is a difference, not read.
+    std::fs::write(&csv, "").unwrap();
+    std::fs::File::options()
+        .write(true)
+        .open(&csv)
+        .unwrap()
+        .set_len(64 << 20)
+        .unwrap();
+    let out = check_hostile(&spec, &plots);
+    let stdout = text(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{stdout}{}", text(&out.stderr));
+    assert!(
+        stdout.contains("checked.csv: stored file too large to match") && stdout.len() < 4096,
+        "{}",
+        &stdout[..stdout.len().min(4096)]
+    );
+}
+
+/// Runs the binary with `args` in the working directory `dir`, killed after 60 s.
+fn run_in(dir: &Path, args: &[&str]) -> Output {
+    let child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    finish_within(child, Duration::from_secs(60), &args.join(" "))
+}
+
+#[test]
+fn no_writer_replaces_what_is_not_a_regular_file() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = scratch("robustness-special-targets");
+    std::fs::write(dir.join("spec.json"), SPEC).unwrap();
+    let fifo = |path: &Path| assert!(Command::new("mkfifo").arg(path).status().unwrap().success());
+    // Each special file, planted where an output goes; (description, plant, still-there check).
+    let mut planted: Vec<(&str, Box<dyn Fn(&Path)>, fn(&std::fs::FileType) -> bool)> = vec![
+        ("a FIFO", Box::new(fifo), |t| t.is_fifo()),
+        (
+            "a folder",
+            Box::new(|p: &Path| std::fs::create_dir(p).unwrap()),
+            |t| t.is_dir(),
+        ),
+        (
+            "a socket",
+            Box::new(|p: &Path| {
+                std::mem::forget(std::os::unix::net::UnixListener::bind(p).unwrap())
+            }),
+            |t| t.is_socket(),
+        ),
+    ];
+    if is_root() {
+        planted.push((
+            "a character device",
+            Box::new(|p: &Path| {
+                // /dev/null's numbers.
+                let made = Command::new("mknod").arg(p).args(["c", "1", "3"]).status();
+                assert!(made.unwrap().success());
+            }),
+            |t| t.is_char_device(),
+        ));
+    } else {
+        eprintln!("note: not root, so no device node was planted where an output goes");
+    }
+    for (i, (what, plant, still)) in planted.iter().enumerate() {
+        let out_dir = dir.join(format!("out-{i}"));
+        std::fs::create_dir(&out_dir).unwrap();
+        let cases: [(&str, Vec<String>, &str); 3] = [
+            (
+                "table.csv",
+                ["albedo", "--size", "2", "-o", "OUT/table.csv"]
+                    .map(String::from)
+                    .to_vec(),
+                "-o",
+            ),
+            (
+                "checked.csv",
+                ["render", "spec.json", "-o", "OUT", "--format", "svg,csv"]
+                    .map(String::from)
+                    .to_vec(),
+                "-o",
+            ),
+            (
+                "ndfplot-render.1",
+                ["man", "--dir", "OUT"].map(String::from).to_vec(),
+                "--dir",
+            ),
+        ];
+        for (name, args, flag) in cases {
+            let target = out_dir.join(name);
+            plant(&target);
+            let args: Vec<String> = args
+                .iter()
+                .map(|a| a.replace("OUT", out_dir.to_str().unwrap()))
+                .collect();
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            let out = run_in(&dir, &args);
+            let err = text(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{what} at {name}: {err}");
+            assert!(
+                err.contains(&format!(
+                    "error: {flag}: {}: not a regular file",
+                    target.display()
+                )) && err.contains(what),
+                "{what} at {name}: {err}"
+            );
+            let kind = std::fs::symlink_metadata(&target).unwrap().file_type();
+            assert!(still(&kind), "{what} at {name} was replaced");
+            assert_eq!(
+                files_in(&out_dir),
+                [name],
+                "{what} at {name}: wrote beside it"
+            );
+            let _ = std::fs::remove_file(&target).or_else(|_| std::fs::remove_dir(&target));
+        }
+    }
+}
+
+#[test]
+fn dash_is_standard_output_or_refused_never_a_file_named_dash() {
+    let dir = scratch("robustness-dash");
+    let out = run_in(&dir, &["albedo", "--size", "2", "-o", "-"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(text(&out.stdout).contains("mu,r,alpha,E,turquin_f0_1"));
+    for (args, flag) in [
+        (&["man", "--dir", "-"][..], "--dir"),
+        (&["bench", "-o", "-"][..], "-o"),
+        (&["render", "--check", "-"][..], "--check"),
+    ] {
+        let out = run_in(&dir, args);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.starts_with(&format!("error: {flag}: - is not a folder")),
+            "{args:?}: {err}"
+        );
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+    assert!(files_in(&dir).is_empty(), "wrote {:?}", files_in(&dir));
+}
+
+#[test]
+fn objects_with_two_hundred_thousand_keys_are_checked_in_linear_time() {
+    // Checking keys pairwise took 27 s for 100 000 keys here and 4 times that for 200 000.
+    let dir = scratch("robustness-many-keys");
+    let n = 200_000;
+    let keys: String = (0..n).map(|i| format!(r#","k{i}":0"#)).collect();
+    let spec = dir.join("keys.json");
+    std::fs::write(
+        &spec,
+        format!(
+            r#"{{"id":"keys"{keys},"panels":[{{"curves":[{{"ndf":"beckmann","alpha_b":0.5{keys},"k7":1}}]}}]}}"#
+        ),
+    )
+    .unwrap();
+    let pairs = dir.join("pairs.jsonl");
+    std::fs::write(
+        &pairs,
+        format!(
+            r#"{{"a":{{"ndf":"beckmann","alpha_b":0.5}},"b":{{"ndf":"ggx","alpha_tr":0.5}}{keys}}}"#
+        ),
+    )
+    .unwrap();
+    let limit = Duration::from_secs(20);
+    let start = Instant::now();
+    let out = run_in(&dir, &["render", "keys.json", "-o", "out"]);
+    let err = text(&out.stderr);
+    assert!(start.elapsed() < limit, "render took {:?}", start.elapsed());
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.starts_with("error: keys.json: k0: unknown key (got 0, expected one of: $schema, id,"),
+        "{}",
+        &err[..err.len().min(600)]
+    );
+    assert!(
+        err.contains(&format!(
+            "keys.json: {} more problems not shown",
+            2 * n + 1 - 100
+        )),
+        "{}",
+        &err[err.len().saturating_sub(600)..]
+    );
+    let start = Instant::now();
+    let out = run_in(&dir, &["compare", "--pairs", "pairs.jsonl"]);
+    let err = text(&out.stderr);
+    assert!(
+        start.elapsed() < limit,
+        "compare took {:?}",
+        start.elapsed()
+    );
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("pairs.jsonl:1: k0: unknown key for a pair (got 0, expected one of: a, b, target, fit, residual, metric)"),
+        "{}",
+        &err[..err.len().min(600)]
+    );
+}
+
+#[test]
+fn a_leading_utf8_byte_order_mark_is_skipped_on_every_json_input() {
+    const BOM: &str = "\u{feff}";
+    let dir = scratch("robustness-bom");
+    std::fs::write(dir.join("spec.json"), format!("{BOM}{SPEC}")).unwrap();
+    let curve = r#"{"ndf": "beckmann", "alpha_b": 0.5}"#;
+    std::fs::write(dir.join("curve.json"), format!("{BOM}{curve}\n")).unwrap();
+    std::fs::write(
+        dir.join("pairs.jsonl"),
+        format!("{BOM}{{\"a\": {curve}, \"b\": {curve}}}\n"),
+    )
+    .unwrap();
+    let run = |args: &[&str], stdin: &str| {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+            .args(args)
+            .current_dir(&dir)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        use std::io::Write;
+        child
+            .stdin
+            .take()
+            .unwrap()
+            .write_all(stdin.as_bytes())
+            .unwrap();
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{args:?}: {}",
+            text(&out.stderr)
+        );
+        text(&out.stdout)
+    };
+    run(&["render", "spec.json", "-o", "out", "--format", "csv"], "");
+    run(
+        &["render", "-", "-o", "stdin", "--format", "csv"],
+        &format!("{BOM}{SPEC}"),
+    );
+    assert_eq!(
+        std::fs::read(dir.join("out/checked.csv")).unwrap(),
+        std::fs::read(dir.join("stdin/checked.csv")).unwrap()
+    );
+    let value = run(&["eval", "--curve", "@curve.json", "--theta", "0"], "");
+    assert_eq!(
+        value,
+        run(
+            &["eval", "--curve", "-", "--theta", "0"],
+            &format!("{BOM}{curve}\n")
+        )
+    );
+    assert!(
+        run(
+            &["compare", "--pairs", "pairs.jsonl", "--format", "csv"],
+            ""
+        )
+        .lines()
+        .count()
+            == 2
+    );
+    assert!(
+        run(
+            &["compare", "--pairs", "-", "--format", "csv"],
+            &format!("{BOM}{{\"a\": {curve}, \"b\": {curve}}}\n")
+        )
+        .lines()
+        .count()
+            == 2
+    );
+    let fit = run(
+        &["fit", "--target", "-", "--family", "ggx", "--format", "csv"],
+        &format!("{BOM}{curve}\n"),
+    );
+    assert!(fit.contains("trowbridge_reitz"), "{fit}");
+}

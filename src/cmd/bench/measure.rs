@@ -606,7 +606,7 @@ pub fn ggx_albedo_table() -> Result<AlbedoTable, QuadError> {
         CYCLES_TABLE_SIZE,
         CYCLES_TABLE_SIZE,
         RoughnessMap::Squared,
-        ggx_surface,
+        |alpha| (alpha > 0.0).then(|| ggx_surface(alpha)),
         None,
         None,
     )

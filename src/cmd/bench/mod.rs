@@ -31,11 +31,14 @@ const CANVAS: Canvas = Canvas {
 const ERROR_FLOOR: f64 = 1e-17;
 /// Colours of the normalization routes and throughput methods (Solarized accents, as the catalogue).
 const PALETTE: [u32; 6] = [0x268BD2, 0xDC322F, 0x859900, 0xB58900, 0x6C71C4, 0x2AA198];
+/// The files a run writes into its folder.
+const OUTPUTS: [&str; 3] = ["bench.csv", "bench.svg", "bench.png"];
 
 /// Runs every measurement with the system clock and writes the CSV and the figure into `dir`;
 /// an output folder that cannot be written fails before anything is measured.
 pub fn run(dir: &Path) -> Result<Vec<PathBuf>> {
-    write::check_writable(dir)?;
+    write::refuse_dash_folder("-o", dir, "bench writes three files")?;
+    write::check_writable("-o", dir, &OUTPUTS)?;
     let rows = measure::run(&measure::SystemClock::new(), &measure::Settings::standard());
     write_outputs(dir, &rows)
 }
@@ -47,6 +50,7 @@ pub fn write_outputs(dir: &Path, rows: &[Row]) -> Result<Vec<PathBuf>> {
     let svg = plot::svg(&figure).map_err(drawing_failed)?;
     let png = plot::png(&figure, &svg).map_err(drawing_failed)?;
     write::write_files(
+        "-o",
         dir,
         &[
             ("bench.csv", measure::csv(rows).into_bytes()),

@@ -112,6 +112,11 @@ impl Distribution for Abc {
         Abc::new(params[0], params[1])
     }
 
+    /// The uniform lobe: (1 + a₁ (1 − cos θ))^{−a₂} → 1 as a₁ → 0, whatever a₂ (N → π).
+    fn zero_limit(_others: &[f64]) -> super::ZeroLimit {
+        super::ZeroLimit::Uniform
+    }
+
     /// D(θ) = (1 + a₁ (1 − cos θ))^{−a₂}/N for θ ∈ [0, π/2], normalized over projected area.
     #[inline]
     fn eval(&self, theta: f64) -> f64 {

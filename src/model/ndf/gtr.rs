@@ -124,6 +124,17 @@ impl Distribution for Gtr {
         Gtr::new(params[0], params[1])
     }
 
+    /// The mirror for γ ≥ 1 (for γ = 1 slowly: c ≈ 1/(π ln α⁻²) → 0). For γ < 1, c → (1 − γ)/π and
+    /// D → (1 − γ)/(π sin^{2γ} θ), a lobe with an integrable peak, not the mirror.
+    fn zero_limit(others: &[f64]) -> super::ZeroLimit {
+        match others.first() {
+            Some(&gamma) if gamma < 1.0 => super::ZeroLimit::Other(
+                "the lobe tends to (1 - gamma_gtr)/(pi sin^(2 gamma_gtr) theta), not the mirror",
+            ),
+            _ => super::ZeroLimit::Mirror,
+        }
+    }
+
     /// D(θ) = c / (α² cos²θ + sin²θ)^γ for θ ∈ [0, π/2], normalized over projected area.
     #[inline]
     fn eval(&self, theta: f64) -> f64 {

@@ -66,12 +66,31 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
     /// (Walter's rational, the Beckmann-equivalent Smith), or `None` if the family has none.
     fn beckmann_equivalent_alpha(&self) -> Option<f64>;
 
+    /// What the lobe tends to as the first parameter tends to 0 from inside its domain, given the
+    /// other parameters `others` (in [`PARAMS`](Self::PARAMS) order, the first left out): the r = 0
+    /// column of an albedo table, where α = r or r² is 0. A fact of the family, not of the table:
+    /// a width parameter's 0 is the mirror (the default), but ABC's a₁ → 0 is the uniform lobe.
+    fn zero_limit(_others: &[f64]) -> ZeroLimit {
+        ZeroLimit::Mirror
+    }
+
     /// D for the interactive page, in JavaScript: an expression that takes the parameter array (in
     /// [`PARAMS`](Self::PARAMS) order) and returns `θ => D(θ)`, in the same stable form and
     /// operation order as [`eval`](Self::eval) (the page's test holds them to 1e-12). It may use
     /// the helpers `maths.js` defines (`PI`, `powi`, `exprel`, `phi`, `upperGammaScaled`,
     /// `integrate`); the page assembles its table of families from the registry.
     const PAGE_FORMULA: &'static str;
+}
+
+/// What a family's lobe tends to as its first parameter tends to 0 ([`Distribution::zero_limit`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ZeroLimit {
+    /// The mirror: every microfacet faces the normal (E = F(θo)).
+    Mirror,
+    /// The uniform lobe D = 1/π, Phong's α_p = 0.
+    Uniform,
+    /// A lobe ndfplot does not evaluate, described for messages.
+    Other(&'static str),
 }
 
 /// The registry: `Variant => module::Type` per family, in docs/maths.md's order. Declares the modules and
@@ -183,6 +202,13 @@ macro_rules! families {
             pub fn example(self) -> &'static [f64] {
                 match self {
                     $(Family::$variant => <$ty as Distribution>::EXAMPLE,)+
+                }
+            }
+
+            /// See [`Distribution::zero_limit`].
+            pub fn zero_limit(self, others: &[f64]) -> ZeroLimit {
+                match self {
+                    $(Family::$variant => <$ty as Distribution>::zero_limit(others),)+
                 }
             }
 

@@ -99,6 +99,11 @@ impl Distribution for Phong {
         Phong::new(params[0])
     }
 
+    /// The uniform lobe, which α_p = 0 is (inside the domain, so a table computes it as it is).
+    fn zero_limit(_others: &[f64]) -> super::ZeroLimit {
+        super::ZeroLimit::Uniform
+    }
+
     /// D(θ) = (α_p + 2)/(2π) · cos^{α_p} θ for θ ∈ [0, π/2], normalized over projected area.
     #[inline]
     fn eval(&self, theta: f64) -> f64 {
