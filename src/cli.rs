@@ -179,6 +179,11 @@ pub struct RenderArgs {
     /// Override every scene's theme: notebook, colour-blind (or color-blind) or dark.
     #[arg(long, value_name = "NAME", value_parser = clap::builder::PossibleValuesParser::new(crate::spec::scene::THEMES))]
     pub theme: Option<String>,
+    /// Exit 1 when the figure lint warns about any figure (the outputs are still written).
+    /// Warnings (`warning: FILE: panels[i]: …`: plot areas squeezed, text overlapping or clipped,
+    /// too few ticks, low contrast, legends alike or not where asked) are printed either way.
+    #[arg(long)]
+    pub strict: bool,
     /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
     /// inside the folder of the spec naming it. Repeatable.
     #[arg(long = "allow-read", value_name = "DIR")]

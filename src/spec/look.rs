@@ -252,7 +252,11 @@ impl Lab {
     /// The sRGB colour of this lightness and hue with the largest chroma up to this one that sRGB
     /// holds (chroma reduced by bisection, so that lightness and hue stay), channels rounded.
     pub fn to_rgb(self) -> Rgb {
-        let inside = |lab: Lab| lab.linear().iter().all(|c| (-1e-9..=1.0 + 1e-9).contains(c));
+        let inside = |lab: Lab| {
+            lab.linear()
+                .iter()
+                .all(|c| (-1e-9..=1.0 + 1e-9).contains(c))
+        };
         if inside(self) {
             return Rgb::of_linear(self.linear());
         }
@@ -316,9 +320,9 @@ pub fn delta_e00(x: Lab, y: Lab) -> f64 {
         0.5 * (h1 + h2)
     };
     let cos = |deg: f64| deg.to_radians().cos();
-    let t = 1.0 - 0.17 * cos(h_mean - 30.0) + 0.24 * cos(2.0 * h_mean)
-        + 0.32 * cos(3.0 * h_mean + 6.0)
-        - 0.20 * cos(4.0 * h_mean - 63.0);
+    let t =
+        1.0 - 0.17 * cos(h_mean - 30.0) + 0.24 * cos(2.0 * h_mean) + 0.32 * cos(3.0 * h_mean + 6.0)
+            - 0.20 * cos(4.0 * h_mean - 63.0);
     let d_theta = 30.0 * (-((h_mean - 275.0) / 25.0).powi(2)).exp();
     let r_c = 2.0 * (pow7(cp_mean) / (pow7(cp_mean) + pow7(25.0))).sqrt();
     let s_l = 1.0 + 0.015 * (l_mean - 50.0).powi(2) / (20.0 + (l_mean - 50.0).powi(2)).sqrt();
@@ -682,17 +686,32 @@ mod tests {
     fn delta_e00_matches_sharmas_test_data() {
         let lab = |l, a, b| Lab { l, a, b };
         for (x, y, expected) in [
-            (lab(50.0, 2.6772, -79.7751), lab(50.0, 0.0, -82.7485), 2.0425),
+            (
+                lab(50.0, 2.6772, -79.7751),
+                lab(50.0, 0.0, -82.7485),
+                2.0425,
+            ),
             (lab(50.0, 0.0, 0.0), lab(50.0, -1.0, 2.0), 2.3669),
             (lab(50.0, 2.5, 0.0), lab(73.0, 25.0, -18.0), 27.1492),
-            (lab(60.2574, -34.0099, 36.2677), lab(60.4626, -34.1751, 39.4387), 1.2644),
+            (
+                lab(60.2574, -34.0099, 36.2677),
+                lab(60.4626, -34.1751, 39.4387),
+                1.2644,
+            ),
         ] {
             let got = delta_e00(x, y);
             assert!((got - expected).abs() < 1e-4, "{x:?} {y:?}: {got}");
             assert!((delta_e00(y, x) - got).abs() < 1e-9);
         }
         let c = Rgb::from_hex(0x3C96DF);
-        assert!(delta_e00(c.lab(), Lab::lch(c.lab().l, c.lab().chroma(), c.lab().hue()).to_rgb().lab()) < 0.5);
+        assert!(
+            delta_e00(
+                c.lab(),
+                Lab::lch(c.lab().l, c.lab().chroma(), c.lab().hue())
+                    .to_rgb()
+                    .lab()
+            ) < 0.5
+        );
     }
 
     /// The least CIEDE2000 difference of neighbouring shades of an n-member sweep of `base`.
@@ -724,12 +743,18 @@ mod tests {
             for n in 2..=12 {
                 let lightness: Vec<f64> = (0..n).map(|k| shade(base, k, n).lab().l).collect();
                 // No near-black: the darkest keeps the floor and its chroma.
-                assert!(lightness[0] >= SWEEP_LIGHTNESS.0 - 0.5, "{family:?} {lightness:?}");
+                assert!(
+                    lightness[0] >= SWEEP_LIGHTNESS.0 - 0.5,
+                    "{family:?} {lightness:?}"
+                );
                 assert!(shade(base, 0, n).lab().chroma() >= 0.6 * base.lab().chroma().min(40.0));
                 // Even steps, to channel rounding.
                 let step = (lightness[n - 1] - lightness[0]) / (n - 1) as f64;
                 for pair in lightness.windows(2) {
-                    assert!((pair[1] - pair[0] - step).abs() < 0.6, "{family:?} n = {n}: {lightness:?}");
+                    assert!(
+                        (pair[1] - pair[0] - step).abs() < 0.6,
+                        "{family:?} n = {n}: {lightness:?}"
+                    );
                 }
             }
         }
