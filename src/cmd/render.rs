@@ -21,6 +21,10 @@ pub fn run(args: RenderArgs, quiet: bool) -> Result<()> {
             png_scale: args.png_scale,
             font_px: args.font_px,
             theme: args.theme.as_deref().map(crate::spec::scene::theme_named),
+            preset: args
+                .preset
+                .as_deref()
+                .and_then(crate::spec::look::Preset::named),
         },
         allow_read: args.allow_read,
     };

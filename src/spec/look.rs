@@ -633,6 +633,9 @@ impl Axes {
 /// Default panel height / width: 1/φ, Mathematica's default `AspectRatio`.
 pub const DEFAULT_ASPECT_RATIO: f64 = 0.618_033_988_749_894_9;
 
+/// Default base font size in CSS pixels.
+pub const DEFAULT_FONT_PX: f64 = 14.0;
+
 /// Extra default canvas height, in CSS pixels, of a figure with a title: room for the title
 /// (1.4 em of the default 14 px font) and its spacing.
 pub const DEFAULT_TITLE_BAND_PX: f64 = 40.0;
@@ -651,6 +654,71 @@ pub fn default_width(cols: usize) -> f64 {
 pub fn default_height(rows: usize, cols: usize, width: f64, aspect: f64, titled: bool) -> f64 {
     let title_band = if titled { DEFAULT_TITLE_BAND_PX } else { 0.0 };
     (rows as f64 * width / cols as f64 * aspect + title_band).round()
+}
+
+/// A paper's figure size in one word: the width of a column or of a page, 8 pt text, 300 dpi.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Preset {
+    /// One column of a two-column paper: 3.3 in wide.
+    PaperColumn,
+    /// A page's text width: 7 in wide.
+    PaperPage,
+}
+
+impl Preset {
+    /// The presets by name, as a spec's `preset` and `render --preset` spell them.
+    pub const NAMES: &'static [(&'static str, Preset)] = &[
+        ("paper-column", Preset::PaperColumn),
+        ("paper-page", Preset::PaperPage),
+    ];
+    /// Text size of every preset, in points: a journal's caption size.
+    pub const FONT_PT: f64 = 8.0;
+    /// PNG resolution of every preset, in pixels per inch: print resolution.
+    pub const DPI: f64 = 300.0;
+    /// Least height of a panel, in inches: at 8 pt, a panel title, the x tick labels and the x
+    /// label take about 0.55 in, and a legend that fits inside no plot a band below the row;
+    /// at 2.2 in every catalogue figure keeps its plots at page width (a test renders them).
+    pub const MIN_PANEL_HEIGHT_IN: f64 = 2.2;
+
+    /// The preset called `name`, if one is.
+    pub fn named(name: &str) -> Option<Preset> {
+        Preset::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, p)| *p)
+    }
+
+    /// The figure's width in inches.
+    pub fn width_in(self) -> f64 {
+        match self {
+            Preset::PaperColumn => 3.3,
+            Preset::PaperPage => 7.0,
+        }
+    }
+
+    /// The canvas of a `rows × cols` figure at this preset: the preset's width, a height from the
+    /// panel rows (each panel `aspect` times as tall as it is wide but at least
+    /// [`Preset::MIN_PANEL_HEIGHT_IN`], plus the title's band at the preset's text size when
+    /// `titled`), [`Preset::FONT_PT`] text and [`Preset::DPI`].
+    pub fn canvas(self, rows: usize, cols: usize, aspect: f64, titled: bool) -> Canvas {
+        let px_per_inch = 96.0;
+        let width = self.width_in() * px_per_inch;
+        let font_px = Preset::FONT_PT * px_per_inch / 72.0;
+        let title_band = if titled {
+            DEFAULT_TITLE_BAND_PX * font_px / DEFAULT_FONT_PX
+        } else {
+            0.0
+        };
+        let panel =
+            (width / cols.max(1) as f64 * aspect).max(Preset::MIN_PANEL_HEIGHT_IN * px_per_inch);
+        let height = rows as f64 * panel + title_band;
+        Canvas {
+            width_px: width.round() as u32,
+            height_px: height.round() as u32,
+            png_scale: Preset::DPI / px_per_inch,
+            font_px,
+        }
+    }
 }
 
 #[cfg(test)]
@@ -777,6 +845,34 @@ mod tests {
             let c = Rgb::from_hex(a.colour());
             assert!(c.contrast(Rgb::WHITE) >= 3.0, "{a:?}");
         }
+    }
+
+    #[test]
+    fn presets_are_a_papers_width_8_pt_and_300_dpi_with_room_for_each_panel_row() {
+        let column =
+            Preset::named("paper-column")
+                .unwrap()
+                .canvas(1, 1, DEFAULT_ASPECT_RATIO, false);
+        assert_eq!(column.width_px, 317); // 3.3 in at 96 px/in, rounded
+        assert!((column.font_px - 8.0 * 96.0 / 72.0).abs() < 1e-12);
+        assert!((column.png_scale * 96.0 - 300.0).abs() < 1e-12);
+        // 3.3 in × 0.618 = 2.04 in is under the least panel height.
+        assert_eq!(
+            column.height_px,
+            (Preset::MIN_PANEL_HEIGHT_IN * 96.0).round() as u32
+        );
+        let tall = Preset::PaperColumn.canvas(1, 1, 1.0, false);
+        assert_eq!(tall.height_px, 317);
+        let page = Preset::PaperPage.canvas(2, 3, DEFAULT_ASPECT_RATIO, true);
+        assert_eq!(page.width_px, 672);
+        // Panels 2.33 in wide would be 1.44 in tall: each row gets the least panel height, and the
+        // title its band at 8 pt.
+        let band = DEFAULT_TITLE_BAND_PX * page.font_px / DEFAULT_FONT_PX;
+        assert_eq!(
+            page.height_px,
+            (2.0 * Preset::MIN_PANEL_HEIGHT_IN * 96.0 + band).round() as u32
+        );
+        assert_eq!(Preset::named("paper"), None);
     }
 
     #[test]
