@@ -185,6 +185,16 @@ pub struct RenderArgs {
     /// Override every scene's theme: notebook, colour-blind (or color-blind) or dark.
     #[arg(long, value_name = "NAME", value_parser = clap::builder::PossibleValuesParser::new(crate::spec::scene::THEMES))]
     pub theme: Option<String>,
+    /// Size every scene for a paper: paper-column (3.3 in wide) or paper-page (7 in wide), 8 pt
+    /// text, 300 dpi, the height from the panel rows; --width, --height, --png-scale and
+    /// --font-px still apply after it.
+    #[arg(long, value_name = "NAME", value_parser = clap::builder::PossibleValuesParser::new(crate::spec::scene::PRESETS))]
+    pub preset: Option<String>,
+    /// Exit 1 when the figure lint warns about any figure (the outputs are still written).
+    /// Warnings (`warning: FILE: panels[i]: …`: plot areas squeezed, text overlapping or clipped,
+    /// too few ticks, low contrast, legends alike or not where asked) are printed either way.
+    #[arg(long)]
+    pub strict: bool,
     /// Also allow data files ({"data": "csv", "path": …}) inside DIR; by default a data path must stay
     /// inside the folder of the spec naming it. Repeatable.
     #[arg(long = "allow-read", value_name = "DIR")]

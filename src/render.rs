@@ -8,7 +8,7 @@
 
 use crate::error::{Error, Result};
 use crate::output::stored;
-use crate::output::{Format, Points, encode_all, write};
+use crate::output::{Format, Points, encode_all_linted, write};
 use crate::pipeline::figure::Figure;
 use crate::pipeline::plan::{Outputs, Plan, plan};
 use crate::pipeline::progress::Progress;
@@ -55,6 +55,9 @@ pub struct RenderStats {
     pub evaluations: usize,
     /// Outputs produced per format (formats with none left out).
     pub produced: BTreeMap<Format, usize>,
+    /// The figure lint's findings on the drawn figures, one line each (`FILE: panels[i]: …`),
+    /// in source order.
+    pub warnings: Vec<String>,
 }
 
 /// [`run`], also returning where the time went.
@@ -78,16 +81,21 @@ pub fn run_with_progress(
 /// them with DIR's ([`stored::compare`]: values at a relative `tolerance`, then the drawing
 /// of figures whose values match); prints every difference, and fails (exit 1) on any. Only CSV
 /// and SVG are encoded, whatever `options.formats` says.
-pub fn check(options: &RenderOptions, dir: &Path, tolerance: f64, quiet: bool) -> Result<()> {
+pub fn check(
+    options: &RenderOptions,
+    dir: &Path,
+    tolerance: f64,
+    quiet: bool,
+) -> Result<Vec<String>> {
     let options = RenderOptions {
         formats: vec![Format::Svg, Format::Csv],
         ..options.clone()
     };
-    let (outputs, _) = encode_outputs(&options, quiet)?;
+    let (outputs, stats) = encode_outputs(&options, quiet)?;
     let (report, ok) = stored::compare(dir, &outputs, tolerance)?;
     crate::output::stdout::print(&report)?;
     if ok {
-        Ok(())
+        Ok(stats.warnings)
     } else {
         Err(Error::CheckFailed(format!(
             "error: render --check: the figures differ from {}",
@@ -161,8 +169,9 @@ fn encode_outputs(options: &RenderOptions, quiet: bool) -> Result<(Files, Render
 
 /// `render -o -`: the one output of `options` — one figure in one format — as bytes, for standard
 /// output. Several formats, several figures, or no output (`html` for a scene without sliders) is a
-/// usage error (exit 2) before anything is written.
-pub fn to_stdout(options: &RenderOptions, quiet: bool) -> Result<Vec<u8>> {
+/// usage error (exit 2) before anything is written. Returns the bytes and the figure lint's
+/// findings.
+pub fn to_stdout(options: &RenderOptions, quiet: bool) -> Result<(Vec<u8>, Vec<String>)> {
     let refuse = |what: String| {
         Err(Error::Usage(format!(
             "-o -: writes one figure in one format to stdout ({what})"
@@ -183,9 +192,9 @@ pub fn to_stdout(options: &RenderOptions, quiet: bool) -> Result<Vec<u8>> {
             sources.len()
         ));
     }
-    let (mut outputs, _) = encode_sources(&sources, options, quiet)?;
+    let (mut outputs, stats) = encode_sources(&sources, options, quiet)?;
     match outputs.pop() {
-        Some((_, bytes)) if outputs.is_empty() => Ok(bytes),
+        Some((_, bytes)) if outputs.is_empty() => Ok((bytes, stats.warnings)),
         _ => refuse(format!(
             "{} has no output in --format {}: html is written only for scenes with sliders",
             sources[0].0,
@@ -246,19 +255,26 @@ fn encode_sources(
             .zip(feeds)
             .map(|((s, p), f)| Figure::assemble(s, p, f, &evaluated))
             .collect();
-        let encoded: Vec<Vec<(Format, String, Vec<u8>)>> = figures
+        type Encoded = (Vec<(Format, String, Vec<u8>)>, Vec<String>);
+        let encoded: Vec<Encoded> = figures
             .par_iter()
-            .map(|fig| {
-                let encoded = encode_all(fig, &formats)?;
+            .zip(sources)
+            .map(|(fig, (source, _, _))| {
+                let (encoded, findings) = encode_all_linted(fig, &formats)?;
                 progress.advance(formats.len() as u64);
-                Ok(encoded
-                    .into_iter()
-                    .map(|(format, bytes)| {
-                        (format, format!("{}.{}", fig.id, format.extension()), bytes)
-                    })
-                    .collect())
+                Ok((
+                    encoded
+                        .into_iter()
+                        .map(|(format, bytes)| {
+                            (format, format!("{}.{}", fig.id, format.extension()), bytes)
+                        })
+                        .collect(),
+                    findings.iter().map(|f| f.line(source)).collect(),
+                ))
             })
             .collect::<Result<_>>()?;
+        let (encoded, warnings): (Vec<_>, Vec<_>) = encoded.into_iter().unzip();
+        stats.warnings.extend(warnings.into_iter().flatten());
         for (format, name, bytes) in encoded.into_iter().flatten() {
             *stats.produced.entry(format).or_default() += 1;
             outputs.push((name, bytes));

@@ -94,13 +94,25 @@ pub fn encode(figure: &Figure, format: Format) -> Result<Option<Vec<u8>>> {
 /// are converted from the figure's SVG, which is drawn once however many of the three are asked
 /// for.
 pub fn encode_all(figure: &Figure, formats: &[Format]) -> Result<Vec<(Format, Vec<u8>)>> {
+    Ok(encode_all_linted(figure, formats)?.0)
+}
+
+/// [`encode_all`], with what the figure lint finds in the drawing when one of `formats` draws
+/// it (SVG, PNG or PDF; none otherwise), from the same drawing.
+pub fn encode_all_linted(
+    figure: &Figure,
+    formats: &[Format],
+) -> Result<(Vec<(Format, Vec<u8>)>, Vec<plot::Finding>)> {
     let plot_error =
         |e: plot::PlotError| Error::Numerics(format!("{}: drawing failed: {e}", figure.id));
     let mut svg: Option<Vec<u8>> = None;
+    let mut findings = Vec::new();
     let mut encoded = Vec::with_capacity(formats.len());
     for &format in formats {
         if matches!(format, Format::Svg | Format::Png | Format::Pdf) && svg.is_none() {
-            svg = Some(plot::svg(figure).map_err(plot_error)?);
+            let (drawn, found) = plot::svg_linted(figure).map_err(plot_error)?;
+            svg = Some(drawn);
+            findings = found;
         }
         let drawn = || svg.as_ref().expect("the SVG is drawn first");
         let bytes = match format {
@@ -116,5 +128,5 @@ pub fn encode_all(figure: &Figure, formats: &[Format]) -> Result<Vec<(Format, Ve
         };
         encoded.extend(bytes.map(|b| (format, b)));
     }
-    Ok(encoded)
+    Ok((encoded, findings))
 }

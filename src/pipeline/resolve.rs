@@ -88,6 +88,7 @@ pub fn scene(spec: Scene<Spec>) -> std::result::Result<Scene, Vec<Problem>> {
         rows: spec.rows,
         cols: spec.cols,
         canvas: spec.canvas,
+        aspect_ratio: spec.aspect_ratio,
         sampling: spec.sampling,
         theme: spec.theme,
         panels,

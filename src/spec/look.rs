@@ -11,9 +11,20 @@ pub struct Rgb(pub u8, pub u8, pub u8);
 /// Largest relative luminance of a curve on a white page: the WCAG contrast (1 + 0.05)/(L + 0.05) is then
 /// at least 3.0 (L ≤ 0.30), with a margin for the rounding of the channels.
 pub const MAX_LUMINANCE_ON_WHITE: f64 = 0.29;
-/// CIE lightness L* of the darkest and of the lightest shade of a sweep on a white page: the lightest has
-/// [`MAX_LUMINANCE_ON_WHITE`] (L* ≈ 60.7), the darkest is still a colour rather than black.
-pub const SWEEP_LIGHTNESS: (f64, f64) = (27.0, 60.5);
+/// CIE lightness L* of the darkest and of the lightest shade of a sweep on a white page: the
+/// ceiling is the lightest a curve may be at 3:1 contrast ([`MAX_LUMINANCE_ON_WHITE`], L* ≈ 60.7);
+/// the floor keeps the darkest shade a colour (its hue and chroma kept) rather than near-black, so
+/// that the dark ends of two families in one panel do not merge.
+pub const SWEEP_LIGHTNESS: (f64, f64) = (30.0, 60.5);
+/// How far a sweep's hue turns from its darkest to its lightest shade, in degrees of CIELAB hue
+/// (cubehelix's idea, kept small so that the family stays recognisable): centred on the base hue,
+/// it adds about 1 ΔE00 per neighbour pair to what lightness alone gives.
+pub const SWEEP_HUE_TURN_DEG: f64 = 30.0;
+/// Largest sweep whose neighbouring shades are at least [`MIN_SHADE_DELTA_E`] apart for every family
+/// colour (measured by a test): the lightness band a hue has on a white page holds no more.
+pub const SWEEP_HELD: usize = 3;
+/// Least CIEDE2000 difference of neighbouring shades of a sweep of up to [`SWEEP_HELD`] members.
+pub const MIN_SHADE_DELTA_E: f64 = 10.0;
 /// Mixing steps searched when a colour is given a luminance: 1/1024 moves a channel by at most a
 /// quarter level, so the channel rounding decides the result.
 const MIX_STEPS: u32 = 1024;
@@ -109,13 +120,239 @@ pub fn luminance_of_lightness(l: f64) -> f64 {
     }
 }
 
-/// The k-th of n shades of a hue, darker (k = 0) to lighter, evenly spaced in CIE lightness over
-/// [`SWEEP_LIGHTNESS`]: the curves of one sweep keep their hue, stay apart in the legend, and each
-/// has at least 3:1 contrast on a white page ([`MAX_LUMINANCE_ON_WHITE`]).
+/// A colour in CIELAB (D65 white, the sRGB primaries): lightness `l` (0 … 100) and the opponent
+/// axes `a` (green − red) and `b` (blue − yellow).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Lab {
+    /// Lightness L*.
+    pub l: f64,
+    /// a*.
+    pub a: f64,
+    /// b*.
+    pub b: f64,
+}
+
+/// D65 white in CIE XYZ (Y = 1), the white point of sRGB.
+const D65: [f64; 3] = [0.950_47, 1.0, 1.088_83];
+/// Linear sRGB → XYZ (IEC 61966-2-1).
+const RGB_TO_XYZ: [[f64; 3]; 3] = [
+    [0.412_456_4, 0.357_576_1, 0.180_437_5],
+    [0.212_672_9, 0.715_152_2, 0.072_175_0],
+    [0.019_333_9, 0.119_192_0, 0.950_304_1],
+];
+/// XYZ → linear sRGB (the inverse of [`RGB_TO_XYZ`]).
+const XYZ_TO_RGB: [[f64; 3]; 3] = [
+    [3.240_454_2, -1.537_138_5, -0.498_531_4],
+    [-0.969_266_0, 1.876_010_8, 0.041_556_0],
+    [0.055_643_4, -0.204_025_9, 1.057_225_2],
+];
+/// Machado, Oliveira and Fernandes 2009, "A physiologically-based model for simulation of color
+/// vision deficiency", Table 1: deuteranopia at severity 1.0, on linear RGB.
+const DEUTERANOPIA: [[f64; 3]; 3] = [
+    [0.367_322, 0.860_646, -0.227_968],
+    [0.280_085, 0.672_501, 0.047_413],
+    [-0.011_820, 0.042_940, 0.968_881],
+];
+
+fn apply(m: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
+    m.map(|row| row[0] * v[0] + row[1] * v[1] + row[2] * v[2])
+}
+
+fn to_linear(c: u8) -> f64 {
+    let c = f64::from(c) / 255.0;
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+fn from_linear(c: f64) -> u8 {
+    let c = c.clamp(0.0, 1.0);
+    let c = if c <= 0.003_130_8 {
+        12.92 * c
+    } else {
+        1.055 * c.powf(1.0 / 2.4) - 0.055
+    };
+    (c * 255.0).round() as u8
+}
+
+impl Rgb {
+    fn linear(self) -> [f64; 3] {
+        [to_linear(self.0), to_linear(self.1), to_linear(self.2)]
+    }
+
+    fn of_linear(v: [f64; 3]) -> Rgb {
+        Rgb(from_linear(v[0]), from_linear(v[1]), from_linear(v[2]))
+    }
+
+    /// The colour in CIELAB.
+    pub fn lab(self) -> Lab {
+        let xyz = apply(&RGB_TO_XYZ, self.linear());
+        let f = |t: f64| {
+            if t > 216.0 / 24389.0 {
+                t.cbrt()
+            } else {
+                (24389.0 / 27.0 * t + 16.0) / 116.0
+            }
+        };
+        let [fx, fy, fz] = [0, 1, 2].map(|i| f(xyz[i] / D65[i]));
+        Lab {
+            l: 116.0 * fy - 16.0,
+            a: 500.0 * (fx - fy),
+            b: 200.0 * (fy - fz),
+        }
+    }
+
+    /// How a deuteranope sees this colour (Machado et al. 2009, severity 1.0).
+    pub fn deuteranopia(self) -> Rgb {
+        Rgb::of_linear(apply(&DEUTERANOPIA, self.linear()))
+    }
+}
+
+impl Lab {
+    /// The colour of lightness `l`, chroma `c` and hue `h` (degrees).
+    pub fn lch(l: f64, c: f64, h: f64) -> Lab {
+        let h = h.to_radians();
+        Lab {
+            l,
+            a: c * h.cos(),
+            b: c * h.sin(),
+        }
+    }
+
+    /// Chroma C* = √(a² + b²).
+    pub fn chroma(self) -> f64 {
+        self.a.hypot(self.b)
+    }
+
+    /// Hue angle in degrees, 0 … 360.
+    pub fn hue(self) -> f64 {
+        self.b.atan2(self.a).to_degrees().rem_euclid(360.0)
+    }
+
+    /// Linear sRGB of this colour, possibly outside [0, 1].
+    fn linear(self) -> [f64; 3] {
+        let fy = (self.l + 16.0) / 116.0;
+        let finv = |t: f64| {
+            if t.powi(3) > 216.0 / 24389.0 {
+                t.powi(3)
+            } else {
+                (116.0 * t - 16.0) * 27.0 / 24389.0
+            }
+        };
+        let xyz = [
+            finv(fy + self.a / 500.0) * D65[0],
+            finv(fy) * D65[1],
+            finv(fy - self.b / 200.0) * D65[2],
+        ];
+        apply(&XYZ_TO_RGB, xyz)
+    }
+
+    /// The sRGB colour of this lightness and hue with the largest chroma up to this one that sRGB
+    /// holds (chroma reduced by bisection, so that lightness and hue stay), channels rounded.
+    pub fn to_rgb(self) -> Rgb {
+        let inside = |lab: Lab| {
+            lab.linear()
+                .iter()
+                .all(|c| (-1e-9..=1.0 + 1e-9).contains(c))
+        };
+        if inside(self) {
+            return Rgb::of_linear(self.linear());
+        }
+        let (c, h) = (self.chroma(), self.hue());
+        let (mut lo, mut hi) = (0.0, c);
+        for _ in 0..40 {
+            let mid = 0.5 * (lo + hi);
+            if inside(Lab::lch(self.l, mid, h)) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Rgb::of_linear(Lab::lch(self.l, lo, h).linear())
+    }
+}
+
+/// CIEDE2000 colour difference of `x` and `y` (Sharma, Wu and Dalal 2005, with kL = kC = kH = 1):
+/// about 1 is a just-noticeable difference; 10 tells two curves apart at a glance.
+pub fn delta_e00(x: Lab, y: Lab) -> f64 {
+    let pow7 = |v: f64| v.powi(7);
+    let c_mean = 0.5 * (x.chroma() + y.chroma());
+    let g = 0.5 * (1.0 - (pow7(c_mean) / (pow7(c_mean) + pow7(25.0))).sqrt());
+    let prime = |lab: Lab| {
+        let a = (1.0 + g) * lab.a;
+        let c = a.hypot(lab.b);
+        let h = if c == 0.0 {
+            0.0
+        } else {
+            lab.b.atan2(a).to_degrees().rem_euclid(360.0)
+        };
+        (c, h)
+    };
+    let ((c1, h1), (c2, h2)) = (prime(x), prime(y));
+    let dl = y.l - x.l;
+    let dc = c2 - c1;
+    let dh = if c1 * c2 == 0.0 {
+        0.0
+    } else {
+        let d = h2 - h1;
+        if d > 180.0 {
+            d - 360.0
+        } else if d < -180.0 {
+            d + 360.0
+        } else {
+            d
+        }
+    };
+    let dh_big = 2.0 * (c1 * c2).sqrt() * (dh / 2.0).to_radians().sin();
+    let l_mean = 0.5 * (x.l + y.l);
+    let cp_mean = 0.5 * (c1 + c2);
+    let h_mean = if c1 * c2 == 0.0 {
+        h1 + h2
+    } else if (h1 - h2).abs() > 180.0 {
+        if h1 + h2 < 360.0 {
+            0.5 * (h1 + h2 + 360.0)
+        } else {
+            0.5 * (h1 + h2 - 360.0)
+        }
+    } else {
+        0.5 * (h1 + h2)
+    };
+    let cos = |deg: f64| deg.to_radians().cos();
+    let t =
+        1.0 - 0.17 * cos(h_mean - 30.0) + 0.24 * cos(2.0 * h_mean) + 0.32 * cos(3.0 * h_mean + 6.0)
+            - 0.20 * cos(4.0 * h_mean - 63.0);
+    let d_theta = 30.0 * (-((h_mean - 275.0) / 25.0).powi(2)).exp();
+    let r_c = 2.0 * (pow7(cp_mean) / (pow7(cp_mean) + pow7(25.0))).sqrt();
+    let s_l = 1.0 + 0.015 * (l_mean - 50.0).powi(2) / (20.0 + (l_mean - 50.0).powi(2)).sqrt();
+    let s_c = 1.0 + 0.045 * cp_mean;
+    let s_h = 1.0 + 0.015 * cp_mean * t;
+    let r_t = -(2.0 * d_theta).to_radians().sin() * r_c;
+    let (l, c, h) = (dl / s_l, dc / s_c, dh_big / s_h);
+    (l * l + c * c + h * h + r_t * c * h).sqrt()
+}
+
+/// The k-th of n shades of a hue, darker (k = 0) to lighter: CIE lightness evenly spaced over
+/// [`SWEEP_LIGHTNESS`], the base's chroma kept as far as sRGB holds it at that lightness, the hue
+/// turning by [`SWEEP_HUE_TURN_DEG`] across the sweep. The curves of one sweep keep their family's
+/// hue, stay apart (at least [`MIN_SHADE_DELTA_E`] between neighbours up to [`SWEEP_HELD`]
+/// members), none is near-black, and each has at least 3:1 contrast on a white page
+/// ([`MAX_LUMINANCE_ON_WHITE`]).
 pub fn shade(base: Rgb, k: usize, n: usize) -> Rgb {
     let (dark, light) = SWEEP_LIGHTNESS;
-    let l = dark + (light - dark) * k as f64 / (n - 1).max(1) as f64;
-    base.with_luminance(luminance_of_lightness(l))
+    let t = k as f64 / (n - 1).max(1) as f64;
+    let lab = base.lab();
+    let hue = lab.hue() + SWEEP_HUE_TURN_DEG * (t - 0.5);
+    let mut l = dark + (light - dark) * t;
+    loop {
+        let colour = Lab::lch(l, lab.chroma(), hue).to_rgb();
+        if colour.luminance() <= MAX_LUMINANCE_ON_WHITE || l <= dark {
+            return colour;
+        }
+        // Channel rounding took the lightest shade over the contrast bound: a little darker.
+        l -= 0.1;
+    }
 }
 
 /// Line pattern of a series.
@@ -396,6 +633,9 @@ impl Axes {
 /// Default panel height / width: 1/φ, Mathematica's default `AspectRatio`.
 pub const DEFAULT_ASPECT_RATIO: f64 = 0.618_033_988_749_894_9;
 
+/// Default base font size in CSS pixels.
+pub const DEFAULT_FONT_PX: f64 = 14.0;
+
 /// Extra default canvas height, in CSS pixels, of a figure with a title: room for the title
 /// (1.4 em of the default 14 px font) and its spacing.
 pub const DEFAULT_TITLE_BAND_PX: f64 = 40.0;
@@ -414,6 +654,71 @@ pub fn default_width(cols: usize) -> f64 {
 pub fn default_height(rows: usize, cols: usize, width: f64, aspect: f64, titled: bool) -> f64 {
     let title_band = if titled { DEFAULT_TITLE_BAND_PX } else { 0.0 };
     (rows as f64 * width / cols as f64 * aspect + title_band).round()
+}
+
+/// A paper's figure size in one word: the width of a column or of a page, 8 pt text, 300 dpi.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Preset {
+    /// One column of a two-column paper: 3.3 in wide.
+    PaperColumn,
+    /// A page's text width: 7 in wide.
+    PaperPage,
+}
+
+impl Preset {
+    /// The presets by name, as a spec's `preset` and `render --preset` spell them.
+    pub const NAMES: &'static [(&'static str, Preset)] = &[
+        ("paper-column", Preset::PaperColumn),
+        ("paper-page", Preset::PaperPage),
+    ];
+    /// Text size of every preset, in points: a journal's caption size.
+    pub const FONT_PT: f64 = 8.0;
+    /// PNG resolution of every preset, in pixels per inch: print resolution.
+    pub const DPI: f64 = 300.0;
+    /// Least height of a panel, in inches: at 8 pt, a panel title, the x tick labels and the x
+    /// label take about 0.55 in, and a legend that fits inside no plot a band below the row;
+    /// at 2.2 in every catalogue figure keeps its plots at page width (a test renders them).
+    pub const MIN_PANEL_HEIGHT_IN: f64 = 2.2;
+
+    /// The preset called `name`, if one is.
+    pub fn named(name: &str) -> Option<Preset> {
+        Preset::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, p)| *p)
+    }
+
+    /// The figure's width in inches.
+    pub fn width_in(self) -> f64 {
+        match self {
+            Preset::PaperColumn => 3.3,
+            Preset::PaperPage => 7.0,
+        }
+    }
+
+    /// The canvas of a `rows × cols` figure at this preset: the preset's width, a height from the
+    /// panel rows (each panel `aspect` times as tall as it is wide but at least
+    /// [`Preset::MIN_PANEL_HEIGHT_IN`], plus the title's band at the preset's text size when
+    /// `titled`), [`Preset::FONT_PT`] text and [`Preset::DPI`].
+    pub fn canvas(self, rows: usize, cols: usize, aspect: f64, titled: bool) -> Canvas {
+        let px_per_inch = 96.0;
+        let width = self.width_in() * px_per_inch;
+        let font_px = Preset::FONT_PT * px_per_inch / 72.0;
+        let title_band = if titled {
+            DEFAULT_TITLE_BAND_PX * font_px / DEFAULT_FONT_PX
+        } else {
+            0.0
+        };
+        let panel =
+            (width / cols.max(1) as f64 * aspect).max(Preset::MIN_PANEL_HEIGHT_IN * px_per_inch);
+        let height = rows as f64 * panel + title_band;
+        Canvas {
+            width_px: width.round() as u32,
+            height_px: height.round() as u32,
+            png_scale: Preset::DPI / px_per_inch,
+            font_px,
+        }
+    }
 }
 
 #[cfg(test)]
@@ -442,6 +747,132 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Sharma, Wu and Dalal 2005, Table 1: pairs 1, 7, 17 and 25 of the CIEDE2000 test data.
+    #[test]
+    fn delta_e00_matches_sharmas_test_data() {
+        let lab = |l, a, b| Lab { l, a, b };
+        for (x, y, expected) in [
+            (
+                lab(50.0, 2.6772, -79.7751),
+                lab(50.0, 0.0, -82.7485),
+                2.0425,
+            ),
+            (lab(50.0, 0.0, 0.0), lab(50.0, -1.0, 2.0), 2.3669),
+            (lab(50.0, 2.5, 0.0), lab(73.0, 25.0, -18.0), 27.1492),
+            (
+                lab(60.2574, -34.0099, 36.2677),
+                lab(60.4626, -34.1751, 39.4387),
+                1.2644,
+            ),
+        ] {
+            let got = delta_e00(x, y);
+            assert!((got - expected).abs() < 1e-4, "{x:?} {y:?}: {got}");
+            assert!((delta_e00(y, x) - got).abs() < 1e-9);
+        }
+        let c = Rgb::from_hex(0x3C96DF);
+        assert!(
+            delta_e00(
+                c.lab(),
+                Lab::lch(c.lab().l, c.lab().chroma(), c.lab().hue())
+                    .to_rgb()
+                    .lab()
+            ) < 0.5
+        );
+    }
+
+    /// The least CIEDE2000 difference of neighbouring shades of an n-member sweep of `base`.
+    fn least_neighbour_delta(base: Rgb, n: usize) -> f64 {
+        (0..n - 1)
+            .map(|k| delta_e00(shade(base, k, n).lab(), shade(base, k + 1, n).lab()))
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    #[test]
+    fn sweep_shades_are_apart_even_and_never_near_black() {
+        // Measured (least neighbour ΔE00 over the seven families): n = 3: ≥ 13.9, n = 4: ≥ 9.0,
+        // n = 5: ≥ 6.6, no shade below L* = 30 and the darkest keeping its chroma. Before (mixed
+        // towards black down to L* = 27, the darkest near-black): n = 3: 14.6, n = 4: 9.4, n = 5: 6.8.
+        let mut report = Vec::new();
+        for family in Family::ALL {
+            let base = Rgb::from_hex(family.colour());
+            for n in 2..=SWEEP_HELD {
+                let least = least_neighbour_delta(base, n);
+                assert!(least >= MIN_SHADE_DELTA_E, "{family:?} n = {n}: {least:.1}");
+            }
+            report.push(format!(
+                "{family:?}: {:.1} {:.1} {:.1}",
+                least_neighbour_delta(base, 3),
+                least_neighbour_delta(base, 4),
+                least_neighbour_delta(base, 5)
+            ));
+            assert!(least_neighbour_delta(base, 4) >= 8.0, "{family:?}");
+            for n in 2..=12 {
+                let lightness: Vec<f64> = (0..n).map(|k| shade(base, k, n).lab().l).collect();
+                // No near-black: the darkest keeps the floor and its chroma.
+                assert!(
+                    lightness[0] >= SWEEP_LIGHTNESS.0 - 0.5,
+                    "{family:?} {lightness:?}"
+                );
+                assert!(shade(base, 0, n).lab().chroma() >= 0.6 * base.lab().chroma().min(40.0));
+                // Even steps, to channel rounding.
+                let step = (lightness[n - 1] - lightness[0]) / (n - 1) as f64;
+                for pair in lightness.windows(2) {
+                    assert!(
+                        (pair[1] - pair[0] - step).abs() < 0.6,
+                        "{family:?} n = {n}: {lightness:?}"
+                    );
+                }
+            }
+        }
+        eprintln!("{}", report.join("\n"));
+    }
+
+    #[test]
+    fn family_colours_stay_apart_in_normal_vision_and_under_deuteranopia() {
+        // Before (the notebook's Solarized hues), under deuteranopia: TR–SGD 1.6, ABC–Beckmann 3.3,
+        // TR–Phong 6.2, SGD–Phong 7.8 ΔE00. Now every pair is at least 9.
+        let families = Family::ALL;
+        for (i, a) in families.iter().enumerate() {
+            for b in &families[i + 1..] {
+                let (x, y) = (Rgb::from_hex(a.colour()), Rgb::from_hex(b.colour()));
+                let normal = delta_e00(x.lab(), y.lab());
+                let deutan = delta_e00(x.deuteranopia().lab(), y.deuteranopia().lab());
+                assert!(normal >= 12.0, "{a:?}–{b:?}: {normal:.1}");
+                assert!(deutan >= 8.0, "{a:?}–{b:?} under deuteranopia: {deutan:.1}");
+            }
+            let c = Rgb::from_hex(a.colour());
+            assert!(c.contrast(Rgb::WHITE) >= 3.0, "{a:?}");
+        }
+    }
+
+    #[test]
+    fn presets_are_a_papers_width_8_pt_and_300_dpi_with_room_for_each_panel_row() {
+        let column =
+            Preset::named("paper-column")
+                .unwrap()
+                .canvas(1, 1, DEFAULT_ASPECT_RATIO, false);
+        assert_eq!(column.width_px, 317); // 3.3 in at 96 px/in, rounded
+        assert!((column.font_px - 8.0 * 96.0 / 72.0).abs() < 1e-12);
+        assert!((column.png_scale * 96.0 - 300.0).abs() < 1e-12);
+        // 3.3 in × 0.618 = 2.04 in is under the least panel height.
+        assert_eq!(
+            column.height_px,
+            (Preset::MIN_PANEL_HEIGHT_IN * 96.0).round() as u32
+        );
+        let tall = Preset::PaperColumn.canvas(1, 1, 1.0, false);
+        assert_eq!(tall.height_px, 317);
+        let page = Preset::PaperPage.canvas(2, 3, DEFAULT_ASPECT_RATIO, true);
+        assert_eq!(page.width_px, 672);
+        // Panels 2.33 in wide would be 1.44 in tall: each row gets the least panel height, and the
+        // title its band at 8 pt.
+        let band = DEFAULT_TITLE_BAND_PX * page.font_px / DEFAULT_FONT_PX;
+        assert_eq!(
+            page.height_px,
+            (2.0 * Preset::MIN_PANEL_HEIGHT_IN * 96.0 + band).round() as u32
+        );
+        assert_eq!(Preset::named("paper"), None);
     }
 
     #[test]

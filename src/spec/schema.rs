@@ -229,6 +229,10 @@ fn scene_key(key: &str) -> Value {
             strings(scene::SIZE_UNITS),
             "the unit of width and height: CSS pixels (default), inches or centimetres",
         ),
+        "preset" => described(
+            strings(scene::PRESETS),
+            "a paper's figure: paper-column (3.3 in wide) or paper-page (7 in wide), 8 pt text, 300 dpi, the height from the panel rows; width, height, font and dpi keys given win; render --preset overrides it",
+        ),
         "sampling" => described(
             reference("sampling"),
             "how curves are sampled over θ (default: adaptive for figures, uniform for CSV tables)",

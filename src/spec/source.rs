@@ -28,6 +28,9 @@ pub struct CanvasOverride {
     pub font_px: Option<f64>,
     /// The theme, instead of the spec's `theme` (`render --theme`).
     pub theme: Option<Theme>,
+    /// A paper preset's size, text and resolution instead of the spec's (`render --preset`); the
+    /// other overrides apply after it.
+    pub preset: Option<crate::spec::look::Preset>,
 }
 
 /// The name of the spec read from standard input (`render -`), as problems name it.
@@ -144,6 +147,14 @@ fn apply_override(
     mut scene: Scene<Spec>,
     over: CanvasOverride,
 ) -> std::result::Result<Scene<Spec>, Problem> {
+    if let Some(preset) = over.preset {
+        scene.canvas = preset.canvas(
+            scene.rows,
+            scene.cols,
+            scene.aspect_ratio,
+            !scene.title.is_empty(),
+        );
+    }
     let canvas = &mut scene.canvas;
     let (w, h) = (f64::from(canvas.width_px), f64::from(canvas.height_px));
     let (width, height) = match (over.width, over.height) {

@@ -103,7 +103,7 @@ impl Distribution for Abc {
     const TITLE: &'static str = "ABC";
     const PARAMS: &'static [Param] = &[ALPHA_ABC1, ALPHA_ABC2];
     const LEGEND_PREFIX: Option<&'static str> = Some("ABC");
-    const COLOUR: u32 = 0x6C70C4;
+    const COLOUR: u32 = 0x406AFD;
     /// The notebook's match of Trowbridge–Reitz α_tr = 0.3 (docs/maths.md).
     const EXAMPLE: &'static [f64] = &[23.5, 1.75];
     const PAGE_FORMULA: &'static str = include_str!("abc.js");

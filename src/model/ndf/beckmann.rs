@@ -79,7 +79,7 @@ impl Distribution for Beckmann {
     const NAME: &'static str = "beckmann";
     const TITLE: &'static str = "Beckmann";
     const PARAMS: &'static [Param] = &[ALPHA_B];
-    const COLOUR: u32 = 0x2689D1;
+    const COLOUR: u32 = 0x3C96DF;
     const LAMBDA_CLOSED_FORM: bool = true;
     const EXAMPLE: &'static [f64] = &[0.3];
     const PAGE_FORMULA: &'static str = include_str!("beckmann.js");

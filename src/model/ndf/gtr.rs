@@ -115,7 +115,7 @@ impl Distribution for Gtr {
     const TITLE: &'static str = "GTR";
     const PARAMS: &'static [Param] = &[ALPHA_GTR, GAMMA_GTR];
     const LEGEND_PREFIX: Option<&'static str> = Some("GTR");
-    const COLOUR: u32 = 0x2AA198;
+    const COLOUR: u32 = 0x199C93;
     /// Between Berry (γ = 1) and Trowbridge–Reitz (γ = 2) at the catalogue's α = 0.3.
     const EXAMPLE: &'static [f64] = &[0.3, 1.5];
     const PAGE_FORMULA: &'static str = include_str!("gtr.js");

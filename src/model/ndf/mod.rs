@@ -28,7 +28,8 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
     /// Written before the parameter symbols of an automatic legend label when they alone do not name
     /// the family (ABC and SGD share a₁, a₂; GTR's α and γ are generic): `"ABC"` gives `ABC a₁ = 10`.
     const LEGEND_PREFIX: Option<&'static str> = None;
-    /// The notebook's Solarized-based colour, as 0xRRGGBB.
+    /// The family's colour, as 0xRRGGBB: the notebook's hue, apart from every other family's in
+    /// normal vision and under deuteranopia (`spec::look` tests it).
     const COLOUR: u32;
     /// Whether [`lambda`](Self::lambda) is a closed form; otherwise it is the generic quadrature
     /// ([`crate::model::ndf::lambda_integral::lambda_integral`]).
@@ -184,7 +185,7 @@ macro_rules! families {
                 }
             }
 
-            /// The notebook's Solarized-based colour for the family, as 0xRRGGBB.
+            /// The family's colour, as 0xRRGGBB (see [`Distribution::COLOUR`]).
             pub fn colour(self) -> u32 {
                 match self {
                     $(Family::$variant => <$ty as Distribution>::COLOUR,)+

@@ -89,7 +89,7 @@ impl Distribution for Phong {
     const NAME: &'static str = "phong";
     const TITLE: &'static str = "Phong";
     const PARAMS: &'static [Param] = &[ALPHA_P];
-    const COLOUR: u32 = 0xDB2E2E;
+    const COLOUR: u32 = 0xDE3255;
     const LAMBDA_CLOSED_FORM: bool = true;
     /// α_p = 2/α_b² − 2 of the notebook's α_b = 0.3 (docs/maths.md, Walter et al. 2007).
     const EXAMPLE: &'static [f64] = &[2.0 / (0.3 * 0.3) - 2.0];

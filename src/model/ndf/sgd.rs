@@ -91,7 +91,7 @@ impl Distribution for Sgd {
     const TITLE: &'static str = "SGD";
     const PARAMS: &'static [Param] = &[ALPHA_SGD1, ALPHA_SGD2];
     const LEGEND_PREFIX: Option<&'static str> = Some("SGD");
-    const COLOUR: u32 = 0xB58800;
+    const COLOUR: u32 = 0xB78A02;
     /// One of the notebook's sgd-grid curves, as the numpy peer times it.
     const EXAMPLE: &'static [f64] = &[0.2, 0.5];
     const PAGE_FORMULA: &'static str = include_str!("sgd.js");

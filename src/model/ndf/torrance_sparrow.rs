@@ -72,7 +72,7 @@ impl Distribution for TorranceSparrow {
     const NAME: &'static str = "torrance_sparrow";
     const TITLE: &'static str = "Torrance–Sparrow";
     const PARAMS: &'static [Param] = &[ALPHA_TS];
-    const COLOUR: u32 = 0xFF9900;
+    const COLOUR: u32 = 0x834D02;
     /// The notebook's peak match of Phong at α_b = 0.3 (docs/maths.md).
     const EXAMPLE: &'static [f64] = &[0.3097];
     const PAGE_FORMULA: &'static str = include_str!("torrance_sparrow.js");

@@ -64,7 +64,7 @@ impl Distribution for TrowbridgeReitz {
     const TITLE: &'static str = "Trowbridge–Reitz";
     const ALIASES: &'static [&'static str] = &["ggx"];
     const PARAMS: &'static [Param] = &[ALPHA_TR];
-    const COLOUR: u32 = 0x849900;
+    const COLOUR: u32 = 0x648102;
     const LAMBDA_CLOSED_FORM: bool = true;
     const EXAMPLE: &'static [f64] = &[0.3];
     const PAGE_FORMULA: &'static str = include_str!("trowbridge_reitz.js");

@@ -218,8 +218,14 @@ where
         None => (area.clone(), full, None),
         Some(Outside { side, strip, .. }) => {
             let chart_area = match side {
-                Side::Right => area.split_horizontally(width - strip.0.ceil() as u32).0,
-                Side::Below => area.split_vertically(height - strip.1.ceil() as u32).0,
+                Side::Right => {
+                    area.split_horizontally(width.saturating_sub(strip.0.ceil() as u32).max(1))
+                        .0
+                }
+                Side::Below => {
+                    area.split_vertically(height.saturating_sub(strip.1.ceil() as u32).max(1))
+                        .0
+                }
             };
             let frame = Frame::fit(&chart_area, chart_area.dim_in_pixel(), panel, m, (0, 0))?;
             let asked = matches!(panel.axes.legend, LegendPlace::Right | LegendPlace::Below);

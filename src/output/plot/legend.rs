@@ -462,9 +462,14 @@ impl Legend {
         let (box_w, box_h) = self.size(setting, m);
         let (x0, y0) = (at.0.round() as i32, at.1.round() as i32);
         let background = m.palette.background.mix(LEGEND_OPACITY).filled();
+        // Saturating: on a canvas far too small for its legend the box may reach past i32 (the
+        // figure lint reports the clipped text).
         let bounds = [
             (x0, y0),
-            (x0 + box_w.round() as i32, y0 + box_h.round() as i32),
+            (
+                x0.saturating_add(box_w.round() as i32),
+                y0.saturating_add(box_h.round() as i32),
+            ),
         ];
         area.draw(&Rectangle::new(bounds, background))
             .map_err(draw_err)?;

@@ -37,6 +37,8 @@ pub(super) struct DrawnText {
     pub(super) label: String,
     /// Its box.
     pub(super) rect: Rect,
+    /// The panel being drawn when it was placed; `None` for the figure's title.
+    pub(super) panel: Option<usize>,
 }
 
 /// What a 2D panel's drawing placed.
@@ -55,8 +57,31 @@ pub(super) struct Trace {
     pub(super) texts: Vec<DrawnText>,
     /// Every 2D panel's plot area and tick count.
     pub(super) panels: Vec<PanelTrace>,
-    /// What the drawing could not do as asked (a legend that fits no corner), in words.
-    pub(super) warnings: Vec<String>,
+    /// What the drawing could not do as asked (a legend that fits no corner), in words, with the
+    /// panel it was drawing.
+    pub(super) warnings: Vec<(Option<usize>, String)>,
+    /// The panel being drawn (its index in the figure), once the panels are.
+    pub(super) current: Option<usize>,
+}
+
+/// One broken rule: the panel it is about (`None`: the figure as a whole) and what was measured.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Finding {
+    /// Index of the panel in the figure's `panels`.
+    pub panel: Option<usize>,
+    /// The rule and the measurement, in words.
+    pub message: String,
+}
+
+impl Finding {
+    /// The finding as a line after `source` (a spec file or figure id):
+    /// `fig.json: panels[1]: plot area 12 % of its cell …`.
+    pub fn line(&self, source: &str) -> String {
+        match self.panel {
+            Some(i) => format!("{source}: panels[{i}]: {}", self.message),
+            None => format!("{source}: {}", self.message),
+        }
+    }
 }
 
 /// The record a drawing writes into, when one is kept.
@@ -65,10 +90,13 @@ pub(super) type Recorder = Option<RefCell<Trace>>;
 /// Records `text` (of `label`) drawn in `rect`, when a trace is kept.
 pub(super) fn record_text(recorder: &Recorder, text: &str, label: &str, rect: Rect) {
     if let Some(trace) = recorder {
-        trace.borrow_mut().texts.push(DrawnText {
+        let mut trace = trace.borrow_mut();
+        let panel = trace.current;
+        trace.texts.push(DrawnText {
             text: text.to_owned(),
             label: label.to_owned(),
             rect,
+            panel,
         });
     }
 }
@@ -76,7 +104,16 @@ pub(super) fn record_text(recorder: &Recorder, text: &str, label: &str, rect: Re
 /// Records `warning`, when a trace is kept.
 pub(super) fn record_warning(recorder: &Recorder, warning: String) {
     if let Some(trace) = recorder {
-        trace.borrow_mut().warnings.push(warning);
+        let mut trace = trace.borrow_mut();
+        let panel = trace.current;
+        trace.warnings.push((panel, warning));
+    }
+}
+
+/// Notes that panel `index` is being drawn: what is recorded next belongs to it.
+pub(super) fn record_current_panel(recorder: &Recorder, index: usize) {
+    if let Some(trace) = recorder {
+        trace.borrow_mut().current = Some(index);
     }
 }
 
@@ -111,27 +148,40 @@ fn trace_of(figure: &Figure) -> Result<(Trace, (u32, u32)), PlotError> {
 }
 
 /// The rules `figure` breaks, each as a sentence naming the figure, the panel or text and the
-/// measurement; empty when it keeps them all. The figure is drawn (as its SVG is) to find out.
+/// measurement (`fig: panels[1]: plot area …`); empty when it keeps them all. The figure is drawn
+/// (as its SVG is) to find out.
 pub fn lint(figure: &Figure) -> Result<Vec<String>, PlotError> {
     let (trace, size) = trace_of(figure)?;
-    Ok(findings(figure, &trace, size))
+    Ok(findings(figure, &trace, size)
+        .iter()
+        .map(|f| f.line(&figure.id))
+        .collect())
 }
 
 /// The rules broken by `figure` drawn as `trace` on a canvas of `(width, height)` device pixels.
-fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<String> {
-    let id = &figure.id;
+pub(super) fn findings(
+    figure: &Figure,
+    trace: &Trace,
+    (width, height): (u32, u32),
+) -> Vec<Finding> {
     let px = |device: f64| device / SVG_UNITS_PER_PX;
     let slack = OVERLAP_TOLERANCE_PX * SVG_UNITS_PER_PX;
-    let mut findings: Vec<String> = trace
-        .warnings
-        .iter()
-        .map(|w| format!("{id}: {w}"))
-        .collect();
+    let mut findings: Vec<Finding> = Vec::new();
+    let mut push = |panel: Option<usize>, message: String| {
+        let finding = Finding { panel, message };
+        // A text drawn twice (a label of two runs) is reported once.
+        if !findings.contains(&finding) {
+            findings.push(finding);
+        }
+    };
+    for (panel, w) in &trace.warnings {
+        push(*panel, w.clone());
+    }
 
     for t in &trace.texts {
         let escaped = t.label.contains("\\_") || t.label.contains("\\^");
         if t.text.contains(['_', '^']) && !escaped {
-            findings.push(format!("{id}: literal markup drawn in {:?}", t.label));
+            push(t.panel, format!("literal markup drawn in {:?}", t.label));
         }
         let [l, top, r, b] = t.rect;
         if l < -slack
@@ -139,13 +189,16 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
             || r > f64::from(width) + slack
             || b > f64::from(height) + slack
         {
-            findings.push(format!("{id}: {:?} is clipped by the canvas", t.label));
+            push(t.panel, format!("{:?} is clipped by the canvas", t.label));
         }
     }
     for (i, a) in trace.texts.iter().enumerate() {
         for b in &trace.texts[..i] {
             if a.label != b.label && overlap(&a.rect, &b.rect, slack) {
-                findings.push(format!("{id}: {:?} overlaps {:?}", a.label, b.label));
+                push(
+                    a.panel.or(b.panel),
+                    format!("{:?} overlaps {:?}", a.label, b.label),
+                );
             }
         }
     }
@@ -161,9 +214,12 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
     for (traced, &panel) in trace.panels.iter().zip(&cartesian) {
         let (x, y) = traced.ticks;
         if x < MIN_LABELLED_TICKS || y < MIN_LABELLED_TICKS {
-            findings.push(format!(
-                "{id}: panel {panel} has {x} labelled x ticks and {y} labelled y ticks (expected at least {MIN_LABELLED_TICKS} each)"
-            ));
+            push(
+                Some(panel),
+                format!(
+                    "{x} labelled x ticks and {y} labelled y ticks (expected at least {MIN_LABELLED_TICKS} each)"
+                ),
+            );
         }
     }
     let rows = figure.rows.max(1);
@@ -175,13 +231,16 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
         let [l, t, r, b] = traced.plot;
         let share = ((r - l) / cell.0).min((b - t) / cell.1);
         if share < MIN_PLOT_SHARE {
-            findings.push(format!(
-                "{id}: panels[{panel}]: plot area {:.0} % of its cell (expected at least {:.0} %) at {:.0} × {:.0} px",
-                100.0 * share,
-                100.0 * MIN_PLOT_SHARE,
-                px(f64::from(width)),
-                px(f64::from(height)),
-            ));
+            push(
+                Some(panel),
+                format!(
+                    "plot area {:.0} % of its cell (expected at least {:.0} %) at {:.0} × {:.0} px",
+                    100.0 * share,
+                    100.0 * MIN_PLOT_SHARE,
+                    px(f64::from(width)),
+                    px(f64::from(height)),
+                ),
+            );
         }
     }
     for (a, &pa) in trace.panels.iter().zip(&cartesian) {
@@ -201,25 +260,32 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
             .into_iter()
             .fold(0.0, f64::max);
             if px(worst) > ROW_TOLERANCE_PX {
-                findings.push(format!(
-                    "{id}: panels {pa} and {pb} share a row but their plot areas differ by {:.1} px",
-                    px(worst)
-                ));
+                push(
+                    Some(pb),
+                    format!(
+                        "plot area differs from panels[{pa}]'s in its row by {:.1} px",
+                        px(worst)
+                    ),
+                );
             }
         }
     }
 
     let page = theme::palette(figure.theme).background;
     let page = Rgb(page.0, page.1, page.2);
-    for (panel, looks) in figure.panels.iter().zip(theme::looks(figure)) {
+    for (panel_index, (panel, looks)) in figure.panels.iter().zip(theme::looks(figure)).enumerate()
+    {
         let mut seen: Vec<(Rgb, Pattern, u64, &str)> = Vec::new();
         for (series, look) in panel.series.iter().zip(looks) {
             let contrast = look.colour.contrast(page);
             if contrast < MIN_CONTRAST {
-                findings.push(format!(
-                    "{id}: {:?} has contrast {contrast:.2}:1 with the page (expected at least {MIN_CONTRAST}:1)",
-                    series.label
-                ));
+                push(
+                    Some(panel_index),
+                    format!(
+                        "{:?} has contrast {contrast:.2}:1 with the page (expected at least {MIN_CONTRAST}:1)",
+                        series.label
+                    ),
+                );
             }
             if series.label.is_empty() {
                 continue;
@@ -231,10 +297,10 @@ fn findings(figure: &Figure, trace: &Trace, (width, height): (u32, u32)) -> Vec<
                 series.label.as_str(),
             );
             if seen.contains(&entry) {
-                findings.push(format!(
-                    "{id}: two legend entries {:?} look alike",
-                    series.label
-                ));
+                push(
+                    Some(panel_index),
+                    format!("two legend entries {:?} look alike", series.label),
+                );
             }
             seen.push(entry);
         }
@@ -266,6 +332,11 @@ mod tests {
             trace.panels
         );
         assert!(findings(&figure, &trace, (1600, 1000)).is_empty());
+        assert!(
+            trace.texts.iter().any(|t| t.panel.is_none()),
+            "the figure title"
+        );
+        assert!(trace.texts.iter().any(|t| t.panel == Some(1)));
     }
 
     #[test]
@@ -307,7 +378,10 @@ mod tests {
             );
         }
         let found = findings(&fig, &trace, size);
-        assert!(!found.iter().any(|f| f.contains("plot area")), "{found:?}");
+        assert!(
+            !found.iter().any(|f| f.message.contains("plot area")),
+            "{found:?}"
+        );
         // A corner asked for keeps the legend there, shrunk; one too small for it is a warning.
         fig.panels[0].axes.legend =
             crate::spec::look::LegendPlace::Corner(crate::spec::look::Corner::UpperLeft);
@@ -319,14 +393,14 @@ mod tests {
             trace
                 .warnings
                 .iter()
-                .any(|w| w.contains("does not fit its upper left corner")),
+                .any(|(_, w)| w.contains("does not fit its upper left corner")),
             "{:?}",
             trace.warnings
         );
         assert!(
             findings(&fig, &trace, size)
                 .iter()
-                .any(|f| f.contains("upper left"))
+                .any(|f| f.panel == Some(0) && f.message.contains("upper left"))
         );
     }
 
@@ -342,6 +416,7 @@ mod tests {
             text: label.to_owned(),
             label: label.to_owned(),
             rect,
+            panel: Some(0),
         };
         let trace = Trace {
             texts: vec![
@@ -360,17 +435,25 @@ mod tests {
                     ticks: (5, 5),
                 },
             ],
-            warnings: vec!["the legend \"a\" does not fit its upper right corner".to_owned()],
+            warnings: vec![(
+                Some(0),
+                "the legend \"a\" does not fit its upper right corner".to_owned(),
+            )],
+            current: None,
         };
-        let found = findings(&twin, &trace, (1600, 1000)).join("\n");
+        let found: Vec<String> = findings(&twin, &trace, (1600, 1000))
+            .iter()
+            .map(|f| f.line("fig.json"))
+            .collect();
+        let found = found.join("\n");
         for expected in [
-            "literal markup drawn in \"α_b\"",
-            "\"second\" overlaps \"first\"",
-            "\"clipped\" is clipped",
-            "panel 0 has 2 labelled x ticks",
-            "panels 0 and 1 share a row but their plot areas differ by 5.0 px",
-            "two legend entries \"a\" look alike",
-            "sample: the legend \"a\" does not fit its upper right corner",
+            "fig.json: panels[0]: literal markup drawn in \"α_b\"",
+            "fig.json: panels[0]: \"second\" overlaps \"first\"",
+            "fig.json: panels[0]: \"clipped\" is clipped",
+            "fig.json: panels[0]: 2 labelled x ticks",
+            "fig.json: panels[1]: plot area differs from panels[0]'s in its row by 5.0 px",
+            "fig.json: panels[0]: two legend entries \"a\" look alike",
+            "fig.json: panels[0]: the legend \"a\" does not fit its upper right corner",
         ] {
             assert!(found.contains(expected), "{expected} not in:\n{found}");
         }

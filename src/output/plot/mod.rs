@@ -49,7 +49,7 @@ use cartesian::{Needs, Shared, draw_cartesian, draw_cartesian_shared};
 use encode::{encode_png, finish_svg, rasterize};
 use heatmap::draw_heatmap;
 use lint::Recorder;
-pub use lint::lint;
+pub use lint::{Finding, lint};
 use polar::draw_polar;
 use style::{EM_PER_SIZE, Metrics, ensure_font};
 use surface::draw_surface;
@@ -110,14 +110,30 @@ pub enum PlotError {
 /// Text stays text, in `font-family="DejaVu Sans, sans-serif"`; the font itself is not embedded.
 /// The figure's provenance is in a `<metadata>` element after the opening tag.
 pub fn svg(figure: &Figure) -> Result<Vec<u8>, PlotError> {
+    Ok(draw_svg(figure, None)?.0)
+}
+
+/// [`svg`] and what the figure lint finds in the drawing (see [`lint`]), from one drawing.
+pub fn svg_linted(figure: &Figure) -> Result<(Vec<u8>, Vec<Finding>), PlotError> {
+    let (svg, trace) = draw_svg(figure, Some(std::cell::RefCell::default()))?;
+    let size = device_size(&figure.canvas, SVG_UNITS_PER_PX)?;
+    let trace = trace
+        .map(std::cell::RefCell::into_inner)
+        .unwrap_or_default();
+    Ok((svg, lint::findings(figure, &trace, size)))
+}
+
+/// The SVG of `figure` and the trace it recorded into `trace`, when one is given.
+fn draw_svg(figure: &Figure, trace: Recorder) -> Result<(Vec<u8>, Recorder), PlotError> {
     let canvas = &figure.canvas;
     let (width, height) = device_size(canvas, SVG_UNITS_PER_PX)?;
     let mut document = String::with_capacity(SVG_CAPACITY);
-    {
+    let trace = {
         let root = SVGBackend::with_string(&mut document, (width, height)).into_drawing_area();
-        draw_figure(&root, figure, SVG_UNITS_PER_PX, None)?;
-    }
-    Ok(finish_svg(&document, canvas, (width, height), &figure.provenance).into_bytes())
+        draw_figure(&root, figure, SVG_UNITS_PER_PX, trace)?
+    };
+    let svg = finish_svg(&document, canvas, (width, height), &figure.provenance).into_bytes();
+    Ok((svg, trace))
 }
 
 /// The PNG of `figure` from its drawn SVG `svg` (what [`svg`] returned for it): the same drawing
@@ -173,8 +189,15 @@ where
     let looks = theme::looks(figure);
     let figure = &without_repeated_legends(figure, &looks);
     let layout = grid_layout(&cells, figure, &looks, cols, &m)?;
-    for (((panel, looks), cell), place) in figure.panels.iter().zip(&looks).zip(&cells).zip(layout)
+    for (index, (((panel, looks), cell), place)) in figure
+        .panels
+        .iter()
+        .zip(&looks)
+        .zip(&cells)
+        .zip(layout)
+        .enumerate()
     {
+        lint::record_current_panel(&m.trace, index);
         draw_panel(cell, panel, looks, place, &m)?;
     }
     root.present().map_err(draw_err)?;
@@ -326,12 +349,16 @@ where
     if band == 0 {
         return Ok(area.clone());
     }
-    let (width, _) = area.dim_in_pixel();
+    let (width, height) = area.dim_in_pixel();
     let centred = m.font(size).pos(Pos::new(HPos::Center, VPos::Top));
     for (line, top) in &lines {
         let at = (f64::from(width) / 2.0, f64::from(*top));
         mathtext::draw(area, line, &centred, at, m)?;
     }
+    // A title taller than its area leaves it a pixel (the figure lint reports the squeeze).
+    let band = band
+        .min(i32::try_from(height).unwrap_or(i32::MAX) - 1)
+        .max(0);
     Ok(area.split_vertically(band).1)
 }
 

@@ -256,12 +256,49 @@ where
         covered.add(&text_box(at, text(&label, &tick_font)?, corner));
     }
 
-    // Radius labels beside both edges, set off from the sector; the centre's once.
+    // Radius labels beside both edges, set off from the sector; the centre's once. A label that
+    // would touch the one before it on its edge is left out (on a small sector, every other).
+    let mut last: [Option<[(i32, i32); 5]>; 2] = [None, None];
+    let clear = |a: &[(i32, i32); 5], b: &[(i32, i32); 5]| {
+        let spacing = gap.round() as i32;
+        a[1].0 + spacing <= b[0].0
+            || b[1].0 + spacing <= a[0].0
+            || a[2].1 + spacing <= b[0].1
+            || b[2].1 + spacing <= a[0].1
+    };
     for &rho in &radius.ticks {
         let r = to_r(rho);
         let label = radius.label(rho);
         let size = text(&label, &tick_font)?;
         let sides: &[f64] = if r < 0.5 { &[1.0] } else { &[1.0, -1.0] };
+        let boxes: Vec<[(i32, i32); 5]> = sides
+            .iter()
+            .map(|&sign| {
+                let phi = sign * b;
+                let normal = if r < 0.5 {
+                    (0.0, 1.0)
+                } else {
+                    (sign * b.cos(), b.sin())
+                };
+                let (x, y) = sector.px_f(r, phi);
+                let at = (x + gap * normal.0, y + gap * normal.1);
+                text_box(at, size, anchor_towards(normal).1)
+            })
+            .collect();
+        let crowded = boxes.iter().zip(sides).any(|(bx, &sign)| {
+            let edge = usize::from(sign < 0.0);
+            last[edge].as_ref().is_some_and(|prev| !clear(prev, bx))
+                || (r < 0.5 && last[1].as_ref().is_some_and(|prev| !clear(prev, bx)))
+        });
+        if crowded {
+            continue;
+        }
+        for (bx, &sign) in boxes.iter().zip(sides) {
+            last[usize::from(sign < 0.0)] = Some(*bx);
+        }
+        if r < 0.5 {
+            last[1] = Some(boxes[0]);
+        }
         for &sign in sides {
             let phi = sign * b;
             let normal = if r < 0.5 {

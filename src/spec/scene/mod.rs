@@ -55,11 +55,14 @@ pub const SCENE_KEYS: &[&str] = &[
     "png_scale",
     "dpi",
     "unit",
+    "preset",
     "sampling",
     "theme",
     "panels",
     "interactive",
 ];
+/// Names of the paper presets (`preset`), as [`look::Preset::NAMES`] has them.
+pub const PRESETS: &[&str] = &["paper-column", "paper-page"];
 /// Names of the themes (`theme`), in [`Theme`] order; `color-blind` is the other spelling of
 /// `colour-blind`.
 pub const THEMES: &[&str] = &["notebook", "colour-blind", "color-blind", "dark"];
@@ -248,6 +251,8 @@ pub struct Scene<S: Stage = Resolved> {
     pub cols: usize,
     /// Size and typography.
     pub canvas: Canvas,
+    /// Height of a panel over its width (`aspect_ratio`), for a canvas sized again by preset.
+    pub aspect_ratio: f64,
     /// Sampling rule.
     pub sampling: Sampling,
     /// Colours and line distinctions.
@@ -341,7 +346,8 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene<Spec>> {
     let theme = read_theme(reader, &object);
     let panels = read_panels(reader, &object);
     let (rows, cols) = read_layout(reader, &object, panels.as_ref().map_or(1, Vec::len));
-    let canvas = read_canvas(reader, &object, rows, cols, !title.is_empty());
+    let aspect_ratio = read_aspect_ratio(reader, &object);
+    let canvas = read_canvas(reader, &object, rows, cols, aspect_ratio, !title.is_empty());
     if sliders.is_some() {
         check_interactive_views(reader, panels.as_deref().unwrap_or_default());
     }
@@ -352,6 +358,7 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene<Spec>> {
         rows,
         cols,
         canvas: canvas?,
+        aspect_ratio,
         sampling: sampling?,
         theme,
         panels: panels?,
@@ -461,13 +468,30 @@ fn read_layout(reader: &mut Reader, object: &reader::Object, panel_count: usize)
     (rows, cols)
 }
 
+/// The scene's `aspect_ratio` (panel height over width), [`look::DEFAULT_ASPECT_RATIO`] when absent.
+fn read_aspect_ratio(reader: &mut Reader, object: &reader::Object) -> f64 {
+    reader
+        .number(
+            object,
+            "aspect_ratio",
+            |v| (0.05..=20.0).contains(&v),
+            "0.05 to 20",
+        )
+        .unwrap_or(look::DEFAULT_ASPECT_RATIO)
+}
+
 fn read_canvas(
     reader: &mut Reader,
     object: &reader::Object,
     rows: usize,
     cols: usize,
+    aspect: f64,
     titled: bool,
 ) -> Option<Canvas> {
+    let preset = reader
+        .choice(object, "preset", PRESETS)
+        .and_then(look::Preset::named)
+        .map(|p| p.canvas(rows, cols, aspect, titled));
     let unit = reader.choice(object, "unit", SIZE_UNITS).unwrap_or("px");
     let px_per_unit = match unit {
         "in" => CSS_PX_PER_INCH,
@@ -480,21 +504,35 @@ fn read_canvas(
         crate::spec::numbers::pretty(16.0 / px_per_unit),
         crate::spec::numbers::pretty(MAX_SIDE_PX / px_per_unit)
     );
-    let aspect = reader
-        .number(
-            object,
-            "aspect_ratio",
-            |v| (0.05..=20.0).contains(&v),
-            "0.05 to 20",
-        )
-        .unwrap_or(look::DEFAULT_ASPECT_RATIO);
     let width = reader
         .number(object, "width", side, &side_text)
-        .map(|w| w * px_per_unit)
-        .unwrap_or(look::default_width(cols));
+        .map(|w| w * px_per_unit);
     let height = reader
         .number(object, "height", side, &side_text)
-        .map(|h| h * px_per_unit)
+        .map(|h| h * px_per_unit);
+    // A width the spec gives replaces the preset's, and the height follows it.
+    let preset = preset.map(|canvas| match width {
+        Some(w) => {
+            let panel = (w / cols.max(1) as f64 * aspect)
+                .max(look::Preset::MIN_PANEL_HEIGHT_IN * CSS_PX_PER_INCH);
+            let band = if titled {
+                look::DEFAULT_TITLE_BAND_PX * canvas.font_px / look::DEFAULT_FONT_PX
+            } else {
+                0.0
+            };
+            Canvas {
+                width_px: w.round() as u32,
+                height_px: (rows as f64 * panel + band).round() as u32,
+                ..canvas
+            }
+        }
+        None => canvas,
+    });
+    let width = width
+        .or(preset.map(|c| f64::from(c.width_px)))
+        .unwrap_or(look::default_width(cols));
+    let height = height
+        .or(preset.map(|c| f64::from(c.height_px)))
         .unwrap_or_else(|| {
             look::default_height(rows, cols, width, aspect, titled).clamp(16.0, MAX_SIDE_PX)
         });
@@ -522,7 +560,8 @@ fn read_canvas(
                 )
                 .map(|pt| pt * CSS_PX_PER_INCH / 72.0)
         })
-        .unwrap_or(14.0);
+        .or(preset.map(|c| c.font_px))
+        .unwrap_or(look::DEFAULT_FONT_PX);
     let png_scale = reader
         .number(
             object,
@@ -540,6 +579,7 @@ fn read_canvas(
                 )
                 .map(|dpi| dpi / CSS_PX_PER_INCH)
         })
+        .or(preset.map(|c| c.png_scale))
         .unwrap_or(2.0);
     if !(one_of(reader, "font_px", "font_pt") & one_of(reader, "png_scale", "dpi")) {
         return None;
