@@ -1,7 +1,8 @@
 //! The drawn SVG read back as a usvg tree, for the outputs converted from it (PNG and PDF).
 //!
-//! Owns the font database of those conversions: the embedded DejaVu Sans face only, also
-//! answering for the generic families, so text is laid out the same on a machine with no fonts.
+//! Owns the font database of those conversions: the embedded DejaVu Sans faces only (regular, and
+//! oblique for variables), also answering for the generic families, so text is laid out the same
+//! on a machine with no fonts.
 
 use std::sync::{Arc, OnceLock};
 
@@ -28,6 +29,7 @@ fn font_database() -> &'static Arc<fontdb::Database> {
     DATABASE.get_or_init(|| {
         let mut database = fontdb::Database::new();
         database.load_font_data(dejavu::sans::regular().to_vec());
+        database.load_font_data(dejavu::sans::oblique().to_vec());
         database.set_sans_serif_family(FAMILY);
         database.set_serif_family(FAMILY);
         database.set_monospace_family(FAMILY);
@@ -44,7 +46,8 @@ mod tests {
     #[test]
     fn fonts_come_from_the_embedded_face_only() {
         let faces: Vec<_> = font_database().faces().collect();
-        assert_eq!(faces.len(), 1, "no system font is ever loaded");
-        assert_eq!(faces[0].families[0].0, FAMILY);
+        assert_eq!(faces.len(), 2, "no system font is ever loaded");
+        assert!(faces.iter().all(|f| f.families[0].0 == FAMILY));
+        assert!(faces.iter().any(|f| f.style != fontdb::Style::Normal));
     }
 }

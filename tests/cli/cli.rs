@@ -1021,7 +1021,7 @@ fn scene_fits_and_differences_render_with_fitted_values_in_the_csv() {
     // The fits are one legend row naming their targets, `α_{tr}` typeset with tr as a subscript
     // run, fitted values to three digits.
     assert!(
-        svg.contains("a₁ = 11.6 … 3.57 (peak fit to α</text>") && svg.contains(">tr</text>"),
+        svg.contains("> = 11.6 … 3.57 (peak fit to </text>") && svg.contains(">tr</text>"),
         "legend"
     );
     std::fs::write(
@@ -1158,8 +1158,11 @@ fn an_interactive_scene_static_figure_states_its_slider_positions() {
     ]);
     assert_eq!(output.status.code(), Some(0), "{}", text(&output.stderr));
     let svg = std::fs::read_to_string(out.join("fresnel-interactive.svg")).unwrap();
+    // η and κ are italic runs of their own: the title reads "… at η = 1.1, κ = 0".
     assert!(
-        svg.contains("at η = 1.1, κ = 0"),
+        svg.contains(">) — at </text>")
+            && svg.contains("> = 1.1, </text>")
+            && svg.contains("> = 0</text>"),
         "no slider positions in the title"
     );
 }

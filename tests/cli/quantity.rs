@@ -295,7 +295,7 @@ fn scenes_label_quantity_axes_and_check_audits_smith() {
     let svg = std::fs::read_to_string(out.join("masking.svg")).unwrap();
     assert!(
         svg.contains(r#"xml:space="preserve">G</text>"#)
-            && svg.contains(r#"xml:space="preserve">(θ</text>"#),
+            && svg.contains(r#"xml:space="preserve">θ</text>"#),
         "the G_1(θ_o) axis label"
     );
     let csv = std::fs::read_to_string(out.join("masking.csv")).unwrap();

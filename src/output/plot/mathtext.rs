@@ -3,7 +3,16 @@
 //! `\_`, `\^`, `\{`, `\}` and `\\` write the character itself, and so does a `_` or `^` with
 //! nothing after it.
 //!
-//! Text is cut into runs of one size and baseline ([`parse`]); [`width`] measures them and
+//! Unicode subscripts (`a₁`, `F₀`, `log₁₀`) are set as `_` subscripts are, so that a label has one
+//! kind of subscript whichever way it was written.
+//!
+//! Variables are italic, as TeX and matplotlib's mathtext set them: a letter (Latin or Greek) that
+//! stands alone — not part of a word of two or more letters — is drawn in the oblique face (`D(θ)`,
+//! `α_p`, `G_1`, `Λ`); words (`cos`, `ln`, `radians`, `ABC`, `tr`) and digits stay upright, and so
+//! does a lone `a`, `A` or `I` followed by a word (an article or pronoun in prose), and π, Σ and Π
+//! (a constant and operators).
+//!
+//! Text is cut into runs of one size, baseline and slant ([`parse`]); [`width`] measures them and
 //! [`draw`] draws them one after the other with the face of the figure, so SVG, PNG and PDF (drawn
 //! from the SVG) all show the same typeset label.
 
@@ -35,18 +44,84 @@ pub(super) struct Run {
     pub(super) scale: f64,
     /// Baseline above the label's, in units of the label's size (negative: below).
     pub(super) rise: f64,
+    /// Set in the oblique face (a variable).
+    pub(super) italic: bool,
 }
 
-/// Whether `text` holds markup that [`parse`] typesets or unescapes.
+/// Whether `text` holds markup that [`parse`] typesets or unescapes, or a variable it slants: text
+/// without either is one plain run.
 pub(super) fn has_markup(text: &str) -> bool {
-    text.contains(['_', '^', '\\'])
+    parse(text).len() > 1 || parse(text).first().is_some_and(|r| r.italic)
 }
 
-/// The runs of `text`, in order; adjacent characters of one size and baseline share a run.
+/// The plain character a Unicode subscript character stands for.
+fn unsubscript(c: char) -> Option<char> {
+    const SUBSCRIPTS: [(char, char); 25] = [
+        ('₀', '0'),
+        ('₁', '1'),
+        ('₂', '2'),
+        ('₃', '3'),
+        ('₄', '4'),
+        ('₅', '5'),
+        ('₆', '6'),
+        ('₇', '7'),
+        ('₈', '8'),
+        ('₉', '9'),
+        ('₊', '+'),
+        ('₋', '−'),
+        ('₌', '='),
+        ('₍', '('),
+        ('₎', ')'),
+        ('ₐ', 'a'),
+        ('ₑ', 'e'),
+        ('ₒ', 'o'),
+        ('ₓ', 'x'),
+        ('ₕ', 'h'),
+        ('ₖ', 'k'),
+        ('ₘ', 'm'),
+        ('ₙ', 'n'),
+        ('ₚ', 'p'),
+        ('ₜ', 't'),
+    ];
+    SUBSCRIPTS.iter().find(|(s, _)| *s == c).map(|(_, p)| *p)
+}
+
+/// `text` with each run of Unicode subscript characters written as a `_{…}` group.
+fn with_subscripts_marked(text: &str) -> std::borrow::Cow<'_, str> {
+    if !text.chars().any(|c| unsubscript(c).is_some()) {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len() + 8);
+    let mut open = false;
+    for c in text.chars() {
+        match (unsubscript(c), open) {
+            (Some(p), false) => {
+                out.push_str("_{");
+                out.push(p);
+                open = true;
+            }
+            (Some(p), true) => out.push(p),
+            (None, true) => {
+                out.push('}');
+                out.push(c);
+                open = false;
+            }
+            (None, false) => out.push(c),
+        }
+    }
+    if open {
+        out.push('}');
+    }
+    std::borrow::Cow::Owned(out)
+}
+
+/// The runs of `text`, in order; adjacent characters of one size, baseline and slant share a run.
 pub(super) fn parse(text: &str) -> Vec<Run> {
-    let chars: Vec<char> = text.chars().collect();
+    let marked = with_subscripts_marked(text);
+    let chars: Vec<char> = marked.chars().collect();
     let mut runs = Vec::new();
     parse_into(&chars, 1.0, 0.0, &mut runs);
+    slant_variables(&mut runs);
     runs
 }
 
@@ -57,8 +132,61 @@ fn push(runs: &mut Vec<Run>, c: char, scale: f64, rise: f64) {
             text: c.to_string(),
             scale,
             rise,
+            italic: false,
         }),
     }
+}
+
+/// Splits `runs` so that every letter standing alone (see the module's rule) is a run of its own,
+/// marked italic. Letters are read across runs of one size and baseline only: `α_p` is two lone
+/// letters, `D_{ABC}` a lone `D` and the word `ABC`.
+fn slant_variables(runs: &mut Vec<Run>) {
+    let mut out: Vec<Run> = Vec::with_capacity(runs.len());
+    for run in runs.drain(..) {
+        let chars: Vec<char> = run.text.chars().collect();
+        let letter = |i: usize| chars.get(i).is_some_and(|c| c.is_alphabetic());
+        let mut piece = String::new();
+        let flush = |piece: &mut String, italic: bool, out: &mut Vec<Run>| {
+            if piece.is_empty() {
+                return;
+            }
+            match out.last_mut() {
+                Some(last)
+                    if last.scale == run.scale
+                        && last.rise == run.rise
+                        && last.italic == italic =>
+                {
+                    last.text.push_str(piece)
+                }
+                _ => out.push(Run {
+                    text: std::mem::take(piece),
+                    scale: run.scale,
+                    rise: run.rise,
+                    italic,
+                }),
+            }
+            piece.clear();
+        };
+        for (i, &c) in chars.iter().enumerate() {
+            let alone = c.is_alphabetic() && !(i > 0 && letter(i - 1)) && !letter(i + 1);
+            // "a reference", "A sweep", "I": an article or pronoun before a word stays upright.
+            let prose = matches!(c, 'a' | 'A' | 'I')
+                && chars.get(i + 1) == Some(&' ')
+                && chars.get(i + 2).is_some_and(|n| n.is_alphabetic())
+                && chars.get(i + 3).is_some_and(|n| n.is_alphabetic());
+            // π is a constant and Σ, Π operators: upright, as ISO 80000-2 sets them.
+            let constant = matches!(c, 'π' | 'Σ' | 'Π');
+            if alone && !prose && !constant {
+                flush(&mut piece, false, &mut out);
+                piece.push(c);
+                flush(&mut piece, true, &mut out);
+            } else {
+                piece.push(c);
+            }
+        }
+        flush(&mut piece, false, &mut out);
+    }
+    *runs = out;
 }
 
 /// The index just past the group that opens at `chars[open]` (`{`), and the group's contents'
@@ -124,21 +252,25 @@ where
     let mut total = 0.0;
     for run in parse(text) {
         let (w, _) = area
-            .estimate_text_size(&run.text, &scaled(font, run.scale))
+            .estimate_text_size(&run.text, &scaled(font, run.scale, run.italic))
             .map_err(draw_err)?;
         total += f64::from(w);
     }
     Ok(total)
 }
 
-/// `font` at `scale` times its size.
-fn scaled<'a>(font: &TextStyle<'a>, scale: f64) -> TextStyle<'a> {
-    if scale == 1.0 {
+/// `font` at `scale` times its size, in the oblique face when `italic`.
+fn scaled<'a>(font: &TextStyle<'a>, scale: f64, italic: bool) -> TextStyle<'a> {
+    if scale == 1.0 && !italic {
         return font.clone();
     }
     let size = font.font.get_size() * scale;
+    let mut desc = font.font.clone().resize(size);
+    if italic {
+        desc = desc.style(FontStyle::Oblique);
+    }
     TextStyle {
-        font: font.font.clone().resize(size),
+        font: desc,
         ..font.clone()
     }
 }
@@ -184,7 +316,8 @@ where
     let size = style.font.get_size();
     let mut along = start;
     for run in parse(text) {
-        let run_style = scaled(style, run.scale).pos(Pos::new(HPos::Left, style.pos.v_pos));
+        let run_style =
+            scaled(style, run.scale, run.italic).pos(Pos::new(HPos::Left, style.pos.v_pos));
         let (w, _) = area
             .estimate_text_size(&run.text, &run_style)
             .map_err(draw_err)?;
@@ -253,6 +386,14 @@ mod tests {
             text: text.to_owned(),
             scale,
             rise,
+            italic: false,
+        }
+    }
+
+    fn var(text: &str, scale: f64, rise: f64) -> Run {
+        Run {
+            italic: true,
+            ..run(text, scale, rise)
         }
     }
 
@@ -261,34 +402,64 @@ mod tests {
         assert_eq!(
             parse("α_b = 0.3"),
             [
-                run("α", 1.0, 0.0),
-                run("b", 0.7, -0.2),
+                var("α", 1.0, 0.0),
+                var("b", 0.7, -0.2),
                 run(" = 0.3", 1.0, 0.0)
             ]
         );
         assert_eq!(
             parse("D_{ABC}(θ)"),
             [
-                run("D", 1.0, 0.0),
+                var("D", 1.0, 0.0),
                 run("ABC", 0.7, -0.2),
-                run("(θ)", 1.0, 0.0)
+                run("(", 1.0, 0.0),
+                var("θ", 1.0, 0.0),
+                run(")", 1.0, 0.0)
             ]
         );
         let nested = parse("cos^{α_p} θ");
         assert_eq!(nested[0], run("cos", 1.0, 0.0));
-        assert_eq!(nested[1], run("α", 0.7, 0.38));
-        assert!((nested[2].scale - 0.49).abs() < 1e-12);
+        assert_eq!(nested[1], var("α", 0.7, 0.38));
+        assert!((nested[2].scale - 0.49).abs() < 1e-12 && nested[2].italic);
         assert!((nested[2].rise - (0.38 - 0.2 * 0.7)).abs() < 1e-12);
-        assert_eq!(nested[3], run(" θ", 1.0, 0.0));
+        assert_eq!(nested[3], run(" ", 1.0, 0.0));
+        assert_eq!(nested[4], var("θ", 1.0, 0.0));
+    }
+
+    #[test]
+    fn unicode_subscripts_are_set_as_markup_subscripts_are() {
+        assert_eq!(parse("a₁ = 10"), parse("a_1 = 10"));
+        assert_eq!(parse("F₀"), parse("F_0"));
+        assert_eq!(parse("log₁₀ D"), parse("log_{10} D"));
+        assert_eq!(parse("F₀")[1], run("0", 0.7, -0.2));
+        assert!(has_markup("a₁ = 10") && has_markup("α_b") && !has_markup("0.25"));
+    }
+
+    #[test]
+    fn variables_are_italic_and_words_digits_and_articles_upright() {
+        let slanted = |text: &str| -> String {
+            parse(text)
+                .into_iter()
+                .filter(|r| r.italic)
+                .map(|r| r.text)
+                .collect()
+        };
+        assert_eq!(slanted("θ (radians)"), "θ");
+        assert_eq!(slanted("G_1(θ_o) (1 + Λ(θ_o))"), "GθoΛθo");
+        assert_eq!(slanted("ln D(θ) and cos θ"), "Dθθ");
+        assert_eq!(slanted("E_{avg} = 0.41"), "E");
+        assert_eq!(slanted("a reference for a₁"), "a");
+        assert_eq!(slanted("α_{tr} = 0.4 … 0.9"), "α");
+        assert_eq!(slanted("ABC 2048"), "");
+        assert_eq!(slanted("π/6 and Σ x"), "x");
     }
 
     #[test]
     fn escapes_and_dangling_marks_are_literal() {
         assert_eq!(plain(r"snake\_case"), "snake_case");
-        assert_eq!(parse(r"a\^b"), [run("a^b", 1.0, 0.0)]);
+        assert_eq!(parse(r"x\^yz")[1], run("^yz", 1.0, 0.0));
         assert_eq!(plain("x_ y^"), "x_ y^");
         assert_eq!(plain("x_{unclosed"), "xunclosed");
         assert_eq!(plain("α_{tr} = 0.3"), "αtr = 0.3");
-        assert!(!has_markup("a₁ = 10") && has_markup("α_b"));
     }
 }

@@ -464,7 +464,9 @@ mod tests {
             "NDF and Fresnel",
             "Beckmann",
             "θ",
-            "F₀ = 0.04",
+            // F₀ = 0.04: an italic F, a set subscript 0.
+            "F",
+            " = 0.04",
             "10⁰",
             "90°",
         ] {
@@ -657,14 +659,19 @@ mod tests {
             "Fresnel decomposition",
             "Number of basis elements",
             "Cumulative singular values",
-            "sₖ / Σs",
+            // sₖ / Σs, c₀, g = 1: italic variables, set subscripts.
+            "s",
+            "k",
+            " / Σs",
             "cumulative",
             "Gulbrandsen parametrization",
-            "c₀",
-            "c₂",
-            "c₃",
+            "c",
+            "0",
+            "2",
+            "3",
             "manifold",
-            "g = 1",
+            "g",
+            " = 1",
             "15",
         ] {
             assert!(svg.contains(&format!(">{label}</text>")), "{label}");

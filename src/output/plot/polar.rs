@@ -528,9 +528,13 @@ mod tests {
     fn polar_panels_label_angles_and_radii_and_render_deterministically() {
         let figure = polar_sample();
         let svg0 = String::from_utf8(svg(&figure).unwrap()).unwrap();
-        for label in ["30°", "−30°", "90°", "π/6", "−π/3", "π/2", "10⁰", "D(θ)"] {
+        // D(θ) is typeset: an italic D and θ around upright brackets.
+        for label in [
+            "30°", "−30°", "90°", "π/6", "−π/3", "π/2", "10⁰", "D", "θ", ")",
+        ] {
             assert!(svg0.contains(&format!(">{label}</text>")), "{label}");
         }
+        assert!(svg0.contains(r#"font-style="oblique""#));
         assert!(svg(&figure).unwrap() == svg0.into_bytes());
         assert!(draw_png(&figure).unwrap() == draw_png(&figure).unwrap());
     }

@@ -35,14 +35,18 @@ pub(super) const SURFACE_OPACITY: f64 = 0.8;
 /// Brightness of a surface's mesh lines relative to its colour.
 pub(super) const MESH_DARKEN: f64 = 0.7;
 
-/// Registers the embedded face once per process; later calls return the first outcome.
+/// Registers the embedded faces (regular and oblique) once per process; later calls return the
+/// first outcome.
 pub(super) fn ensure_font() -> Result<(), PlotError> {
     static REGISTERED: OnceLock<bool> = OnceLock::new();
     let ok = *REGISTERED.get_or_init(|| {
-        let bytes = dejavu::sans::regular();
-        // "sans-serif" too, so that any plotters default style finds the same face.
+        let (bytes, oblique) = (dejavu::sans::regular(), dejavu::sans::oblique());
+        // "sans-serif" too, so that any plotters default style finds the same face; the oblique
+        // face sets variables (see `mathtext`).
         register_font(FONT_NAME, FontStyle::Normal, bytes).is_ok()
             && register_font("sans-serif", FontStyle::Normal, bytes).is_ok()
+            && register_font(FONT_NAME, FontStyle::Oblique, oblique).is_ok()
+            && register_font("sans-serif", FontStyle::Oblique, oblique).is_ok()
     });
     if ok { Ok(()) } else { Err(PlotError::Font) }
 }
