@@ -2,14 +2,15 @@
 //! publication figure keeps ([`lint`]): no literal markup, at least three labelled ticks per axis
 //! of a 2D panel, plot areas that keep their share of the cell, equal plot areas along a row, no
 //! text overlapping other text or leaving the canvas, every curve at 3:1 contrast with the page,
-//! no two legend entries alike in a panel, and nothing the drawing could not do as asked.
+//! no two legend entries alike in a panel or told apart only by colours too close (in normal
+//! vision or for a deuteranope), and nothing the drawing could not do as asked.
 
 use std::cell::RefCell;
 
 use super::theme::{self, Pattern};
 use super::{PlotError, SVG_UNITS_PER_PX, draw_figure};
 use crate::pipeline::figure::Figure;
-use crate::spec::look::{PanelKind, Rgb};
+use crate::spec::look::{PanelKind, Rgb, delta_e00};
 use plotters::prelude::*;
 
 /// Least labelled ticks per axis of a 2D panel.
@@ -19,6 +20,12 @@ pub const MIN_LABELLED_TICKS: usize = 3;
 pub const MIN_PLOT_SHARE: f64 = 0.3;
 /// Least WCAG contrast of a curve with its page.
 pub const MIN_CONTRAST: f64 = 3.0;
+/// Least CIEDE2000 difference of two legend entries of a panel that differ only by colour: 8 is
+/// about where two thin curves stop being confused at a glance.
+pub const MIN_ENTRY_DELTA_E: f64 = 8.0;
+/// The same under a deuteranope simulation (Machado 2009), where a little less is still
+/// readable next to the legend.
+pub const MIN_ENTRY_DELTA_E_DEUTAN: f64 = 5.0;
 /// Plot areas of one row may differ by this much, in CSS pixels.
 pub const ROW_TOLERANCE_PX: f64 = 1.0;
 /// Text boxes may overlap by this much on each side before it counts, in CSS pixels: glyph boxes
@@ -304,6 +311,41 @@ pub(super) fn findings(
             }
             seen.push(entry);
         }
+        // Entries (not members of one sweep) told apart by colour alone must differ enough in
+        // colour, for a deuteranope too.
+        let mut firsts: Vec<(Rgb, Pattern, u64, &str)> = Vec::new();
+        for (series, look) in panel
+            .series
+            .iter()
+            .zip(theme::looks(figure)[panel_index].iter())
+        {
+            if series.label.is_empty() || series.style.sweep.is_some_and(|m| m.index > 0) {
+                continue;
+            }
+            let this = (
+                look.colour,
+                look.pattern,
+                series.style.width.to_bits(),
+                series.label.as_str(),
+            );
+            for other in &firsts {
+                if other.1 != this.1 || other.2 != this.2 || other.0 == this.0 {
+                    continue;
+                }
+                let normal = delta_e00(other.0.lab(), this.0.lab());
+                let deutan = delta_e00(other.0.deuteranopia().lab(), this.0.deuteranopia().lab());
+                if normal < MIN_ENTRY_DELTA_E || deutan < MIN_ENTRY_DELTA_E_DEUTAN {
+                    push(
+                        Some(panel_index),
+                        format!(
+                            "{:?} and {:?} differ only by colour, and little: ΔE00 {normal:.1} (expected at least {MIN_ENTRY_DELTA_E}), {deutan:.1} for a deuteranope (expected at least {MIN_ENTRY_DELTA_E_DEUTAN})",
+                            other.3, this.3
+                        ),
+                    );
+                }
+            }
+            firsts.push(this);
+        }
     }
     findings
 }
@@ -407,11 +449,26 @@ mod tests {
     #[test]
     fn each_rule_is_reported() {
         let line = |label: &str| series(label, RED, 1.0, Dash::Solid, vec![(0.0, 1.0), (1.0, 2.0)]);
+        let coloured = |label: &str, colour: u32| {
+            series(
+                label,
+                colour,
+                1.0,
+                Dash::Solid,
+                vec![(0.0, 1.0), (1.0, 2.0)],
+            )
+        };
         let mut twin = figure(vec![
             panel(XUnit::Radians, Scale::Linear, vec![line("a"), line("a")]),
             panel(XUnit::Radians, Scale::Linear, vec![line("b")]),
+            // matplotlib's tab10 green and red: apart in normal vision, not for a deuteranope.
+            panel(
+                XUnit::Radians,
+                Scale::Linear,
+                vec![coloured("green", 0x2CA02C), coloured("red", 0xD62728)],
+            ),
         ]);
-        (twin.rows, twin.cols) = (1, 2);
+        (twin.rows, twin.cols) = (2, 2);
         let text = |label: &str, rect: Rect| DrawnText {
             text: label.to_owned(),
             label: label.to_owned(),
@@ -454,6 +511,7 @@ mod tests {
             "fig.json: panels[1]: plot area differs from panels[0]'s in its row by 5.0 px",
             "fig.json: panels[0]: two legend entries \"a\" look alike",
             "fig.json: panels[0]: the legend \"a\" does not fit its upper right corner",
+            "fig.json: panels[2]: \"green\" and \"red\" differ only by colour, and little: ΔE00 71.7 (expected at least 8), 4.6 for a deuteranope",
         ] {
             assert!(found.contains(expected), "{expected} not in:\n{found}");
         }
