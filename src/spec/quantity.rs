@@ -49,7 +49,7 @@ pub const E_AVG_PLACEHOLDER: &str = "{e_avg}";
 
 impl<F> Quantity<F> {
     /// Checks what only the family tells: a Beckmann-based G1 needs a family with a Beckmann
-    /// equivalent ([`masking::beckmann_equivalent_alpha`], asked of the family's example lobe).
+    /// equivalent ([`Ndf::beckmann_equivalent_alpha`](crate::model::ndf::Ndf::beckmann_equivalent_alpha), asked of the family's example lobe).
     pub fn check_family(&self, family: Family, path: &str) -> Result<(), Problem> {
         let Quantity::Furnace { g1 } = self else {
             return Ok(());

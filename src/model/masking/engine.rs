@@ -16,7 +16,7 @@ named! {
         /// G1 = 1/(1 + Λ(θo)) with the family's exact Λ ([`Ndf::lambda`]).
         Smith = "smith",
         /// Walter 2007's rational Beckmann G1 ([`walter_rational_g1`]) at a = cot θo/α, α the family's
-        /// Beckmann-equivalent roughness ([`beckmann_equivalent_alpha`]): Mitsuba 3, Cycles, bbm.
+        /// Beckmann-equivalent roughness ([`Ndf::beckmann_equivalent_alpha`]): Mitsuba 3, Cycles, bbm.
         WalterRational = "walter-rational",
         /// The exact Smith G1 of the Beckmann lobe of the family's Beckmann-equivalent roughness.
         BeckmannEquivalent = "beckmann-equivalent",
@@ -57,7 +57,7 @@ impl G1Model {
     }
 
     fn equivalent_alpha(self, ndf: &Ndf) -> Result<f64, NoBeckmannEquivalent> {
-        beckmann_equivalent_alpha(ndf).ok_or(NoBeckmannEquivalent {
+        ndf.beckmann_equivalent_alpha().ok_or(NoBeckmannEquivalent {
             family: ndf.family(),
             model: self,
         })
@@ -81,13 +81,6 @@ pub struct NoBeckmannEquivalent {
     pub family: Family,
     /// The model asked for.
     pub model: G1Model,
-}
-
-/// The Beckmann roughness α_b engines substitute for `ndf` (its family's
-/// [`Distribution::beckmann_equivalent_alpha`](crate::model::ndf::Distribution::beckmann_equivalent_alpha)),
-/// or `None` where the family has none.
-pub fn beckmann_equivalent_alpha(ndf: &Ndf) -> Option<f64> {
-    ndf.beckmann_equivalent_alpha()
 }
 
 /// Above this a, Walter's rational G1 is 1 (its own cut-off).
@@ -152,6 +145,6 @@ mod tests {
         );
         assert!(G1Model::Smith.g1(&abc, 1.0).is_ok());
         let ggx = Ndf::TrowbridgeReitz(TrowbridgeReitz::new(0.3).unwrap());
-        assert_eq!(beckmann_equivalent_alpha(&ggx), Some(0.3));
+        assert_eq!(ggx.beckmann_equivalent_alpha(), Some(0.3));
     }
 }

@@ -14,7 +14,7 @@
 pub mod engine;
 pub mod projected_area;
 
-pub use engine::{G1Model, NoBeckmannEquivalent, beckmann_equivalent_alpha, walter_rational_g1};
+pub use engine::{G1Model, NoBeckmannEquivalent, walter_rational_g1};
 pub use projected_area::{front_projected_area, smith_furnace};
 
 use crate::model::names::named;
