@@ -91,7 +91,7 @@ fn reproduces_the_lambda_reference() {
         }
     }
     for ((family, route), (err, case)) in &worst {
-        println!("lambda.csv: {family:>16} {route:>8} max error {err:.2e} ({case})");
+        println!("Λ references: {family:>16} {route:>8} max error {err:.2e} ({case})");
     }
     assert!(
         failures.is_empty(),
