@@ -9,13 +9,6 @@
 
 use crate::spec::look::Scale;
 
-/// Font sizes relative to `Canvas::font_px`: axis labels, panel titles, the figure title.
-pub const AXIS_LABEL_EM: f64 = 1.1;
-/// Panel title size relative to `Canvas::font_px`.
-pub const PANEL_TITLE_EM: f64 = 1.2;
-/// Figure title size relative to `Canvas::font_px`.
-pub const FIGURE_TITLE_EM: f64 = 1.4;
-
 /// Approximate horizontal space of a panel cell that is not plot area (y tick labels, y label,
 /// margins), in base font sizes; the drawing measures it exactly, so it is taken on the small
 /// side: a wider plot area than the real one only makes the sampling tolerance stricter.
@@ -23,7 +16,7 @@ const NON_PLOT_WIDTH_EM: f64 = 4.0;
 /// Approximate vertical space of a panel cell that is not plot area (panel title, x tick labels,
 /// x label, margins), in base font sizes; small for the same reason.
 const NON_PLOT_HEIGHT_EM: f64 = 4.0;
-/// Height of the figure title band in base font sizes: the title ([`FIGURE_TITLE_EM`]) plus
+/// Height of the figure title band in base font sizes: the title ([`crate::spec::look::FIGURE_TITLE_EM`]) plus
 /// spacing.
 const FIGURE_TITLE_BAND_EM: f64 = 2.0;
 

@@ -483,6 +483,56 @@ pub struct Canvas {
     pub png_scale: f64,
     /// Base font size in CSS pixels (tick labels; titles are larger).
     pub font_px: f64,
+    /// The size the figure prints at, when its spec or preset gave one in inches or
+    /// centimetres; `None` for a size in pixels.
+    pub print: Option<PrintSize>,
+}
+
+/// A figure's size in a print unit, exactly as given: the SVG states it in that unit, the PNG
+/// has round(size × dpi) pixels a side and the PDF page is that size in points.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PrintSize {
+    /// Width in `unit`.
+    pub width: f64,
+    /// Height in `unit`.
+    pub height: f64,
+    /// The unit of both.
+    pub unit: PrintUnit,
+}
+
+/// A print unit of a figure's size.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PrintUnit {
+    /// Inches: [`CSS_PX_PER_INCH`] CSS pixels.
+    Inch,
+    /// Centimetres: an inch over 2.54.
+    Centimetre,
+}
+
+impl PrintUnit {
+    /// CSS pixels per unit.
+    pub fn css_px(self) -> f64 {
+        match self {
+            PrintUnit::Inch => CSS_PX_PER_INCH,
+            PrintUnit::Centimetre => CSS_PX_PER_INCH / 2.54,
+        }
+    }
+
+    /// The unit's symbol in SVG and CSS lengths: `in`, `cm`.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            PrintUnit::Inch => "in",
+            PrintUnit::Centimetre => "cm",
+        }
+    }
+}
+
+impl PrintSize {
+    /// Width and height in CSS pixels, unrounded.
+    pub fn css_px(&self) -> (f64, f64) {
+        let k = self.unit.css_px();
+        (self.width * k, self.height * k)
+    }
 }
 
 impl Canvas {
@@ -490,12 +540,19 @@ impl Canvas {
     /// encoded rows (RGB) take 7 bytes a pixel, 470 MB at the cap.
     pub const MAX_PNG_PIXELS: u64 = 1 << 26;
 
-    /// The PNG's width and height in pixels: each side times `png_scale`, rounded.
+    /// The PNG's width and height in pixels: each side times `png_scale`, rounded; a side of
+    /// a [`PrintSize`] is taken unrounded (3.3 in at 300 dpi is 990 pixels).
     pub fn png_size(&self) -> (f64, f64) {
-        (
-            (f64::from(self.width_px) * self.png_scale).round(),
-            (f64::from(self.height_px) * self.png_scale).round(),
-        )
+        let (w, h) = self.print.map_or(
+            (f64::from(self.width_px), f64::from(self.height_px)),
+            |p| p.css_px(),
+        );
+        ((w * self.png_scale).round(), (h * self.png_scale).round())
+    }
+
+    /// The PNG's resolution in pixels per inch: `png_scale` × [`CSS_PX_PER_INCH`].
+    pub fn dpi(&self) -> f64 {
+        self.png_scale * CSS_PX_PER_INCH
     }
 }
 
@@ -596,6 +653,8 @@ pub enum TickChoice {
     Count(usize),
     /// Exactly these values, in the unit the axis shows (those outside its range are not drawn).
     At(Vec<f64>),
+    /// Multiples of π/d on a radian axis (`"ticks": "pi"`), labelled `π/4`, `3π/8`.
+    Pi,
 }
 
 impl Axes {
@@ -640,6 +699,13 @@ pub const DEFAULT_FONT_PX: f64 = 14.0;
 /// (1.4 em of the default 14 px font) and its spacing.
 pub const DEFAULT_TITLE_BAND_PX: f64 = 40.0;
 
+/// Font sizes relative to `Canvas::font_px`: axis labels, panel titles, the figure title.
+pub const AXIS_LABEL_EM: f64 = 1.1;
+/// Panel title size relative to `Canvas::font_px`.
+pub const PANEL_TITLE_EM: f64 = 1.2;
+/// Figure title size relative to `Canvas::font_px`.
+pub const FIGURE_TITLE_EM: f64 = 1.4;
+
 /// Default figure width in CSS pixels: 640 for one column, 480 per column otherwise.
 pub fn default_width(cols: usize) -> f64 {
     if cols <= 1 {
@@ -650,10 +716,55 @@ pub fn default_width(cols: usize) -> f64 {
 }
 
 /// Default figure height in CSS pixels for `rows × cols` panels of aspect ratio `aspect` on a
-/// figure `width` wide, plus [`DEFAULT_TITLE_BAND_PX`] when `titled`; rounded, not yet clamped.
-pub fn default_height(rows: usize, cols: usize, width: f64, aspect: f64, titled: bool) -> f64 {
-    let title_band = if titled { DEFAULT_TITLE_BAND_PX } else { 0.0 };
+/// figure `width` wide, plus [`DEFAULT_TITLE_BAND_PX`] scaled to `font_px` when `titled`;
+/// rounded, not yet clamped.
+pub fn default_height(
+    (rows, cols): (usize, usize),
+    width: f64,
+    aspect: f64,
+    font_px: f64,
+    titled: bool,
+) -> f64 {
+    let title_band = if titled {
+        DEFAULT_TITLE_BAND_PX * font_px / DEFAULT_FONT_PX
+    } else {
+        0.0
+    };
     (rows as f64 * width / cols as f64 * aspect + title_band).round()
+}
+
+/// Least size tick labels print at, in points: what journals ask of figure text.
+pub const MIN_PRINT_PT: f64 = 6.0;
+
+/// The width a figure `width` CSS pixels wide with `cols` columns of panels is placed at in a
+/// paper when it is sized in pixels, in CSS pixels: one column (3.3 in) for one column of panels
+/// no wider than the default, the page's text width (7 in) for more panels or a wider one.
+pub fn placed_width_px(width: f64, cols: usize) -> f64 {
+    let column = cols <= 1 && width <= default_width(1);
+    let inches = if column { 3.3 } else { 7.0 };
+    inches * CSS_PX_PER_INCH
+}
+
+/// The size in points that base text of `font_px` prints at on `canvas`: at its print size
+/// when it has one, else with the canvas placed at [`placed_width_px`] of its `cols` (shrunk
+/// to fit, never enlarged).
+pub fn printed_pt(canvas: &Canvas, cols: usize) -> f64 {
+    let scale = match canvas.print {
+        Some(_) => 1.0,
+        None => {
+            let width = f64::from(canvas.width_px);
+            (placed_width_px(width, cols) / width).min(1.0)
+        }
+    };
+    canvas.font_px * scale * 72.0 / CSS_PX_PER_INCH
+}
+
+/// The default base text size of a canvas `width` CSS pixels wide with `cols` columns of panels:
+/// [`DEFAULT_FONT_PX`], or more on a canvas wider than [`placed_width_px`], so that its tick
+/// labels print at [`MIN_PRINT_PT`] when placed there.
+pub fn default_font_px(width: f64, cols: usize) -> f64 {
+    let least = MIN_PRINT_PT * CSS_PX_PER_INCH / 72.0 * width / placed_width_px(width, cols);
+    DEFAULT_FONT_PX.max(least)
 }
 
 /// A paper's figure size in one word: the width of a column or of a page, 8 pt text, 300 dpi.
@@ -680,6 +791,39 @@ impl Preset {
     /// at 2.2 in every catalogue figure keeps its plots at page width (a test renders them).
     pub const MIN_PANEL_HEIGHT_IN: f64 = 2.2;
 
+    /// Most panels a paper-page figure sets side by side: at 7 in, four panels of 1.75 in each
+    /// keep their tick labels apart at 8 pt.
+    pub const MAX_PAGE_COLUMNS: usize = 4;
+    /// Tallest a paper-column figure grows by stacking its panels before it takes a second column
+    /// of panels, in inches: about a page's text height.
+    pub const MAX_COLUMN_HEIGHT_IN: f64 = 9.0;
+
+    /// The panel grid of a figure of `panels` panels laid out `rows × cols` by its spec, at this
+    /// preset. Paper-column stacks the panels in one column (row by row, in order), or in two
+    /// when one column would be taller than [`Preset::MAX_COLUMN_HEIGHT_IN`] at
+    /// [`Preset::MIN_PANEL_HEIGHT_IN`] a panel; paper-page keeps the spec's grid when it has at
+    /// most [`Preset::MAX_PAGE_COLUMNS`] columns, else reflows to that many. A grid that already
+    /// fits is returned as given.
+    pub fn grid(self, panels: usize, (rows, cols): (usize, usize)) -> (usize, usize) {
+        let panels = panels.max(1);
+        let most = match self {
+            Preset::PaperColumn => {
+                let one_column = panels as f64 * Preset::MIN_PANEL_HEIGHT_IN;
+                if one_column <= Preset::MAX_COLUMN_HEIGHT_IN {
+                    1
+                } else {
+                    2
+                }
+            }
+            Preset::PaperPage => Preset::MAX_PAGE_COLUMNS,
+        };
+        if cols <= most {
+            (rows, cols)
+        } else {
+            (panels.div_ceil(most), most)
+        }
+    }
+
     /// The preset called `name`, if one is.
     pub fn named(name: &str) -> Option<Preset> {
         Preset::NAMES
@@ -696,28 +840,96 @@ impl Preset {
         }
     }
 
-    /// The canvas of a `rows × cols` figure at this preset: the preset's width, a height from the
-    /// panel rows (each panel `aspect` times as tall as it is wide but at least
-    /// [`Preset::MIN_PANEL_HEIGHT_IN`], plus the title's band at the preset's text size when
-    /// `titled`), [`Preset::FONT_PT`] text and [`Preset::DPI`].
-    pub fn canvas(self, rows: usize, cols: usize, aspect: f64, titled: bool) -> Canvas {
-        let px_per_inch = 96.0;
-        let width = self.width_in() * px_per_inch;
-        let font_px = Preset::FONT_PT * px_per_inch / 72.0;
-        let title_band = if titled {
-            DEFAULT_TITLE_BAND_PX * font_px / DEFAULT_FONT_PX
-        } else {
-            0.0
-        };
-        let panel =
-            (width / cols.max(1) as f64 * aspect).max(Preset::MIN_PANEL_HEIGHT_IN * px_per_inch);
-        let height = rows as f64 * panel + title_band;
+    /// The canvas of a figure at this preset: [`Preset::canvas_at`] the preset's width.
+    pub fn canvas(self, grid: (usize, usize), aspect: f64, titles: &Titles) -> Canvas {
+        self.canvas_at(self.width_in() * CSS_PX_PER_INCH, grid, aspect, titles)
+    }
+
+    /// The canvas of a `rows × cols` figure `width` CSS pixels wide with the preset's text: each
+    /// row of panels `aspect` times as tall as a panel is wide but at least
+    /// [`Preset::MIN_PANEL_HEIGHT_IN`], plus the lines its panel titles wrap to beyond the
+    /// first, plus the figure title's band ([`Titles::extra_height`]), rounded up to 0.01 in;
+    /// [`Preset::FONT_PT`] text and [`Preset::DPI`]; it prints at that size.
+    pub fn canvas_at(
+        self,
+        width: f64,
+        (rows, cols): (usize, usize),
+        aspect: f64,
+        titles: &Titles,
+    ) -> Canvas {
+        let font_px = Preset::FONT_PT * CSS_PX_PER_INCH / 72.0;
+        let cols = cols.max(1);
+        let panel = (width / cols as f64 * aspect).max(Preset::MIN_PANEL_HEIGHT_IN * CSS_PX_PER_INCH);
+        let height = rows as f64 * panel + titles.extra_height(width, cols, font_px);
+        // To a hundredth of an inch: a size a caption can state.
+        let height = (height / CSS_PX_PER_INCH * 100.0 - 1e-9).ceil() / 100.0 * CSS_PX_PER_INCH;
         Canvas {
             width_px: width.round() as u32,
             height_px: height.round() as u32,
-            png_scale: Preset::DPI / px_per_inch,
+            png_scale: Preset::DPI / CSS_PX_PER_INCH,
             font_px,
+            print: Some(PrintSize {
+                width: width / CSS_PX_PER_INCH,
+                height: height / CSS_PX_PER_INCH,
+                unit: PrintUnit::Inch,
+            }),
         }
+    }
+}
+
+/// CSS pixels per inch, as SVG and CSS define them.
+pub const CSS_PX_PER_INCH: f64 = 96.0;
+
+/// The titles a preset's canvas makes room for: the figure's, and each panel's by row.
+#[derive(Debug, Clone, Default)]
+pub struct Titles {
+    /// The figure title (empty for none).
+    pub figure: String,
+    /// Each panel's title, in grid order.
+    pub panels: Vec<String>,
+}
+
+impl Titles {
+    /// Average advance of a title's glyph, in ems: DejaVu Sans's is about 0.55 em for mixed text;
+    /// taken on the wide side so that the estimate of wrapped lines is too many, not too few.
+    const GLYPH_EM: f64 = 0.6;
+    /// Height of a title line, in the title's ems, with the gap between lines.
+    const LINE_EM: f64 = 1.25;
+
+    /// The lines `text` wraps to at `em` base text sizes of `font_px` across `width` CSS pixels
+    /// (less one base size of padding each side); 0 for no text. An estimate from
+    /// [`Titles::GLYPH_EM`]: markup characters (`_ ^ { } $ \`) are not counted.
+    pub fn lines(text: &str, em: f64, font_px: f64, width: f64) -> usize {
+        let glyphs = text.chars().filter(|c| !"_^{}$\\".contains(*c)).count();
+        if glyphs == 0 {
+            return 0;
+        }
+        let room = (width - 2.0 * font_px).max(font_px);
+        ((glyphs as f64 * Titles::GLYPH_EM * em * font_px / room).ceil() as usize).max(1)
+    }
+
+    /// Height the titles take beyond what [`Preset::MIN_PANEL_HEIGHT_IN`] holds (one line of
+    /// panel title) on a figure `width` CSS pixels wide in `cols` columns with `font_px` text:
+    /// [`DEFAULT_TITLE_BAND_PX`] scaled to the text for the figure title's first line and
+    /// a line per further line; a line per further line of each row's longest panel title.
+    pub fn extra_height(&self, width: f64, cols: usize, font_px: f64) -> f64 {
+        let line = |em: f64| Titles::LINE_EM * em * font_px;
+        let figure = match Titles::lines(&self.figure, FIGURE_TITLE_EM, font_px, width) {
+            0 => 0.0,
+            n => DEFAULT_TITLE_BAND_PX * font_px / DEFAULT_FONT_PX + (n - 1) as f64 * line(FIGURE_TITLE_EM),
+        };
+        let cell = width / cols.max(1) as f64;
+        let panels: usize = self
+            .panels
+            .chunks(cols.max(1))
+            .map(|row| {
+                row.iter()
+                    .map(|t| Titles::lines(t, PANEL_TITLE_EM, font_px, cell).saturating_sub(1))
+                    .max()
+                    .unwrap_or(0)
+            })
+            .sum();
+        figure + panels as f64 * line(PANEL_TITLE_EM)
     }
 }
 
@@ -849,10 +1061,12 @@ mod tests {
 
     #[test]
     fn presets_are_a_papers_width_8_pt_and_300_dpi_with_room_for_each_panel_row() {
-        let column =
-            Preset::named("paper-column")
-                .unwrap()
-                .canvas(1, 1, DEFAULT_ASPECT_RATIO, false);
+        let untitled = Titles::default();
+        let column = Preset::named("paper-column").unwrap().canvas(
+            (1, 1),
+            DEFAULT_ASPECT_RATIO,
+            &untitled,
+        );
         assert_eq!(column.width_px, 317); // 3.3 in at 96 px/in, rounded
         assert!((column.font_px - 8.0 * 96.0 / 72.0).abs() < 1e-12);
         assert!((column.png_scale * 96.0 - 300.0).abs() < 1e-12);
@@ -861,9 +1075,13 @@ mod tests {
             column.height_px,
             (Preset::MIN_PANEL_HEIGHT_IN * 96.0).round() as u32
         );
-        let tall = Preset::PaperColumn.canvas(1, 1, 1.0, false);
+        let tall = Preset::PaperColumn.canvas((1, 1), 1.0, &untitled);
         assert_eq!(tall.height_px, 317);
-        let page = Preset::PaperPage.canvas(2, 3, DEFAULT_ASPECT_RATIO, true);
+        let titled = Titles {
+            figure: "A short title".into(),
+            panels: vec!["α_b = 0.2".into(); 6],
+        };
+        let page = Preset::PaperPage.canvas((2, 3), DEFAULT_ASPECT_RATIO, &titled);
         assert_eq!(page.width_px, 672);
         // Panels 2.33 in wide would be 1.44 in tall: each row gets the least panel height, and the
         // title its band at 8 pt.
@@ -873,6 +1091,44 @@ mod tests {
             (2.0 * Preset::MIN_PANEL_HEIGHT_IN * 96.0 + band).round() as u32
         );
         assert_eq!(Preset::named("paper"), None);
+    }
+
+    #[test]
+    fn a_long_title_wraps_and_its_lines_get_room_at_a_presets_width() {
+        let font_px = Preset::FONT_PT * CSS_PX_PER_INCH / 72.0;
+        assert_eq!(Titles::lines("", FIGURE_TITLE_EM, font_px, 317.0), 0);
+        assert_eq!(Titles::lines("Beckmann", FIGURE_TITLE_EM, font_px, 317.0), 1);
+        // 83 glyphs of 0.6 × 1.4 × 10.7 px on 296 px: three lines.
+        let long = "Torrance–Sparrow peak-fitted to Phong (thick); dashed: the notebook's α_{ts} matched by hand";
+        assert_eq!(Titles::lines(long, FIGURE_TITLE_EM, font_px, 317.0), 3);
+        let short = Titles {
+            figure: "Beckmann".into(),
+            panels: vec![],
+        };
+        let wrapped = Titles {
+            figure: long.into(),
+            panels: vec![],
+        };
+        let line = 1.25 * FIGURE_TITLE_EM * font_px;
+        let (a, b) = (
+            short.extra_height(317.0, 1, font_px),
+            wrapped.extra_height(317.0, 1, font_px),
+        );
+        assert!((b - a - 2.0 * line).abs() < 1e-9, "{a} {b}");
+    }
+
+    #[test]
+    fn column_figures_stack_their_panels_and_page_figures_keep_up_to_four_a_row() {
+        let column = Preset::PaperColumn;
+        assert_eq!(column.grid(2, (1, 2)), (2, 1));
+        assert_eq!(column.grid(4, (2, 2)), (4, 1), "four panels of 2.2 in fit 9 in");
+        assert_eq!(column.grid(6, (2, 3)), (3, 2), "six would be 13.2 in tall");
+        assert_eq!(column.grid(8, (2, 4)), (4, 2));
+        assert_eq!(column.grid(1, (1, 1)), (1, 1));
+        let page = Preset::PaperPage;
+        assert_eq!(page.grid(6, (2, 3)), (2, 3));
+        assert_eq!(page.grid(8, (2, 4)), (2, 4));
+        assert_eq!(page.grid(6, (1, 6)), (2, 4));
     }
 
     #[test]

@@ -231,7 +231,7 @@ fn scene_key(key: &str) -> Value {
         ),
         "preset" => described(
             strings(scene::PRESETS),
-            "a paper's figure: paper-column (3.3 in wide) or paper-page (7 in wide), 8 pt text, 300 dpi, the height from the panel rows; width, height, font and dpi keys given win; render --preset overrides it",
+            "a paper's figure: paper-column (3.3 in wide) or paper-page (7 in wide), 8 pt text, 300 dpi, the height from the panel rows and titles; paper-column stacks the panels in one column (two past 9 in), paper-page sets at most four a row; width, height, font and dpi keys given win; render --preset overrides it",
         ),
         "sampling" => described(
             reference("sampling"),

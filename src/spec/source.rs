@@ -148,12 +148,12 @@ fn apply_override(
     over: CanvasOverride,
 ) -> std::result::Result<Scene<Spec>, Problem> {
     if let Some(preset) = over.preset {
-        scene.canvas = preset.canvas(
-            scene.rows,
-            scene.cols,
-            scene.aspect_ratio,
-            !scene.title.is_empty(),
-        );
+        (scene.rows, scene.cols) = preset.grid(scene.panels.len(), (scene.rows, scene.cols));
+        let titles = crate::spec::look::Titles {
+            figure: scene.title.clone(),
+            panels: scene.panels.iter().map(|p| p.axes.title.clone()).collect(),
+        };
+        scene.canvas = preset.canvas((scene.rows, scene.cols), scene.aspect_ratio, &titles);
     }
     let canvas = &mut scene.canvas;
     let (w, h) = (f64::from(canvas.width_px), f64::from(canvas.height_px));
@@ -161,6 +161,10 @@ fn apply_override(
         (Some(width), None) => (width, h * width / w),
         (width, height) => (width.unwrap_or(w), height.unwrap_or(h)),
     };
+    if over.width.is_some() || over.height.is_some() {
+        // A size in pixels replaces a printed one.
+        canvas.print = None;
+    }
     canvas.width_px = width.round().max(16.0) as u32;
     canvas.height_px = height.round().max(16.0) as u32;
     canvas.png_scale = over.png_scale.unwrap_or(canvas.png_scale);

@@ -37,10 +37,7 @@ fn every_catalogue_figure_passes_the_figure_lint_at_page_width() {
     assert!(findings.is_empty(), "{}", findings.join("\n"));
 }
 
-/// At one column's width (3.3 in), the grids of three panels a row and the long legends of the
-/// catalogue still break the layout rules: what is left of the preset work.
 #[test]
-#[ignore = "paper-column: 173 findings in 24 figures remain (grids of 3 columns, legends in a row's band)"]
 fn every_catalogue_figure_passes_the_figure_lint_at_column_width() {
     let findings = catalogue_findings(CanvasOverride {
         preset: Some(Preset::PaperColumn),
@@ -92,7 +89,7 @@ fn a_spec_names_a_preset_and_its_own_keys_win() {
     ]);
     assert_eq!(cli.status.code(), Some(0), "{}", text(&cli.stderr));
     let svg = std::fs::read_to_string(dir.join("wider.svg")).unwrap();
-    assert!(svg.contains(r#"width="672""#), "{}", &svg[..300]);
+    assert!(svg.contains(r#"width="7in""#), "{}", &svg[..300]);
 }
 
 /// A figure far too small for its text: 160 × 90 px with 14 px text and a long title.

@@ -124,15 +124,18 @@ fn figures_take_physical_sizes_tick_choices_line_widths_and_no_grid() {
     let out = dir.join("out");
     render_into(&[&spec], &out, "svg,png");
     let svg = std::fs::read_to_string(out.join("paper.svg")).unwrap();
-    // 3.5 × 2.5 in at 96 CSS px per inch; the PNG at 288 dpi is 3 pixels per CSS pixel.
+    // 3.5 × 2.5 in, stated in inches; the PNG at 288 dpi is 3.5 × 288 by 2.5 × 288 pixels.
     assert!(
-        svg.starts_with(r#"<svg width="336" height="240""#),
+        svg.starts_with(r#"<svg width="3.5in" height="2.5in""#),
         "{}",
         &svg[..80]
     );
     let png = std::fs::read(out.join("paper.png")).unwrap();
     let size = |at: usize| u32::from_be_bytes(png[at..at + 4].try_into().unwrap());
     assert_eq!((size(16), size(20)), (1008, 720));
+    // pHYs: 288 dpi is 11 339 pixels per metre each way, unit 1 (metre).
+    let phys = png.windows(4).position(|w| w == b"pHYs").expect("a pHYs chunk");
+    assert_eq!((size(phys + 4), size(phys + 8), png[phys + 12]), (11339, 11339, 1));
     for label in ["0°", "45°", "90°", "0.1", "10"] {
         assert!(svg.contains(&format!(">{label}</text>")), "{label}");
     }
@@ -154,7 +157,7 @@ fn figures_take_physical_sizes_tick_choices_line_widths_and_no_grid() {
         "dpi: give png_scale or dpi, not both",
         "unit: unknown value (got \"mm\", expected one of: px, in, cm)",
         "panels[0].y.ticks[0]: invalid tick (got 0, expected a number > 0 on a log axis)",
-        "panels[0].x.ticks: expected a whole count from 2 to 20 or a list of values (got 1)",
+        "panels[0].x.ticks: expected a whole count from 2 to 20, a list of values or \"pi\" (got 1)",
         "panels[0].curves[0].width",
     ] {
         assert!(stderr.contains(expected), "{expected} not in {stderr}");

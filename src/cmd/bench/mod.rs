@@ -19,12 +19,13 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 /// Figure size in CSS pixels: four panels, two by two, each tall enough for the drawing panel to
-/// keep a useful plot above its ten-entry legend.
+/// keep a useful plot above its ten-entry legend; text that prints at 6 pt at a page's width.
 const CANVAS: Canvas = Canvas {
     width_px: 1400,
     height_px: 1400,
     png_scale: 1.0,
-    font_px: 13.0,
+    font_px: 17.0,
+    print: None,
 };
 /// Floor of the plotted errors: exact results (error 0) would vanish from a log axis; the
 /// references resolve 1e-15 at best.

@@ -2,6 +2,7 @@
 //! decimals, decades), tick labels, and the plotters coordinate that maps display values to
 //! pixels.
 
+use std::f64::consts::FRAC_PI_2;
 use std::ops::Range;
 
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint};
@@ -77,7 +78,8 @@ impl Axis {
         let (lo, hi) = widen_if_flat(lo, hi);
         let suffix = if unit == XUnit::Degrees { "°" } else { "" };
         if let Some(choice) = &panel.axes.x_ticks {
-            return Axis::from_ticks(lo, hi, chosen(choice, axes.x_scale, (lo, hi), suffix));
+            let ticks = chosen(choice, axes.x_scale, (lo, hi), max_ticks, suffix);
+            return Axis::from_ticks(lo, hi, ticks);
         }
         if axes.x_scale == Scale::Log {
             return Axis::from_ticks(lo, hi, ticks::log(lo, hi, max_ticks));
@@ -98,6 +100,11 @@ impl Axis {
                 let most = ticks::limit(max_ticks, ticks::MAX_LINEAR_TICKS);
                 let step = ticks::nice_step(lo, hi, most, &WHOLE_MANTISSAS).max(1.0);
                 ticks::labelled(ticks::multiples(lo, hi, step), step, "")
+            }
+            // The hemisphere in radians ends at π/2: it is ticked in fractions of π, so that its
+            // end is labelled.
+            XUnit::Radians if lo.abs() < 1e-12 && (hi - FRAC_PI_2).abs() < 1e-12 => {
+                ticks::pi(lo, hi, max_ticks)
             }
             XUnit::Radians | XUnit::Plain | XUnit::Slope => {
                 ticks::linear(lo, hi, max_ticks, &ticks::NICE_MANTISSAS, "")
@@ -128,7 +135,7 @@ impl Axis {
             Some(choice) => Axis::from_ticks(
                 range.0,
                 range.1,
-                chosen(choice, panel.axes.y_scale, range, ""),
+                chosen(choice, panel.axes.y_scale, range, max_ticks, ""),
             ),
             None => Axis::values(panel.axes.y_scale, range, max_ticks),
         }
@@ -193,10 +200,17 @@ impl Axis {
 }
 
 /// The ticks a spec chose for an axis over `(lo, hi)` (display units) on `scale`: at most `n` nice
-/// ticks for a count, or the given values inside the range (on a log axis labelled as its own
-/// ticks are when they are m × 10ᵏ).
-fn chosen(choice: &TickChoice, scale: Scale, (lo, hi): (f64, f64), suffix: &str) -> Ticks {
+/// ticks for a count, the given values inside the range (on a log axis labelled as its own
+/// ticks are when they are m × 10ᵏ), or multiples of π/d as `room` allows.
+fn chosen(
+    choice: &TickChoice,
+    scale: Scale,
+    (lo, hi): (f64, f64),
+    room: f64,
+    suffix: &str,
+) -> Ticks {
     match (choice, scale) {
+        (TickChoice::Pi, _) => ticks::pi(lo, hi, room),
         (TickChoice::Count(n), Scale::Linear) => {
             let step = ticks::nice_step(lo, hi, *n, &ticks::NICE_MANTISSAS);
             ticks::labelled(ticks::multiples(lo, hi, step), step, suffix)
@@ -269,7 +283,7 @@ pub(super) fn x_display(theta: f64, axes: &Axes) -> Option<f64> {
 pub(super) fn default_x(unit: XUnit) -> (f64, f64) {
     match unit {
         XUnit::Degrees => (0.0, 90.0),
-        XUnit::Radians => (0.0, std::f64::consts::FRAC_PI_2),
+        XUnit::Radians => (0.0, FRAC_PI_2),
         XUnit::Plain => (0.0, 1.0),
         XUnit::Slope => (0.0, 4.0),
     }

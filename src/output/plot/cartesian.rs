@@ -14,7 +14,7 @@ use super::style::{Metrics, stroke};
 use super::theme::Look;
 use super::{PlotError, draw_err, outline};
 use crate::pipeline::figure::{Panel, Series};
-use crate::pipeline::layout::AXIS_LABEL_EM;
+use crate::spec::look::AXIS_LABEL_EM;
 use crate::spec::look::DEFAULT_ASPECT_RATIO;
 use crate::spec::look::{LegendPlace, Mark, Scale};
 

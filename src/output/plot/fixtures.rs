@@ -88,6 +88,7 @@ pub(super) fn figure(panels: Vec<Panel>) -> Figure {
             height_px: 250,
             png_scale: 2.0,
             font_px: 12.0,
+            print: None,
         },
         theme: Theme::Notebook,
         panels,

@@ -17,7 +17,7 @@ use super::mathtext;
 use super::style::Metrics;
 use super::{PlotError, draw_err, outline};
 use crate::pipeline::figure::{Panel, Series};
-use crate::pipeline::layout::AXIS_LABEL_EM;
+use crate::spec::look::AXIS_LABEL_EM;
 use crate::spec::look::{Rgb, viridis};
 
 /// Gap between the plot area and the colour bar, and the bar's width, in base text sizes.

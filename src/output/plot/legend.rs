@@ -385,9 +385,11 @@ impl Legend {
                 record_warning(
                     &m.trace,
                     format!(
-                        "the legend {:?} does not fit its {} corner ({w} × {h} px plot area): drawn where it hides the least",
+                        "the legend {:?} does not fit its {} corner ({:.0} × {:.0} px plot area): drawn where it hides the least",
                         self.entries.first().map_or("", |e| e.label.as_str()),
-                        corner.name()
+                        corner.name(),
+                        f64::from(w) / m.k,
+                        f64::from(h) / m.k
                     ),
                 );
                 self.draw_over(plot, covered, m)

@@ -3,21 +3,22 @@
 //! of a 2D panel, plot areas that keep their share of the cell, equal plot areas along a row, no
 //! text overlapping other text or leaving the canvas, every curve at 3:1 contrast with the page,
 //! no two legend entries alike in a panel or told apart only by colours too close (in normal
-//! vision or for a deuteranope), and nothing the drawing could not do as asked.
+//! vision or for a deuteranope), tick labels of at least 6 pt in print, and nothing the drawing
+//! could not do as asked.
 
 use std::cell::RefCell;
 
 use super::theme::{self, Pattern};
 use super::{PlotError, SVG_UNITS_PER_PX, draw_figure};
 use crate::pipeline::figure::Figure;
-use crate::spec::look::{PanelKind, Rgb, delta_e00};
+use crate::spec::look::{MIN_PRINT_PT, PanelKind, Rgb, delta_e00};
 use plotters::prelude::*;
 
 /// Least labelled ticks per axis of a 2D panel.
 pub const MIN_LABELLED_TICKS: usize = 3;
-/// Least share of its grid cell's width and of its height a 2D panel's plot area keeps (the
-/// cell's height including the figure title's share, so that the rule is on the safe side).
-pub const MIN_PLOT_SHARE: f64 = 0.3;
+/// Least share of its grid cell's width and of its height a 2D panel's plot area keeps (the cells
+/// split what the figure title leaves).
+pub const MIN_PLOT_SHARE: f64 = 0.35;
 /// Least WCAG contrast of a curve with its page.
 pub const MIN_CONTRAST: f64 = 3.0;
 /// Least CIEDE2000 difference of two legend entries of a panel that differ only by colour: 8 is
@@ -28,9 +29,13 @@ pub const MIN_ENTRY_DELTA_E: f64 = 8.0;
 pub const MIN_ENTRY_DELTA_E_DEUTAN: f64 = 5.0;
 /// Plot areas of one row may differ by this much, in CSS pixels.
 pub const ROW_TOLERANCE_PX: f64 = 1.0;
-/// Text boxes may overlap by this much on each side before it counts, in CSS pixels: glyph boxes
-/// include the line's full ascent and descent, so neighbouring lines of one block touch.
+/// Text boxes may overlap by this much on each side before it counts, in CSS pixels, or by
+/// [`OVERLAP_TOLERANCE_EM`] of the base text size when that is more: glyph boxes include the
+/// line's full ascent and descent, so neighbouring lines of one block touch, and a digit's ink
+/// stops short of its box's bottom by about that much.
 pub const OVERLAP_TOLERANCE_PX: f64 = 1.0;
+/// See [`OVERLAP_TOLERANCE_PX`]: a tenth of the base text size.
+pub const OVERLAP_TOLERANCE_EM: f64 = 0.1;
 
 /// A box in device pixels: left, top, right, bottom.
 pub(super) type Rect = [f64; 4];
@@ -69,6 +74,8 @@ pub(super) struct Trace {
     pub(super) warnings: Vec<(Option<usize>, String)>,
     /// The panel being drawn (its index in the figure), once the panels are.
     pub(super) current: Option<usize>,
+    /// The top of the panel grid, below the figure title's band, in device pixels.
+    pub(super) grid_top: f64,
 }
 
 /// One broken rule: the panel it is about (`None`: the figure as a whole) and what was measured.
@@ -124,6 +131,13 @@ pub(super) fn record_current_panel(recorder: &Recorder, index: usize) {
     }
 }
 
+/// Records the top of the panel grid (device pixels), when a trace is kept.
+pub(super) fn record_grid_top(recorder: &Recorder, top: f64) {
+    if let Some(trace) = recorder {
+        trace.borrow_mut().grid_top = top;
+    }
+}
+
 /// Records a 2D panel's plot area and labelled tick counts, when a trace is kept.
 pub(super) fn record_panel(recorder: &Recorder, plot: Rect, ticks: (usize, usize)) {
     if let Some(trace) = recorder {
@@ -172,7 +186,8 @@ pub(super) fn findings(
     (width, height): (u32, u32),
 ) -> Vec<Finding> {
     let px = |device: f64| device / SVG_UNITS_PER_PX;
-    let slack = OVERLAP_TOLERANCE_PX * SVG_UNITS_PER_PX;
+    let slack =
+        OVERLAP_TOLERANCE_PX.max(OVERLAP_TOLERANCE_EM * figure.canvas.font_px) * SVG_UNITS_PER_PX;
     let mut findings: Vec<Finding> = Vec::new();
     let mut push = |panel: Option<usize>, message: String| {
         let finding = Finding { panel, message };
@@ -229,10 +244,24 @@ pub(super) fn findings(
             );
         }
     }
+    let printed = crate::spec::look::printed_pt(&figure.canvas, cols);
+    if printed < MIN_PRINT_PT - 0.05 {
+        let place = match figure.canvas.print {
+            Some(_) => "at the figure's size".to_owned(),
+            None => format!(
+                "placed {} in wide",
+                px(crate::spec::look::placed_width_px(f64::from(width), cols) / 96.0)
+            ),
+        };
+        push(
+            None,
+            format!("tick labels print at {printed:.1} pt {place} (expected at least {MIN_PRINT_PT} pt)"),
+        );
+    }
     let rows = figure.rows.max(1);
     let cell = (
         f64::from(width) / cols as f64,
-        f64::from(height) / rows as f64,
+        (f64::from(height) - trace.grid_top) / rows as f64,
     );
     for (traced, &panel) in trace.panels.iter().zip(&cartesian) {
         let [l, t, r, b] = traced.plot;
@@ -359,7 +388,7 @@ mod tests {
     #[test]
     fn the_trace_holds_every_label_plot_area_and_tick() {
         let figure = sample();
-        let (trace, _) = trace_of(&figure).unwrap();
+        let (trace, size) = trace_of(&figure).unwrap();
         let cartesian = figure.panels.iter().filter(|p| flat(&p.axes.kind)).count();
         assert_eq!(trace.panels.len(), cartesian);
         for label in ["NDF and Fresnel", "θ", "F₀ = 0.04"] {
@@ -373,7 +402,8 @@ mod tests {
             "{:?}",
             trace.panels
         );
-        assert!(findings(&figure, &trace, (1600, 1000)).is_empty());
+        let found = findings(&figure, &trace, size);
+        assert!(found.is_empty(), "{found:?}");
         assert!(
             trace.texts.iter().any(|t| t.panel.is_none()),
             "the figure title"
@@ -488,7 +518,7 @@ mod tests {
                     ticks: (2, 5),
                 },
                 PanelTrace {
-                    plot: [800.0, 120.0, 1500.0, 500.0],
+                    plot: [800.0, 100.0 + 5.0 * SVG_UNITS_PER_PX, 1500.0, 500.0],
                     ticks: (5, 5),
                 },
             ],
@@ -497,6 +527,7 @@ mod tests {
                 "the legend \"a\" does not fit its upper right corner".to_owned(),
             )],
             current: None,
+            grid_top: 0.0,
         };
         let found: Vec<String> = findings(&twin, &trace, (1600, 1000))
             .iter()

@@ -7,8 +7,8 @@
 //! kind of subscript whichever way it was written.
 //!
 //! Variables are italic, as TeX and matplotlib's mathtext set them: a letter (Latin or Greek) that
-//! stands alone — not part of a word of two or more letters — is drawn in the oblique face (`D(θ)`,
-//! `α_p`, `G_1`, `Λ`); words (`cos`, `ln`, `radians`, `ABC`, `tr`) and digits stay upright, and so
+//! stands alone — not part of a word of two or more letters, nor the end of an elided word
+//! (`notebook's`) — is drawn in the oblique face (`D(θ)`, `α_p`, `G_1`, `Λ`); words (`cos`, `ln`, `radians`, `ABC`, `tr`) and digits stay upright, and so
 //! does a lone `a`, `A` or `I` followed by a word (an article or pronoun in prose), and π, Σ and Π
 //! (a constant and operators).
 //!
@@ -168,7 +168,10 @@ fn slant_variables(runs: &mut Vec<Run>) {
             piece.clear();
         };
         for (i, &c) in chars.iter().enumerate() {
-            let alone = c.is_alphabetic() && !(i > 0 && letter(i - 1)) && !letter(i + 1);
+            // The s of "notebook's" ends a word: an apostrophe between letters joins them.
+            let elided = i > 1 && matches!(chars[i - 1], '\'' | '’') && letter(i - 2);
+            let alone =
+                c.is_alphabetic() && !(i > 0 && letter(i - 1)) && !letter(i + 1) && !elided;
             // "a reference", "A sweep", "I": an article or pronoun before a word stays upright.
             let prose = matches!(c, 'a' | 'A' | 'I')
                 && chars.get(i + 1) == Some(&' ')
@@ -452,6 +455,7 @@ mod tests {
         assert_eq!(slanted("α_{tr} = 0.4 … 0.9"), "α");
         assert_eq!(slanted("ABC 2048"), "");
         assert_eq!(slanted("π/6 and Σ x"), "x");
+        assert_eq!(slanted("the notebook's α and θ'"), "αθ");
     }
 
     #[test]

@@ -43,7 +43,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::plot3d::View;
 use crate::pipeline::figure::{Figure, Panel};
-use crate::pipeline::layout::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
+use crate::spec::look::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
 use crate::spec::look::{Canvas, PanelKind};
 use cartesian::{Needs, Shared, draw_cartesian, draw_cartesian_shared};
 use encode::{encode_png, finish_svg, rasterize};
@@ -143,12 +143,13 @@ fn draw_svg(figure: &Figure, trace: Recorder) -> Result<(Vec<u8>, Recorder), Plo
 /// `spec-sha256`).
 pub fn png(figure: &Figure, svg: &[u8]) -> Result<Vec<u8>, PlotError> {
     let (rgb, size) = rasterize(svg, &figure.canvas)?;
-    encode_png(&rgb, size, &figure.provenance)
+    encode_png(&rgb, size, figure.canvas.dpi(), &figure.provenance)
 }
 
-/// SVG device units per CSS pixel: plotters draws on an integer grid, so 4 gives 0.25 px
-/// precision for curve vertices and line widths (1.5 px = 6 units).
-const SVG_UNITS_PER_PX: f64 = 4.0;
+/// SVG device units per CSS pixel: plotters draws on an integer grid, so 16 gives 1/16 px
+/// precision for curve vertices and line widths (1.5 px = 24 units): 0.2 output pixels at
+/// 300 dpi, under the sampler's default quarter-pixel tolerance.
+const SVG_UNITS_PER_PX: f64 = 16.0;
 /// Initial SVG buffer size: a typical 10-curve figure is ~100-200 KB.
 const SVG_CAPACITY: usize = 1 << 18;
 
@@ -185,6 +186,7 @@ where
     };
     root.fill(&m.palette.background).map_err(draw_err)?;
     let body = titled(root, &figure.title, FIGURE_TITLE_EM, 0, &m)?;
+    lint::record_grid_top(&m.trace, f64::from(body.get_base_pixel().1));
     let cells = body.split_evenly((rows, cols));
     let looks = theme::looks(figure);
     let figure = &without_repeated_legends(figure, &looks);
@@ -457,7 +459,7 @@ mod tests {
     #[test]
     fn svg_keeps_labels_as_text_in_the_embedded_face() {
         let svg = String::from_utf8(svg(&sample()).unwrap()).unwrap();
-        assert!(svg.starts_with(r#"<svg width="400" height="250" viewBox="0 0 1600 1000""#));
+        assert!(svg.starts_with(r#"<svg width="400" height="250" viewBox="0 0 6400 4000""#));
         assert!(svg.trim_end().ends_with("</svg>"));
         assert_eq!(svg.matches("<text").count(), svg.matches("</text>").count());
         for label in [
@@ -525,8 +527,11 @@ mod tests {
         assert_eq!(polylines_in(&svg, ORANGE), 2);
         // Dashed and dotted series (both red): one polyline per dash.
         assert!(polylines_in(&svg, RED) > 20);
-        let thick = format!(r##"stroke="#{ORANGE:06X}" stroke-width="12""##);
-        assert!(svg.contains(&thick), "thick = 2 × 1.5 px × 4 units");
+        let thick = format!(
+            r##"stroke="#{ORANGE:06X}" stroke-width="{}""##,
+            2.0 * 1.5 * SVG_UNITS_PER_PX
+        );
+        assert!(svg.contains(&thick), "thick = 2 × 1.5 px × SVG_UNITS_PER_PX");
     }
 
     #[test]

@@ -25,7 +25,7 @@ use super::text::{anchor_towards, text_box, text_size};
 use super::theme::Look;
 use super::{PlotError, draw_err};
 use crate::pipeline::figure::Panel;
-use crate::pipeline::layout::AXIS_LABEL_EM;
+use crate::spec::look::AXIS_LABEL_EM;
 use crate::spec::look::{Mark, Scale, XUnit};
 
 /// Angle steps tried for spokes and labels, in degrees, finest first.

@@ -98,6 +98,7 @@ fn evenly_spaced(values: &[f64]) -> bool {
 /// The one label that stands for a sweep whose members are labelled `labels` (in sweep order), or
 /// `None` when they do not merge (their text differs other than in numbers, or fewer than two).
 ///
+/// Labels that are all the same are that label: the row's shade ramp says it is a sweep.
 /// Numbers equal in every label stay as written. A number that varies becomes `first … last`, or,
 /// when it is the only one that varies, takes at most [`MAX_LISTED`] values and they do not step
 /// evenly, the list of its values (`1, 10, 100, 1000`): a range then would hide where the values
@@ -132,9 +133,6 @@ pub(super) fn summarize(labels: &[&str]) -> Option<String> {
         col.iter().any(|n| *n != col[0])
     };
     let varying = (0..first.len()).filter(|&i| varies(i)).count();
-    if varying == 0 {
-        return None;
-    }
     let mut out = String::new();
     for (i, piece) in first.iter().enumerate() {
         match piece {
@@ -218,6 +216,10 @@ mod tests {
         assert_eq!(summarize(&["gold", "silver"]), None);
         assert_eq!(summarize(&["c_{1} = 1", "c_{2} = 1"]), None);
         assert_eq!(summarize(&["a = 1"]), None);
-        assert_eq!(summarize(&["a = 1", "a = 1"]), None);
+        assert_eq!(
+            summarize(&["by hand", "by hand", "by hand"]).as_deref(),
+            Some("by hand"),
+            "one label for every member is the sweep's row"
+        );
     }
 }

@@ -15,7 +15,7 @@ use super::theme::Look;
 use super::{PlotError, draw_err};
 use crate::output::plot3d::{self, P3, Projector, View};
 use crate::pipeline::figure::{Panel, Series};
-use crate::pipeline::layout::AXIS_LABEL_EM;
+use crate::spec::look::AXIS_LABEL_EM;
 use crate::spec::look::{Mark, Rgb};
 
 /// Free space between neighbouring tick labels along a 3D edge, in base text sizes.

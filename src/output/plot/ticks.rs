@@ -32,6 +32,12 @@ const DECADE_STRIDES: [f64; 4] = [1.0, 2.0, 5.0, 10.0];
 /// Slack in units of the step when deciding whether a multiple lies inside a range.
 const EDGE_SLACK: f64 = 1e-9;
 
+/// Denominators d of π/d steps on a radian axis, coarsest first.
+const PI_DIVISORS: [u32; 6] = [1, 2, 4, 6, 8, 12];
+/// Most labelled ticks of a π-multiple axis: `3π/8` labels are wide, and five reach π/8 steps on
+/// the hemisphere.
+const MAX_PI_TICKS: usize = 5;
+
 /// Labelled ticks with their labels, and unlabelled minor ticks, in display units.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct Ticks {
@@ -174,6 +180,54 @@ fn log_labels(values: &[(u32, i64)], decades: f64) -> Vec<String> {
         .collect()
 }
 
+/// Ticks at multiples of π/d over `[lo, hi]` (radians): the finest d of [`PI_DIVISORS`] with at
+/// most as many ticks as `room` allows (and [`MAX_PI_TICKS`]), else the coarsest; labelled as
+/// reduced fractions of π (`0`, `π/8`, `π/4`, `3π/8`, `π/2`, `π`, `−π/4`).
+pub(super) fn pi(lo: f64, hi: f64, room: f64) -> Ticks {
+    let most = limit(room, MAX_PI_TICKS);
+    let count = |d: u32| multiples(lo, hi, std::f64::consts::PI / f64::from(d)).len();
+    let d = PI_DIVISORS
+        .iter()
+        .rev()
+        .copied()
+        .find(|&d| count(d) <= most)
+        .unwrap_or(PI_DIVISORS[0]);
+    let step = std::f64::consts::PI / f64::from(d);
+    let major = multiples(lo, hi, step);
+    let labels = major
+        .iter()
+        .map(|&v| pi_fraction((v / step).round() as i64, i64::from(d)))
+        .collect();
+    Ticks {
+        major,
+        labels,
+        minor: Vec::new(),
+    }
+}
+
+/// `k`π/`d` written as a reduced fraction: `0`, `π`, `3π`, `π/4`, `3π/8`, `−π/2`.
+fn pi_fraction(k: i64, d: i64) -> String {
+    fn gcd(a: i64, b: i64) -> i64 {
+        if b == 0 { a } else { gcd(b, a % b) }
+    }
+    if k == 0 {
+        return "0".to_owned();
+    }
+    let g = gcd(k.abs(), d);
+    let (n, d) = (k.abs() / g, d / g);
+    let sign = if k < 0 { "−" } else { "" };
+    let numerator = if n == 1 {
+        "π".to_owned()
+    } else {
+        format!("{n}π")
+    };
+    if d == 1 {
+        format!("{sign}{numerator}")
+    } else {
+        format!("{sign}{numerator}/{d}")
+    }
+}
+
 /// Labels for ticks a spec placed at `values` (> 0) on a log axis: in the format of [`log`]'s own
 /// labels for the decades the values span when every value is m × 10ᵏ with m ∈ 1…9 (to 1e-9),
 /// else each value in its shortest form.
@@ -278,6 +332,19 @@ mod tests {
         // A few decades labelled every other one keep a line at each decade.
         let t = log(-8.0, 2.0, 6.0);
         assert!(t.minor.contains(&-7.0));
+    }
+
+    #[test]
+    fn pi_ticks_are_reduced_fractions_of_pi_at_the_finest_step_that_fits() {
+        let half = std::f64::consts::FRAC_PI_2;
+        let hemisphere = pi(0.0, half, 10.0);
+        assert_eq!(hemisphere.labels, ["0", "π/8", "π/4", "3π/8", "π/2"]);
+        assert!((hemisphere.major[4] - half).abs() < 1e-15);
+        assert_eq!(pi(0.0, half, 3.0).labels, ["0", "π/4", "π/2"]);
+        assert_eq!(pi(-half, half, 3.0).labels, ["−π/2", "0", "π/2"]);
+        assert_eq!(pi(0.0, 2.0 * std::f64::consts::PI, 5.0).labels, ["0", "π/2", "π", "3π/2", "2π"]);
+        assert_eq!(pi_fraction(6, 4), "3π/2");
+        assert_eq!(pi_fraction(4, 2), "2π");
     }
 
     #[test]

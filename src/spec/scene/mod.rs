@@ -21,7 +21,7 @@ use crate::model::transform::Transform;
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::spec::curve::{self, CurveSpec, Fitted, Label, Model, ParamValue, Part};
 use crate::spec::json::{Node, Value};
-use crate::spec::look;
+use crate::spec::look::{self, CSS_PX_PER_INCH};
 use crate::spec::look::{
     Axes, Canvas, Corner, Dash, LegendPlace, Mark, PanelKind, Rgb, Scale, Style, SweepMember,
     Theme, TickChoice, XUnit, shade,
@@ -121,8 +121,6 @@ pub const LEGEND_PLACES: &[&str] = &[
 ];
 /// Units of a scene's `width` and `height` (`unit`): CSS pixels, inches, centimetres.
 pub const SIZE_UNITS: &[&str] = &["px", "in", "cm"];
-/// CSS pixels per inch: what `in`, `cm`, `dpi` and `font_pt` are converted with.
-pub const CSS_PX_PER_INCH: f64 = 96.0;
 /// Most ticks a spec may ask for by count.
 pub const MAX_TICK_COUNT: usize = 20;
 /// Least and most line width a curve's `width` may set, in multiples of the default.
@@ -345,9 +343,22 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene<Spec>> {
     let sampling = read_sampling(reader, &object);
     let theme = read_theme(reader, &object);
     let panels = read_panels(reader, &object);
-    let (rows, cols) = read_layout(reader, &object, panels.as_ref().map_or(1, Vec::len));
+    let panel_count = panels.as_ref().map_or(1, Vec::len);
+    let grid = read_layout(reader, &object, panel_count);
+    let preset = reader
+        .choice(&object, "preset", PRESETS)
+        .and_then(look::Preset::named);
+    let (rows, cols) = preset.map_or(grid, |p| p.grid(panel_count, grid));
     let aspect_ratio = read_aspect_ratio(reader, &object);
-    let canvas = read_canvas(reader, &object, rows, cols, aspect_ratio, !title.is_empty());
+    let titles = look::Titles {
+        figure: title.clone(),
+        panels: panels
+            .iter()
+            .flatten()
+            .map(|p| p.axes.title.clone())
+            .collect(),
+    };
+    let canvas = read_canvas(reader, &object, preset, (rows, cols), aspect_ratio, &titles);
     if sliders.is_some() {
         check_interactive_views(reader, panels.as_deref().unwrap_or_default());
     }
@@ -483,20 +494,22 @@ fn read_aspect_ratio(reader: &mut Reader, object: &reader::Object) -> f64 {
 fn read_canvas(
     reader: &mut Reader,
     object: &reader::Object,
-    rows: usize,
-    cols: usize,
+    preset: Option<look::Preset>,
+    (rows, cols): (usize, usize),
     aspect: f64,
-    titled: bool,
+    titles: &look::Titles,
 ) -> Option<Canvas> {
-    let preset = reader
-        .choice(object, "preset", PRESETS)
-        .and_then(look::Preset::named)
-        .map(|p| p.canvas(rows, cols, aspect, titled));
     let unit = reader.choice(object, "unit", SIZE_UNITS).unwrap_or("px");
+    // A size in inches or centimetres, or a preset's unless pixels are asked for, prints exactly.
+    let print_unit = match unit {
+        "in" => Some(look::PrintUnit::Inch),
+        "cm" => Some(look::PrintUnit::Centimetre),
+        _ if preset.is_some() && object.get("unit").is_none() => Some(look::PrintUnit::Inch),
+        _ => None,
+    };
     let px_per_unit = match unit {
-        "in" => CSS_PX_PER_INCH,
-        "cm" => CSS_PX_PER_INCH / 2.54,
-        _ => 1.0,
+        "px" => 1.0,
+        _ => print_unit.map_or(1.0, look::PrintUnit::css_px),
     };
     let side = |v: f64| (16.0..=MAX_SIDE_PX).contains(&(v * px_per_unit));
     let side_text = format!(
@@ -511,31 +524,18 @@ fn read_canvas(
         .number(object, "height", side, &side_text)
         .map(|h| h * px_per_unit);
     // A width the spec gives replaces the preset's, and the height follows it.
-    let preset = preset.map(|canvas| match width {
-        Some(w) => {
-            let panel = (w / cols.max(1) as f64 * aspect)
-                .max(look::Preset::MIN_PANEL_HEIGHT_IN * CSS_PX_PER_INCH);
-            let band = if titled {
-                look::DEFAULT_TITLE_BAND_PX * canvas.font_px / look::DEFAULT_FONT_PX
-            } else {
-                0.0
-            };
-            Canvas {
-                width_px: w.round() as u32,
-                height_px: (rows as f64 * panel + band).round() as u32,
-                ..canvas
-            }
-        }
-        None => canvas,
+    let preset = preset.map(|p| match width {
+        Some(w) => p.canvas_at(w, (rows, cols), aspect, titles),
+        None => p.canvas((rows, cols), aspect, titles),
+    });
+    // The preset's size unrounded, so that a printed size stays exact.
+    let preset_size = preset.map(|c| {
+        c.print
+            .map_or((f64::from(c.width_px), f64::from(c.height_px)), |p| p.css_px())
     });
     let width = width
-        .or(preset.map(|c| f64::from(c.width_px)))
+        .or(preset_size.map(|s| s.0))
         .unwrap_or(look::default_width(cols));
-    let height = height
-        .or(preset.map(|c| f64::from(c.height_px)))
-        .unwrap_or_else(|| {
-            look::default_height(rows, cols, width, aspect, titled).clamp(16.0, MAX_SIDE_PX)
-        });
     let one_of = |reader: &mut Reader, a: &str, b: &str| {
         let both = object.get(a).is_some() && object.get(b).is_some();
         if both {
@@ -561,7 +561,11 @@ fn read_canvas(
                 .map(|pt| pt * CSS_PX_PER_INCH / 72.0)
         })
         .or(preset.map(|c| c.font_px))
-        .unwrap_or(look::DEFAULT_FONT_PX);
+        .unwrap_or_else(|| look::default_font_px(width, cols));
+    let height = height.or(preset_size.map(|s| s.1)).unwrap_or_else(|| {
+        let titled = !titles.figure.is_empty();
+        look::default_height((rows, cols), width, aspect, font_px, titled).clamp(16.0, MAX_SIDE_PX)
+    });
     let png_scale = reader
         .number(
             object,
@@ -589,6 +593,11 @@ fn read_canvas(
         height_px: height.round() as u32,
         png_scale,
         font_px,
+        print: print_unit.map(|unit| look::PrintSize {
+            width: width / unit.css_px(),
+            height: height / unit.css_px(),
+            unit,
+        }),
     };
     check_canvas(&canvas)
         .map_err(|message| reader.report("png_scale", message))
@@ -688,6 +697,19 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
         None if transform == Some(Transform::Slope) => XUnit::Slope,
         None => XUnit::Radians,
     };
+    let pi_ticks = |ticks: &Option<TickChoice>| matches!(ticks, Some(TickChoice::Pi));
+    if pi_ticks(&x_ticks) && (x_unit != XUnit::Radians || x_scale == Scale::Log) {
+        reader.report(
+            join_key(&x_path, "ticks"),
+            "\"pi\" ticks are for a linear θ axis in radians (got another unit or a log scale)",
+        );
+    }
+    if pi_ticks(&y_ticks) {
+        reader.report(
+            join_key(&y_path, "ticks"),
+            "\"pi\" ticks are for a θ axis in radians (got the y axis)",
+        );
+    }
     if x_unit == XUnit::Plain && !only_data {
         reader.report(
             &x_path,
@@ -763,8 +785,9 @@ fn read_legend(reader: &mut Reader, panel: &reader::Object) -> LegendPlace {
     }
 }
 
-/// An axis' `ticks`: a count (2 to [`MAX_TICK_COUNT`]) or a list of values in the unit the axis
-/// shows, each finite (and > 0 on a log axis, `scale` `Some(Log)`).
+/// An axis' `ticks`: a count (2 to [`MAX_TICK_COUNT`]), a list of values in the unit the axis
+/// shows, each finite (and > 0 on a log axis, `scale` `Some(Log)`), or `"pi"` (multiples of π/d;
+/// the panel checks that the axis is a linear radian axis).
 fn read_ticks(
     reader: &mut Reader,
     axis: &reader::Object,
@@ -778,6 +801,7 @@ fn read_ticks(
         {
             Some(TickChoice::Count(n.value as usize))
         }
+        Value::String(s) if s == "pi" => Some(TickChoice::Pi),
         Value::Array(items) if !items.is_empty() => {
             let log = scale == Some(Scale::Log);
             let mut values = Vec::with_capacity(items.len());
@@ -807,7 +831,7 @@ fn read_ticks(
         _ => {
             reader.report(
                 path,
-                format!("expected a whole count from 2 to {MAX_TICK_COUNT} or a list of values (got {node})"),
+                format!("expected a whole count from 2 to {MAX_TICK_COUNT}, a list of values or \"pi\" (got {node})"),
             );
             None
         }
