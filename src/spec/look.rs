@@ -486,6 +486,8 @@ pub struct Canvas {
     /// The size the figure prints at, when its spec or preset gave one in inches or
     /// centimetres; `None` for a size in pixels.
     pub print: Option<PrintSize>,
+    /// No page colour behind the figure: the SVG and PDF draw none, the PNG has an alpha channel.
+    pub transparent: bool,
 }
 
 /// A figure's size in a print unit, exactly as given: the SVG states it in that unit, the PNG
@@ -604,6 +606,52 @@ pub struct Axes {
     pub x_ticks: Option<TickChoice>,
     /// The y ticks the spec asks for; `None` = chosen by the locator.
     pub y_ticks: Option<TickChoice>,
+    /// Reference lines, bands and notes drawn with the curves (`annotations`), in spec order.
+    pub annotations: Vec<Annotation>,
+}
+
+/// One of a panel's `annotations`: something marked on the plot besides the curves, in the units
+/// its axes show (θ in the x axis' unit, y as plotted).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Annotation {
+    /// A reference line across the plot area at `at` on `axis` (`{"x": v}` is vertical,
+    /// `{"y": v}` horizontal), with its `label` (may be empty) at its upper or right end.
+    Line {
+        /// The axis whose value the line marks.
+        axis: Dimension,
+        /// The value.
+        at: f64,
+        /// Text beside the line's end.
+        label: String,
+    },
+    /// A shaded band across the plot area from `from` to `to` on `axis` (`{"x": [a, b]}`), with
+    /// its `label` (may be empty) inside its top left corner.
+    Band {
+        /// The axis whose interval the band covers.
+        axis: Dimension,
+        /// Low end.
+        from: f64,
+        /// High end.
+        to: f64,
+        /// Text inside the band.
+        label: String,
+    },
+    /// `text` beside a dot at the data point `at` (`{"text": "…", "at": [x, y]}`).
+    Note {
+        /// The point (x, y).
+        at: (f64, f64),
+        /// The text, up and right of the point.
+        text: String,
+    },
+}
+
+/// An axis of a 2D panel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Dimension {
+    /// The horizontal axis.
+    X,
+    /// The vertical axis.
+    Y,
 }
 
 /// Where a panel's legend goes.
@@ -676,6 +724,7 @@ impl Axes {
             grid: true,
             x_ticks: None,
             y_ticks: None,
+            annotations: Vec::new(),
         }
     }
 
@@ -873,6 +922,7 @@ impl Preset {
                 height: height / CSS_PX_PER_INCH,
                 unit: PrintUnit::Inch,
             }),
+            transparent: false,
         }
     }
 }

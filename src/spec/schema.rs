@@ -241,6 +241,13 @@ fn scene_key(key: &str) -> Value {
             strings(scene::THEMES),
             "the colours (default notebook); render --theme overrides it",
         ),
+        "background" => described(
+            strings(scene::BACKGROUNDS),
+            "opaque (default): the theme's page colour; transparent: none (the PNG gets an alpha channel)",
+        ),
+        "panel_letters" => {
+            json!({ "type": "boolean", "description": "letter the panels (a), (b), … in front of their titles, in order (default false)" })
+        }
         "panels" => json!({
             "type": "array",
             "items": reference("panel"),
@@ -287,6 +294,22 @@ fn panel_key(key: &str) -> Value {
         "grid" => {
             json!({ "type": "boolean", "description": "grid lines at the ticks (default true)" })
         }
+        "annotations" => json!({
+            "type": "array",
+            "maxItems": scene::MAX_ANNOTATIONS,
+            "description": "reference lines ({\"x\": v} or {\"y\": v}), bands ({\"x\": [a, b]}) with an optional label, and notes ({\"text\": \"…\", \"at\": [x, y]}), in the units the axes show",
+            "items": {
+                "type": "object",
+                "additionalProperties": false,
+                "properties": {
+                    "x": { "description": "a vertical line at this x, or a band over [a, b]", "anyOf": [{ "type": "number" }, { "type": "array", "items": { "type": "number" }, "minItems": 2, "maxItems": 2 }] },
+                    "y": { "description": "a horizontal line at this y, or a band over [a, b]", "anyOf": [{ "type": "number" }, { "type": "array", "items": { "type": "number" }, "minItems": 2, "maxItems": 2 }] },
+                    "label": { "type": "string", "description": "text beside a line's end or inside a band" },
+                    "text": { "type": "string", "description": "a note's text, up and right of its point" },
+                    "at": { "type": "array", "items": { "type": "number" }, "minItems": 2, "maxItems": 2, "description": "a note's data point [x, y]" },
+                },
+            },
+        }),
         "curves" => json!({
             "type": "array",
             "minItems": 1,

@@ -222,3 +222,94 @@ fn the_committed_drawing_of_the_readme_style_example_is_current() {
         "re-render plots/examples (README shows the command)"
     );
 }
+
+#[test]
+fn panel_letters_open_the_panel_titles_in_order_and_stay_upright() {
+    let dir = scratch("views-letters");
+    let spec = dir.join("letters.json");
+    std::fs::write(
+        &spec,
+        r#"{"id": "letters", "panel_letters": true,
+            "panels": [{"title": "rough", "curves": [{"ndf": "ggx", "alpha_tr": 0.5}]},
+                       {"curves": [{"ndf": "ggx", "alpha_tr": 0.1}]}]}"#,
+    )
+    .unwrap();
+    let out = dir.join("out");
+    render_into(&[&spec], &out, "svg");
+    let svg = std::fs::read_to_string(out.join("letters.svg")).unwrap();
+    assert!(svg.contains(">(a) rough</text>"), "the first panel's title, upright");
+    assert!(svg.contains(">(b)</text>"), "the untitled second panel's letter");
+    assert_eq!(scene::lettered(27, "x"), "(ab) x");
+}
+
+#[test]
+fn a_transparent_background_leaves_the_page_unpainted() {
+    let dir = scratch("views-transparent");
+    let spec = dir.join("clear.json");
+    std::fs::write(
+        &spec,
+        r#"{"id": "clear", "background": "transparent", "width": 320, "height": 200,
+            "panels": [{"curves": [{"ndf": "ggx", "alpha_tr": 0.5}]}]}"#,
+    )
+    .unwrap();
+    let out = dir.join("out");
+    render_into(&[&spec], &out, "svg,png");
+    let svg = std::fs::read_to_string(out.join("clear.svg")).unwrap();
+    assert!(!svg.contains(r##"width="5120" height="3200" fill="#FFFFFF""##));
+    let decoder = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(out.join("clear.png")).unwrap(),
+    ));
+    let mut reader = decoder.read_info().unwrap();
+    let mut pixels = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut pixels).unwrap();
+    assert_eq!(info.color_type, png::ColorType::Rgba);
+    assert_eq!(pixels[3], 0, "the top-left corner is see-through");
+    assert!(
+        pixels.chunks_exact(4).any(|p| p[3] == 255),
+        "the curves and text are opaque"
+    );
+}
+
+#[test]
+fn annotations_mark_lines_bands_and_points_and_bad_ones_are_named() {
+    let dir = scratch("views-annotations");
+    let spec = dir.join("marked.json");
+    std::fs::write(
+        &spec,
+        r#"{"id": "marked", "width": 640, "height": 400,
+            "panels": [{"curves": [{"ndf": "beckmann", "alpha_b": 0.3}],
+              "annotations": [{"x": 0.785, "label": "quarter"}, {"y": 1.0},
+                              {"x": [1.2, 1.4], "label": "grazing"},
+                              {"text": "peak", "at": [0, 3.54]}]}]}"#,
+    )
+    .unwrap();
+    let out = dir.join("out");
+    render_into(&[&spec], &out, "svg");
+    let svg = std::fs::read_to_string(out.join("marked.svg")).unwrap();
+    for label in ["quarter", "grazing", "peak"] {
+        assert!(svg.contains(&format!(">{label}</text>")), "{label}");
+    }
+    let lint = ndfplot(&["render", spec.to_str().unwrap(), "-o", out.to_str().unwrap(), "--strict", "-q"]);
+    assert_eq!(lint.status.code(), Some(0), "{}", text(&lint.stderr));
+
+    let bad = dir.join("bad.json");
+    std::fs::write(
+        &bad,
+        r#"{"id": "bad", "panels": [{"y": {"scale": "log"},
+            "curves": [{"ndf": "beckmann", "alpha_b": 0.3}],
+            "annotations": [{"x": 1, "text": "two kinds"}, {"y": 0}, {"text": "where?"},
+                            {"x": [2, 1]}]}]}"#,
+    )
+    .unwrap();
+    let output = ndfplot(&["render", bad.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = text(&output.stderr);
+    for expected in [
+        "panels[0].annotations[0]: expected exactly one of",
+        "panels[0].annotations[1].y: out of range (got 0, expected a finite number > 0 on a log axis)",
+        "panels[0].annotations[2].at: expected the data point [x, y]",
+        "panels[0].annotations[3].x: invalid interval",
+    ] {
+        assert!(stderr.contains(expected), "{expected} not in {stderr}");
+    }
+}

@@ -26,6 +26,7 @@ const CANVAS: Canvas = Canvas {
     png_scale: 1.0,
     font_px: 17.0,
     print: None,
+    transparent: false,
 };
 /// Floor of the plotted errors: exact results (error 0) would vanish from a log axis; the
 /// references resolve 1e-15 at best.

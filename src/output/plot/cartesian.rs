@@ -5,6 +5,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::annotate;
 use super::axis::{Axis, median_spacing, x_display};
 use super::clip::visible_pieces;
 use super::legend::{Legend, Outside, Sample, Side};
@@ -133,6 +134,21 @@ where
         y_area: frame.y_area,
         band,
     })
+}
+
+/// Whether the legend of `panel` goes inside its plot area when the panel fills `area` alone:
+/// it has one and fits where its place and the curves allow ([`Legend::goes_inside`]).
+pub(super) fn legend_fits_inside<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    panel: &Panel,
+    looks: &[Look],
+    m: &Metrics,
+) -> Result<bool, PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let alone = Alone::of(area, panel, looks, m)?;
+    Ok(alone.legend.is_some() && !alone.legend_outside)
 }
 
 /// Draws a 2D panel of a grid: the chart above the row's band with the shared label areas, the
@@ -498,6 +514,13 @@ where
     let (x, y) = (&frame.x, &frame.y);
     let (mut chart, plot) = draw_axes(area, panel, frame, m)?;
     let (pw, ph) = plot.dim_in_pixel();
+    let placement = annotate::Placement {
+        x,
+        y,
+        scales: (panel.axes.x_scale, panel.axes.y_scale),
+        size: (pw, ph),
+    };
+    annotate::draw(&plot, &panel.axes.annotations, &placement, annotate::Layer::Under, m)?;
     // Curve vertices in plot pixels, clamped to the plot area as plotters clamps the points
     // of the elements it draws (the dashes are walked along the clamped polyline).
     let (x_px, y_px) = plot.get_pixel_range();
@@ -542,6 +565,7 @@ where
                 .map_err(draw_err)?;
         }
     }
+    annotate::draw(&plot, &panel.axes.annotations, &placement, annotate::Layer::Over, m)?;
     outline(
         &plot,
         [(0, 0), (pw as i32 - 1, ph as i32 - 1)],

@@ -123,43 +123,75 @@ fn preserve_spaces(rest: &str) -> String {
     format!(r#"{attributes} xml:space="preserve">{content}</text>{tail}"#)
 }
 
+/// Packed 8-bit pixels of a raster: RGB, or straight (not premultiplied) RGBA.
+pub(super) struct Raster {
+    /// The pixels, row by row.
+    pub(super) pixels: Vec<u8>,
+    /// Width and height in pixels.
+    pub(super) size: (u32, u32),
+    /// Whether each pixel has an alpha byte.
+    pub(super) alpha: bool,
+}
+
 /// The SVG `svg` of a figure on `canvas` (as [`super::svg`] draws it) rasterized at
-/// `canvas.png_scale` pixels per CSS pixel by resvg, anti-aliased with sub-pixel positions, on an
-/// opaque white ground, as packed 8-bit RGB.
-pub(super) fn rasterize(svg: &[u8], canvas: &Canvas) -> Result<(Vec<u8>, (u32, u32)), PlotError> {
+/// `canvas.png_scale` pixels per CSS pixel by resvg, anti-aliased with sub-pixel positions: on an
+/// opaque white ground as RGB, or, on a transparent canvas, on nothing as straight RGBA.
+pub(super) fn rasterize(svg: &[u8], canvas: &Canvas) -> Result<Raster, PlotError> {
     let (width, height) = png_size(canvas)?;
     let tree = crate::output::svg_tree::parse(svg)
         .map_err(|e| PlotError::Draw(format!("the drawn SVG could not be read back: {e}")))?;
     let mut pixmap = resvg::tiny_skia::Pixmap::new(width, height)
         .ok_or_else(|| PlotError::Draw("the raster could not be allocated".to_owned()))?;
-    pixmap.fill(resvg::tiny_skia::Color::WHITE);
+    if !canvas.transparent {
+        pixmap.fill(resvg::tiny_skia::Color::WHITE);
+    }
     let size = tree.size();
     let transform = resvg::tiny_skia::Transform::from_scale(
         width as f32 / size.width(),
         height as f32 / size.height(),
     );
     resvg::render(&tree, transform, &mut pixmap.as_mut());
-    // Opaque ground: premultiplied and straight colour agree, so alpha is dropped as it is.
-    let mut rgb = vec![0; width as usize * height as usize * 3];
-    for (rgb, rgba) in rgb.chunks_exact_mut(3).zip(pixmap.data().chunks_exact(4)) {
-        rgb.copy_from_slice(&rgba[..3]);
-    }
-    Ok((rgb, (width, height)))
+    let pixels = if canvas.transparent {
+        pixmap
+            .pixels()
+            .iter()
+            .flat_map(|p| {
+                let c = p.demultiply();
+                [c.red(), c.green(), c.blue(), c.alpha()]
+            })
+            .collect()
+    } else {
+        // Opaque ground: premultiplied and straight colour agree, so alpha is dropped as it is.
+        let mut rgb = vec![0; width as usize * height as usize * 3];
+        for (rgb, rgba) in rgb.chunks_exact_mut(3).zip(pixmap.data().chunks_exact(4)) {
+            rgb.copy_from_slice(&rgba[..3]);
+        }
+        rgb
+    };
+    Ok(Raster {
+        pixels,
+        size: (width, height),
+        alpha: canvas.transparent,
+    })
 }
 
-/// Encodes packed 8-bit RGB pixels as a PNG with fixed settings: fast deflate and the Sub
+/// Encodes a raster (8-bit RGB or RGBA) as a PNG with fixed settings: fast deflate and the Sub
 /// filter, ~6× faster than adaptive filtering for files ~1.6× larger (plots are mostly flat).
 /// The resolution `dpi` goes into a `pHYs` chunk. The provenance record goes into `tEXt` chunks before the image data: `Software` =
 /// `ndfplot <version>`, then one chunk per field, keyed as [`Provenance::fields`] names them.
 pub(super) fn encode_png(
-    rgb: &[u8],
-    (width, height): (u32, u32),
+    raster: &Raster,
     dpi: f64,
     provenance: &Provenance,
 ) -> Result<Vec<u8>, PlotError> {
-    let mut out = Vec::with_capacity(rgb.len() / 16);
+    let (width, height) = raster.size;
+    let mut out = Vec::with_capacity(raster.pixels.len() / 16);
     let mut encoder = png::Encoder::new(&mut out, width, height);
-    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_color(if raster.alpha {
+        png::ColorType::Rgba
+    } else {
+        png::ColorType::Rgb
+    });
     encoder.set_depth(png::BitDepth::Eight);
     encoder.set_compression(png::Compression::Fast);
     encoder.set_filter(png::FilterType::Sub);
@@ -177,7 +209,7 @@ pub(super) fn encode_png(
         encoder.add_text_chunk(key.to_owned(), value)?;
     }
     let mut writer = encoder.write_header()?;
-    writer.write_image_data(rgb)?;
+    writer.write_image_data(&raster.pixels)?;
     writer.finish()?;
     Ok(out)
 }

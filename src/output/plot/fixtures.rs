@@ -89,6 +89,7 @@ pub(super) fn figure(panels: Vec<Panel>) -> Figure {
             png_scale: 2.0,
             font_px: 12.0,
             print: None,
+            transparent: false,
         },
         theme: Theme::Notebook,
         panels,

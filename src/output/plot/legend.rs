@@ -197,11 +197,12 @@ fn entries(series: &[Series], looks: &[Look], sample: impl Fn(&Series) -> Sample
     out
 }
 
-/// Which panels of `figure` (series drawn in `looks`) draw their legend: each panel whose legend
-/// is on, except when an earlier panel draws one with the same place and the same rows (label,
-/// width, shades, sample). A legend that several panels share is drawn once, in the first of
-/// them, as a figure legend would be.
-pub(super) fn drawn_legends(figure: &Figure, looks: &[Vec<Look>]) -> Vec<bool> {
+/// The legend each panel of `figure` (series drawn in `looks`) shares: for each panel whose 2D
+/// legend is on, the index of the first panel with the same place and the same rows (label,
+/// width, shades, sample) — its own index when it is the first; `None` for a panel with no
+/// legend of its own to share (legend off, no rows, not cartesian). A legend that several panels
+/// share is drawn once, as a figure legend would be.
+pub(super) fn legend_groups(figure: &Figure, looks: &[Vec<Look>]) -> Vec<Option<usize>> {
     type Row = (String, u64, Vec<Look>, Sample);
     let rows = |panel: &Panel, looks: &[Look]| -> Vec<Row> {
         entries(&panel.series, looks, |s| Sample::of(s.style.mark))
@@ -209,25 +210,28 @@ pub(super) fn drawn_legends(figure: &Figure, looks: &[Vec<Look>]) -> Vec<bool> {
             .map(|e| (e.label, e.width.to_bits(), e.looks, e.sample))
             .collect()
     };
-    let mut drawn: Vec<(LegendPlace, Vec<Row>)> = Vec::new();
+    let mut firsts: Vec<(usize, LegendPlace, Vec<Row>)> = Vec::new();
     figure
         .panels
         .iter()
         .zip(looks)
-        .map(|(panel, looks)| {
+        .enumerate()
+        .map(|(i, (panel, looks))| {
             let place = panel.axes.legend;
             if place == LegendPlace::None || panel.axes.kind != PanelKind::Cartesian {
-                return true;
+                return None;
             }
             let rows = rows(panel, looks);
             if rows.is_empty() {
-                return true;
+                return None;
             }
-            let repeated = drawn.iter().any(|(p, r)| *p == place && *r == rows);
-            if !repeated {
-                drawn.push((place, rows));
+            match firsts.iter().find(|(_, p, r)| *p == place && *r == rows) {
+                Some((first, _, _)) => Some(*first),
+                None => {
+                    firsts.push((i, place, rows));
+                    Some(i)
+                }
             }
-            !repeated
         })
         .collect()
 }

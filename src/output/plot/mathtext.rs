@@ -9,8 +9,8 @@
 //! Variables are italic, as TeX and matplotlib's mathtext set them: a letter (Latin or Greek) that
 //! stands alone — not part of a word of two or more letters, nor the end of an elided word
 //! (`notebook's`) — is drawn in the oblique face (`D(θ)`, `α_p`, `G_1`, `Λ`); words (`cos`, `ln`, `radians`, `ABC`, `tr`) and digits stay upright, and so
-//! does a lone `a`, `A` or `I` followed by a word (an article or pronoun in prose), and π, Σ and Π
-//! (a constant and operators).
+//! does a lone `a`, `A` or `I` followed by a word (an article or pronoun in prose), a panel letter
+//! opening a label (`(a)`), and π, Σ and Π (a constant and operators).
 //!
 //! Text is cut into runs of one size, baseline and slant ([`parse`]); [`width`] measures them and
 //! [`draw`] draws them one after the other with the face of the figure, so SVG, PNG and PDF (drawn
@@ -142,8 +142,13 @@ fn push(runs: &mut Vec<Run>, c: char, scale: f64, rise: f64) {
 /// letters, `D_{ABC}` a lone `D` and the word `ABC`.
 fn slant_variables(runs: &mut Vec<Run>) {
     let mut out: Vec<Run> = Vec::with_capacity(runs.len());
-    for run in runs.drain(..) {
+    for (index, run) in runs.drain(..).enumerate() {
         let chars: Vec<char> = run.text.chars().collect();
+        // A panel letter, `(a)` or `(ab)` opening the label, is a name: upright.
+        let panel_letter = index == 0
+            && chars.first() == Some(&'(')
+            && (2..=3).contains(&chars.iter().position(|&c| c == ')').unwrap_or(0))
+            && chars[1..].iter().take_while(|&&c| c != ')').all(char::is_ascii_lowercase);
         let letter = |i: usize| chars.get(i).is_some_and(|c| c.is_alphabetic());
         let mut piece = String::new();
         let flush = |piece: &mut String, italic: bool, out: &mut Vec<Run>| {
@@ -179,7 +184,8 @@ fn slant_variables(runs: &mut Vec<Run>) {
                 && chars.get(i + 3).is_some_and(|n| n.is_alphabetic());
             // π is a constant and Σ, Π operators: upright, as ISO 80000-2 sets them.
             let constant = matches!(c, 'π' | 'Σ' | 'Π');
-            if alone && !prose && !constant {
+            let named = panel_letter && i < 4;
+            if alone && !prose && !constant && !named {
                 flush(&mut piece, false, &mut out);
                 piece.push(c);
                 flush(&mut piece, true, &mut out);
@@ -456,6 +462,7 @@ mod tests {
         assert_eq!(slanted("ABC 2048"), "");
         assert_eq!(slanted("π/6 and Σ x"), "x");
         assert_eq!(slanted("the notebook's α and θ'"), "αθ");
+        assert_eq!(slanted("(b) D(θ) of (a)"), "Dθa", "a panel letter opening a label");
     }
 
     #[test]

@@ -19,6 +19,7 @@
 //! [`cartesian`], [`surface`] and [`heatmap`] (the panel kinds), [`legend`], [`style`] (sizes, colours,
 //! font) and [`encode`] (SVG finishing and PNG encoding).
 
+mod annotate;
 mod axis;
 mod cartesian;
 mod clip;
@@ -138,12 +139,12 @@ fn draw_svg(figure: &Figure, trace: Recorder) -> Result<(Vec<u8>, Recorder), Plo
 
 /// The PNG of `figure` from its drawn SVG `svg` (what [`svg`] returned for it): the same drawing
 /// rasterized at (width_px·png_scale) × (height_px·png_scale) pixels, anti-aliased, with text
-/// from the embedded face. 8-bit RGB, tagged sRGB, no time stamp: identical figures give
-/// identical bytes. The figure's provenance is in `tEXt` chunks (`Software`, `ndfplot-version`,
+/// from the embedded face. 8-bit RGB (RGBA on a transparent canvas), tagged sRGB, no time stamp:
+/// identical figures give identical bytes. The figure's provenance is in `tEXt` chunks (`Software`, `ndfplot-version`,
 /// `spec-sha256`).
 pub fn png(figure: &Figure, svg: &[u8]) -> Result<Vec<u8>, PlotError> {
-    let (rgb, size) = rasterize(svg, &figure.canvas)?;
-    encode_png(&rgb, size, figure.canvas.dpi(), &figure.provenance)
+    let raster = rasterize(svg, &figure.canvas)?;
+    encode_png(&raster, figure.canvas.dpi(), &figure.provenance)
 }
 
 /// SVG device units per CSS pixel: plotters draws on an integer grid, so 16 gives 1/16 px
@@ -184,12 +185,14 @@ where
         palette: theme::palette(figure.theme),
         trace,
     };
-    root.fill(&m.palette.background).map_err(draw_err)?;
+    if !figure.canvas.transparent {
+        root.fill(&m.palette.background).map_err(draw_err)?;
+    }
     let body = titled(root, &figure.title, FIGURE_TITLE_EM, 0, &m)?;
     lint::record_grid_top(&m.trace, f64::from(body.get_base_pixel().1));
     let cells = body.split_evenly((rows, cols));
     let looks = theme::looks(figure);
-    let figure = &without_repeated_legends(figure, &looks);
+    let figure = &without_repeated_legends(figure, &looks, &cells, &m)?;
     let layout = grid_layout(&cells, figure, &looks, cols, &m)?;
     for (index, (((panel, looks), cell), place)) in figure
         .panels
@@ -206,17 +209,58 @@ where
     Ok(m.trace)
 }
 
-/// `figure` with the legend of every panel turned off whose legend an earlier panel already draws
-/// ([`legend::drawn_legends`]): one legend for the panels that share it.
-fn without_repeated_legends(figure: &Figure, looks: &[Vec<Look>]) -> Figure {
-    let drawn = legend::drawn_legends(figure, looks);
+/// `figure` with one legend for the panels that share it ([`legend::legend_groups`]): drawn by
+/// the first panel of the group whose plot area holds it where it hides no curve, else by the
+/// group's first panel; the others' legends are turned off.
+fn without_repeated_legends<DB: DrawingBackend>(
+    figure: &Figure,
+    looks: &[Vec<Look>],
+    cells: &[DrawingArea<DB, Shift>],
+    m: &Metrics,
+) -> Result<Figure, PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let groups = legend::legend_groups(figure, looks);
+    let mut holder: Vec<Option<usize>> = vec![None; figure.panels.len()];
+    for (i, group) in groups.iter().enumerate() {
+        let Some(first) = *group else { continue };
+        let shared = groups.iter().filter(|g| **g == Some(first)).count() > 1;
+        if !shared || holder[first].is_some() {
+            continue;
+        }
+        let fits = |k: usize| -> Result<bool, PlotError> {
+            let panel = &figure.panels[k];
+            let area = titled_area(&cells[k], &panel.axes.title, m)?;
+            cartesian::legend_fits_inside(&area, panel, &looks[k], m)
+        };
+        if fits(i)? {
+            holder[first] = Some(i);
+        } else if groups[i + 1..].iter().all(|g| *g != Some(first)) {
+            holder[first] = Some(first);
+        }
+    }
     let mut figure = figure.clone();
-    for (panel, drawn) in figure.panels.iter_mut().zip(drawn) {
+    for (i, panel) in figure.panels.iter_mut().enumerate() {
+        let drawn = groups[i].is_none_or(|first| holder[first].is_none_or(|h| h == i));
         if !drawn {
             panel.axes.legend = crate::spec::look::LegendPlace::None;
         }
     }
-    figure
+    Ok(figure)
+}
+
+/// The part of `cell` below its panel title's band.
+fn titled_area<DB: DrawingBackend>(
+    cell: &DrawingArea<DB, Shift>,
+    title: &str,
+    m: &Metrics,
+) -> Result<DrawingArea<DB, Shift>, PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let band = title_block(cell, title, PANEL_TITLE_EM, m)?.band;
+    Ok(cell.split_vertically(band).1)
 }
 
 /// The layout every panel of a grid shares with its row and column: the row's title band (the

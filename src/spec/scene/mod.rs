@@ -23,7 +23,7 @@ use crate::spec::curve::{self, CurveSpec, Fitted, Label, Model, ParamValue, Part
 use crate::spec::json::{Node, Value};
 use crate::spec::look::{self, CSS_PX_PER_INCH};
 use crate::spec::look::{
-    Axes, Canvas, Corner, Dash, LegendPlace, Mark, PanelKind, Rgb, Scale, Style, SweepMember,
+    Annotation, Axes, Canvas, Corner, Dash, Dimension, LegendPlace, Mark, PanelKind, Rgb, Scale, Style, SweepMember,
     Theme, TickChoice, XUnit, shade,
 };
 use reader::Reader;
@@ -58,6 +58,8 @@ pub const SCENE_KEYS: &[&str] = &[
     "preset",
     "sampling",
     "theme",
+    "panel_letters",
+    "background",
     "panels",
     "interactive",
 ];
@@ -85,7 +87,13 @@ pub const PANEL_KEYS: &[&str] = &[
     "legend",
     "grid",
     "curves",
+    "annotations",
 ];
+/// Keys of one of a panel's `annotations`: `x` or `y` (a value: a line; `[a, b]`: a band) with a
+/// `label`, or `text` with `at`.
+pub const ANNOTATION_KEYS: &[&str] = &["x", "y", "label", "text", "at"];
+/// Most annotations a panel may have.
+pub const MAX_ANNOTATIONS: usize = 64;
 /// Panel kinds (`kind`).
 pub const PANEL_KINDS: &[&str] = &["cartesian", "surface", "heatmap"];
 /// Views of a cartesian panel (`view`).
@@ -119,6 +127,8 @@ pub const LEGEND_PLACES: &[&str] = &[
     "below",
     "none",
 ];
+/// A scene's `background`: the theme's page colour, or none.
+pub const BACKGROUNDS: &[&str] = &["opaque", "transparent"];
 /// Units of a scene's `width` and `height` (`unit`): CSS pixels, inches, centimetres.
 pub const SIZE_UNITS: &[&str] = &["px", "in", "cm"];
 /// Most ticks a spec may ask for by count.
@@ -342,7 +352,12 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene<Spec>> {
     let title = reader.text(&object, "title").unwrap_or_default();
     let sampling = read_sampling(reader, &object);
     let theme = read_theme(reader, &object);
-    let panels = read_panels(reader, &object);
+    let mut panels = read_panels(reader, &object);
+    if reader.boolean(&object, "panel_letters") == Some(true) {
+        for (i, panel) in panels.iter_mut().flatten().enumerate() {
+            panel.axes.title = lettered(i, &panel.axes.title);
+        }
+    }
     let panel_count = panels.as_ref().map_or(1, Vec::len);
     let grid = read_layout(reader, &object, panel_count);
     let preset = reader
@@ -375,6 +390,22 @@ fn read_scene(reader: &mut Reader, node: &Node) -> Option<Scene<Spec>> {
         panels: panels?,
         interactive,
     })
+}
+
+/// `title` of the panel at `index` with its letter in front, as papers letter their panels:
+/// `(a) title`, `(b)` alone for no title; past `(z)`, `(aa)`, `(ab)`, ….
+pub fn lettered(index: usize, title: &str) -> String {
+    let letter = |k: usize| char::from(b'a' + (k % 26) as u8);
+    let name: String = if index < 26 {
+        letter(index).to_string()
+    } else {
+        [letter(index / 26 - 1), letter(index)].iter().collect()
+    };
+    if title.is_empty() {
+        format!("({name})")
+    } else {
+        format!("({name}) {title}")
+    }
 }
 
 /// The scene's `theme`, [`Theme::Notebook`] when absent (or invalid, which is reported).
@@ -598,6 +629,7 @@ fn read_canvas(
             height: height / unit.css_px(),
             unit,
         }),
+        transparent: reader.choice(object, "background", BACKGROUNDS) == Some("transparent"),
     };
     check_canvas(&canvas)
         .map_err(|message| reader.report("png_scale", message))
@@ -734,6 +766,13 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
             "a heat-map panel draws its grid on linear axes (got \"log\", expected \"linear\")",
         );
     }
+    let annotations = read_annotations(reader, &panel, (x_scale, y_scale));
+    if !annotations.is_empty() && kind != PanelKind::Cartesian {
+        reader.report(
+            panel.path_of("annotations"),
+            "annotations are drawn on cartesian panels (got a polar, surface or heat-map panel)",
+        );
+    }
     let (default_x_label, default_y_label) = match (series.curves.first(), series.data.first()) {
         (Some(first), _) => default_curve_labels(first, x_unit, transform),
         (None, Some(first)) => data::default_labels(&first.dataset),
@@ -758,10 +797,118 @@ fn read_panel(reader: &mut Reader, node: &Node, path: &str) -> Option<ScenePanel
             grid,
             x_ticks,
             y_ticks,
+            annotations,
         },
         curves: series.curves,
         data: series.data,
     })
+}
+
+/// A panel's `annotations` (at most [`MAX_ANNOTATIONS`]), each checked against the axes' scales
+/// (`(x, y)`): values finite, and > 0 on a log axis. Problems are reported and the bad entries
+/// left out.
+fn read_annotations(
+    reader: &mut Reader,
+    panel: &reader::Object,
+    (x_scale, y_scale): (Scale, Scale),
+) -> Vec<Annotation> {
+    let Some(node) = panel.get("annotations") else {
+        return Vec::new();
+    };
+    let path = panel.path_of("annotations");
+    let Value::Array(items) = &node.value else {
+        reader.report(path, format!("expected a list of annotations (got {node})"));
+        return Vec::new();
+    };
+    if items.len() > MAX_ANNOTATIONS {
+        reader.report(
+            path,
+            format!(
+                "too many annotations (got {}, expected at most {MAX_ANNOTATIONS})",
+                items.len()
+            ),
+        );
+        return Vec::new();
+    }
+    let mut out = Vec::with_capacity(items.len());
+    for (i, item) in items.iter().enumerate() {
+        let at = join_index(&path, i);
+        let Some(object) = reader.object(item, &at, ANNOTATION_KEYS) else {
+            continue;
+        };
+        let ok = |scale: Scale| {
+            move |v: f64| v.is_finite() && (scale == Scale::Linear || v > 0.0)
+        };
+        let expected = |scale: Scale| match scale {
+            Scale::Log => "a finite number > 0 on a log axis",
+            Scale::Linear => "a finite number",
+        };
+        let label = reader.text(&object, "label").unwrap_or_default();
+        let kinds = ["x", "y", "text"]
+            .iter()
+            .filter(|k| object.get(k).is_some())
+            .count();
+        if kinds != 1 {
+            reader.report(
+                at,
+                "expected exactly one of \"x\" (a vertical line or band), \"y\" (a horizontal one) or \"text\" with \"at\"",
+            );
+            continue;
+        }
+        let axis_of = |key: &str| match key {
+            "x" => (Dimension::X, x_scale),
+            _ => (Dimension::Y, y_scale),
+        };
+        if let Some(key) = ["x", "y"].into_iter().find(|k| object.get(k).is_some()) {
+            let (axis, scale) = axis_of(key);
+            let is_band = matches!(object.get(key).map(|n| &n.value), Some(Value::Array(_)));
+            let annotation = if is_band {
+                reader
+                    .interval(&object, key, ok(scale), expected(scale))
+                    .map(|(from, to)| Annotation::Band {
+                        axis,
+                        from,
+                        to,
+                        label,
+                    })
+            } else {
+                reader
+                    .number(&object, key, ok(scale), expected(scale))
+                    .map(|v| Annotation::Line {
+                        axis,
+                        at: v,
+                        label,
+                    })
+            };
+            out.extend(annotation);
+            continue;
+        }
+        let text = reader.text(&object, "text").unwrap_or_default();
+        let point = object.get("at").and_then(|n| match &n.value {
+            Value::Array(items) => match items.as_slice() {
+                [
+                    Node {
+                        value: Value::Number(x),
+                        ..
+                    },
+                    Node {
+                        value: Value::Number(y),
+                        ..
+                    },
+                ] if ok(x_scale)(x.value) && ok(y_scale)(y.value) => Some((x.value, y.value)),
+                _ => None,
+            },
+            _ => None,
+        });
+        match point {
+            Some(point) => out.push(Annotation::Note { at: point, text }),
+            None => reader.report(
+                join_key(&at, "at"),
+                "expected the data point [x, y] of the text, finite (and > 0 on a log axis)",
+            ),
+        }
+    }
+    out
 }
 
 /// A panel's `legend`: `true` (default) or `false`, or one of [`LEGEND_PLACES`].
