@@ -13,6 +13,7 @@
 //! page shows the static figure `<id>.png` beside it. Bytes are deterministic.
 
 mod maths;
+mod mathtext;
 
 pub use maths::REL_TOL_PAGE;
 
@@ -25,6 +26,7 @@ use serde_json::{Value, json};
 
 const TEMPLATE: &str = include_str!("html/page.html");
 const SCRIPT: &str = include_str!("html/page.js");
+
 const STYLES: &str = include_str!("html/page.css");
 
 /// The page of `figure`, whose [`Page`](crate::pipeline::figure::Page) drives the curves of its
@@ -96,6 +98,7 @@ pub fn page(figure: &Figure) -> Option<Vec<u8>> {
             ("IMAGE", &escape_html(&format!("{}.png", figure.id))),
             ("DATA", &data),
             ("MATHS", &maths::script()),
+            ("MATHTEXT", mathtext::SCRIPT),
             ("SCRIPT", SCRIPT),
         ])
         .into_bytes(),

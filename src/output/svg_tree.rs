@@ -1,15 +1,17 @@
 //! The drawn SVG read back as a usvg tree, for the outputs converted from it (PNG and PDF).
 //!
-//! Owns the font database of those conversions: the embedded DejaVu Sans faces only (regular, and
-//! oblique for variables), also answering for the generic families, so text is laid out the same
-//! on a machine with no fonts.
+//! Owns the font database of those conversions: the embedded DejaVu Sans and DejaVu Serif faces
+//! only (upright, and oblique or italic for variables), also answering for the generic families,
+//! so text is laid out the same on a machine with no fonts.
 
 use std::sync::{Arc, OnceLock};
 
 use usvg::fontdb;
 
-/// Family that the SVG names first and that every generic family resolves to.
+/// Family of the default face, which every generic family but `serif` resolves to.
 const FAMILY: &str = "DejaVu Sans";
+/// Family of the serif face, which `serif` resolves to.
+const SERIF_FAMILY: &str = "DejaVu Serif";
 
 /// The usvg tree of `svg` (a document as [`super::plot::svg`] writes it), its text set in the
 /// embedded face.
@@ -30,8 +32,10 @@ fn font_database() -> &'static Arc<fontdb::Database> {
         let mut database = fontdb::Database::new();
         database.load_font_data(dejavu::sans::regular().to_vec());
         database.load_font_data(dejavu::sans::oblique().to_vec());
+        database.load_font_data(dejavu::serif::regular().to_vec());
+        database.load_font_data(dejavu::serif::italic().to_vec());
         database.set_sans_serif_family(FAMILY);
-        database.set_serif_family(FAMILY);
+        database.set_serif_family(SERIF_FAMILY);
         database.set_monospace_family(FAMILY);
         database.set_cursive_family(FAMILY);
         database.set_fantasy_family(FAMILY);
@@ -44,10 +48,13 @@ mod tests {
     use super::*;
 
     #[test]
-    fn fonts_come_from_the_embedded_face_only() {
+    fn fonts_come_from_the_embedded_faces_only() {
         let faces: Vec<_> = font_database().faces().collect();
-        assert_eq!(faces.len(), 2, "no system font is ever loaded");
-        assert!(faces.iter().all(|f| f.families[0].0 == FAMILY));
-        assert!(faces.iter().any(|f| f.style != fontdb::Style::Normal));
+        assert_eq!(faces.len(), 4, "no system font is ever loaded");
+        for family in [FAMILY, SERIF_FAMILY] {
+            let of: Vec<_> = faces.iter().filter(|f| f.families[0].0 == family).collect();
+            assert_eq!(of.len(), 2, "{family}");
+            assert!(of.iter().any(|f| f.style != fontdb::Style::Normal));
+        }
     }
 }

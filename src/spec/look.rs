@@ -488,6 +488,28 @@ pub struct Canvas {
     pub print: Option<PrintSize>,
     /// No page colour behind the figure: the SVG and PDF draw none, the PNG has an alpha channel.
     pub transparent: bool,
+    /// The typeface of all text.
+    pub face: Face,
+}
+
+/// A figure's typeface: one of the embedded DejaVu families, with its slanted face for variables.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Face {
+    /// DejaVu Sans and DejaVu Sans Oblique (the default, as matplotlib's).
+    #[default]
+    Sans,
+    /// DejaVu Serif and DejaVu Serif Italic, for a paper set in a serif text face.
+    Serif,
+}
+
+impl Face {
+    /// The faces by name, as a scene's `font` spells them.
+    pub const NAMES: &'static [(&'static str, Face)] = &[("sans", Face::Sans), ("serif", Face::Serif)];
+
+    /// The face called `name`, if one is.
+    pub fn named(name: &str) -> Option<Face> {
+        Face::NAMES.iter().find(|(n, _)| *n == name).map(|(_, f)| *f)
+    }
 }
 
 /// A figure's size in a print unit, exactly as given: the SVG states it in that unit, the PNG
@@ -923,6 +945,7 @@ impl Preset {
                 unit: PrintUnit::Inch,
             }),
             transparent: false,
+            face: Face::Sans,
         }
     }
 }

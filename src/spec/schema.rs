@@ -241,6 +241,10 @@ fn scene_key(key: &str) -> Value {
             strings(scene::THEMES),
             "the colours (default notebook); render --theme overrides it",
         ),
+        "font" => described(
+            strings(scene::FONTS),
+            "the typeface, embedded: sans (default, DejaVu Sans) or serif (DejaVu Serif), with its slanted face for variables",
+        ),
         "background" => described(
             strings(scene::BACKGROUNDS),
             "opaque (default): the theme's page colour; transparent: none (the PNG gets an alpha channel)",

@@ -313,3 +313,24 @@ fn annotations_mark_lines_bands_and_points_and_bad_ones_are_named() {
         assert!(stderr.contains(expected), "{expected} not in {stderr}");
     }
 }
+
+#[test]
+fn a_serif_figure_sets_every_text_in_the_embedded_serif_faces() {
+    let dir = scratch("views-serif");
+    let spec = dir.join("serif.json");
+    std::fs::write(
+        &spec,
+        r#"{"id": "serif", "font": "serif", "title": "Beckmann α_b",
+            "panels": [{"curves": [{"ndf": "beckmann", "alpha_b": 0.3}]}]}"#,
+    )
+    .unwrap();
+    let out = dir.join("out");
+    render_into(&[&spec], &out, "svg,pdf");
+    let svg = std::fs::read_to_string(out.join("serif.svg")).unwrap();
+    assert!(svg.contains(r#"font-family="DejaVu Serif, serif""#));
+    assert!(!svg.contains("DejaVu Sans"));
+    let pdf = std::fs::read(out.join("serif.pdf")).unwrap();
+    let has = |name: &str| pdf.windows(name.len()).any(|w| w == name.as_bytes());
+    assert!(has("DejaVuSerif-Italic"), "the variables' italic face is embedded");
+    assert!(has("DejaVuSerif") && !has("DejaVuSans"));
+}

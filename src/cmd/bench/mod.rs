@@ -12,7 +12,7 @@ use crate::output::{plot, write};
 use crate::pipeline::figure::{Figure, Panel, Series};
 use crate::pipeline::provenance::Provenance;
 use crate::spec::look::{
-    Axes, Canvas, Dash, Mark, Rgb, Scale, Style, Theme, TickChoice, XUnit, literal, shade,
+    Axes, Canvas, Dash, Face, Mark, Rgb, Scale, Style, Theme, TickChoice, XUnit, literal, shade,
 };
 use measure::Row;
 use std::path::{Path, PathBuf};
@@ -27,6 +27,7 @@ const CANVAS: Canvas = Canvas {
     font_px: 17.0,
     print: None,
     transparent: false,
+    face: Face::Sans,
 };
 /// Floor of the plotted errors: exact results (error 0) would vanish from a log axis; the
 /// references resolve 1e-15 at best.

@@ -26,66 +26,20 @@
     return { functions, critical: basis.critical };
   }
 
-  // Math text as the drawn figures typeset it (src/output/plot/mathtext.rs): `_` and `^` with one
-  // character or a {…} group make a sub- or superscript, groups nest, and a backslash escapes.
-  const SCRIPT_SCALE = 0.7;
-  const SUB_DROP = 0.2;
-  const SUP_RISE = 0.38;
-  function mathRuns(text) {
-    const chars = Array.from(text);
-    const runs = [];
-    const push = (c, scale, rise) => {
-      const last = runs[runs.length - 1];
-      if (last && last.scale === scale && last.rise === rise) last.text += c;
-      else runs.push({ text: c, scale, rise });
-    };
-    const groupEnd = (open) => {
-      let depth = 0;
-      for (let i = open; i < chars.length; i++) {
-        if (chars[i] === "\\") i++;
-        else if (chars[i] === "{") depth++;
-        else if (chars[i] === "}" && --depth === 0) return i;
-      }
-      return chars.length;
-    };
-    const parse = (lo, hi, scale, rise) => {
-      let i = lo;
-      while (i < hi) {
-        const c = chars[i];
-        if (c === "\\" && i + 1 < hi) {
-          push(chars[i + 1], scale, rise);
-          i += 2;
-        } else if ((c === "_" || c === "^") && i + 1 < hi && !/\s/.test(chars[i + 1])) {
-          const shift = c === "_" ? -SUB_DROP : SUP_RISE;
-          const [s, r] = [scale * SCRIPT_SCALE, rise + shift * scale];
-          if (chars[i + 1] === "{") {
-            const end = Math.min(groupEnd(i + 1), hi);
-            parse(i + 2, end, s, r);
-            i = end + 1;
-          } else {
-            push(chars[i + 1], s, r);
-            i += 2;
-          }
-        } else {
-          push(c, scale, rise);
-          i += 1;
-        }
-      }
-    };
-    parse(0, chars.length, 1, 0);
-    return runs;
-  }
-  // The label as DOM nodes: one span per script run, sized and raised relative to the label.
+  const mathRuns = ndfplotMathRuns;
+  // The label as DOM nodes: one span per script or slanted run, sized and raised relative to the
+  // label, variables in italics.
   function mathNode(text) {
     const fragment = document.createDocumentFragment();
     for (const run of mathRuns(text)) {
-      if (run.scale === 1 && run.rise === 0) {
+      if (run.scale === 1 && run.rise === 0 && !run.italic) {
         fragment.append(document.createTextNode(run.text));
       } else {
         const span = document.createElement("span");
         span.textContent = run.text;
         span.style.fontSize = run.scale + "em";
         span.style.verticalAlign = run.rise / run.scale + "em";
+        if (run.italic) span.style.fontStyle = "italic";
         fragment.append(span);
       }
     }
@@ -96,8 +50,10 @@
   function fillMath(ctx, text, x, y, align, size) {
     const font = ctx.font;
     const runs = mathRuns(text);
+    const fontOf = (run) =>
+      (run.italic ? "italic " : "") + font.replace(/^[\d.]+px/, size * run.scale + "px");
     const widths = runs.map((run) => {
-      ctx.font = font.replace(/^[\d.]+px/, size * run.scale + "px");
+      ctx.font = fontOf(run);
       return ctx.measureText(run.text).width;
     });
     const total = widths.reduce((a, b) => a + b, 0);
@@ -106,7 +62,7 @@
     ctx.textAlign = "left";
     ctx.textBaseline = "alphabetic";
     runs.forEach((run, i) => {
-      ctx.font = font.replace(/^[\d.]+px/, size * run.scale + "px");
+      ctx.font = fontOf(run);
       ctx.fillText(run.text, left, y - run.rise * size);
       left += widths[i];
     });

@@ -4,12 +4,10 @@
 
 use super::PlotError;
 use super::device_size;
-use super::style::{EM_PER_SIZE, FONT_NAME};
+use super::style::{EM_PER_SIZE, family};
 use crate::pipeline::provenance::Provenance;
 use crate::spec::look::Canvas;
 
-/// `font-family` written into the SVG: the embedded face, then the generic fallback.
-pub(super) const SVG_FONT_FAMILY: &str = "DejaVu Sans, sans-serif";
 
 /// The PNG's size in pixels ([`Canvas::png_size`]), after checking it as [`device_size`] does
 /// and against [`Canvas::MAX_PNG_PIXELS`], the cap that validation enforces.
@@ -67,7 +65,9 @@ pub(super) fn finish_svg(
         ),
         None => document,
     };
-    let marker = format!(r#"font-family="{FONT_NAME}" font-size=""#);
+    // The embedded face, then its generic family as the fallback.
+    let (name, generic) = family(canvas.face);
+    let marker = format!(r#"font-family="{name}" font-size=""#);
     let mut parts = document.split(marker.as_str());
     let mut out = String::with_capacity(document.len() + document.len() / 16);
     out.push_str(parts.next().unwrap_or_default());
@@ -75,7 +75,7 @@ pub(super) fn finish_svg(
         let (size, rest) = part.split_once('"').unwrap_or(("", part));
         let em = size.parse::<f64>().unwrap_or(0.0) * PLOTTERS_SVG_DIVISOR * EM_PER_SIZE;
         out.push_str(&format!(
-            r#"font-family="{SVG_FONT_FAMILY}" font-size="{em:.2}""#
+            r#"font-family="{name}, {generic}" font-size="{em:.2}""#
         ));
         out.push_str(&preserve_spaces(rest));
     }

@@ -90,6 +90,7 @@ pub(super) fn figure(panels: Vec<Panel>) -> Figure {
             font_px: 12.0,
             print: None,
             transparent: false,
+            face: crate::spec::look::Face::Sans,
         },
         theme: Theme::Notebook,
         panels,

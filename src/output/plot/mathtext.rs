@@ -137,6 +137,16 @@ fn push(runs: &mut Vec<Run>, c: char, scale: f64, rise: f64) {
     }
 }
 
+/// The letters of `text` that are set in italics, in order: what a label's variables are.
+#[cfg(test)]
+pub(crate) fn slanted_letters(text: &str) -> String {
+    parse(text)
+        .into_iter()
+        .filter(|r| r.italic)
+        .map(|r| r.text)
+        .collect()
+}
+
 /// Splits `runs` so that every letter standing alone (see the module's rule) is a run of its own,
 /// marked italic. Letters are read across runs of one size and baseline only: `α_p` is two lone
 /// letters, `D_{ABC}` a lone `D` and the word `ABC`.
@@ -446,13 +456,7 @@ mod tests {
 
     #[test]
     fn variables_are_italic_and_words_digits_and_articles_upright() {
-        let slanted = |text: &str| -> String {
-            parse(text)
-                .into_iter()
-                .filter(|r| r.italic)
-                .map(|r| r.text)
-                .collect()
-        };
+        let slanted = slanted_letters;
         assert_eq!(slanted("θ (radians)"), "θ");
         assert_eq!(slanted("G_1(θ_o) (1 + Λ(θ_o))"), "GθoΛθo");
         assert_eq!(slanted("ln D(θ) and cos θ"), "Dθθ");

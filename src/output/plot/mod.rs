@@ -51,6 +51,8 @@ use encode::{encode_png, finish_svg, rasterize};
 use heatmap::draw_heatmap;
 use lint::Recorder;
 pub use lint::{Finding, lint};
+#[cfg(test)]
+pub(crate) use mathtext::slanted_letters;
 use polar::draw_polar;
 use style::{EM_PER_SIZE, Metrics, ensure_font};
 use surface::draw_surface;
@@ -183,6 +185,7 @@ where
         k,
         unit: figure.canvas.font_px * k / EM_PER_SIZE,
         palette: theme::palette(figure.theme),
+        family: style::family(figure.canvas.face).0,
         trace,
     };
     if !figure.canvas.transparent {

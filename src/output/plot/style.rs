@@ -9,12 +9,18 @@ use plotters::style::{FontFamily, FontStyle, register_font};
 
 use super::theme::{Palette, Pattern};
 use super::{PlotError, draw_err};
-use crate::spec::look::{Mark, Rgb};
+use crate::spec::look::{Face, Mark, Rgb};
 
-/// Name under which the embedded face is registered; the SVG names it first.
-pub(super) const FONT_NAME: &str = "DejaVu Sans";
-/// Em of the face per plotters text size: ab_glyph scales DejaVu Sans so that ascender −
-/// descender (1901 + 483 font units) spans the size, and one em is 2048 units.
+/// The family name each embedded typeface is registered under, which the SVG names first, and
+/// the generic family the SVG names after it.
+pub(super) fn family(face: Face) -> (&'static str, &'static str) {
+    match face {
+        Face::Sans => ("DejaVu Sans", "sans-serif"),
+        Face::Serif => ("DejaVu Serif", "serif"),
+    }
+}
+/// Em of the face per plotters text size: ab_glyph scales the DejaVu faces so that ascender −
+/// descender (1901 + 483 font units, in all four faces) spans the size, and one em is 2048 units.
 pub(super) const EM_PER_SIZE: f64 = 2048.0 / 2384.0;
 
 /// Default curve width in CSS pixels (multiplied by `Style::width`).
@@ -35,18 +41,23 @@ pub(super) const SURFACE_OPACITY: f64 = 0.8;
 /// Brightness of a surface's mesh lines relative to its colour.
 pub(super) const MESH_DARKEN: f64 = 0.7;
 
-/// Registers the embedded faces (regular and oblique) once per process; later calls return the
-/// first outcome.
+/// Registers the embedded faces once per process — DejaVu Sans and its oblique, DejaVu Serif and
+/// its italic (registered as the oblique style, which sets variables: see `mathtext`) — each also
+/// under its generic family name; later calls return the first outcome.
 pub(super) fn ensure_font() -> Result<(), PlotError> {
     static REGISTERED: OnceLock<bool> = OnceLock::new();
     let ok = *REGISTERED.get_or_init(|| {
-        let (bytes, oblique) = (dejavu::sans::regular(), dejavu::sans::oblique());
-        // "sans-serif" too, so that any plotters default style finds the same face; the oblique
-        // face sets variables (see `mathtext`).
-        register_font(FONT_NAME, FontStyle::Normal, bytes).is_ok()
-            && register_font("sans-serif", FontStyle::Normal, bytes).is_ok()
-            && register_font(FONT_NAME, FontStyle::Oblique, oblique).is_ok()
-            && register_font("sans-serif", FontStyle::Oblique, oblique).is_ok()
+        let faces = [
+            (Face::Sans, dejavu::sans::regular(), dejavu::sans::oblique()),
+            (Face::Serif, dejavu::serif::regular(), dejavu::serif::italic()),
+        ];
+        faces.into_iter().all(|(face, upright, slanted)| {
+            let (name, generic) = family(face);
+            [name, generic].into_iter().all(|n| {
+                register_font(n, FontStyle::Normal, upright).is_ok()
+                    && register_font(n, FontStyle::Oblique, slanted).is_ok()
+            })
+        })
     });
     if ok { Ok(()) } else { Err(PlotError::Font) }
 }
@@ -60,6 +71,8 @@ pub(super) struct Metrics {
     pub(super) unit: f64,
     /// Page colours.
     pub(super) palette: &'static Palette,
+    /// The registered family name of the figure's typeface ([`family`]).
+    pub(super) family: &'static str,
     /// What the drawing places, recorded for the figure lint; `None` when not kept.
     pub(super) trace: super::lint::Recorder,
 }
@@ -75,7 +88,7 @@ impl Metrics {
     }
     /// Text style at `units` times the base size.
     pub(super) fn font(&self, units: f64) -> TextStyle<'static> {
-        TextStyle::from((FontFamily::Name(FONT_NAME), units * self.unit).into_font())
+        TextStyle::from((FontFamily::Name(self.family), units * self.unit).into_font())
             .color(&self.palette.ink)
     }
     /// Stroke of a curve drawn `multiplier` times the default width.

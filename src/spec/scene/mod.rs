@@ -60,6 +60,7 @@ pub const SCENE_KEYS: &[&str] = &[
     "theme",
     "panel_letters",
     "background",
+    "font",
     "panels",
     "interactive",
 ];
@@ -127,6 +128,8 @@ pub const LEGEND_PLACES: &[&str] = &[
     "below",
     "none",
 ];
+/// A scene's `font`: the embedded typefaces, as [`look::Face::NAMES`] has them.
+pub const FONTS: &[&str] = &["sans", "serif"];
 /// A scene's `background`: the theme's page colour, or none.
 pub const BACKGROUNDS: &[&str] = &["opaque", "transparent"];
 /// Units of a scene's `width` and `height` (`unit`): CSS pixels, inches, centimetres.
@@ -630,6 +633,10 @@ fn read_canvas(
             unit,
         }),
         transparent: reader.choice(object, "background", BACKGROUNDS) == Some("transparent"),
+        face: reader
+            .choice(object, "font", FONTS)
+            .and_then(look::Face::named)
+            .unwrap_or_default(),
     };
     check_canvas(&canvas)
         .map_err(|message| reader.report("png_scale", message))
