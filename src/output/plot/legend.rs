@@ -17,7 +17,7 @@ use super::mathtext;
 use super::style::{MARKER_RADIUS_PX, Metrics, SURFACE_OPACITY, mesh_colour, stroke};
 use super::summary::summarize;
 use super::text::MIN_SHRINK;
-use super::theme::Look;
+use super::theme::{Look, Pattern};
 use super::{PlotError, draw_err, outline};
 use crate::pipeline::figure::{Figure, Panel, Series};
 use crate::spec::look::{Corner, LegendPlace, Mark, PanelKind, SweepMember};
@@ -135,7 +135,9 @@ struct Entry {
 
 /// Most shades a sweep's legend sample shows side by side: the ends of the ramp and evenly
 /// spaced members between them.
-const MAX_SWATCH_SHADES: usize = 5;
+const MAX_SWATCH_SHADES: usize = 12;
+/// Half the height of a sweep's bar sample, as a share of the legend's row height.
+const SWEEP_BAR_HALF_HEIGHT: f64 = 0.2;
 
 /// The legend rows of `series` drawn in `looks`, each shown by `sample(series)`: a run of the
 /// members of one sweep (consecutive, index 0 to count − 1, drawn alike but for colour) is one
@@ -497,10 +499,26 @@ impl Legend {
                 let (half_w, half_h) = (sample_px / 4, (row * 0.3).round() as i32);
                 let patch = [(mid - half_w, cy - half_h), (mid + half_w, cy + half_h)];
                 // A sweep's sample shows its shades side by side, darkest first; its mark takes
-                // the middle shade.
+                // the middle shade. A sweep of solid lines shows them as a bar, a small colour
+                // bar that its label's range reads along.
                 let shades = entry.looks.len() as i32;
                 let colour = entry.looks[entry.looks.len() / 2].colour;
-                if matches!(kind, Sample::Line | Sample::LineDot) {
+                let bar = shades > 1
+                    && *kind == Sample::Line
+                    && entry.looks.iter().all(|l| l.pattern == Pattern::Solid);
+                if bar {
+                    let half = (row * SWEEP_BAR_HALF_HEIGHT).round().max(1.0) as i32;
+                    for (j, look) in entry.looks.iter().enumerate() {
+                        let j = j as i32;
+                        let (from, to) = (
+                            sx + sample_px * j / shades,
+                            sx + sample_px * (j + 1) / shades,
+                        );
+                        let cell = [(from, cy - half), (to, cy + half)];
+                        area.draw(&Rectangle::new(cell, m.fill(look.colour, 1.0)))
+                            .map_err(draw_err)?;
+                    }
+                } else if matches!(kind, Sample::Line | Sample::LineDot) {
                     for (j, look) in entry.looks.iter().enumerate() {
                         let j = j as i32;
                         let style = m.curve_style(look.colour, entry.width);
