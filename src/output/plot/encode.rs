@@ -175,8 +175,11 @@ pub(super) fn rasterize(svg: &[u8], canvas: &Canvas) -> Result<Raster, PlotError
     })
 }
 
-/// Encodes a raster (8-bit RGB or RGBA) as a PNG with fixed settings: fast deflate and the Sub
-/// filter, ~6× faster than adaptive filtering for files ~1.6× larger (plots are mostly flat).
+/// Encodes a raster (8-bit RGB or RGBA) as a PNG with fixed settings: fast deflate with the
+/// filter chosen row by row (adaptive). On the catalogue's largest figure (3600 × 1800) that is
+/// 1.5× smaller than the Sub filter alone for 1.6× its encoding time (15 ms), while zlib's default
+/// level would be 3.3× smaller for 9× the time: lossless either way, and fast deflate keeps a
+/// render's time in drawing, not in compression.
 /// The resolution `dpi` goes into a `pHYs` chunk. The provenance record goes into `tEXt` chunks before the image data: `Software` =
 /// `ndfplot <version>`, then one chunk per field, keyed as [`Provenance::fields`] names them.
 pub(super) fn encode_png(
@@ -194,8 +197,7 @@ pub(super) fn encode_png(
     });
     encoder.set_depth(png::BitDepth::Eight);
     encoder.set_compression(png::Compression::Fast);
-    encoder.set_filter(png::FilterType::Sub);
-    encoder.set_adaptive_filter(png::AdaptiveFilterType::NonAdaptive);
+    encoder.set_adaptive_filter(png::AdaptiveFilterType::Adaptive);
     encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
     // pHYs: the resolution in pixels per metre, so that the image opens at its printed size.
     let per_metre = (dpi / 0.0254).round() as u32;
