@@ -17,24 +17,20 @@
 //! - Spectrum check (step 6): singular values of the normalized curves of 100 dielectrics
 //!   η = linspace(1.01, 3, 100).
 //!
-//! The basis is computed with faer by `basis/compute.rs` (single-threaded partial SVDs: the
-//! leading right singular vectors only, checked against the full thin SVD to ~1e-15) and stored
-//! as a table that runs read ([`STORED`]); a test recomputes it and holds the table to it. The spectrum is computed
-//! at most once per process, on first use, from the thin SVD's singular values. Another SVD routine
-//! moves b₁…b₃ by ~1e-14 only (reference/README.md).
+//! The basis is computed by `basis/compute.rs` (the leading right singular vectors only, by
+//! subspace iteration, [`crate::model::math::svd`]) and stored as a table that runs read
+//! ([`STORED`]); a test recomputes it and holds the table to it. The spectrum is computed at most
+//! once per process, on first use, by one-sided Jacobi, which keeps even its smallest values
+//! accurate. Another SVD routine moves b₁…b₃ by ~1e-14 only (reference/README.md).
 //! Tabulated values between nodes are interpolated linearly in c (see [`Basis::interpolate`]). The
 //! reconstruction and the basis functions are approximations and basis vectors, not reflectances:
 //! they may leave [0, 1] and are never clamped.
 
 use std::sync::OnceLock;
 
-use faer::dyn_stack::{MemBuffer, MemStack};
-use faer::linalg::svd::{self, ComputeSvdVectors};
-use faer::prelude::default;
-use faer::{Mat, Par};
-
 use super::exact::{Incidence, Index, normalized_reflectance, reflectance};
 use crate::model::grid::linspace;
+use crate::model::math::svd;
 
 #[cfg(test)]
 mod compute;
@@ -69,67 +65,6 @@ pub fn normalized_curve(cos_theta: &[f64], index: Index) -> Vec<f64> {
         .collect()
 }
 
-/// Stacks `rows` (all of the same length) as the rows of a matrix.
-fn stack_rows(rows: &[Vec<f64>]) -> Mat<f64> {
-    Mat::from_fn(rows.len(), rows[0].len(), |i, j| rows[i][j])
-}
-
-/// Clears the upper halves of the AVX registers (`vzeroupper`) after a faer call.
-///
-/// faer's x86-64 kernels can return with the upper AVX/AVX-512 register state dirty; until it is
-/// cleared, legacy-SSE instructions in the rest of the process (this crate's scalar f64 code is
-/// compiled for baseline x86-64) run up to ~20–70× slower when mixed with the C library's AVX
-/// code (measured after the basis: 1e6 `mul_add` + `sqrt` 12 → 232 ms, the training rows
-/// 90 → 900 ms; with this call, unchanged).
-fn clear_upper_simd_state() {
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "avx")]
-        #[allow(unused_unsafe)]
-        unsafe fn zero_upper() {
-            // SAFETY: only called when the CPU supports AVX; vzeroupper touches no memory.
-            unsafe { std::arch::x86_64::_mm256_zeroupper() }
-        }
-        if std::arch::is_x86_feature_detected!("avx") {
-            // SAFETY: AVX is available (checked above). No vector value is live across this call.
-            unsafe { zero_upper() }
-        }
-    }
-}
-
-/// The thin SVD of `matrix` by faer (Householder bidiagonalization, then divide and conquer on the
-/// bidiagonal), single-threaded (`Par::Seq`) so that the result is bit-reproducible: the singular
-/// values, decreasing, and, when `vectors` is `Thin`, the right singular vectors as the columns of V.
-fn thin_svd(matrix: &Mat<f64>, vectors: ComputeSvdVectors) -> (Vec<f64>, Option<Mat<f64>>) {
-    let (m, n) = matrix.shape();
-    let size = m.min(n);
-    let mut s = faer::diag::Diag::<f64>::zeros(size);
-    let mut v = match vectors {
-        ComputeSvdVectors::No => None,
-        _ => Some(Mat::<f64>::zeros(n, size)),
-    };
-    let mut buffer = MemBuffer::new(svd::svd_scratch::<f64>(
-        m,
-        n,
-        ComputeSvdVectors::No,
-        vectors,
-        Par::Seq,
-        default(),
-    ));
-    svd::svd(
-        matrix.as_ref(),
-        s.as_mut(),
-        None,
-        v.as_mut().map(|v| v.as_mut()),
-        Par::Seq,
-        MemStack::new(&mut buffer),
-        default(),
-    )
-    .expect("the SVD of a finite matrix converges");
-    clear_upper_simd_state();
-    ((0..size).map(|k| s[k]).collect(), v)
-}
-
 /// The four basis functions on the grid and the two critical indices.
 #[derive(Debug, Clone)]
 pub struct Basis {
@@ -142,8 +77,8 @@ static BASIS: OnceLock<Basis> = OnceLock::new();
 
 /// The basis as [`compute`] makes it, stored: a comment line, `critical i₁ i₂`, then `b1`, `b2`
 /// and `b3` each followed by its 1000 node values in shortest round-trip form (b₀ = 1). Reading
-/// it takes well under a millisecond where computing it takes two SVDs (~60 ms), and every machine
-/// gets the same bits; a test keeps it equal to the computation.
+/// it takes well under a millisecond where computing it takes the training matrix and two partial
+/// SVDs (~50 ms), and every machine gets the same bits; a test keeps it equal to the computation.
 const STORED: &str = include_str!("basis/stored.txt");
 
 /// The basis of docs/maths.md steps 1–4, read from [`STORED`] on first call and shared.
@@ -336,11 +271,11 @@ pub fn spectrum() -> &'static Spectrum {
     SPECTRUM.get_or_init(|| {
         let etas = linspace(DIELECTRIC_ETA_MIN, DIELECTRIC_ETA_MAX, SPECTRUM_SIZE);
         let cos_theta = grid();
-        let rows: Vec<Vec<f64>> = etas
+        let matrix: Vec<f64> = etas
             .iter()
-            .map(|&eta| normalized_curve(&cos_theta, Index::new(eta, 0.0)))
+            .flat_map(|&eta| normalized_curve(&cos_theta, Index::new(eta, 0.0)))
             .collect();
-        let (singular_values, _) = thin_svd(&stack_rows(&rows), ComputeSvdVectors::No);
+        let singular_values = svd::singular_values(&matrix, GRID_SIZE);
         let total: f64 = singular_values.iter().sum();
         let normalized: Vec<f64> = singular_values.iter().map(|s| s / total).collect();
         let cumulative = normalized
@@ -389,6 +324,49 @@ mod tests {
                 "node {i}: {} vs {value}",
                 row[i]
             );
+        }
+    }
+
+    #[test]
+    fn spectrum_matches_a_bidiagonalization_svd() {
+        // faer 0.24 thin SVD, f64 (Householder bidiagonalization, then divide and conquer,
+        // single-threaded), of the same matrix: its 18 values above its rounding floor (its next
+        // six were 2e-13 … 8e-13, i.e. up to 9e-15·s₀, the rest below 1e-15).
+        const BIDIAGONALIZATION: [f64; 18] = [
+            85.81489433586142,
+            6.2044617043477315,
+            1.4240647133081228,
+            0.40160540237816716,
+            0.07491044747391984,
+            0.01282017776114136,
+            0.0019977944500466018,
+            0.00025676189406067515,
+            6.681991570409983e-5,
+            1.2075982987033763e-5,
+            2.528917474431042e-6,
+            2.3782209273595912e-7,
+            2.8427935606044087e-8,
+            3.239792943504047e-9,
+            8.22969624744253e-10,
+            1.7974217548924705e-10,
+            9.958906018336693e-12,
+            2.3362954474375365e-12,
+        ];
+        // Its values are accurate to ~ε·s₀ absolute, so the small ones are held relative to s₀
+        // only (measured 1.2e-15·s₀ at most), those above 1e-4·s₀ also relative to themselves
+        // (measured 4.2e-14). Against the exact singular values of the same doubles (80-digit
+        // eigenvalues of the exact A·Aᵀ), one-sided Jacobi errs by 1.3e-16·s₀ at most and
+        // bidiagonalization by 7.9e-15·s₀.
+        let s = &spectrum().singular_values;
+        for (k, (&value, reference)) in s.iter().zip(BIDIAGONALIZATION).enumerate() {
+            let error = (value - reference).abs();
+            assert!(error <= 1e-14 * s[0], "s{k}: {value:e} vs {reference:e}");
+            if reference > 1e-4 * s[0] {
+                assert!(
+                    error <= 1e-13 * reference,
+                    "s{k}: {value:e} vs {reference:e}"
+                );
+            }
         }
     }
 }

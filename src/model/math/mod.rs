@@ -1,4 +1,4 @@
-//! Special functions, quadrature and root finding: pure f64 code, no I/O.
+//! Special functions, quadrature, root finding and SVDs: pure f64 code, no I/O.
 //!
 //! - [`special`]: exprel, the φ_k functions of exponential integrators and the scaled upper incomplete
 //!   gamma function e^x Γ(s, x) for every real s, which no available crate computes for s ≤ 0.
@@ -6,6 +6,8 @@
 //! - [`gauss_legendre`]: the fixed 16-point Gauss–Legendre rule, for integrals split into panels in advance.
 //! - [`roots`]: Brent's safeguarded bracketing root finder and a log-scale bracket expansion.
 //! - [`simplex`]: Nelder–Mead minimization within a box, for fits of several parameters.
+//! - [`svd`]: singular values by one-sided Jacobi rotations, accurate across many decades, and the
+//!   leading right singular vectors of large matrices by subspace iteration.
 //! - [`tolerance`]: every accuracy target of the crate's numerical tests, with its reason.
 
 pub mod gauss_legendre;
@@ -13,4 +15,5 @@ pub mod quad;
 pub mod roots;
 pub mod simplex;
 pub mod special;
+pub mod svd;
 pub mod tolerance;

@@ -1,23 +1,17 @@
 //! How the stored basis ([`super::STORED`]) is made: docs/maths.md steps 1–4 run as the notebook runs
-//! them, with faer. Compiled for the tests, which check the stored table against it; with
-//! `NDFPLOT_WRITE_BASIS=1` set, `cargo test --lib stored_basis` writes the table anew instead.
+//! them, the leading right singular vectors by the subspace iteration of [`svd`]. Compiled for the
+//! tests, which check the stored table against it; with `NDFPLOT_WRITE_BASIS=1` set,
+//! `cargo test --lib stored_basis` writes the table anew instead.
 //!
-//! faer's SVDs run single-threaded from a fixed start vector, so the result does not depend on the
-//! thread count; the SIMD kernels faer picks by CPU may move its last bits, which is why the table,
-//! not this computation, is what a run uses.
+//! The computation is sequential plain f64 arithmetic from a fixed start block, so it does not
+//! depend on the thread count or on the CPU's vector instructions; the table spares a run the
+//! computation (~50 ms).
 
-use faer::Mat;
-use faer::dyn_stack::{MemBuffer, MemStack};
-use faer::linalg::svd::ComputeSvdVectors;
-use faer::matrix_free::eigen::{PartialEigenParams, partial_svd, partial_svd_scratch};
-use faer::{Col, Par};
 use rayon::prelude::*;
 
-use super::{
-    Basis, DIELECTRIC_ETA_MAX, DIELECTRIC_ETA_MIN, GRID_SIZE, clear_upper_simd_state, grid,
-    stack_rows, thin_svd,
-};
+use super::{Basis, DIELECTRIC_ETA_MAX, DIELECTRIC_ETA_MIN, GRID_SIZE, grid};
 use crate::model::fresnel::gulbrandsen;
+use crate::model::math::svd;
 
 mod numpy_f64;
 
@@ -54,67 +48,16 @@ fn training_set() -> Vec<(f64, f64)> {
     materials
 }
 
-/// The training matrix: row k is the normalized curve of training material k, rounded as numpy
-/// rounds it (`numpy_f64`), so that the basis reproduces the published numpy reference. Rows are
-/// computed in parallel; each is the same whichever thread computes it.
-fn training_matrix(cos_theta: &[f64]) -> Mat<f64> {
+/// The training matrix, row-major with [`GRID_SIZE`] columns: row k is the normalized curve of
+/// training material k, rounded as numpy rounds it (`numpy_f64`), so that the basis reproduces the
+/// published numpy reference. Rows are computed in parallel; each is the same whichever thread
+/// computes it.
+fn training_matrix(cos_theta: &[f64]) -> Vec<f64> {
     let rows: Vec<Vec<f64>> = training_set()
         .par_iter()
         .map(|&(eta, kappa)| numpy_f64::training_row(cos_theta, eta, kappa))
         .collect();
-    stack_rows(&rows)
-}
-
-/// The first `count` right singular vectors of `matrix`, by decreasing singular value, from faer's
-/// full thin SVD.
-fn right_singular_vectors_full(matrix: &Mat<f64>, count: usize) -> Vec<Vec<f64>> {
-    let (_, v) = thin_svd(matrix, ComputeSvdVectors::Thin);
-    let v = v.expect("the SVD was asked for V");
-    (0..count)
-        .map(|k| v.col(k).iter().copied().collect())
-        .collect()
-}
-
-/// The first `count` right singular vectors of `matrix`, by decreasing singular value.
-///
-/// faer's partial SVD (thick-restart Lanczos bidiagonalization), single-threaded from the fixed
-/// start vector (1, …, 1), so bit-reproducible; ~8× faster than the full thin SVD for the two
-/// 1000 × 1000 training matrices. Converged to a residual ‖A v − s u‖ ≤ ε ‖A‖_F, i.e. each vector
-/// to ~ε ‖A‖_F / (singular value gap) ≈ 1e-15 here (s = 274, 26 for the curves; 39, 9.7, 2.0 for
-/// the residuals): it agrees with the full thin SVD to ~1e-15 (tested below), far inside the 1e-12
-/// that the reference tolerates. Falls back to the full thin SVD if it does not converge.
-fn right_singular_vectors(matrix: &Mat<f64>, count: usize) -> Vec<Vec<f64>> {
-    let (m, n) = matrix.shape();
-    let mut u = Mat::<f64>::zeros(m, count);
-    let mut v = Mat::<f64>::zeros(n, count);
-    let mut s = vec![0.0; count];
-    let start = Col::<f64>::from_fn(n, |_| 1.0);
-    let params = PartialEigenParams::default();
-    let mut buffer = MemBuffer::new(partial_svd_scratch::<f64>(
-        &matrix.as_ref(),
-        count,
-        Par::Seq,
-        params,
-    ));
-    let info = partial_svd(
-        u.as_mut(),
-        v.as_mut(),
-        &mut s,
-        &matrix.as_ref(),
-        start.as_ref(),
-        matrix.norm_l2() * f64::EPSILON,
-        Par::Seq,
-        MemStack::new(&mut buffer),
-        params,
-    );
-    clear_upper_simd_state();
-    let decreasing = s.windows(2).all(|pair| pair[0] >= pair[1]);
-    if info.n_converged_eigen < count || !decreasing {
-        return right_singular_vectors_full(matrix, count);
-    }
-    (0..count)
-        .map(|k| v.col(k).iter().copied().collect())
-        .collect()
+    rows.concat()
 }
 
 /// `vector / max|vector|`, then negated if its largest-magnitude entry is negative, so that entry is +1.
@@ -143,16 +86,18 @@ fn argmax(values: impl Iterator<Item = f64>) -> usize {
     best.0
 }
 
-/// The basis of docs/maths.md steps 1–4, computed: two partial SVDs of 1000 × 1000 matrices.
+/// The basis of docs/maths.md steps 1–4, computed: the leading right singular vectors of two
+/// 1000 × 1000 matrices ([`svd::leading_right_singular_vectors`]).
 pub(super) fn computed() -> Basis {
     let cos_theta = grid();
     let curves = training_matrix(&cos_theta);
-    let v = right_singular_vectors(&curves, 1);
+    let v = svd::leading_right_singular_vectors(&curves, GRID_SIZE, 1);
     let b1 = normalize_to_positive_peak(&v[0].iter().map(|x| x.abs()).collect::<Vec<f64>>());
-    let residuals = Mat::from_fn(curves.nrows(), curves.ncols(), |i, j| {
-        curves[(i, j)] - b1[j]
-    });
-    let v = right_singular_vectors(&residuals, 2);
+    let residuals: Vec<f64> = curves
+        .chunks_exact(GRID_SIZE)
+        .flat_map(|row| row.iter().zip(&b1).map(|(f, b)| f - b))
+        .collect();
+    let v = svd::leading_right_singular_vectors(&residuals, GRID_SIZE, 2);
     let b2 = normalize_to_positive_peak(&v[0]);
     let b3 = normalize_to_positive_peak(&v[1]);
     let i1 = argmax(b2.iter().copied());
@@ -205,29 +150,6 @@ mod tests {
     }
 
     #[test]
-    fn partial_svd_agrees_with_the_full_thin_svd() {
-        let curves = training_matrix(&grid());
-        let residuals = Mat::from_fn(curves.nrows(), curves.ncols(), |i, j| {
-            curves[(i, j)] - basis().function(1)[j]
-        });
-        for (matrix, count) in [(&curves, 1), (&residuals, 2)] {
-            let partial = right_singular_vectors(matrix, count);
-            let full = right_singular_vectors_full(matrix, count);
-            for (p, f) in partial.iter().zip(&full) {
-                let dot: f64 = p.iter().zip(f).map(|(a, b)| a * b).sum();
-                let sign = dot.signum();
-                let err = p
-                    .iter()
-                    .zip(f)
-                    .map(|(a, b)| (sign * a - b).abs())
-                    .fold(0.0, f64::max);
-                // Measured: 4.4e-16 (curves), 7.3e-16 (residuals).
-                assert!(err < 1e-14, "partial vs full SVD: {err:e}");
-            }
-        }
-    }
-
-    #[test]
     fn training_set_keeps_the_quirky_row() {
         let materials = training_set();
         assert_eq!(materials[0], (1.1, 0.0));
@@ -262,7 +184,8 @@ mod tests {
                 .zip(computed.function(k))
                 .map(|(a, b)| (a - b).abs())
                 .fold(0.0, f64::max);
-            // The functions peak at 1; measured 0 on the machine that wrote the table.
+            // The functions peak at 1. The table was written with faer 0.24's SVDs (Lanczos
+            // bidiagonalization); measured against it: b₁ 2.2e-15, b₂ 6.0e-15, b₃ 3.8e-15.
             assert!(worst <= 1e-13, "b{k}: {worst:e}");
         }
     }
