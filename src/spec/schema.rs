@@ -31,7 +31,7 @@ use crate::spec::quantity;
 use crate::spec::scene::interactive::{
     INTERACTIVE_KEYS, MAX_SLIDERS, PARAM_KEYS, SCALES, SLIDER_KEY,
 };
-use crate::spec::scene::reader::REFUSED_IN_TEXT;
+use crate::spec::scene::reader::{MAX_TEXT_CHARS, REFUSED_IN_TEXT};
 use crate::spec::scene::sweep::{
     FIT_KEY, FIT_KEYS, FROM_BECKMANN_KEY, FROM_BECKMANN_PARAM, MAX_CURVES_PER_SCENE, SWEEP_KEYS,
 };
@@ -308,8 +308,8 @@ fn panel_key(key: &str) -> Value {
                 "properties": {
                     "x": { "description": "a vertical line at this x, or a band over [a, b]", "anyOf": [{ "type": "number" }, { "type": "array", "items": { "type": "number" }, "minItems": 2, "maxItems": 2 }] },
                     "y": { "description": "a horizontal line at this y, or a band over [a, b]", "anyOf": [{ "type": "number" }, { "type": "array", "items": { "type": "number" }, "minItems": 2, "maxItems": 2 }] },
-                    "label": { "type": "string", "description": "text beside a line's end or inside a band" },
-                    "text": { "type": "string", "description": "a note's text, up and right of its point" },
+                    "label": text_field("text beside a line's end or inside a band"),
+                    "text": text_field("a note's text, up and right of its point"),
                     "at": { "type": "array", "items": { "type": "number" }, "minItems": 2, "maxItems": 2, "description": "a note's data point [x, y]" },
                 },
             },
@@ -752,7 +752,8 @@ pub fn schema() -> Value {
         json!({
             "type": "string",
             "pattern": text_pattern(),
-            "description": format!("printable text: none of {}", refused_in_text(|c| format!("U+{c:04X}"), "–", ", ")),
+            "maxLength": MAX_TEXT_CHARS,
+            "description": format!("printable text of at most {MAX_TEXT_CHARS} characters: none of {}", refused_in_text(|c| format!("U+{c:04X}"), "–", ", ")),
         }),
     );
     def(

@@ -1224,3 +1224,27 @@ fn a_leading_utf8_byte_order_mark_is_skipped_on_every_json_input() {
     );
     assert!(fit.contains("trowbridge_reitz"), "{fit}");
 }
+
+#[test]
+fn drawn_text_longer_than_the_cap_is_refused_by_its_path() {
+    let dir = scratch("robustness-long-text");
+    let spec = dir.join("long.json");
+    let long = "x".repeat(ndfplot::spec::scene::reader::MAX_TEXT_CHARS + 1);
+    std::fs::write(
+        &spec,
+        format!(
+            r#"{{"id": "long", "title": "{long}", "panels": [{{"curves": [{{"ndf": "ggx", "alpha_tr": 0.3, "label": "{long}"}}]}}]}}"#
+        ),
+    )
+    .unwrap();
+    let out = ndfplot(&["render", spec.to_str().unwrap(), "-o", dir.join("out").to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = text(&out.stderr);
+    for path in ["title", "panels[0].curves[0].label"] {
+        assert!(
+            stderr.contains(&format!("{path}: text too long (got 1001 characters, expected at most 1000)")),
+            "{path} in {stderr}"
+        );
+    }
+    assert!(!dir.join("out").exists(), "nothing written");
+}

@@ -16,6 +16,11 @@ pub const REFUSED_IN_TEXT: [(char, char); 3] = [
     ('\u{fffe}', '\u{ffff}'),
 ];
 
+/// Longest text a field holds, in characters: a title or label of a few lines is tens of
+/// characters, and longer text only slows the drawing (a 100 000-character label took 22 s to
+/// rasterize).
+pub const MAX_TEXT_CHARS: usize = 1000;
+
 /// Collects the problems found while reading one document.
 #[derive(Debug, Default)]
 pub struct Reader {
@@ -108,8 +113,8 @@ impl Reader {
     }
 
     /// A string field that is drawn as text (a title, a label, a column name shown on an axis): a
-    /// string without the characters of [`REFUSED_IN_TEXT`]. `None` when absent, of the wrong type
-    /// or holding one (reported).
+    /// string without the characters of [`REFUSED_IN_TEXT`], at most [`MAX_TEXT_CHARS`] long.
+    /// `None` when absent, of the wrong type, holding one or too long (reported).
     pub fn text(&mut self, object: &Object, key: &str) -> Option<String> {
         let text = self.string(object, key)?;
         match text.chars().find(|c| {
@@ -124,6 +129,16 @@ impl Reader {
                         "control character U+{:04X} in text (got \"{}\", expected printable text)",
                         bad as u32,
                         crate::problem::excerpt(&text)
+                    ),
+                );
+                None
+            }
+            None if text.chars().count() > MAX_TEXT_CHARS => {
+                self.report(
+                    object.path_of(key),
+                    format!(
+                        "text too long (got {} characters, expected at most {MAX_TEXT_CHARS})",
+                        text.chars().count()
                     ),
                 );
                 None
