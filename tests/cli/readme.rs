@@ -24,7 +24,7 @@
 //! tagged `sh` (or shown as plain text): `cargo` invocations, `ndfplot bench` and other timings,
 //! commands that need tools beyond POSIX `sh` and coreutils, and long runs.
 
-use crate::common::{root, scratch};
+use crate::common::{files_in, render_into, root, scratch};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -232,7 +232,7 @@ fn every_documented_transcript_is_what_the_binary_prints() {
         .into_iter()
         .filter(|b| b.info == "console")
         .collect();
-    for file in ["README.md", "docs/reference.md"] {
+    for file in ["README.md", "docs/guide.md", "docs/reference.md"] {
         assert!(
             console.iter().any(|b| b.file == file),
             "{file} has console blocks"
@@ -434,6 +434,34 @@ fn every_local_link_of_the_documents_leads_to_a_file_and_heading() {
     }
     assert!(problems.is_empty(), "\n{}", problems.join("\n"));
     assert!(checked > 100, "only {checked} links found");
+}
+
+/// Every figure the documents show from `docs/img/` is what its spec in `docs/examples/` (same id)
+/// draws now: the committed SVG byte for byte (the PNG beside it is that SVG rasterized).
+#[test]
+fn every_documented_figure_is_what_its_spec_draws() {
+    let out = scratch("documented-figures");
+    let mut checked = 0;
+    for name in files_in(&root().join("docs/img")) {
+        let Some(id) = name.strip_suffix(".svg") else {
+            continue;
+        };
+        let spec = root().join(format!("docs/examples/{id}.json"));
+        assert!(
+            spec.is_file(),
+            "docs/img/{name} has no spec docs/examples/{id}.json"
+        );
+        render_into(&[&spec], &out, "svg");
+        let drawn = std::fs::read(out.join(&name)).unwrap();
+        let committed = std::fs::read(root().join("docs/img").join(&name)).unwrap();
+        assert!(
+            drawn == committed,
+            "docs/img/{name} is not what docs/examples/{id}.json draws now: \
+             ndfplot render docs/examples/{id}.json -o docs/img --format svg,png"
+        );
+        checked += 1;
+    }
+    assert!(checked > 0, "the documents show figures from docs/img/");
 }
 
 #[test]
