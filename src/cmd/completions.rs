@@ -110,7 +110,7 @@ const EXIT_STATUS: &str = "\
   1  The run worked but a check failed: the check tolerance, compare --max-error, render --check differences (including a missing or extra CSV).
   2  Bad input (spec, curve, theta list, flags), I/O errors, a solver or quadrature that did not converge. Every problem is one line on stderr: the file or argument, the JSON path, what is wrong, the value given and what was expected, with \"did you mean\" for misspelt names.";
 
-/// A summary of the scene format; README and `ndfplot schema` have the whole of it.
+/// A summary of the scene format; docs/reference.md and `ndfplot schema` have the whole of it.
 const SCENE_FORMAT: &str = "\
 A scene is a JSON file; ndfplot show ID prints a catalogue figure's as an example, and ndfplot schema prints the JSON Schema of every key.
 

@@ -2,7 +2,7 @@
 //!
 //! Pure data: a model file states each parameter's domain once, as a [`Param`] with the reason for
 //! each bound; its constructor validates with [`Param::check`], and whatever shows or searches a
-//! domain (error messages, `--help`, fit search ranges, the JSON Schema, README's table, tests) reads
+//! domain (error messages, `--help`, fit search ranges, the JSON Schema, docs/reference.md's table, tests) reads
 //! that same [`Param`]. The curve parser attaches the JSON path and file to a [`DomainError`].
 
 use std::fmt;

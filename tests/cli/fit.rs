@@ -6,7 +6,7 @@ use crate::common::{ndfplot, ndfplot_stdin, ndfplot_stdin_env, text};
 
 const GGX_03: &str = r#"{"ndf":"trowbridge_reitz","alpha_tr":0.3}"#;
 
-/// The ABC L2 optimum for GGX α = 0.3 with a₂ = 1.75 fixed (README, docs/maths.md's table).
+/// The ABC L2 optimum for GGX α = 0.3 with a₂ = 1.75 fixed (docs/reference.md, docs/maths.md's table).
 const ONE_PARAMETER_L2_OPTIMUM: f64 = 0.014279685;
 
 fn ggx(alpha: f64) -> String {

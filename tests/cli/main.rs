@@ -1,7 +1,7 @@
 //! The integration tests that run the real `ndfplot` binary or its render pipeline: the command
 //! line and its contracts, the albedo tables, batch and multi-parameter fits, robustness against
 //! bad input and interruption, the JSON Schema, panel views, sampling, the lazily computed Fresnel
-//! basis, interactive pages in a browser, and README's transcripts.
+//! basis, interactive pages in a browser, and the documentation's transcripts, examples and links.
 
 #[path = "../common/mod.rs"]
 mod common;

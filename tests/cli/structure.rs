@@ -1,8 +1,8 @@
 //! The shape of `src/`: the folders are the stages, and imports run one way.
 //!
 //! Reads every `crate::` and `super::` path in the code of `src/` (comments skipped), resolves
-//! each to the file that defines the module it names, and checks three facts README's
-//! "Architecture" section states:
+//! each to the file that defines the module it names, and checks three facts that the section
+//! "Layout of the code" of docs/architecture.md states:
 //! - no arrow runs upward: a file imports only from its own stage or from stages below it
 //!   ([`level`] lists the order);
 //! - no circle between files (a folder's `mod.rs` and the files it declares count as one room:

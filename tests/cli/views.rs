@@ -209,7 +209,7 @@ fn a_legend_goes_where_the_spec_places_it() {
 }
 
 /// The committed `plots/examples/paper-figure.svg` is what rendering `examples/paper-figure.json`
-/// (README's style-keys example, which `readme.rs` holds to the file) draws now.
+/// (the style-keys example of docs/reference.md, which `readme.rs` holds to the file) draws now.
 #[test]
 fn the_committed_drawing_of_the_readme_style_example_is_current() {
     let root = crate::common::root();
@@ -219,7 +219,7 @@ fn the_committed_drawing_of_the_readme_style_example_is_current() {
     let committed = std::fs::read(root.join("plots/examples/paper-figure.svg")).unwrap();
     assert!(
         drawn == committed,
-        "re-render plots/examples (README shows the command)"
+        "re-render plots/examples (docs/reference.md shows the command)"
     );
 }
 

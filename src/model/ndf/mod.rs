@@ -6,7 +6,7 @@
 //! Constructors validate their parameters against the domains their family states ([`Param`]) and
 //! compute normalization constants once; `eval` is pure f64 code with no allocation, the one
 //! evaluation path of every output. Adding a family: one file implementing [`Distribution`], one
-//! registry line below, one reference-data file, one README row.
+//! registry line below, one reference-data file, one row in docs/reference.md's table of curves.
 
 pub mod lambda_integral;
 
@@ -352,24 +352,24 @@ mod tests {
         }
     }
 
-    /// README's table of curves states each family's domain as the registry does.
+    /// The table of curves in docs/reference.md states each family's domain as the registry does.
     #[test]
-    fn readme_rows_state_the_registry_domains() {
-        let readme = include_str!("../../../README.md");
+    fn reference_rows_state_the_registry_domains() {
+        let reference = include_str!("../../../docs/reference.md");
         for family in Family::ALL {
             let mut domain = family.domain();
             for param in family.params() {
                 domain = domain.replace(param.name, &format!("`{}`", param.name));
             }
             let prefix = format!("| `ndf: {}`", family.name());
-            let row = readme
+            let row = reference
                 .lines()
                 .find(|l| l.starts_with(&prefix))
-                .unwrap_or_else(|| panic!("README has no row {prefix}"));
+                .unwrap_or_else(|| panic!("docs/reference.md has no row {prefix}"));
             let cells: Vec<&str> = row.split(" | ").collect();
             assert!(
                 cells[1].starts_with(&domain),
-                "README row {row:?} should state {domain:?}"
+                "docs/reference.md row {row:?} should state {domain:?}"
             );
             for alias in family.aliases() {
                 assert!(
