@@ -504,11 +504,15 @@ pub enum Face {
 
 impl Face {
     /// The faces by name, as a scene's `font` spells them.
-    pub const NAMES: &'static [(&'static str, Face)] = &[("sans", Face::Sans), ("serif", Face::Serif)];
+    pub const NAMES: &'static [(&'static str, Face)] =
+        &[("sans", Face::Sans), ("serif", Face::Serif)];
 
     /// The face called `name`, if one is.
     pub fn named(name: &str) -> Option<Face> {
-        Face::NAMES.iter().find(|(n, _)| *n == name).map(|(_, f)| *f)
+        Face::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, f)| *f)
     }
 }
 
@@ -567,10 +571,11 @@ impl Canvas {
     /// The PNG's width and height in pixels: each side times `png_scale`, rounded; a side of
     /// a [`PrintSize`] is taken unrounded (3.3 in at 300 dpi is 990 pixels).
     pub fn png_size(&self) -> (f64, f64) {
-        let (w, h) = self.print.map_or(
-            (f64::from(self.width_px), f64::from(self.height_px)),
-            |p| p.css_px(),
-        );
+        let (w, h) = self
+            .print
+            .map_or((f64::from(self.width_px), f64::from(self.height_px)), |p| {
+                p.css_px()
+            });
         ((w * self.png_scale).round(), (h * self.png_scale).round())
     }
 
@@ -796,12 +801,14 @@ pub fn default_height(
     font_px: f64,
     titled: bool,
 ) -> f64 {
-    let title_band = if titled {
-        DEFAULT_TITLE_BAND_PX * font_px / DEFAULT_FONT_PX
-    } else {
-        0.0
-    };
+    let title_band = if titled { title_band_px(font_px) } else { 0.0 };
     (rows as f64 * width / cols as f64 * aspect + title_band).round()
+}
+
+/// The band of a one-line figure title over base text of `font_px`: [`DEFAULT_TITLE_BAND_PX`]
+/// scaled from [`DEFAULT_FONT_PX`].
+pub fn title_band_px(font_px: f64) -> f64 {
+    DEFAULT_TITLE_BAND_PX * font_px / DEFAULT_FONT_PX
 }
 
 /// Least size tick labels print at, in points: what journals ask of figure text.
@@ -930,7 +937,8 @@ impl Preset {
     ) -> Canvas {
         let font_px = Preset::FONT_PT * CSS_PX_PER_INCH / 72.0;
         let cols = cols.max(1);
-        let panel = (width / cols as f64 * aspect).max(Preset::MIN_PANEL_HEIGHT_IN * CSS_PX_PER_INCH);
+        let panel =
+            (width / cols as f64 * aspect).max(Preset::MIN_PANEL_HEIGHT_IN * CSS_PX_PER_INCH);
         let height = rows as f64 * panel + titles.extra_height(width, cols, font_px);
         // To a hundredth of an inch: a size a caption can state.
         let height = (height / CSS_PX_PER_INCH * 100.0 - 1e-9).ceil() / 100.0 * CSS_PX_PER_INCH;
@@ -989,7 +997,7 @@ impl Titles {
         let line = |em: f64| Titles::LINE_EM * em * font_px;
         let figure = match Titles::lines(&self.figure, FIGURE_TITLE_EM, font_px, width) {
             0 => 0.0,
-            n => DEFAULT_TITLE_BAND_PX * font_px / DEFAULT_FONT_PX + (n - 1) as f64 * line(FIGURE_TITLE_EM),
+            n => title_band_px(font_px) + (n - 1) as f64 * line(FIGURE_TITLE_EM),
         };
         let cell = width / cols.max(1) as f64;
         let panels: usize = self
@@ -1135,11 +1143,10 @@ mod tests {
     #[test]
     fn presets_are_a_papers_width_8_pt_and_300_dpi_with_room_for_each_panel_row() {
         let untitled = Titles::default();
-        let column = Preset::named("paper-column").unwrap().canvas(
-            (1, 1),
-            DEFAULT_ASPECT_RATIO,
-            &untitled,
-        );
+        let column =
+            Preset::named("paper-column")
+                .unwrap()
+                .canvas((1, 1), DEFAULT_ASPECT_RATIO, &untitled);
         assert_eq!(column.width_px, 317); // 3.3 in at 96 px/in, rounded
         assert!((column.font_px - 8.0 * 96.0 / 72.0).abs() < 1e-12);
         assert!((column.png_scale * 96.0 - 300.0).abs() < 1e-12);
@@ -1158,7 +1165,7 @@ mod tests {
         assert_eq!(page.width_px, 672);
         // Panels 2.33 in wide would be 1.44 in tall: each row gets the least panel height, and the
         // title its band at 8 pt.
-        let band = DEFAULT_TITLE_BAND_PX * page.font_px / DEFAULT_FONT_PX;
+        let band = title_band_px(page.font_px);
         assert_eq!(
             page.height_px,
             (2.0 * Preset::MIN_PANEL_HEIGHT_IN * 96.0 + band).round() as u32
@@ -1170,7 +1177,10 @@ mod tests {
     fn a_long_title_wraps_and_its_lines_get_room_at_a_presets_width() {
         let font_px = Preset::FONT_PT * CSS_PX_PER_INCH / 72.0;
         assert_eq!(Titles::lines("", FIGURE_TITLE_EM, font_px, 317.0), 0);
-        assert_eq!(Titles::lines("Beckmann", FIGURE_TITLE_EM, font_px, 317.0), 1);
+        assert_eq!(
+            Titles::lines("Beckmann", FIGURE_TITLE_EM, font_px, 317.0),
+            1
+        );
         // 83 glyphs of 0.6 × 1.4 × 10.7 px on 296 px: three lines.
         let long = "Torrance–Sparrow peak-fitted to Phong (thick); dashed: the notebook's α_{ts} matched by hand";
         assert_eq!(Titles::lines(long, FIGURE_TITLE_EM, font_px, 317.0), 3);
@@ -1194,7 +1204,11 @@ mod tests {
     fn column_figures_stack_their_panels_and_page_figures_keep_up_to_four_a_row() {
         let column = Preset::PaperColumn;
         assert_eq!(column.grid(2, (1, 2)), (2, 1));
-        assert_eq!(column.grid(4, (2, 2)), (4, 1), "four panels of 2.2 in fit 9 in");
+        assert_eq!(
+            column.grid(4, (2, 2)),
+            (4, 1),
+            "four panels of 2.2 in fit 9 in"
+        );
         assert_eq!(column.grid(6, (2, 3)), (3, 2), "six would be 13.2 in tall");
         assert_eq!(column.grid(8, (2, 4)), (4, 2));
         assert_eq!(column.grid(1, (1, 1)), (1, 1));

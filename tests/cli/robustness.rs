@@ -1237,12 +1237,19 @@ fn drawn_text_longer_than_the_cap_is_refused_by_its_path() {
         ),
     )
     .unwrap();
-    let out = ndfplot(&["render", spec.to_str().unwrap(), "-o", dir.join("out").to_str().unwrap()]);
+    let out = ndfplot(&[
+        "render",
+        spec.to_str().unwrap(),
+        "-o",
+        dir.join("out").to_str().unwrap(),
+    ]);
     assert_eq!(out.status.code(), Some(2));
     let stderr = text(&out.stderr);
     for path in ["title", "panels[0].curves[0].label"] {
         assert!(
-            stderr.contains(&format!("{path}: text too long (got 1001 characters, expected at most 1000)")),
+            stderr.contains(&format!(
+                "{path}: text too long (got 1001 characters, expected at most 1000)"
+            )),
             "{path} in {stderr}"
         );
     }

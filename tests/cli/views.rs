@@ -134,8 +134,14 @@ fn figures_take_physical_sizes_tick_choices_line_widths_and_no_grid() {
     let size = |at: usize| u32::from_be_bytes(png[at..at + 4].try_into().unwrap());
     assert_eq!((size(16), size(20)), (1008, 720));
     // pHYs: 288 dpi is 11 339 pixels per metre each way, unit 1 (metre).
-    let phys = png.windows(4).position(|w| w == b"pHYs").expect("a pHYs chunk");
-    assert_eq!((size(phys + 4), size(phys + 8), png[phys + 12]), (11339, 11339, 1));
+    let phys = png
+        .windows(4)
+        .position(|w| w == b"pHYs")
+        .expect("a pHYs chunk");
+    assert_eq!(
+        (size(phys + 4), size(phys + 8), png[phys + 12]),
+        (11339, 11339, 1)
+    );
     for label in ["0°", "45°", "90°", "0.1", "10"] {
         assert!(svg.contains(&format!(">{label}</text>")), "{label}");
     }
@@ -237,8 +243,14 @@ fn panel_letters_open_the_panel_titles_in_order_and_stay_upright() {
     let out = dir.join("out");
     render_into(&[&spec], &out, "svg");
     let svg = std::fs::read_to_string(out.join("letters.svg")).unwrap();
-    assert!(svg.contains(">(a) rough</text>"), "the first panel's title, upright");
-    assert!(svg.contains(">(b)</text>"), "the untitled second panel's letter");
+    assert!(
+        svg.contains(">(a) rough</text>"),
+        "the first panel's title, upright"
+    );
+    assert!(
+        svg.contains(">(b)</text>"),
+        "the untitled second panel's letter"
+    );
     assert_eq!(scene::lettered(27, "x"), "(ab) x");
 }
 
@@ -289,7 +301,14 @@ fn annotations_mark_lines_bands_and_points_and_bad_ones_are_named() {
     for label in ["quarter", "grazing", "peak"] {
         assert!(svg.contains(&format!(">{label}</text>")), "{label}");
     }
-    let lint = ndfplot(&["render", spec.to_str().unwrap(), "-o", out.to_str().unwrap(), "--strict", "-q"]);
+    let lint = ndfplot(&[
+        "render",
+        spec.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--strict",
+        "-q",
+    ]);
     assert_eq!(lint.status.code(), Some(0), "{}", text(&lint.stderr));
 
     let bad = dir.join("bad.json");
@@ -331,6 +350,39 @@ fn a_serif_figure_sets_every_text_in_the_embedded_serif_faces() {
     assert!(!svg.contains("DejaVu Sans"));
     let pdf = std::fs::read(out.join("serif.pdf")).unwrap();
     let has = |name: &str| pdf.windows(name.len()).any(|w| w == name.as_bytes());
-    assert!(has("DejaVuSerif-Italic"), "the variables' italic face is embedded");
+    assert!(
+        has("DejaVuSerif-Italic"),
+        "the variables' italic face is embedded"
+    );
     assert!(has("DejaVuSerif") && !has("DejaVuSans"));
+}
+
+#[test]
+fn bad_figure_options_exit_2_naming_their_keys() {
+    let dir = scratch("views-bad-options");
+    let bad = dir.join("bad.json");
+    std::fs::write(
+        &bad,
+        r#"{"id": "bad", "font": "comic", "background": "glass", "panel_letters": "yes",
+            "panels": [{"x": {"unit": "degrees", "ticks": "pi"}, "y": {"ticks": "pi"},
+                        "curves": [{"ndf": "ggx", "alpha_tr": 0.3}]},
+                       {"view": "polar", "annotations": [{"x": 0.5}],
+                        "curves": [{"ndf": "ggx", "alpha_tr": 0.3}]}]}"#,
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let output = ndfplot(&["render", bad.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = text(&output.stderr);
+    for expected in [
+        "font: unknown value (got \"comic\"",
+        "background: unknown value (got \"glass\"",
+        "panel_letters: expected true or false",
+        "panels[0].x.ticks: \"pi\" ticks are for a linear θ axis in radians",
+        "panels[0].y.ticks: \"pi\" ticks are for a θ axis in radians",
+        "panels[1].annotations: annotations are drawn on cartesian panels",
+    ] {
+        assert!(stderr.contains(expected), "{expected} not in {stderr}");
+    }
+    assert!(!out.exists(), "nothing written");
 }

@@ -32,15 +32,25 @@ mod tests {
     fn the_page_slants_the_letters_the_figures_slant() {
         if !matches!(Command::new("node").arg("--version").output(), Ok(out) if out.status.success())
         {
-            eprintln!("SKIPPED the_page_slants_the_letters_the_figures_slant: node is not installed");
+            eprintln!(
+                "SKIPPED the_page_slants_the_letters_the_figures_slant: node is not installed"
+            );
             return;
         }
         let labels = serde_json::to_string(&LABELS).unwrap();
         let program = format!(
             "{SCRIPT}\nconsole.log(JSON.stringify({labels}.map((t) => ndfplotMathRuns(t).filter((r) => r.italic).map((r) => r.text).join(''))));"
         );
-        let out = Command::new("node").arg("-e").arg(&program).output().unwrap();
-        assert!(out.status.success(), "node: {}", String::from_utf8_lossy(&out.stderr));
+        let out = Command::new("node")
+            .arg("-e")
+            .arg(&program)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "node: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let page: Vec<String> = serde_json::from_slice(&out.stdout).unwrap();
         for (label, page) in LABELS.iter().zip(&page) {
             assert_eq!(*page, slanted_letters(label), "{label}");

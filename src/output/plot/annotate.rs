@@ -56,7 +56,8 @@ impl Placement<'_> {
             Dimension::X => self.size.0,
             Dimension::Y => self.size.1,
         });
-        self.pixel(dimension, v).filter(|p| (0.0..=length).contains(p))
+        self.pixel(dimension, v)
+            .filter(|p| (0.0..=length).contains(p))
     }
 
     /// The pixel span `[a, b]` along `dimension` covers, clamped to the plot area; `None` when
@@ -132,7 +133,15 @@ where
                 };
                 mathtext::draw(plot, label, &text(anchor), at, m)?;
             }
-            (Layer::Over, Annotation::Band { axis, from, to, label }) if !label.is_empty() => {
+            (
+                Layer::Over,
+                Annotation::Band {
+                    axis,
+                    from,
+                    to,
+                    label,
+                },
+            ) if !label.is_empty() => {
                 let Some((lo, _)) = place.span(*axis, *from, *to) else {
                     continue;
                 };
@@ -142,7 +151,13 @@ where
                 };
                 mathtext::draw(plot, label, &text((HPos::Left, VPos::Top)), at, m)?;
             }
-            (Layer::Over, Annotation::Note { at: (x, y), text: note }) => {
+            (
+                Layer::Over,
+                Annotation::Note {
+                    at: (x, y),
+                    text: note,
+                },
+            ) => {
                 let (Some(px), Some(py)) =
                     (place.pixel(Dimension::X, *x), place.pixel(Dimension::Y, *y))
                 else {

@@ -520,7 +520,13 @@ where
         scales: (panel.axes.x_scale, panel.axes.y_scale),
         size: (pw, ph),
     };
-    annotate::draw(&plot, &panel.axes.annotations, &placement, annotate::Layer::Under, m)?;
+    annotate::draw(
+        &plot,
+        &panel.axes.annotations,
+        &placement,
+        annotate::Layer::Under,
+        m,
+    )?;
     // Curve vertices in plot pixels, clamped to the plot area as plotters clamps the points
     // of the elements it draws (the dashes are walked along the clamped polyline).
     let (x_px, y_px) = plot.get_pixel_range();
@@ -565,7 +571,13 @@ where
                 .map_err(draw_err)?;
         }
     }
-    annotate::draw(&plot, &panel.axes.annotations, &placement, annotate::Layer::Over, m)?;
+    annotate::draw(
+        &plot,
+        &panel.axes.annotations,
+        &placement,
+        annotate::Layer::Over,
+        m,
+    )?;
     outline(
         &plot,
         [(0, 0), (pw as i32 - 1, ph as i32 - 1)],

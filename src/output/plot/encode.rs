@@ -8,7 +8,6 @@ use super::style::{EM_PER_SIZE, family};
 use crate::pipeline::provenance::Provenance;
 use crate::spec::look::Canvas;
 
-
 /// The PNG's size in pixels ([`Canvas::png_size`]), after checking it as [`device_size`] does
 /// and against [`Canvas::MAX_PNG_PIXELS`], the cap that validation enforces.
 pub(super) fn png_size(canvas: &Canvas) -> Result<(u32, u32), PlotError> {

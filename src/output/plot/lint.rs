@@ -11,7 +11,7 @@ use std::cell::RefCell;
 use super::theme::{self, Pattern};
 use super::{PlotError, SVG_UNITS_PER_PX, draw_figure};
 use crate::pipeline::figure::Figure;
-use crate::spec::look::{MIN_PRINT_PT, PanelKind, Rgb, delta_e00};
+use crate::spec::look::{self, MIN_PRINT_PT, PanelKind, Rgb, delta_e00};
 use plotters::prelude::*;
 
 /// Least labelled ticks per axis of a 2D panel.
@@ -244,18 +244,23 @@ pub(super) fn findings(
             );
         }
     }
-    let printed = crate::spec::look::printed_pt(&figure.canvas, cols);
+    let printed = look::printed_pt(&figure.canvas, cols);
     if printed < MIN_PRINT_PT - 0.05 {
         let place = match figure.canvas.print {
             Some(_) => "at the figure's size".to_owned(),
             None => format!(
                 "placed {} in wide",
-                px(crate::spec::look::placed_width_px(f64::from(width), cols) / 96.0)
+                px(
+                    look::placed_width_px(f64::from(figure.canvas.width_px), cols)
+                        / look::CSS_PX_PER_INCH
+                )
             ),
         };
         push(
             None,
-            format!("tick labels print at {printed:.1} pt {place} (expected at least {MIN_PRINT_PT} pt)"),
+            format!(
+                "tick labels print at {printed:.1} pt {place} (expected at least {MIN_PRINT_PT} pt)"
+            ),
         );
     }
     let rows = figure.rows.max(1);

@@ -158,7 +158,10 @@ fn slant_variables(runs: &mut Vec<Run>) {
         let panel_letter = index == 0
             && chars.first() == Some(&'(')
             && (2..=3).contains(&chars.iter().position(|&c| c == ')').unwrap_or(0))
-            && chars[1..].iter().take_while(|&&c| c != ')').all(char::is_ascii_lowercase);
+            && chars[1..]
+                .iter()
+                .take_while(|&&c| c != ')')
+                .all(char::is_ascii_lowercase);
         let letter = |i: usize| chars.get(i).is_some_and(|c| c.is_alphabetic());
         let mut piece = String::new();
         let flush = |piece: &mut String, italic: bool, out: &mut Vec<Run>| {
@@ -185,8 +188,7 @@ fn slant_variables(runs: &mut Vec<Run>) {
         for (i, &c) in chars.iter().enumerate() {
             // The s of "notebook's" ends a word: an apostrophe between letters joins them.
             let elided = i > 1 && matches!(chars[i - 1], '\'' | '’') && letter(i - 2);
-            let alone =
-                c.is_alphabetic() && !(i > 0 && letter(i - 1)) && !letter(i + 1) && !elided;
+            let alone = c.is_alphabetic() && !(i > 0 && letter(i - 1)) && !letter(i + 1) && !elided;
             // "a reference", "A sweep", "I": an article or pronoun before a word stays upright.
             let prose = matches!(c, 'a' | 'A' | 'I')
                 && chars.get(i + 1) == Some(&' ')
@@ -466,7 +468,11 @@ mod tests {
         assert_eq!(slanted("ABC 2048"), "");
         assert_eq!(slanted("π/6 and Σ x"), "x");
         assert_eq!(slanted("the notebook's α and θ'"), "αθ");
-        assert_eq!(slanted("(b) D(θ) of (a)"), "Dθa", "a panel letter opening a label");
+        assert_eq!(
+            slanted("(b) D(θ) of (a)"),
+            "Dθa",
+            "a panel letter opening a label"
+        );
     }
 
     #[test]

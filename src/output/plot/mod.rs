@@ -44,8 +44,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::plot3d::View;
 use crate::pipeline::figure::{Figure, Panel};
-use crate::spec::look::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
 use crate::spec::look::{Canvas, PanelKind};
+use crate::spec::look::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
 use cartesian::{Needs, Shared, draw_cartesian, draw_cartesian_shared};
 use encode::{encode_png, finish_svg, rasterize};
 use heatmap::draw_heatmap;
@@ -578,7 +578,10 @@ mod tests {
             r##"stroke="#{ORANGE:06X}" stroke-width="{}""##,
             2.0 * 1.5 * SVG_UNITS_PER_PX
         );
-        assert!(svg.contains(&thick), "thick = 2 × 1.5 px × SVG_UNITS_PER_PX");
+        assert!(
+            svg.contains(&thick),
+            "thick = 2 × 1.5 px × SVG_UNITS_PER_PX"
+        );
     }
 
     #[test]

@@ -49,7 +49,11 @@ pub(super) fn ensure_font() -> Result<(), PlotError> {
     let ok = *REGISTERED.get_or_init(|| {
         let faces = [
             (Face::Sans, dejavu::sans::regular(), dejavu::sans::oblique()),
-            (Face::Serif, dejavu::serif::regular(), dejavu::serif::italic()),
+            (
+                Face::Serif,
+                dejavu::serif::regular(),
+                dejavu::serif::italic(),
+            ),
         ];
         faces.into_iter().all(|(face, upright, slanted)| {
             let (name, generic) = family(face);

@@ -342,7 +342,10 @@ mod tests {
         assert!((hemisphere.major[4] - half).abs() < 1e-15);
         assert_eq!(pi(0.0, half, 3.0).labels, ["0", "π/4", "π/2"]);
         assert_eq!(pi(-half, half, 3.0).labels, ["−π/2", "0", "π/2"]);
-        assert_eq!(pi(0.0, 2.0 * std::f64::consts::PI, 5.0).labels, ["0", "π/2", "π", "3π/2", "2π"]);
+        assert_eq!(
+            pi(0.0, 2.0 * std::f64::consts::PI, 5.0).labels,
+            ["0", "π/2", "π", "3π/2", "2π"]
+        );
         assert_eq!(pi_fraction(6, 4), "3π/2");
         assert_eq!(pi_fraction(4, 2), "2π");
     }

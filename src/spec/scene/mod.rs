@@ -23,8 +23,8 @@ use crate::spec::curve::{self, CurveSpec, Fitted, Label, Model, ParamValue, Part
 use crate::spec::json::{Node, Value};
 use crate::spec::look::{self, CSS_PX_PER_INCH};
 use crate::spec::look::{
-    Annotation, Axes, Canvas, Corner, Dash, Dimension, LegendPlace, Mark, PanelKind, Rgb, Scale, Style, SweepMember,
-    Theme, TickChoice, XUnit, shade,
+    Annotation, Axes, Canvas, Corner, Dash, Dimension, LegendPlace, Mark, PanelKind, Rgb, Scale,
+    Style, SweepMember, Theme, TickChoice, XUnit, shade,
 };
 use reader::Reader;
 use std::f64::consts::FRAC_PI_2;
@@ -565,7 +565,9 @@ fn read_canvas(
     // The preset's size unrounded, so that a printed size stays exact.
     let preset_size = preset.map(|c| {
         c.print
-            .map_or((f64::from(c.width_px), f64::from(c.height_px)), |p| p.css_px())
+            .map_or((f64::from(c.width_px), f64::from(c.height_px)), |p| {
+                p.css_px()
+            })
     });
     let width = width
         .or(preset_size.map(|s| s.0))
@@ -843,9 +845,7 @@ fn read_annotations(
         let Some(object) = reader.object(item, &at, ANNOTATION_KEYS) else {
             continue;
         };
-        let ok = |scale: Scale| {
-            move |v: f64| v.is_finite() && (scale == Scale::Linear || v > 0.0)
-        };
+        let ok = |scale: Scale| move |v: f64| v.is_finite() && (scale == Scale::Linear || v > 0.0);
         let expected = |scale: Scale| match scale {
             Scale::Log => "a finite number > 0 on a log axis",
             Scale::Linear => "a finite number",
@@ -881,11 +881,7 @@ fn read_annotations(
             } else {
                 reader
                     .number(&object, key, ok(scale), expected(scale))
-                    .map(|v| Annotation::Line {
-                        axis,
-                        at: v,
-                        label,
-                    })
+                    .map(|v| Annotation::Line { axis, at: v, label })
             };
             out.extend(annotation);
             continue;
