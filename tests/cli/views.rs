@@ -214,6 +214,61 @@ fn a_legend_goes_where_the_spec_places_it() {
     assert_eq!(legend_at("false"), None);
 }
 
+/// A legend that several panels share and that is too wide for a plot area at full size goes
+/// inside one of them at a smaller size, rather than taking a band that shortens the whole row:
+/// the catalogue's SGD grid, whose rows share "a₁ = 1, 0.5, 0.2, 0.1" and "a₂ = 0 … 1.5".
+#[test]
+fn a_shared_legend_goes_inside_a_plot_at_a_smaller_size_before_taking_a_band() {
+    let out = scratch("views-shared-legend");
+    let spec = crate::common::root().join("configs/sgd-grid.json");
+    render_into(&[&spec], &out, "svg");
+    let svg = std::fs::read_to_string(out.join("sgd-grid.svg")).unwrap();
+    let attribute = |line: &str, key: &str| -> f64 {
+        let start = line.find(&format!(r#" {key}=""#)).unwrap() + key.len() + 3;
+        line[start..].split('"').next().unwrap().parse().unwrap()
+    };
+    // The plot frames' spans: the long vertical (x, top, bottom) and horizontal (y, left, right)
+    // axis lines.
+    let mut vertical = Vec::new();
+    let mut horizontal = Vec::new();
+    for line in svg.lines().filter(|l| l.contains(r##"stroke="#555555""##)) {
+        let Some(start) = line.find(r#"points=""#) else {
+            continue;
+        };
+        let points: Vec<(f64, f64)> = line[start + 8..]
+            .split('"')
+            .next()
+            .unwrap()
+            .split_whitespace()
+            .map(|p| {
+                let (x, y) = p.split_once(',').unwrap();
+                (x.parse().unwrap(), y.parse().unwrap())
+            })
+            .collect();
+        if let [(x0, y0), (x1, y1)] = points[..] {
+            if x0 == x1 && (y1 - y0).abs() > 1000.0 {
+                vertical.push((y0.min(y1), y0.max(y1)));
+            } else if y0 == y1 && (x1 - x0).abs() > 1000.0 {
+                horizontal.push((x0.min(x1), x0.max(x1)));
+            }
+        }
+    }
+    let boxes: Vec<[f64; 4]> = svg
+        .lines()
+        .filter(|l| l.starts_with("<rect") && l.contains(r#"fill-opacity="0.85""#))
+        .map(|l| ["x", "y", "width", "height"].map(|k| attribute(l, k)))
+        .collect();
+    assert_eq!(boxes.len(), 2, "one legend per row");
+    for [x, y, w, h] in boxes {
+        let across = horizontal.iter().any(|&(l, r)| l <= x && x + w <= r);
+        let down = vertical.iter().any(|&(t, b)| t <= y && y + h <= b);
+        assert!(
+            across && down,
+            "legend box {x},{y} {w}×{h} is outside every plot area"
+        );
+    }
+}
+
 /// The committed `plots/examples/paper-figure.svg` is what rendering `examples/paper-figure.json`
 /// (the style-keys example of docs/reference.md, which `readme.rs` holds to the file) draws now.
 #[test]

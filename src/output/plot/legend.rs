@@ -2,7 +2,8 @@
 //! and its label) in a translucent box, and where it goes.
 //!
 //! The placement rule: inside the plot area, where it hides the least of what is drawn, when
-//! the box fits there and hides no more than [`HIDE_TOLERANCE_EM`] of curve; otherwise outside,
+//! the box fits there and hides no more than [`HIDE_TOLERANCE_EM`] of curve (at its full size,
+//! else in two columns or at a smaller text size, down to that of an outside legend); otherwise outside,
 //! in a strip beside or below the plot area, which shrinks to make room ([`choose_outside`]),
 //! in columns and at a smaller text size when one column does not fit. The box never reaches
 //! past the area it is given.
@@ -39,6 +40,9 @@ const LAST_RESORT_SHARE: f64 = 0.5;
 /// Space between legend columns, in base text sizes (scaled with the legend's text): twice
 /// the gap between a sample and its label, so that columns read as separate.
 const COLUMN_GAP_EM: f64 = 1.0;
+/// Most columns a legend inside the plot area is set in: a wider box rarely finds a place that
+/// hides no curve.
+const MAX_INSIDE_COLUMNS: usize = 2;
 
 /// What a legend entry shows next to its label.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -289,22 +293,34 @@ impl Legend {
         box_size(&self.widths, setting, m.unit)
     }
 
-    /// The top-left corner of the box in a plot area of `plot` pixels, at the full setting,
-    /// when it fits there and hides at most [`HIDE_TOLERANCE_EM`] of the `covered` curves
-    /// (plot pixels); `None` when it belongs outside.
+    /// The settings a legend inside a plot area is tried in, largest first: each of the
+    /// outside scales in one to [`MAX_INSIDE_COLUMNS`] columns.
+    fn inside_settings(&self) -> impl Iterator<Item = Setting> + use<> {
+        let most = self.entries.len().clamp(1, MAX_INSIDE_COLUMNS);
+        OUTSIDE_SCALES
+            .into_iter()
+            .flat_map(move |scale| (1..=most).map(move |columns| Setting { scale, columns }))
+    }
+
+    /// The setting of the box in a plot area of `plot` pixels and its top-left corner: the
+    /// first of [`Legend::inside_settings`] whose box fits there and hides at most
+    /// [`HIDE_TOLERANCE_EM`] of the `covered` curves (plot pixels); `None` when it belongs
+    /// outside.
     pub(super) fn inside(
         &self,
         plot: (f64, f64),
         covered: &[Vec<(f64, f64)>],
         m: &Metrics,
-    ) -> Option<(i32, i32)> {
-        let size = self.size(Setting::FULL, m);
+    ) -> Option<(Setting, (i32, i32))> {
         let inset = Self::inset(m);
-        if size.0 + 2.0 * inset > plot.0 || size.1 + 2.0 * inset > plot.1 {
-            return None;
-        }
-        let (at, hidden) = legend_position(plot, size, inset, covered);
-        (hidden <= HIDE_TOLERANCE_EM * m.unit).then_some(at)
+        self.inside_settings().find_map(|setting| {
+            let size = self.size(setting, m);
+            if size.0 + 2.0 * inset > plot.0 || size.1 + 2.0 * inset > plot.1 {
+                return None;
+            }
+            let (at, hidden) = legend_position(plot, size, inset, covered);
+            (hidden <= HIDE_TOLERANCE_EM * m.unit).then_some((setting, at))
+        })
     }
 
     /// The setting of the box at `corner` of a plot area of `plot` pixels and its top-left corner:
@@ -430,9 +446,10 @@ impl Legend {
         self.outside(plot, m, |_, _| Some(0.0)).setting.scale >= smallest
     }
 
-    /// Draws the legend over `area` where it hides the least of the `covered` curves (area
-    /// pixels): at the full setting when the box fits the area with its inset, else in the
-    /// setting [`choose_outside`] finds for the whole area.
+    /// Draws the legend over `area`: where [`Legend::inside`] puts it when it hides no curve
+    /// there; else where it hides the least of the `covered` curves (area pixels), at the full
+    /// setting when the box fits the area with its inset, else in the setting
+    /// [`choose_outside`] finds for the whole area.
     pub(super) fn draw_over<DB: DrawingBackend>(
         &self,
         area: &DrawingArea<DB, Shift>,
@@ -444,6 +461,9 @@ impl Legend {
     {
         let (w, h) = area.dim_in_pixel();
         let dims = (f64::from(w), f64::from(h));
+        if let Some((setting, at)) = self.inside(dims, covered, m) {
+            return self.draw(area, (f64::from(at.0), f64::from(at.1)), setting, m);
+        }
         let inset = Self::inset(m);
         let (box_w, box_h) = self.size(Setting::FULL, m);
         let setting = if box_w + 2.0 * inset <= dims.0 && box_h + 2.0 * inset <= dims.1 {
