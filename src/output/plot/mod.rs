@@ -187,6 +187,7 @@ where
         palette: theme::palette(figure.theme),
         family: style::family(figure.canvas.face).0,
         trace,
+        weight: Metrics::weight_of(figure.canvas.font_px),
     };
     if !figure.canvas.transparent {
         root.fill(&m.palette.background).map_err(draw_err)?;

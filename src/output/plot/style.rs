@@ -79,9 +79,18 @@ pub(super) struct Metrics {
     pub(super) family: &'static str,
     /// What the drawing places, recorded for the figure lint; `None` when not kept.
     pub(super) trace: super::lint::Recorder,
+    /// Multiplier of curve widths and dot radii: the base text size over the default
+    /// ([`Metrics::weight_of`]).
+    pub(super) weight: f64,
 }
 
 impl Metrics {
+    /// The weight of curves and dots next to text of `font_px` CSS pixels: 1 up to the default
+    /// text size, in proportion above it, so that on a canvas whose text was enlarged to print
+    /// at a legible size when the figure is placed smaller, its curves keep their weight too.
+    pub(super) fn weight_of(font_px: f64) -> f64 {
+        (font_px / crate::spec::look::DEFAULT_FONT_PX).max(1.0)
+    }
     /// `units` base text sizes in whole device pixels.
     pub(super) fn px(&self, units: f64) -> u32 {
         (units * self.unit).round().max(1.0) as u32
@@ -95,9 +104,9 @@ impl Metrics {
         TextStyle::from((FontFamily::Name(self.family), units * self.unit).into_font())
             .color(&self.palette.ink)
     }
-    /// Stroke of a curve drawn `multiplier` times the default width.
+    /// Stroke of a curve drawn `multiplier` times the default width, at the figure's weight.
     pub(super) fn curve_style(&self, colour: Rgb, multiplier: f64) -> ShapeStyle {
-        let width = (BASE_LINE_PX * multiplier.max(0.0) * self.k)
+        let width = (BASE_LINE_PX * multiplier.max(0.0) * self.weight * self.k)
             .round()
             .max(1.0);
         ShapeStyle {
@@ -115,9 +124,9 @@ impl Metrics {
             MARKER_RADIUS_PX
         })
     }
-    /// Radius in whole device pixels of a dot of `radius_px` CSS pixels.
+    /// Radius in whole device pixels of a dot of `radius_px` CSS pixels at the figure's weight.
     pub(super) fn dot(&self, radius_px: f64) -> u32 {
-        (radius_px * self.k).round().max(1.0) as u32
+        (radius_px * self.weight * self.k).round().max(1.0) as u32
     }
     /// A fill in `colour` at `opacity`.
     pub(super) fn fill(&self, colour: Rgb, opacity: f64) -> ShapeStyle {
