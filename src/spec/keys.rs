@@ -4,7 +4,7 @@
 //! Curves (`curve`) and scenes (`scene::reader`) both check their objects here. It looks at keys
 //! only: it never reads a value, decides what a document means, or does numerics.
 
-use crate::problem::{Problem, join_key, suggestion};
+use crate::problem::{MAX_PRINTED_PROBLEMS, Problem, join_key, suggestion};
 use crate::spec::json::Node;
 
 /// The keys an object accepts, for [`check`].
@@ -29,7 +29,9 @@ impl Accepted<'_> {
 /// key (at its second and later occurrences) as a duplicate, and, when `accepted` is given, every
 /// other key outside it as unknown, `(got <value>, expected one of: <listed>)` plus a "did you
 /// mean" when a listed key is near.
-/// Linear in the number of members: the keys seen so far are kept in a hash set.
+/// Linear in the number of members: the keys seen so far are kept in a hash set, and past the
+/// [`MAX_PRINTED_PROBLEMS`] that can be printed an unknown key's message is only counted (it
+/// skips the list and the "did you mean", a search of every accepted key).
 pub fn validate(
     members: &[(String, Node)],
     path: &str,
@@ -41,6 +43,10 @@ pub fn validate(
         if !seen.insert(key.as_str()) {
             problems.push(Problem::new(join_key(path, key), duplicate_key(value)));
         } else if let Some(accepted) = accepted.filter(|a| !a.contains(key)) {
+            if problems.len() >= MAX_PRINTED_PROBLEMS {
+                problems.push(Problem::new(join_key(path, key), "unknown key".to_owned()));
+                continue;
+            }
             let object = accepted
                 .object
                 .map_or_else(String::new, |o| format!(" for {o}"));
