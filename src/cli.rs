@@ -134,6 +134,8 @@ pub struct CoeffsArgs {
     only its regular files are read, never through a symbolic link (a link, FIFO, device or folder under\n\
     a compared name exits 2), up to 8 times the rendered file's size plus 1 MiB (a larger one differs,\n\
     unread); stored text is quoted only in short excerpts, control characters escaped.\n\n\
+    Caps (exit 2 before anything is computed): 10 000 curves and 5 000 000 table points a scene, and\n\
+    100 000 integrals a scene (albedo curves: each counts its table's samples plus up to 1033 drawn).\n\n\
     Examples:\n  \
     ndfplot render\n  \
     ndfplot render configs/abc-vs-tr.json my-scenes/ -o out --format svg,csv\n  \
@@ -281,7 +283,8 @@ fn eval_help() -> String {
     text.push_str(
         "\nOutput: CSV with header theta,value (one curve) or theta,<curve JSON>... (several), theta_deg\n\
          instead of theta with --degrees;\n\
-         numbers in shortest round-trip form. Exit 2 on bad input, with one error line per problem.\n\n\
+         numbers in shortest round-trip form. Exit 2 on bad input, with one error line per problem.\n\
+         Caps: 10 000 000 angles; 100 000 integrals (angles x albedo curves), refused before any row.\n\n\
          Examples:\n  \
          ndfplot eval --curve '{\"ndf\":\"beckmann\",\"alpha_b\":0.5}' --theta 0:1.5707963267948966:5\n  \
          ndfplot eval --curve '{\"ndf\":\"ggx\",\"alpha_tr\":0.2}' --curve @curve.json --theta 0,30,60,90 --degrees\n  \

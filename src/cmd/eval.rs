@@ -11,6 +11,7 @@ use crate::model::curve::Curve;
 use crate::model::grid::linspace_at;
 use crate::output::csv::Table;
 use crate::spec::angle::AngleUnit;
+use crate::spec::scene::MAX_INTEGRALS;
 
 /// Largest θ count of a `start:stop:count` list (docs/contracts.md).
 pub const MAX_THETA_COUNT: u64 = 10_000_000;
@@ -138,6 +139,20 @@ pub fn parse_theta_list(text: &str, unit: AngleUnit) -> Result<ThetaList> {
         count: count as usize,
         unit,
     })
+}
+
+/// The integrals (albedo values) a table of `curves` at `thetas` computes, refused past
+/// [`MAX_INTEGRALS`] before any is computed.
+pub fn check_integrals(curves: &[Curve], thetas: &ThetaList) -> Result<()> {
+    let per_theta: usize = curves.iter().map(Curve::integrals_per_value).sum();
+    let total = per_theta.saturating_mul(thetas.len());
+    if total > MAX_INTEGRALS {
+        return Err(crate::error::Error::Usage(format!(
+            "--theta: too much integration (got {} angles × {per_theta} albedo curves = {total} integrals, expected at most {MAX_INTEGRALS})",
+            thetas.len()
+        )));
+    }
+    Ok(())
 }
 
 /// Writes the CSV table through `sink`: `theta,value` for one curve, else

@@ -58,6 +58,7 @@ fn run_eval(args: EvalArgs) -> Result<()> {
     let unit = crate::spec::angle::AngleUnit::of(args.degrees);
     let thetas = eval::parse_theta_list(&args.theta, unit)?;
     let curves = load_curves(&args.curve, "--curve")?;
+    eval::check_integrals(&curves, &thetas)?;
     eval::write_table(&curves, &thetas, unit, &mut stdout::stream)?;
     stdout::flush()
 }

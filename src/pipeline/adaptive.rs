@@ -13,6 +13,7 @@
 //! Phong 2048 between 0 and 0.05 rad), two probes cannot both do so. On a parabola the deviation at
 //! a third is 8/9 of the largest, so probes are held to 8/9 of the tolerance.
 
+use crate::model::curve::Curve;
 use crate::pipeline::layout;
 use crate::spec::look::{PanelKind, Scale, XUnit};
 use std::cmp::Ordering;
@@ -25,6 +26,10 @@ pub const INITIAL_POINTS: usize = 33;
 /// Most evaluations one curve may take: far above what 0.25 px needs on a 20 000 px figure
 /// (a few hundred per lobe), a guard against curves that never settle (discontinuities).
 pub const MAX_EVALUATIONS: usize = 100_000;
+/// Most evaluations one curve whose every value is an integral (an albedo) may take: such curves
+/// are smooth, drawn with a few dozen points, and the cap bounds a scene's integration work
+/// ([`crate::spec::scene::MAX_INTEGRALS`]).
+pub const MAX_INTEGRAL_EVALUATIONS: usize = 1000;
 /// Deviation at a third of an interval relative to the largest deviation, for a parabola:
 /// t(1 − t) at t = 1/3 over its value 1/4 at t = 1/2.
 const THIRD_TO_MAX: f64 = 8.0 / 9.0;
@@ -456,6 +461,16 @@ pub fn extent<'a>(polylines: impl IntoIterator<Item = &'a [(f64, f64)]>) -> Opti
 /// [`RESCALE_THRESHOLD`] in pixels per unit, i.e. the refinement must be judged again.
 pub fn needs_rescale(before: &PixelMap, after: &PixelMap) -> bool {
     after.px_per_y > before.px_per_y * (1.0 + RESCALE_THRESHOLD)
+}
+
+/// The most evaluations `curve`'s adaptive sampling takes: [`MAX_INTEGRAL_EVALUATIONS`] for a
+/// curve of integrals, [`MAX_EVALUATIONS`] otherwise.
+pub fn budget(curve: &Curve) -> usize {
+    if curve.integrals_per_value() > 0 {
+        MAX_INTEGRAL_EVALUATIONS
+    } else {
+        MAX_EVALUATIONS
+    }
 }
 
 /// Samples `f` over `frame` adaptively: initial points, the panel's pixel map from `panel_extent`

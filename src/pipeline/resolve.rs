@@ -12,12 +12,14 @@ use crate::model::curve::Curve;
 use crate::model::dataset::Dataset;
 use crate::model::fit;
 use crate::model::fresnel::Fresnel;
+use crate::pipeline::adaptive;
 use crate::problem::{Problem, Problems, excerpt, join_key};
 use crate::spec::curve::{self, CurveSpec, Fitted, Label, Model, ParamValue, Part};
+use crate::spec::look::PanelKind;
 use crate::spec::scene::data::{CsvFile, DataSpec, MAX_DATA_POINTS};
 use crate::spec::scene::{
-    Invalid, MAX_POINTS_PER_SCENE, Pending, Sampling, Scene, SceneCurve, SceneData, ScenePanel,
-    Spec,
+    DEFAULT_SAMPLES, Invalid, MAX_INTEGRALS, MAX_POINTS_PER_SCENE, Pending, Sampling, Scene,
+    SceneCurve, SceneData, ScenePanel, Spec,
 };
 use crate::spec::source::Loaded;
 use rayon::prelude::*;
@@ -80,6 +82,9 @@ pub fn scene(spec: Scene<Spec>) -> std::result::Result<Scene, Vec<Problem>> {
         return Err(problems);
     }
     if let Some(problem) = check_points(spec.sampling, &panels) {
+        return Err(vec![problem]);
+    }
+    if let Some(problem) = check_integrals(spec.sampling, &panels) {
         return Err(vec![problem]);
     }
     Ok(Scene {
@@ -454,6 +459,42 @@ fn check_points(sampling: Sampling, panels: &[ScenePanel]) -> Option<Problem> {
         Problem::new(
             "sampling",
             format!("too many points in one scene (got {curves} curves × {per_curve} samples + {data} data points = {total}, expected at most {MAX_POINTS_PER_SCENE})"),
+        )
+    })
+}
+
+/// A problem when a scene would compute more than [`MAX_INTEGRALS`] integrals (albedo values):
+/// each curve's integrals per value × (its table's samples + the most its drawing evaluates).
+/// Named at the first panel with curves of integrals, before any is computed.
+fn check_integrals(sampling: Sampling, panels: &[ScenePanel]) -> Option<Problem> {
+    let table = match sampling.for_table() {
+        Sampling::Uniform(n) => n,
+        _ => DEFAULT_SAMPLES,
+    };
+    let mut total = 0usize;
+    let mut curves = 0usize;
+    let mut first = None;
+    for (p, panel) in panels.iter().enumerate() {
+        let drawn = match (sampling.for_drawing(), &panel.axes.kind) {
+            (Sampling::Uniform(n), _) => n,
+            (_, PanelKind::Surface { .. } | PanelKind::Heatmap { .. }) => DEFAULT_SAMPLES,
+            _ => adaptive::INITIAL_POINTS + adaptive::MAX_INTEGRAL_EVALUATIONS,
+        };
+        for shown in &panel.curves {
+            let per_value = shown.curve.integrals_per_value();
+            if per_value == 0 {
+                continue;
+            }
+            first.get_or_insert(p);
+            curves += 1;
+            total = total.saturating_add(per_value.saturating_mul(table.saturating_add(drawn)));
+        }
+    }
+    let p = first?;
+    (total > MAX_INTEGRALS).then(|| {
+        Problem::new(
+            format!("panels[{p}]"),
+            format!("too much integration in one scene (got {curves} curves of albedo values needing up to {total} integrals, expected at most {MAX_INTEGRALS}: fewer curves, or fewer samples with \"sampling\")"),
         )
     })
 }

@@ -121,7 +121,7 @@ pub fn evaluate_all(plan: &Plan) -> std::result::Result<Vec<Evaluated>, JobError
                     &|t| curve.eval(t),
                     &maps[*frame],
                     tolerance,
-                    adaptive::MAX_EVALUATIONS,
+                    adaptive::budget(curve),
                     start,
                 );
             }

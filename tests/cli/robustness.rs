@@ -1255,3 +1255,46 @@ fn drawn_text_longer_than_the_cap_is_refused_by_its_path() {
     }
     assert!(!dir.join("out").exists(), "nothing written");
 }
+
+/// Integration is budgeted before it starts: a 107-byte spec sweeping 1000 albedo curves (some
+/// two million double integrals) and an `eval` of an albedo at 200 000 angles are refused with
+/// the cap named, exit 2, nothing written; a scene under the cap renders.
+#[test]
+fn integration_past_its_budget_is_refused_before_any_is_computed() {
+    let dir = scratch("robustness-integral-budget");
+    let spec = r#"{"id":"m","panels":[{"curves":[{"ndf":"ggx","alpha_tr":{"linspace":[0.01,1,1000]},"quantity":"albedo"}]}]}"#;
+    std::fs::write(dir.join("many.json"), spec).unwrap();
+    let out = run_in(&dir, &["render", "many.json", "-o", "out"]);
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("many.json: panels[0]: too much integration in one scene (got 1000 curves")
+            && err.contains(&format!(
+                "expected at most {}",
+                ndfplot::spec::scene::MAX_INTEGRALS
+            )),
+        "{err}"
+    );
+    assert!(!dir.join("out").exists(), "wrote {:?}", files_in(&dir));
+
+    let albedo = r#"{"ndf":"ggx","alpha_tr":0.3,"quantity":"albedo"}"#;
+    let out = ndfplot(&["eval", "--curve", albedo, "--theta", "0:1:200000"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty(), "no row before the refusal");
+    assert!(
+        text(&out.stderr)
+            .contains("--theta: too much integration (got 200000 angles × 1 albedo curves"),
+        "{}",
+        text(&out.stderr)
+    );
+
+    let few = spec
+        .replace("1000]", "3]")
+        .replace(r#""id":"m","#, r#""id":"m","sampling":{"uniform":20},"#);
+    std::fs::write(dir.join("few.json"), few).unwrap();
+    let out = run_in(
+        &dir,
+        &["render", "few.json", "-o", "out", "--format", "csv"],
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+}

@@ -79,6 +79,21 @@ impl Curve {
         }
     }
 
+    /// How many integrals one value of the curve computes: 1 for a directional albedo E(μo)
+    /// (a double integral over the light's hemisphere), the sum of its operands' for a
+    /// difference, 0 for the closed forms. Scenes and commands budget their work by it.
+    pub fn integrals_per_value(&self) -> usize {
+        match self {
+            Curve::Quantity {
+                quantity: Quantity::Albedo { .. },
+                ..
+            } => 1,
+            Curve::Difference { a, b, .. } => a.integrals_per_value() + b.integrals_per_value(),
+            Curve::Transformed { curve, .. } => curve.integrals_per_value(),
+            Curve::Ndf(_) | Curve::Fresnel(_) | Curve::Quantity { .. } => 0,
+        }
+    }
+
     /// What the curve's values are; a difference's are its first operand's (both share them).
     pub fn kind(&self) -> Kind {
         match self {

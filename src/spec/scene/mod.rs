@@ -37,6 +37,12 @@ pub const MAX_SAMPLES_PER_CURVE: usize = 10_000_000;
 /// [`MAX_CURVES_PER_SCENE`] at 500 samples). Its CSV is about 500 MB, and a run at the cap stays
 /// under 1 GiB.
 pub const MAX_POINTS_PER_SCENE: usize = 5_000_000;
+/// Most integrals (albedo values, [`crate::model::curve::Curve::integrals_per_value`]) one scene
+/// may ask for, counted before any is computed: each curve of integrals at its table's samples
+/// plus its drawing's most (an adaptive drawing's evaluation cap, or its samples). The default
+/// 1000 samples and adaptive drawing make 2033 a curve: 49 albedo curves a scene. `eval`
+/// holds its θ count × curves of integrals to it too.
+pub const MAX_INTEGRALS: usize = 100_000;
 /// Default number of uniform samples per curve over the visible θ range.
 pub const DEFAULT_SAMPLES: usize = 1000;
 /// Largest figure side in CSS pixels; beyond it rasters exhaust memory for no visible gain.
