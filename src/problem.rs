@@ -117,10 +117,12 @@ pub fn excerpt(text: &str) -> String {
     out
 }
 
-/// Joins a JSON path and an object key: `("panels[0]", "title")` → `panels[0].title`.
+/// Joins a JSON path and an object key: `("panels[0]", "title")` → `panels[0].title`. The key is
+/// quoted as an [`excerpt`]: a path never echoes a long or control-laden key whole.
 pub fn join_key(path: &str, key: &str) -> String {
+    let key = excerpt(key);
     if path.is_empty() {
-        key.to_string()
+        key
     } else {
         format!("{path}.{key}")
     }

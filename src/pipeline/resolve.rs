@@ -426,7 +426,7 @@ const TEMPLATE_DIGITS: usize = 4;
 fn fill_template(template: &str, curve: &Curve, values: &[(&str, ParamValue)]) -> String {
     let mut label = template.to_string();
     if let Some(l2) = belcour_l2(curve) {
-        label = label.replace("{l2}", &format!("{l2:.2}"));
+        label = label.replace(curve::L2_PLACEHOLDER, &format!("{l2:.2}"));
     }
 
     for (name, value) in values {

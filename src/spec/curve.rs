@@ -300,6 +300,38 @@ impl Serialize for Fitted {
     }
 }
 
+/// The placeholder of a Belcour reconstruction's `l2_grid` error in a label template.
+pub const L2_PLACEHOLDER: &str = "{l2}";
+
+/// The first `{name}` of a label `template` that is neither a parameter of `params` nor a
+/// placeholder every template may hold ([`L2_PLACEHOLDER`], the albedo's average
+/// [`crate::spec::quantity::E_AVG_PLACEHOLDER`]), nor a slider's `{=name}`: `None` when all are
+/// known. Braces after `_`, `^` or `\` group a sub- or superscript or are escaped, and are not
+/// placeholders; neither is a brace holding anything but a name's letters, digits and `_`.
+pub fn unknown_placeholder<'t>(template: &'t str, params: &[&str]) -> Option<&'t str> {
+    let mut previous = None;
+    for (i, c) in template.char_indices() {
+        let grouped = matches!(previous, Some('_' | '^' | '\\'));
+        previous = Some(c);
+        if c != '{' || grouped {
+            continue;
+        }
+        let rest = &template[i + 1..];
+        let Some(end) = rest.find('}') else { continue };
+        let name = &rest[..end];
+        let is_name =
+            !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+        let whole = &template[i..i + end + 2];
+        let known = params.contains(&name)
+            || whole == L2_PLACEHOLDER
+            || whole == crate::spec::quantity::E_AVG_PLACEHOLDER;
+        if is_name && !known {
+            return Some(name);
+        }
+    }
+    None
+}
+
 /// A curve's legend label as the spec describes it; resolve writes it out from the resolved curve
 /// (a Belcour reconstruction's `l2_grid` error, a fitted value).
 #[derive(Debug, Clone, PartialEq)]
@@ -1344,5 +1376,20 @@ mod tests {
             curve.canonical_json(),
             r#"{"ndf":"abc","alpha_abc1":1e-7,"alpha_abc2":2.0}"#
         );
+    }
+    #[test]
+    fn label_placeholders_are_parameters_or_known_and_groups_are_not_placeholders() {
+        let params = ["alpha_tr"];
+        assert_eq!(unknown_placeholder("α_{tr} = {alpha_tr}", &params), None);
+        assert_eq!(
+            unknown_placeholder("x^{2}, {l2}, {e_avg}, {=a}", &params),
+            None
+        );
+        assert_eq!(unknown_placeholder("\\{alpha_x}, {a b}, {", &params), None);
+        assert_eq!(
+            unknown_placeholder("{alpha_tr} {alpha_x}", &params),
+            Some("alpha_x")
+        );
+        assert_eq!(unknown_placeholder("{alpha}", &params), Some("alpha"));
     }
 }

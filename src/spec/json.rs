@@ -10,6 +10,7 @@
 //!
 //! It never decides what a document means (that is `curve` and `scene`).
 
+use crate::problem::{excerpt, one_line};
 use serde::Serialize;
 use std::{fmt, io};
 
@@ -83,16 +84,11 @@ impl Value {
 }
 
 impl fmt::Display for Node {
-    /// Compact JSON text of the value (numbers as written), truncated to 60 characters.
+    /// Compact JSON text of the value (numbers as written), as an [`excerpt`].
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let mut text = String::new();
         write_compact(&self.value, &mut text);
-        if text.chars().count() > 60 {
-            let cut: String = text.chars().take(57).collect();
-            write!(f, "{cut}...")
-        } else {
-            f.write_str(&text)
-        }
+        f.write_str(&excerpt(&text))
     }
 }
 
@@ -208,8 +204,10 @@ impl Parser {
 
     /// The next character for messages: `'x'` or `end of input`.
     fn found(&self) -> String {
-        self.peek()
-            .map_or_else(|| "end of input".to_string(), |c| format!("'{c}'"))
+        self.peek().map_or_else(
+            || "end of input".to_string(),
+            |c| format!("'{}'", one_line(&c.to_string())),
+        )
     }
 
     fn peek(&self) -> Option<char> {
@@ -259,7 +257,7 @@ impl Parser {
             Some('f') => self.keyword("false", Value::Bool(false))?,
             Some('n') => self.keyword("null", Value::Null)?,
             Some(c) if c == '-' || c.is_ascii_digit() => Value::Number(self.number()?),
-            Some(c) => return Err(self.error(format!("unexpected character '{c}'"))),
+            Some(_) => return Err(self.error(format!("unexpected character {}", self.found()))),
         };
         Ok(Node { value, line, col })
     }
@@ -437,7 +435,10 @@ impl Parser {
         }
         let value: f64 = literal.parse().map_err(|_| self.error("invalid number"))?;
         if !value.is_finite() {
-            return Err(self.error(format!("number {literal} is outside the range of a double")));
+            return Err(self.error(format!(
+                "number {} is outside the range of a double",
+                excerpt(&literal)
+            )));
         }
         Ok(Number { value, literal })
     }
@@ -539,6 +540,7 @@ mod tests {
         let node = parse(r#"{ "ndf" : "phong", "alpha_p" : [1, 2.50] }"#).unwrap();
         assert_eq!(node.to_string(), r#"{"ndf":"phong","alpha_p":[1,2.50]}"#);
         let long = parse(&format!("\"{}\"", "x".repeat(100))).unwrap();
-        assert_eq!(long.to_string().chars().count(), 60);
+        // The excerpt every message quotes: 60 characters and an ellipsis.
+        assert_eq!(long.to_string(), format!("\"{}…", "x".repeat(59)));
     }
 }

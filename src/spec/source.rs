@@ -42,7 +42,8 @@ pub type Source = (String, String, Option<DataScope>);
 
 /// The spec sources named by `paths` (files, folders whose `*.json` are taken sorted by name,
 /// catalogue ids — a path that exists wins over an id — or `-` once, for a spec on standard input),
-/// or the whole built-in catalogue when `paths` is empty. A spec's data files may be read from its
+/// or the whole built-in catalogue when `paths` is empty. A folder with no `*.json` is a usage
+/// error, not a silent run of nothing. A spec's data files may be read from its
 /// folder (the working directory for stdin) and from the folders `allow_read`.
 pub fn sources(paths: &[PathBuf], allow_read: &[PathBuf]) -> Result<Vec<Source>> {
     let allowed: Arc<[PathBuf]> = Arc::from(allow_read);
@@ -71,6 +72,12 @@ pub fn sources(paths: &[PathBuf], allow_read: &[PathBuf]) -> Result<Vec<Source>>
                 .filter_map(|e| e.ok().map(|e| e.path()))
                 .filter(|p| p.extension().is_some_and(|x| x == "json") && p.is_file())
                 .collect();
+            if files.is_empty() {
+                return Err(Error::Usage(format!(
+                    "{}: no spec to render (got a folder with no *.json file, expected at least one)",
+                    crate::problem::excerpt(&path.display().to_string())
+                )));
+            }
             files.sort();
             for file in files {
                 let name = file.display().to_string();

@@ -1298,3 +1298,52 @@ fn integration_past_its_budget_is_refused_before_any_is_computed() {
     );
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
 }
+
+/// Every echo of an input is one excerpt: a 1 MB unknown key, a 10 000-digit number and a raw
+/// escape character are quoted in at most 60 characters, escaped; a folder holding no spec is a
+/// usage error, not a silent run of nothing.
+#[test]
+fn messages_quote_long_keys_numbers_and_control_characters_as_short_escaped_excerpts() {
+    let dir = scratch("robustness-excerpts");
+    let key = "k".repeat(1 << 20);
+    std::fs::write(
+        dir.join("key.json"),
+        format!(r#"{{"id":"x","{key}":1,"panels":[]}}"#),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("number.json"),
+        format!(r#"{{"id":"x","width":{}}}"#, "9".repeat(10_000)),
+    )
+    .unwrap();
+    std::fs::write(dir.join("escape.json"), "{\"id\":\u{1b}[31m}").unwrap();
+    for (spec, expected) in [
+        (
+            "key.json",
+            format!("key.json: {}…: unknown key", "k".repeat(60)),
+        ),
+        (
+            "number.json",
+            format!("invalid JSON: number {}… is outside", "9".repeat(60)),
+        ),
+        ("escape.json", r"unexpected character '\u001b'".to_owned()),
+    ] {
+        let out = run_in(&dir, &["render", spec, "-o", "out"]);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{spec}");
+        assert!(err.len() < 1000, "{spec}: {} bytes of messages", err.len());
+        assert!(err.contains(&expected), "{spec}: {err}");
+        assert!(
+            !err.contains('\u{1b}'),
+            "{spec}: a raw escape reached the terminal"
+        );
+    }
+    std::fs::create_dir_all(dir.join("empty")).unwrap();
+    let out = run_in(&dir, &["render", "empty", "-o", "out"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).contains("empty: no spec to render (got a folder with no *.json file"),
+        "{}",
+        text(&out.stderr)
+    );
+}

@@ -519,6 +519,10 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
         "cross-field: a heat-map panel shows no curves of θ",
     ),
     (
+        "label-unknown-placeholder",
+        "cross-field: a label's placeholders are the curve's parameters",
+    ),
+    (
         "layout-too-small",
         "cross-field: rows × cols against the number of panels",
     ),

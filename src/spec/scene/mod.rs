@@ -1332,6 +1332,21 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
     let Some((entry, label_template)) = entry_with_label(reader, node, path) else {
         return;
     };
+    if let Some(template) = &label_template {
+        let params: Vec<&str> = resolved.params.iter().map(|p| p.name).collect();
+        if let Some(name) = curve::unknown_placeholder(template, &params) {
+            let listed: Vec<String> = params.iter().map(|p| format!("{{{p}}}")).collect();
+            reader.report(
+                join_key(path, "label"),
+                format!(
+                    "unknown placeholder {{{}}} (expected one of: {}){}",
+                    crate::problem::excerpt(name),
+                    listed.join(", "),
+                    crate::problem::suggestion(name, params.iter().copied())
+                ),
+            );
+        }
+    }
     let base_style = read_style(reader, &entry, default_colour(resolved.model));
 
     // Per parameter, its values; absent keys take their defaults.
