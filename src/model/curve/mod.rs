@@ -9,6 +9,7 @@ pub mod quantity;
 use crate::model::fresnel::Fresnel;
 use crate::model::names::named;
 use crate::model::ndf::Ndf;
+use crate::model::renderer::{Emulation, Target};
 use crate::model::transform::Transform;
 use quantity::Quantity;
 
@@ -43,6 +44,8 @@ pub enum Curve {
         /// The NDF.
         ndf: Ndf,
     },
+    /// D, G1, G2 or Schlick's F as a renderer computes it ([`crate::model::renderer`]).
+    Emulated(Emulation),
 }
 
 /// What a curve's values are, for the rules that pair curves (differences, `compare`) and for
@@ -76,6 +79,18 @@ impl Curve {
             Curve::Difference { op, a, b } => op.apply(a.eval(theta), b.eval(theta)),
             Curve::Transformed { transform, curve } => transform.apply(theta, curve.eval(theta)),
             Curve::Quantity { quantity, ndf } => quantity.eval(ndf, theta),
+            Curve::Emulated(emulation) => emulation.eval(theta),
+        }
+    }
+
+    /// Whether a renderer's emulation ([`Curve::Emulated`]) computes any part of the curve: its values
+    /// then carry that engine's float32 or half-float rounding.
+    pub fn emulated(&self) -> bool {
+        match self {
+            Curve::Emulated(_) => true,
+            Curve::Difference { a, b, .. } => a.emulated() || b.emulated(),
+            Curve::Transformed { curve, .. } => curve.emulated(),
+            Curve::Ndf(_) | Curve::Fresnel(_) | Curve::Quantity { .. } => false,
         }
     }
 
@@ -86,6 +101,12 @@ impl Curve {
             Curve::Quantity { quantity, .. } => Kind::Ndf(quantity.name()),
             Curve::Fresnel(_) => Kind::Fresnel,
             Curve::Difference { a, .. } => a.kind(),
+            Curve::Emulated(emulation) => match emulation.target() {
+                Target::D(..) => Kind::Ndf("d"),
+                Target::G1(..) => Kind::Ndf("g1"),
+                Target::G2 { .. } => Kind::Ndf("g2"),
+                Target::Schlick(_) => Kind::Fresnel,
+            },
         }
     }
 }
