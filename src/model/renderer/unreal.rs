@@ -5,7 +5,7 @@
 //! Microsurfaces" (GDC, the joint-Smith approximation `Vis_SmithJointApprox`), in float32.
 //!
 //! - Roughness: a² = Pow4(r) = (r r)(r r), i.e. α = r²; r floored at 0.02 (`View.MinRoughness`,
-//!   as tomosud/brdf_view `docs/unreal_brdf_reproduction_status.md` records it). A given α is
+//!   as the tomosud/brdf_view repository records it in its Unreal reproduction notes). A given α is
 //!   floored at 0.02² and its a² is α α.
 //! - D (`D_GGX(a2, NoH)`): d = (NoH a² − NoH) NoH + 1, D = a² / (π d d). At the floor a² = 1.6e-7
 //!   lies a few float32 steps below 1, so the peak is set by how a² − 1 rounds.
