@@ -72,7 +72,7 @@ impl Curve {
 
     /// Canonical curve JSON (docs/contracts.md): compact, model key first, parameters in docs/maths.md's
     /// order, numbers in shortest round-trip form, aliases replaced by canonical names. A
-    /// difference is `{"difference":"minus"|"ratio","a":{…},"b":{…}}`, a transformed curve
+    /// difference is `{"difference":"minus"|"ratio"|"relative"|"log-ratio","a":{…},"b":{…}}`, a transformed curve
     /// `{"transform":"projected"|"slope","curve":{…}}`.
     pub fn canonical_json(&self) -> String {
         crate::spec::json::to_string(self)
@@ -897,14 +897,16 @@ pub fn read_keys<'a>(
         .flatten()
         .map(|p| p.name)
         .chain(quantity_keys.iter().copied())
-        .chain([ENGINE_KEY])
+        .chain(model.emulable().then_some(ENGINE_KEY))
         .chain(extra_keys.iter().copied())
         .collect();
     let object = format!("{} \"{}\"", model.key(), model.name());
+    // A model no engine computes still takes "engine" past the key check, to be refused by name
+    // ([`read_engine`]), but does not list it.
     let accepted = Accepted {
         object: Some(&object),
         listed: &all_keys,
-        unlisted: &[model.key()],
+        unlisted: &[model.key(), ENGINE_KEY],
     };
     let mut problems = keys::validate(members, path, Some(&accepted));
     if !problems.is_empty() {
@@ -1112,7 +1114,7 @@ pub fn scalar(node: &Node, kind: ParamKind, path: &str) -> Result<ParamValue, Pr
 }
 
 /// Parses one plain curve object (every parameter a single value), as `eval` takes it, or a
-/// difference `{"difference": "minus"|"ratio", "a": <curve>, "b": <curve>}` of two such curves,
+/// difference `{"difference": "minus"|"ratio"|"relative"|"log-ratio", "a": <curve>, "b": <curve>}` of two such curves,
 /// into its description ([`crate::pipeline::resolve::curve`] makes it a [`Curve`]).
 pub fn parse(node: &Node, path: &str) -> Result<CurveSpec, Vec<Problem>> {
     if is_published(node) {

@@ -890,7 +890,10 @@ pub fn schema() -> Value {
     let difference = |operand: &str, extras: &[&str]| {
         let keys: Vec<&str> = DIFFERENCE_KEYS.iter().chain(extras).copied().collect();
         object(&keys, DIFFERENCE_KEYS, |key| match key {
-            DIFFERENCE_KEY => described(strings(&ops), "minus: a − b; ratio: a / b (0/0 = 1)"),
+            DIFFERENCE_KEY => described(
+                strings(&ops),
+                "minus: a − b; ratio: a / b (0/0 = 1); relative: (a − b)/|b|; log-ratio: ln(a/b) (both 0 where a = b)",
+            ),
             "a" => described(reference(operand), "the first curve"),
             "b" => described(
                 reference(operand),

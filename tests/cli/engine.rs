@@ -162,6 +162,16 @@ fn threejs_spherical_gaussian_schlick_runs_above_the_pow5_form() {
     );
     close(threejs[0], sg, F32_TOL);
     close(threejs[0] / pow5, 1.069, 1e-3);
+    // The same as difference curves: relative (a − b)/|b| and ln(a/b).
+    let sg_curve = r#"{"fresnel":"schlick","f0":0.04,"engine":"threejs"}"#;
+    let pow5_curve = r#"{"fresnel":"schlick","f0":0.04}"#;
+    for (op, want) in [
+        ("relative", sg / pow5 - 1.0),
+        ("log-ratio", (sg / pow5).ln()),
+    ] {
+        let curve = format!(r#"{{"difference":"{op}","a":{sg_curve},"b":{pow5_curve}}}"#);
+        close(eval_deg(&curve, &[degrees])[0], want, 1e-4);
+    }
     let unreal = eval_deg(
         r#"{"fresnel":"schlick","f0":0.04,"engine":"unreal"}"#,
         &[degrees],

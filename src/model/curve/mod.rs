@@ -119,17 +119,54 @@ named! {
         /// a / b, with 0/0 = 1 (both curves vanish: they agree) and x/0 = +∞ for x ≠ 0, which every
         /// consumer reports as an error at that θ instead of printing it.
         Ratio = "ratio",
+        /// (a − b)/|b|, with 0 where a = b (both 0 included) and ±∞ where only b is 0.
+        Relative = "relative",
+        /// ln(a/b), with 0 where a = b (both 0 included); −∞ or NaN where a/b ≤ 0.
+        LogRatio = "log-ratio",
     }
 }
 
 impl DiffOp {
-    /// a − b, or a / b with 0/0 = 1.
+    /// a − b, a / b with 0/0 = 1, (a − b)/|b| or ln(a/b), each 0 (1 for the ratio) where a = b.
     #[inline]
     pub fn apply(self, a: f64, b: f64) -> f64 {
         match self {
             DiffOp::Minus => a - b,
             DiffOp::Ratio if a == 0.0 && b == 0.0 => 1.0,
             DiffOp::Ratio => a / b,
+            DiffOp::Relative | DiffOp::LogRatio if a == b => 0.0,
+            DiffOp::Relative => (a - b) / b.abs(),
+            DiffOp::LogRatio => (a / b).ln(),
+        }
+    }
+
+    /// How a label joins the operands' labels: `a − b`, `a / b`, `a relative to b`, `ln(a / b)` as
+    /// `a log-ratio to b`.
+    pub fn sign(self) -> &'static str {
+        match self {
+            DiffOp::Minus => "−",
+            DiffOp::Ratio => "/",
+            DiffOp::Relative => "relative to",
+            DiffOp::LogRatio => "log-ratio to",
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::DiffOp;
+
+    #[test]
+    fn relative_and_log_ratio_are_zero_where_the_operands_agree() {
+        assert_eq!(DiffOp::Relative.apply(3.0, 2.0), 0.5);
+        assert_eq!(DiffOp::Relative.apply(1.0, -2.0), 1.5);
+        assert_eq!(DiffOp::Relative.apply(0.0, 0.0), 0.0);
+        assert_eq!(DiffOp::Relative.apply(1.0, 0.0), f64::INFINITY);
+        assert_eq!(DiffOp::LogRatio.apply(std::f64::consts::E, 1.0), 1.0);
+        assert_eq!(DiffOp::LogRatio.apply(0.0, 0.0), 0.0);
+        assert_eq!(DiffOp::LogRatio.apply(0.0, 1.0), f64::NEG_INFINITY);
+        for op in DiffOp::ALL {
+            assert_eq!(DiffOp::from_name(op.name()), Some(op));
         }
     }
 }
