@@ -140,6 +140,19 @@ fn filament_caps_the_ggx_peak_at_its_minimum_roughness() {
     );
     close(max_rel, 1.0 - capped / exact_peak, 1e-5);
     assert!((max_rel - 0.157).abs() < 5e-4, "{max_rel}");
+    // The exact GGX with that peak, by a peak fit: 1/(π α²) = 453.5²/π, α = 1/453.5 (the α below which
+    // the cap bites).
+    let fit = ndfplot(&[
+        "fit", "--target", filament, "--family", "ggx", "--by", "peak",
+    ]);
+    assert_eq!(fit.status.code(), Some(0), "{}", text(&fit.stderr));
+    let fitted: f64 = text(&fit.stdout)
+        .trim()
+        .trim_start_matches(r#"{"ndf":"trowbridge_reitz","alpha_tr":"#)
+        .trim_end_matches('}')
+        .parse()
+        .unwrap();
+    close(fitted, 1.0 / 453.5, F32_TOL);
     // A roughness below the minimum is clamped to it (l.1-8): the same curve.
     let floored = eval_deg(
         r#"{"ndf":"ggx","roughness":0.01,"engine":"filament"}"#,
