@@ -1505,6 +1505,7 @@ pub fn symbol(param: &str) -> &str {
         .iter()
         .flat_map(|family| family.params())
         .chain(fresnel::PARAMS)
+        .chain([&renderer::ROUGHNESS])
         .find(|p| p.name == param)
         .map_or(param, |p| p.symbol)
 }

@@ -6,7 +6,7 @@
 //! Provenance of the reference numbers: the engines' source lines cited at each test, and closed forms
 //! (α²/π, 453.5²/π, 1/(π α²)) evaluated here in f64.
 
-use crate::common::{ndfplot, text};
+use crate::common::{csv_records, ndfplot, number, render_into, scratch, text};
 use std::f64::consts::PI;
 use std::process::Output;
 
@@ -341,4 +341,44 @@ fn canonical_json_carries_the_engine() {
         header,
         r#"theta,"{""ndf"":""trowbridge_reitz"",""roughness"":0.25,""engine"":""pbrt-v4""}","{""ndf"":""trowbridge_reitz"",""alpha_tr"":0.5,""quantity"":""g2"",""g2"":""separable"",""theta_i"":""same"",""engine"":""mitsuba3""}""#
     );
+}
+
+/// A scene sweeps an engine curve's roughness like any parameter; its automatic label names the engine,
+/// and its CSV holds what `eval` prints for the same curve and θ.
+#[test]
+fn scenes_sweep_roughness_and_write_what_eval_prints() {
+    let dir = scratch("engine-scene");
+    let spec = dir.join("engines.json");
+    std::fs::write(
+        &spec,
+        r#"{"id": "engines", "panels": [{"curves": [
+            {"ndf": "ggx", "alpha_tr": 0.5},
+            {"ndf": "ggx", "roughness": [0.1, 0.3], "engine": "cycles"}]}]}"#,
+    )
+    .unwrap();
+    let out = dir.join("out");
+    render_into(&[&spec], &out, "svg,csv");
+    let svg = std::fs::read_to_string(out.join("engines.svg")).unwrap();
+    assert!(svg.contains("cycles"), "the legend names the engine");
+    let records = csv_records(out.join("engines.csv").to_str().unwrap());
+    let engine_rows: Vec<_> = records.iter().filter(|r| &r[1] == "2").collect();
+    assert!(!engine_rows.is_empty());
+    assert_eq!(
+        &engine_rows[0][2],
+        r#"{"ndf":"trowbridge_reitz","roughness":0.3,"engine":"cycles"}"#
+    );
+    for row in engine_rows.iter().step_by(engine_rows.len() / 5 + 1) {
+        let theta = number(row, 3);
+        let output = ndfplot(&["eval", "--curve", &row[2], "--theta", &format!("{theta:?}")]);
+        let printed: f64 = text(&output.stdout)
+            .lines()
+            .nth(1)
+            .unwrap()
+            .split(',')
+            .nth(1)
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert_eq!(printed, number(row, 4), "θ = {theta}");
+    }
 }
