@@ -411,12 +411,18 @@ impl FitSpec {
 
     fn fit_uncached(&self, target: &Curve) -> Result<Fit, FitError> {
         let model = target.model();
-        if !matches!(target, Curve::Ndf(_)) {
+        // An NDF, or the D a renderer computes for one.
+        let is_d = match target {
+            Curve::Ndf(_) => true,
+            Curve::Emulated(_) => target.kind() == crate::model::curve::Kind::Ndf("d"),
+            _ => false,
+        };
+        if !is_d {
             return Err(FitError::new(
                 Subject::Target,
                 model.key(),
                 format!(
-                    "a fit needs an NDF target (got {} \"{}\", expected an ndf curve)",
+                    "a fit needs an NDF target showing D (got {} \"{}\", expected an ndf curve)",
                     model.key(),
                     model.name()
                 ),

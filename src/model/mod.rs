@@ -14,4 +14,5 @@ pub mod metrics;
 pub mod names;
 pub mod ndf;
 pub mod published;
+pub mod renderer;
 pub mod transform;

@@ -363,6 +363,7 @@ fn text(label: &Label, curve: &Curve, fit: Option<(&Fitted, &FitOutcome)>) -> St
                         unreachable!("the spec stage gives a fitted part only to a fitted curve")
                     }
                 })
+                .chain(engine_part(curve))
                 .collect();
             with_family_prefix(curve, &parts.join(", "))
         }
@@ -387,6 +388,14 @@ fn text(label: &Label, curve: &Curve, fit: Option<(&Fitted, &FitOutcome)>) -> St
         Label::Difference { .. } => {
             unreachable!("the spec stage gives a difference label only to a difference")
         }
+    }
+}
+
+/// The engine of a curve a renderer computes, as the last part of its automatic label.
+fn engine_part(curve: &Curve) -> Option<String> {
+    match curve {
+        Curve::Emulated(emulation) => Some(emulation.engine().name().to_string()),
+        _ => None,
     }
 }
 

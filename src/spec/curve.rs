@@ -9,13 +9,14 @@
 //! sweeps: scenes resolve the keys here, expand each parameter's values themselves, then call
 //! [`Keyed::build`] per combination.
 
-use crate::model::curve::quantity::Quantity;
+use crate::model::curve::quantity::{Quantity, ThetaI};
 use crate::model::curve::{Curve, DiffOp, Kind};
 use crate::model::domain::DomainError;
 use crate::model::fit::By;
 use crate::model::fresnel::{self, Fresnel, FresnelModel, Ior, SchlickF0};
 use crate::model::ndf::Family;
 use crate::model::published::{Channel, Preset, PresetError, Source};
+use crate::model::renderer::{self, Emulation, Engine, Lobe, Refusal, Target, Width};
 use crate::model::transform::Transform;
 use crate::problem::{Problem, join_index, join_key, suggestion};
 use crate::spec::json::{Node, Value};
@@ -33,6 +34,12 @@ impl Curve {
             Curve::Difference { a, .. } => a.model(),
             Curve::Transformed { curve, .. } => curve.model(),
             Curve::Quantity { ndf, .. } => Model::Ndf(ndf.family()),
+            Curve::Emulated(emulation) => match emulation.target() {
+                Target::D(lobe, _) | Target::G1(lobe, _) | Target::G2 { lobe, .. } => {
+                    Model::Ndf(lobe.family())
+                }
+                Target::Schlick(_) => Model::Fresnel(FresnelModel::Schlick),
+            },
         }
     }
 
@@ -50,12 +57,22 @@ impl Curve {
             }
             Curve::Fresnel(f) => fresnel_params(f),
             Curve::Difference { .. } | Curve::Transformed { .. } => vec![],
+            Curve::Emulated(emulation) => {
+                let target = emulation.target();
+                let param = match (target, target.width()) {
+                    (Target::Schlick(f0), _) => (fresnel::F0.name, f0),
+                    (_, Some(Width::Roughness(r))) => (renderer::ROUGHNESS.name, r),
+                    (_, Some(Width::Alpha(alpha))) => (self.model_family_param(), alpha),
+                    (_, None) => unreachable!("only Schlick has no width"),
+                };
+                vec![(param.0, ParamValue::Number(param.1))]
+            }
         }
     }
 
     /// Canonical curve JSON (docs/contracts.md): compact, model key first, parameters in docs/maths.md's
     /// order, numbers in shortest round-trip form, aliases replaced by canonical names. A
-    /// difference is `{"difference":"minus"|"ratio","a":{…},"b":{…}}`, a transformed curve
+    /// difference is `{"difference":"minus"|"ratio"|"relative"|"log-ratio","a":{…},"b":{…}}`, a transformed curve
     /// `{"transform":"projected"|"slope","curve":{…}}`.
     pub fn canonical_json(&self) -> String {
         crate::spec::json::to_string(self)
@@ -78,7 +95,42 @@ impl Serialize for Curve {
                 |map| write_model(map, self.model(), &self.params()),
                 quantity,
             ),
+            Curve::Emulated(emulation) => {
+                let mut map = serializer.serialize_map(None)?;
+                write_model(&mut map, self.model(), &self.params())?;
+                if let Some(quantity) = emulated_quantity(emulation) {
+                    quantity::serialize_members(&mut map, &quantity)?;
+                }
+                map.serialize_entry(ENGINE_KEY, emulation.engine().name())?;
+                map.end()
+            }
         }
+    }
+}
+
+impl Curve {
+    /// The first parameter of the curve's NDF family (its width: `alpha_tr`, `alpha_b`).
+    fn model_family_param(&self) -> &'static str {
+        match self.model() {
+            Model::Ndf(family) => family.param_names()[0],
+            Model::Fresnel(_) => fresnel::F0.name,
+        }
+    }
+}
+
+/// The key naming the renderer whose computation a curve shows.
+pub const ENGINE_KEY: &str = "engine";
+
+/// The quantity other than D that an emulated NDF curve shows, as curve JSON names it (its G2 the
+/// engine's).
+fn emulated_quantity(emulation: &Emulation) -> Option<Quantity<Curve>> {
+    match emulation.target() {
+        Target::G1(..) => Some(Quantity::G1),
+        Target::G2 { theta_i, .. } => Some(Quantity::G2 {
+            model: emulation.engine().g2_model(),
+            theta_i: theta_i.map_or(ThetaI::Same, ThetaI::Fixed),
+        }),
+        Target::D(..) | Target::Schlick(_) => None,
     }
 }
 
@@ -510,7 +562,14 @@ impl Model {
     /// signatures are exclusive (eta/kappa versus r/g).
     pub fn signatures(self) -> Vec<Vec<ParamSpec>> {
         match self {
-            Model::Ndf(family) => vec![family.param_names().iter().map(|&n| number(n)).collect()],
+            Model::Ndf(family) => {
+                let mut signatures =
+                    vec![family.param_names().iter().map(|&n| number(n)).collect()];
+                if self.emulable() {
+                    signatures.push(vec![number(renderer::ROUGHNESS.name)]);
+                }
+                signatures
+            }
             Model::Fresnel(model) => match model {
                 FresnelModel::Exact | FresnelModel::Belcour | FresnelModel::Normalized => {
                     vec![ETA_KAPPA.to_vec(), GULBRANDSEN.to_vec()]
@@ -556,6 +615,27 @@ impl Model {
         Ok(CurveSpec::Ready(Curve::Fresnel(fresnel)))
     }
 
+    /// Whether a renderer can compute curves of this model (`"engine"`): the GGX and Beckmann
+    /// lobes, and Schlick's Fresnel.
+    pub fn emulable(self) -> bool {
+        match self {
+            Model::Ndf(family) => Lobe::of(family).is_some(),
+            Model::Fresnel(model) => model == FresnelModel::Schlick,
+        }
+    }
+
+    /// Whether the parameters `params` (one of [`Model::signatures`]) take `"engine"`: an
+    /// emulable NDF's width (α or roughness) or Schlick's F₀.
+    pub fn takes_engine(self, params: &[ParamSpec]) -> bool {
+        self.emulable()
+            && matches!(params, [p] if p.name != fresnel::ETA.name && p.name != fresnel::REFLECTIVITY.name)
+    }
+
+    /// Whether the parameters `params` need `"engine"`: the roughness, which only an engine maps to α.
+    pub fn needs_engine(params: &[ParamSpec]) -> bool {
+        matches!(params, [p] if p.name == renderer::ROUGHNESS.name)
+    }
+
     /// Looks a model up from its key (`ndf`/`fresnel`) and name, aliases included.
     pub fn from_key_and_name(key: &str, name: &str) -> Option<Model> {
         match key {
@@ -599,12 +679,17 @@ pub struct Keyed<'a> {
     pub nodes: Vec<Option<&'a Node>>,
     /// The quantity of an NDF curve other than D ([`crate::spec::quantity`]).
     pub quantity: Option<Quantity<CurveSpec>>,
+    /// The renderer whose computation the curve shows (`"engine"`).
+    pub engine: Option<Engine>,
 }
 
 impl Keyed<'_> {
     /// Describes the curve ([`Model::build`]) and the quantity it shows, reporting a domain error
     /// at the path of the offending key.
     pub fn build(&self, values: &[ParamValue], path: &str) -> Result<CurveSpec, Problem> {
+        if let Some(engine) = self.engine {
+            return self.emulated(engine, values[0].number(), path);
+        }
         let curve = self
             .model
             .build(self.signature, values)
@@ -615,6 +700,14 @@ impl Keyed<'_> {
     /// `ndf` (this entry's NDF, built or fitted) showing the entry's quantity, if it names one
     /// other than D; a quantity the family cannot show is reported at `path`.
     pub fn showing_quantity(&self, ndf: CurveSpec, path: &str) -> Result<CurveSpec, Problem> {
+        if let Some(engine) = self.engine {
+            return Err(Problem::new(
+                join_key(path, ENGINE_KEY),
+                format!(
+                    "a curve as an engine computes it takes its parameter as written, not fitted (got engine \"{engine}\")"
+                ),
+            ));
+        }
         match (&self.quantity, self.model) {
             (Some(quantity), Model::Ndf(family)) => {
                 quantity.check_family(family, path)?;
@@ -627,6 +720,144 @@ impl Keyed<'_> {
         }
     }
 }
+
+impl Keyed<'_> {
+    /// The curve `engine` computes for this entry's model, quantity and one parameter `value` (α,
+    /// roughness or F₀); a refusal is reported at the key it concerns.
+    fn emulated(&self, engine: Engine, value: f64, path: &str) -> Result<CurveSpec, Problem> {
+        let key = self.params[0].name;
+        let width = if key == renderer::ROUGHNESS.name {
+            Width::Roughness(value)
+        } else {
+            Width::Alpha(value)
+        };
+        let target = match (self.model, &self.quantity) {
+            (Model::Fresnel(_), _) => Target::Schlick(value),
+            (Model::Ndf(family), quantity) => {
+                let lobe = Lobe::of(family).expect("read_keys() checked the family");
+                match quantity {
+                    None => Target::D(lobe, width),
+                    Some(Quantity::G1) => Target::G1(lobe, width),
+                    Some(Quantity::G2 { theta_i, .. }) => Target::G2 {
+                        lobe,
+                        width,
+                        theta_i: match theta_i {
+                            ThetaI::Same => None,
+                            ThetaI::Fixed(theta) => Some(*theta),
+                        },
+                    },
+                    Some(_) => unreachable!("read_keys() checked the quantity"),
+                }
+            }
+        };
+        let emulation = Emulation::new(engine, target).map_err(|refusal| match refusal {
+            Refusal::Domain(e) => Problem::new(
+                join_key(path, key),
+                format!("out of domain (got {:?}, expected {})", e.value, e.expected),
+            ),
+            other => Problem::new(join_key(path, ENGINE_KEY), other.to_string()),
+        })?;
+        Ok(CurveSpec::Ready(Curve::Emulated(emulation)))
+    }
+}
+
+/// Reads the `"engine"` of a curve object of `model` at `path`: a name of [`Engine`], any case; the
+/// model must be one an engine computes ([`Model::emulable`]) with parameters that take it, and a
+/// quantity it has (D, G1 or G2, its G2 the engine's). `None` when the key is absent.
+fn read_engine(
+    members: &[(String, Node)],
+    model: Model,
+    params: &[ParamSpec],
+    path: &str,
+    problems: &mut Vec<Problem>,
+) -> Option<Engine> {
+    let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, n)| n);
+    let Some(node) = get(ENGINE_KEY) else {
+        if Model::needs_engine(params) {
+            problems.push(Problem::new(
+                join_key(path, renderer::ROUGHNESS.name),
+                format!(
+                    "a roughness maps to α by an engine's convention: name one with \"engine\" (expected \"{}\" without an engine)",
+                    model.signatures()[0][0].name
+                ),
+            ));
+        }
+        return None;
+    };
+    let at = join_key(path, ENGINE_KEY);
+    let names: Vec<&str> = Engine::NAMES.iter().map(|(n, _)| *n).collect();
+    let Value::String(name) = &node.value else {
+        problems.push(Problem::new(
+            at,
+            format!(
+                "expected an engine name (got {node}, expected one of: {})",
+                names.join(", ")
+            ),
+        ));
+        return None;
+    };
+    let Some(engine) = Engine::ALL
+        .into_iter()
+        .find(|e| e.name().eq_ignore_ascii_case(name))
+    else {
+        problems.push(Problem::new(
+            at,
+            format!(
+                "unknown engine (got \"{}\", expected one of: {}){}",
+                crate::problem::excerpt(name),
+                names.join(", "),
+                suggestion(&name.to_ascii_lowercase(), names.iter().copied())
+            ),
+        ));
+        return None;
+    };
+    let before = problems.len();
+    if !model.takes_engine(params) {
+        let what = match model {
+            Model::Ndf(family) => format!("ndf \"{}\"", family.name()),
+            Model::Fresnel(m) if model.emulable() => {
+                format!("fresnel \"{}\" given by its index", m.name())
+            }
+            Model::Fresnel(m) => format!("fresnel \"{}\"", m.name()),
+        };
+        problems.push(Problem::new(
+            &at,
+            format!(
+                "an engine computes GGX and Beckmann lobes (from their α or a roughness) and Schlick's Fresnel from f0 (got {what})"
+            ),
+        ));
+    }
+    if let Some(quantity) = get(quantity::QUANTITY_KEY)
+        && let Value::String(q) = &quantity.value
+        && !ENGINE_QUANTITIES.contains(&q.as_str())
+    {
+        problems.push(Problem::new(
+            join_key(path, quantity::QUANTITY_KEY),
+            format!(
+                "an engine's curve shows one of: {} (got quantity \"{}\" with engine \"{engine}\")",
+                ENGINE_QUANTITIES.join(", "),
+                crate::problem::excerpt(q)
+            ),
+        ));
+    }
+    if let Some(g2) = get(quantity::G2_KEY)
+        && let Value::String(g2) = &g2.value
+        && g2 != engine.g2_model().name()
+    {
+        problems.push(Problem::new(
+            join_key(path, quantity::G2_KEY),
+            format!(
+                "the G2 of {engine} is {} (got \"{}\"; leave \"g2\" out or name that one)",
+                engine.g2_model().name(),
+                crate::problem::excerpt(g2)
+            ),
+        ));
+    }
+    (problems.len() == before).then_some(engine)
+}
+
+/// The quantities an engine's curve may show.
+const ENGINE_QUANTITIES: [&str; 3] = ["d", "g1", "g2"];
 
 /// Turns a domain error into a problem at `<path>.<param>`.
 pub fn domain_problem(error: &DomainError, path: &str) -> Problem {
@@ -698,13 +929,16 @@ pub fn read_keys<'a>(
         .flatten()
         .map(|p| p.name)
         .chain(quantity_keys.iter().copied())
+        .chain(model.emulable().then_some(ENGINE_KEY))
         .chain(extra_keys.iter().copied())
         .collect();
     let object = format!("{} \"{}\"", model.key(), model.name());
+    // A model no engine computes still takes "engine" past the key check, to be refused by name
+    // ([`read_engine`]), but does not list it.
     let accepted = Accepted {
         object: Some(&object),
         listed: &all_keys,
-        unlisted: &[model.key()],
+        unlisted: &[model.key(), ENGINE_KEY],
     };
     let mut problems = keys::validate(members, path, Some(&accepted));
     if !problems.is_empty() {
@@ -714,6 +948,7 @@ pub fn read_keys<'a>(
         .iter()
         .filter(|(k, _)| {
             k != model.key()
+                && k != ENGINE_KEY
                 && !extra_keys.contains(&k.as_str())
                 && !quantity_keys.contains(&k.as_str())
         })
@@ -748,6 +983,7 @@ pub fn read_keys<'a>(
         }),
         Model::Fresnel(_) => None,
     };
+    let engine = read_engine(members, model, &params, path, &mut problems);
     for (spec, node) in params.iter().zip(&nodes) {
         if node.is_none() && spec.default.is_none() {
             problems.push(Problem::new(
@@ -768,6 +1004,7 @@ pub fn read_keys<'a>(
             params,
             nodes,
             quantity,
+            engine,
         })
     } else {
         Err(problems)
@@ -909,7 +1146,7 @@ pub fn scalar(node: &Node, kind: ParamKind, path: &str) -> Result<ParamValue, Pr
 }
 
 /// Parses one plain curve object (every parameter a single value), as `eval` takes it, or a
-/// difference `{"difference": "minus"|"ratio", "a": <curve>, "b": <curve>}` of two such curves,
+/// difference `{"difference": "minus"|"ratio"|"relative"|"log-ratio", "a": <curve>, "b": <curve>}` of two such curves,
 /// into its description ([`crate::pipeline::resolve::curve`] makes it a [`Curve`]).
 pub fn parse(node: &Node, path: &str) -> Result<CurveSpec, Vec<Problem>> {
     if is_published(node) {
@@ -1300,6 +1537,7 @@ pub fn symbol(param: &str) -> &str {
         .iter()
         .flat_map(|family| family.params())
         .chain(fresnel::PARAMS)
+        .chain([&renderer::ROUGHNESS])
         .find(|p| p.name == param)
         .map_or(param, |p| p.symbol)
 }

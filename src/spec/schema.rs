@@ -22,10 +22,11 @@ use crate::model::fresnel::{self, FresnelModel};
 use crate::model::masking::{G1Model, G2Model};
 use crate::model::ndf::Family;
 use crate::model::published::{Channel, Source};
+use crate::model::renderer::Engine;
 use crate::model::transform::Transform;
 use crate::spec::curve::{
-    DIFFERENCE_KEY, DIFFERENCE_KEYS, Model, PUBLISHED_KEY, PUBLISHED_KEYS, ParamKind, ParamSpec,
-    TRANSFORM_KEY, TRANSFORM_KEYS,
+    DIFFERENCE_KEY, DIFFERENCE_KEYS, ENGINE_KEY, Model, PUBLISHED_KEY, PUBLISHED_KEYS, ParamKind,
+    ParamSpec, TRANSFORM_KEY, TRANSFORM_KEYS,
 };
 use crate::spec::quantity;
 use crate::spec::scene::interactive::{
@@ -418,6 +419,9 @@ fn free_param(name: &str) -> &'static str {
             "Lazanyi's weight of the c (1 − c)⁶ term, in [−5 (1 − f0), a_max(f0)] so that 0 ≤ F ≤ 1 (bounds that depend on f0: checked by ndfplot)"
         }
         "g_remap" => "use the remapped edge tint ḡ = 1 − (1 − g)³ instead of g (default false)",
+        "roughness" => {
+            "an artist's roughness in [0, 1] (with \"engine\"), mapped to α by that engine's convention"
+        }
         other => panic!("no description for the parameter {other:?}"),
     }
 }
@@ -483,10 +487,16 @@ fn signature(
         Model::Ndf(_) => quantity::KEYS,
         Model::Fresnel(_) => &[],
     };
+    let engine_keys: &[&str] = if model.takes_engine(params) {
+        &[ENGINE_KEY]
+    } else {
+        &[]
+    };
     let keys: Vec<&str> = [model.key()]
         .into_iter()
         .chain(params.iter().map(|p| p.name))
         .chain(quantity_keys.iter().copied())
+        .chain(engine_keys.iter().copied())
         .chain(extras.iter().copied())
         .collect();
     let required: Vec<&str> = [model.key()]
@@ -497,6 +507,7 @@ fn signature(
                 .filter(|p| p.default.is_none())
                 .map(|p| p.name),
         )
+        .chain(Model::needs_engine(params).then_some(ENGINE_KEY))
         .collect();
     let title = match model {
         Model::Ndf(family) => format!("the {} NDF", family.title()),
@@ -509,6 +520,11 @@ fn signature(
             param(spec)
         } else if quantity_keys.contains(&key) {
             quantity_key(key)
+        } else if key == ENGINE_KEY {
+            described(
+                strings(&names(&Engine::NAMES)),
+                "the renderer whose own computation the curve shows (its expression, precision and clamps)",
+            )
         } else {
             extra_key(key)
         }
@@ -874,7 +890,10 @@ pub fn schema() -> Value {
     let difference = |operand: &str, extras: &[&str]| {
         let keys: Vec<&str> = DIFFERENCE_KEYS.iter().chain(extras).copied().collect();
         object(&keys, DIFFERENCE_KEYS, |key| match key {
-            DIFFERENCE_KEY => described(strings(&ops), "minus: a − b; ratio: a / b (0/0 = 1)"),
+            DIFFERENCE_KEY => described(
+                strings(&ops),
+                "minus: a − b; ratio: a / b (0/0 = 1); relative: (a − b)/|b|; log-ratio: ln(a/b) (both 0 where a = b)",
+            ),
             "a" => described(reference(operand), "the first curve"),
             "b" => described(
                 reference(operand),

@@ -11,6 +11,7 @@ mod browser;
 mod cli;
 mod compare;
 mod conventions;
+mod engine;
 mod fit;
 mod heatmap;
 mod lazy_basis;

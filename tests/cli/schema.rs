@@ -5,7 +5,7 @@
 //! validator refuses, and every malformed spec it accepts is named with the reason.
 
 use crate::common::{ndfplot, root};
-use ndfplot::spec::curve::{DIFFERENCE_KEYS, Model, TRANSFORM_KEYS};
+use ndfplot::spec::curve::{DIFFERENCE_KEYS, ENGINE_KEY, Model, TRANSFORM_KEYS};
 use ndfplot::spec::input::parse_json;
 use ndfplot::spec::quantity;
 use ndfplot::spec::scene::interactive::{INTERACTIVE_KEYS, PARAM_KEYS, SLIDER_KEY};
@@ -110,7 +110,8 @@ fn every_key_table_equals_the_schema_properties() {
     // Every model and signature, in both the plain and the scene curve format.
     for model in models() {
         for (i, params) in model.signatures().iter().enumerate() {
-            // An NDF's parameters, then the keys of the quantity it shows.
+            // An NDF's parameters, then the keys of the quantity it shows, then an engine's.
+            let engine = model.takes_engine(params);
             let params: Vec<&str> = params
                 .iter()
                 .map(|p| p.name)
@@ -118,6 +119,7 @@ fn every_key_table_equals_the_schema_properties() {
                     Model::Ndf(_) => quantity::KEYS.to_vec(),
                     Model::Fresnel(_) => vec![],
                 })
+                .chain(engine.then_some(ENGINE_KEY))
                 .collect();
             let plain = def(&schema, &signature_def("curve", model, i));
             assert_eq!(

@@ -9,6 +9,7 @@ pub mod quantity;
 use crate::model::fresnel::Fresnel;
 use crate::model::names::named;
 use crate::model::ndf::Ndf;
+use crate::model::renderer::{Emulation, Target};
 use crate::model::transform::Transform;
 use quantity::Quantity;
 
@@ -43,6 +44,8 @@ pub enum Curve {
         /// The NDF.
         ndf: Ndf,
     },
+    /// D, G1, G2 or Schlick's F as a renderer computes it ([`crate::model::renderer`]).
+    Emulated(Emulation),
 }
 
 /// What a curve's values are, for the rules that pair curves (differences, `compare`) and for
@@ -76,6 +79,18 @@ impl Curve {
             Curve::Difference { op, a, b } => op.apply(a.eval(theta), b.eval(theta)),
             Curve::Transformed { transform, curve } => transform.apply(theta, curve.eval(theta)),
             Curve::Quantity { quantity, ndf } => quantity.eval(ndf, theta),
+            Curve::Emulated(emulation) => emulation.eval(theta),
+        }
+    }
+
+    /// Whether a renderer's emulation ([`Curve::Emulated`]) computes any part of the curve: its values
+    /// then carry that engine's float32 or half-float rounding.
+    pub fn emulated(&self) -> bool {
+        match self {
+            Curve::Emulated(_) => true,
+            Curve::Difference { a, b, .. } => a.emulated() || b.emulated(),
+            Curve::Transformed { curve, .. } => curve.emulated(),
+            Curve::Ndf(_) | Curve::Fresnel(_) | Curve::Quantity { .. } => false,
         }
     }
 
@@ -101,6 +116,12 @@ impl Curve {
             Curve::Quantity { quantity, .. } => Kind::Ndf(quantity.name()),
             Curve::Fresnel(_) => Kind::Fresnel,
             Curve::Difference { a, .. } => a.kind(),
+            Curve::Emulated(emulation) => match emulation.target() {
+                Target::D(..) => Kind::Ndf("d"),
+                Target::G1(..) => Kind::Ndf("g1"),
+                Target::G2 { .. } => Kind::Ndf("g2"),
+                Target::Schlick(_) => Kind::Fresnel,
+            },
         }
     }
 }
@@ -113,17 +134,54 @@ named! {
         /// a / b, with 0/0 = 1 (both curves vanish: they agree) and x/0 = +∞ for x ≠ 0, which every
         /// consumer reports as an error at that θ instead of printing it.
         Ratio = "ratio",
+        /// (a − b)/|b|, with 0 where a = b (both 0 included) and ±∞ where only b is 0.
+        Relative = "relative",
+        /// ln(a/b), with 0 where a = b (both 0 included); −∞ or NaN where a/b ≤ 0.
+        LogRatio = "log-ratio",
     }
 }
 
 impl DiffOp {
-    /// a − b, or a / b with 0/0 = 1.
+    /// a − b, a / b with 0/0 = 1, (a − b)/|b| or ln(a/b), each 0 (1 for the ratio) where a = b.
     #[inline]
     pub fn apply(self, a: f64, b: f64) -> f64 {
         match self {
             DiffOp::Minus => a - b,
             DiffOp::Ratio if a == 0.0 && b == 0.0 => 1.0,
             DiffOp::Ratio => a / b,
+            DiffOp::Relative | DiffOp::LogRatio if a == b => 0.0,
+            DiffOp::Relative => (a - b) / b.abs(),
+            DiffOp::LogRatio => (a / b).ln(),
+        }
+    }
+
+    /// How a label joins the operands' labels: `a − b`, `a / b`, `a relative to b`, `ln(a / b)` as
+    /// `a log-ratio to b`.
+    pub fn sign(self) -> &'static str {
+        match self {
+            DiffOp::Minus => "−",
+            DiffOp::Ratio => "/",
+            DiffOp::Relative => "relative to",
+            DiffOp::LogRatio => "log-ratio to",
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::DiffOp;
+
+    #[test]
+    fn relative_and_log_ratio_are_zero_where_the_operands_agree() {
+        assert_eq!(DiffOp::Relative.apply(3.0, 2.0), 0.5);
+        assert_eq!(DiffOp::Relative.apply(1.0, -2.0), 1.5);
+        assert_eq!(DiffOp::Relative.apply(0.0, 0.0), 0.0);
+        assert_eq!(DiffOp::Relative.apply(1.0, 0.0), f64::INFINITY);
+        assert_eq!(DiffOp::LogRatio.apply(std::f64::consts::E, 1.0), 1.0);
+        assert_eq!(DiffOp::LogRatio.apply(0.0, 0.0), 0.0);
+        assert_eq!(DiffOp::LogRatio.apply(0.0, 1.0), f64::NEG_INFINITY);
+        for op in DiffOp::ALL {
+            assert_eq!(DiffOp::from_name(op.name()), Some(op));
         }
     }
 }

@@ -58,6 +58,11 @@ pub const NORMALIZATION_TOL: f64 = 1e-10;
 /// below [`NORMALIZATION_TOL`], still well above the ~1e-15 round-off of summing positive terms.
 pub const QUAD_REL_TOL: f64 = 1e-12;
 
+/// Relative accuracy asked of the adaptive quadrature of a curve a renderer computes: its values step
+/// at float32 rounding (6e-8 relative; half floats 5e-4, where the quadrature's estimate of a step
+/// function still settles within this), so no rule converges to [`QUAD_REL_TOL`] on it.
+pub const QUAD_REL_TOL_EMULATED: f64 = 1e-5;
+
 /// Relative error allowed for Smith's Λ by a closed form (Trowbridge–Reitz, Beckmann, Phong) against the
 /// 40-digit references: like D, each exponentiates or subtracts a computed value, Beckmann's bracket cancels
 /// by up to 2a² ≤ 128 below its asymptotic series and Λ's condition in θo reaches ~2a² ≈ 1400 in the far

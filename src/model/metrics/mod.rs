@@ -9,7 +9,7 @@
 use crate::model::curve::Curve;
 use crate::model::grid::linspace;
 use crate::model::math::quad::{QuadError, integrate};
-use crate::model::math::tolerance::QUAD_REL_TOL;
+use crate::model::math::tolerance::{QUAD_REL_TOL, QUAD_REL_TOL_EMULATED};
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::fmt;
 
@@ -189,16 +189,17 @@ pub fn projected_integral(
     width: f64,
     shift: f64,
 ) -> Result<Estimate, MetricError> {
-    projected_integral_over(f, ThetaRange::FULL, width, shift)
+    projected_integral_over(f, ThetaRange::FULL, width, shift, QUAD_REL_TOL)
 }
 
-/// [`projected_integral`] over `range` only: 2π ∫ f(θ) sin θ cos θ dθ from lo to hi, the pieces those of
-/// [0, π/2] cut at lo and hi.
+/// [`projected_integral`] over `range` only, to relative accuracy `tol`: 2π ∫ f(θ) sin θ cos θ dθ from lo
+/// to hi, the pieces those of [0, π/2] cut at lo and hi.
 pub fn projected_integral_over(
     f: impl Fn(f64) -> f64,
     range: ThetaRange,
     width: f64,
     shift: f64,
+    tol: f64,
 ) -> Result<Estimate, MetricError> {
     let integrand = |theta: f64| (f(theta) + shift) * theta.sin() * theta.cos();
     let (mut total, mut converged_error, mut loose_error) = (0.0, 0.0, 0.0);
@@ -206,10 +207,10 @@ pub fn projected_integral_over(
         let (a, b) = (piece[0], piece[1]);
         // ∫ₐᵇ shift · sin θ cos θ dθ = shift · (sin²b − sin²a)/2.
         let shifted = 0.5 * shift * (b.sin().powi(2) - a.sin().powi(2));
-        match integrate(integrand, a, b, QUAD_REL_TOL) {
+        match integrate(integrand, a, b, tol) {
             Ok(v) => {
                 total += v - shifted;
-                converged_error += QUAD_REL_TOL * v.abs();
+                converged_error += tol * v.abs();
             }
             Err(QuadError::NotConverged { estimate, error }) => {
                 total += estimate - shifted;
@@ -218,7 +219,7 @@ pub fn projected_integral_over(
             Err(e) => return Err(e.into()),
         }
     }
-    if loose_error > QUAD_REL_TOL * total.abs() {
+    if loose_error > tol * total.abs() {
         return Err(MetricError::Quad(QuadError::NotConverged {
             estimate: 2.0 * PI * total,
             error: 2.0 * PI * loose_error,
@@ -377,8 +378,20 @@ pub fn l2_projected_over(
     }
     let width = lobe_width(peak_a).min(lobe_width(peak_b));
     let shift = (L2_SHIFT * peak_a.abs().max(peak_b.abs())).powi(2);
-    let squared =
-        projected_integral_over(|t| (a.eval(t) - b.eval(t)).powi(2), range, width, shift)?;
+    // A renderer's curve steps at its float32 (or half) rounding: its square integrates only to
+    // the accuracy of its values.
+    let tol = if a.emulated() || b.emulated() {
+        QUAD_REL_TOL_EMULATED
+    } else {
+        QUAD_REL_TOL
+    };
+    let squared = projected_integral_over(
+        |t| (a.eval(t) - b.eval(t)).powi(2),
+        range,
+        width,
+        shift,
+        tol,
+    )?;
     Ok(squared.value.max(0.0).sqrt())
 }
 

@@ -8,7 +8,6 @@
 
 use super::reader::{self, Reader};
 use super::{Pending, SceneCurve, Spec, default_colour, read_curve_entry, read_style};
-use crate::model::curve::DiffOp;
 use crate::model::fit::By;
 use crate::model::grid;
 use crate::problem::{join_index, join_key};
@@ -462,10 +461,7 @@ pub fn difference_entry(
         return;
     };
     let count = a.len().max(b.len());
-    let sign = match op {
-        DiffOp::Minus => "−",
-        DiffOp::Ratio => "/",
-    };
+    let sign = op.sign();
     for k in 0..count {
         let (x, y) = (&a[k.min(a.len() - 1)], &b[k.min(b.len() - 1)]);
         let curve = match curve::difference(op, x.curve.clone(), y.curve.clone(), path) {

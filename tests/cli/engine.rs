@@ -1,0 +1,384 @@
+//! Renderer emulation through the command line (docs/contracts.md "Renderer emulation"): each measured
+//! fact about what an engine computes, reproduced by `eval` or `compare`, against values stated by the
+//! engines' sources and recomputed in closed form here; the roughness conventions; the refusals with
+//! their messages; canonical JSON.
+//!
+//! Provenance of the reference numbers: the engines' source lines cited at each test, and closed forms
+//! (α²/π, 453.5²/π, 1/(π α²)) evaluated here in f64.
+
+use crate::common::{csv_records, ndfplot, number, render_into, scratch, text};
+use std::f64::consts::PI;
+use std::process::Output;
+
+/// The values `eval` prints for `curve` at `degrees`, in order.
+fn eval_deg(curve: &str, degrees: &[f64]) -> Vec<f64> {
+    let list: Vec<String> = degrees.iter().map(|t| format!("{t:?}")).collect();
+    let output = ndfplot(&[
+        "eval",
+        "--curve",
+        curve,
+        "--theta",
+        &list.join(","),
+        "--degrees",
+    ]);
+    assert_eq!(output.status.code(), Some(0), "{}", text(&output.stderr));
+    text(&output.stdout)
+        .lines()
+        .skip(1)
+        .map(|line| line.split(',').nth(1).unwrap().parse().unwrap())
+        .collect()
+}
+
+/// One metric of `compare --a a --b b` over `range` (degrees, `lo:hi`).
+fn compare(a: &str, b: &str, range: &str, metric: &str) -> f64 {
+    let output = ndfplot(&[
+        "compare",
+        "--a",
+        a,
+        "--b",
+        b,
+        "--theta-range",
+        range,
+        "--degrees",
+        "--metric",
+        metric,
+    ]);
+    assert_eq!(output.status.code(), Some(0), "{}", text(&output.stderr));
+    text(&output.stdout).trim().parse().unwrap()
+}
+
+/// Asserts exit 2, nothing on stdout, and `needle` in the error.
+fn refused(output: &Output, needle: &str) {
+    let err = text(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{err}");
+    assert!(output.stdout.is_empty());
+    assert!(err.contains(needle), "{needle:?} in {err}");
+}
+
+fn close(got: f64, expected: f64, tol: f64) {
+    assert!(
+        (got - expected).abs() <= tol * expected.abs(),
+        "got {got:e}, expected {expected:e} (relative tolerance {tol:e})"
+    );
+}
+
+/// float32's relative rounding, a few operations' worth: what separates an engine's value from the
+/// exact one where its expression is the exact one.
+const F32_TOL: f64 = 1e-6;
+
+/// pbrt-v4 `src/pbrt/util/scattering.h` l.129-131 (@5f7a606): D = 0 where cos⁴θ < 1e-16, i.e. past
+/// θ = acos(1e-4) = 89.99427°, although the exact GGX D tends to α²/π (0.0796 at α = 0.5).
+#[test]
+fn pbrt_zeroes_ggx_d_past_89_9943_degrees() {
+    let curve = r#"{"ndf":"ggx","alpha_tr":0.5,"engine":"pbrt-v4"}"#;
+    let limit = 0.25 / PI;
+    let cut = 1e-4_f64.acos().to_degrees();
+    assert!((cut - 89.9943).abs() < 1e-4, "{cut}");
+    let values = eval_deg(curve, &[89.99, cut - 1e-4, cut + 1e-4, 90.0]);
+    close(values[0], limit, 1e-6);
+    close(values[1], limit, 1e-6);
+    assert_eq!(&values[2..], &[0.0, 0.0]);
+    let exact = eval_deg(r#"{"ndf":"ggx","alpha_tr":0.5}"#, &[90.0]);
+    close(exact[0], limit, 1e-12);
+}
+
+/// pbrt-v4 scattering.h l.126, vecmath.h l.1693-1705: tan²θ = max(0, 1 − cos²θ)/cos²θ in float
+/// cancels near the normal; at α = 0.001 the lobe's own width (0.057°) is a few float32 steps of
+/// cos θ, and D is off by ~12 % (the measured 10.9 % at 0.014°), while the peak is right.
+#[test]
+fn pbrt_float32_ggx_is_off_by_about_a_tenth_at_alpha_one_thousandth() {
+    let exact = r#"{"ndf":"ggx","alpha_tr":0.001}"#;
+    let pbrt = r#"{"ndf":"ggx","alpha_tr":0.001,"engine":"pbrt-v4"}"#;
+    let max_rel = compare(exact, pbrt, "0:0.3", "max_rel");
+    assert!((0.08..=0.13).contains(&max_rel), "max_rel {max_rel}");
+    let peak = compare(exact, pbrt, "0:0.3", "b_peak");
+    close(peak, 1.0 / (PI * 1e-6), F32_TOL);
+    // α < 0.001 is EffectivelySmooth (l.137): a mirror, never shaded through D.
+    refused(
+        &ndfplot(&[
+            "eval",
+            "--curve",
+            r#"{"ndf":"ggx","alpha_tr":0.0005,"engine":"pbrt-v4"}"#,
+            "--theta",
+            "0",
+        ]),
+        "pbrt-v4 renders α < 0.001 as a perfect mirror",
+    );
+}
+
+/// Mitsuba 3 `include/mitsuba/render/microfacet.h` l.206 (@b45b0a9): D is returned as 0 unless
+/// D cos θ > 1e-20, which zeroes Beckmann α = 0.1 beyond ≈ 35.3° (19.7° at α = 0.05, 64.7° at 0.3).
+#[test]
+fn mitsuba_zeroes_narrow_beckmann_lobes_far_from_grazing() {
+    for (alpha, cut) in [(0.05, 19.7), (0.1, 35.3), (0.3, 64.7)] {
+        let curve = format!(r#"{{"ndf":"beckmann","alpha_b":{alpha},"engine":"mitsuba3"}}"#);
+        let values = eval_deg(&curve, &[cut - 0.1, cut + 0.1]);
+        assert!(values[0] > 0.0, "α = {alpha}: {values:?}");
+        assert_eq!(values[1], 0.0, "α = {alpha}");
+        // Where it keeps D, its D cos θ is above the threshold.
+        assert!(values[0] * (cut - 0.1_f64).to_radians().cos() > 1e-20);
+    }
+}
+
+/// Filament `shaders/src/surface_brdf.fs` l.76 (@04d50d4): k = min(α/(1 − NoH² + a²), 453.5), D = k²/π,
+/// so at the desktop minimum perceptual roughness 0.045 (`common_material.fs` l.6, α = 0.002025) the
+/// peak is 453.5²/π = 65 464 against the exact 1/(π α²) = 77 625: −15.7 %.
+#[test]
+fn filament_caps_the_ggx_peak_at_its_minimum_roughness() {
+    let filament = r#"{"ndf":"ggx","roughness":0.045,"engine":"filament"}"#;
+    let capped = 453.5_f64.powi(2) / PI;
+    let values = eval_deg(filament, &[0.0, 0.03]);
+    close(values[0], capped, F32_TOL);
+    close(values[1], capped, F32_TOL);
+    let exact_peak = 1.0 / (PI * 0.002025_f64.powi(2));
+    assert!((exact_peak - 77625.0).abs() < 1.0);
+    let max_rel = compare(
+        r#"{"ndf":"ggx","alpha_tr":0.002025}"#,
+        filament,
+        "0:90",
+        "max_rel",
+    );
+    close(max_rel, 1.0 - capped / exact_peak, 1e-5);
+    assert!((max_rel - 0.157).abs() < 5e-4, "{max_rel}");
+    // The exact GGX with that peak, by a peak fit: 1/(π α²) = 453.5²/π, α = 1/453.5 (the α below which
+    // the cap bites).
+    let fit = ndfplot(&[
+        "fit", "--target", filament, "--family", "ggx", "--by", "peak",
+    ]);
+    assert_eq!(fit.status.code(), Some(0), "{}", text(&fit.stderr));
+    let fitted: f64 = text(&fit.stdout)
+        .trim()
+        .trim_start_matches(r#"{"ndf":"trowbridge_reitz","alpha_tr":"#)
+        .trim_end_matches('}')
+        .parse()
+        .unwrap();
+    close(fitted, 1.0 / 453.5, F32_TOL);
+    // A roughness below the minimum is clamped to it (l.1-8): the same curve.
+    let floored = eval_deg(
+        r#"{"ndf":"ggx","roughness":0.01,"engine":"filament"}"#,
+        &[0.0],
+    );
+    assert_eq!(floored[0], values[0]);
+}
+
+/// three.js `bsdfs.glsl.js` `F_Schlick`: w = exp2((−5.55473 v − 6.98316) v), the spherical-Gaussian
+/// form of Karis 2013, is +6.9 % above the pow-5 form at F₀ = 0.04, cos θ = 0.633; Unreal's pow-5
+/// form with f90 = saturate(50 F₀) = 1 is the pow-5 Schlick itself.
+#[test]
+fn threejs_spherical_gaussian_schlick_runs_above_the_pow5_form() {
+    let degrees = 0.633_f64.acos().to_degrees();
+    let pow5 = 0.04 + 0.96 * (1.0 - 0.633_f64).powi(5);
+    let sg = 0.04 + 0.96 * ((-5.55473 * 0.633 - 6.98316) * 0.633_f64).exp2();
+    let threejs = eval_deg(
+        r#"{"fresnel":"schlick","f0":0.04,"engine":"threejs"}"#,
+        &[degrees],
+    );
+    close(threejs[0], sg, F32_TOL);
+    close(threejs[0] / pow5, 1.069, 1e-3);
+    // The same as difference curves: relative (a − b)/|b| and ln(a/b).
+    let sg_curve = r#"{"fresnel":"schlick","f0":0.04,"engine":"threejs"}"#;
+    let pow5_curve = r#"{"fresnel":"schlick","f0":0.04}"#;
+    for (op, want) in [
+        ("relative", sg / pow5 - 1.0),
+        ("log-ratio", (sg / pow5).ln()),
+    ] {
+        let curve = format!(r#"{{"difference":"{op}","a":{sg_curve},"b":{pow5_curve}}}"#);
+        close(eval_deg(&curve, &[degrees])[0], want, 1e-4);
+    }
+    let unreal = eval_deg(
+        r#"{"fresnel":"schlick","f0":0.04,"engine":"unreal"}"#,
+        &[degrees],
+    );
+    close(unreal[0], pow5, F32_TOL);
+    // Below F₀ = 0.02 Unreal dims the grazing value to 50 F₀: 0.5 at F₀ = 0.01.
+    let dim = eval_deg(
+        r#"{"fresnel":"schlick","f0":0.01,"engine":"unreal"}"#,
+        &[90.0],
+    );
+    close(dim[0], 0.5, F32_TOL);
+    // Filament's f90 = saturate(dot(f0, vec3(50 · 0.33))) sums three grey channels: 49.5 f0.
+    let filament = eval_deg(
+        r#"{"fresnel":"schlick","f0":0.01,"engine":"filament"}"#,
+        &[90.0],
+    );
+    close(filament[0], 0.495, F32_TOL);
+}
+
+/// The roughness conventions: pbrt-v4 α = √r (scattering.h l.197), Mitsuba 3 α = r, Cycles
+/// (`svm/closure.h` l.306-307), Filament, Unreal and three.js α = r²; the peak is 1/(π α²).
+#[test]
+fn each_engine_maps_roughness_by_its_own_convention() {
+    let peak = |alpha: f64| 1.0 / (PI * alpha * alpha);
+    for (engine, alpha) in [
+        ("pbrt-v4", 0.5),
+        ("mitsuba3", 0.25),
+        ("cycles", 0.0625),
+        ("filament", 0.0625),
+        ("unreal", 0.0625),
+        ("threejs", 0.0625),
+    ] {
+        let curve = format!(r#"{{"ndf":"ggx","roughness":0.25,"engine":"{engine}"}}"#);
+        close(eval_deg(&curve, &[0.0])[0], peak(alpha), F32_TOL);
+    }
+    // three.js floors roughness at 0.0525 (lights_physical_fragment.glsl.js). Its D_GGX forms
+    // NoH² (a² − 1) + 1, which at NoH = 1 leaves a² = 7.6e-6 rounded to whole float32 steps of
+    // 2⁻²⁴ below 1: the peak is 1/π · a² / steps², 0.7 % above 1/(π α²).
+    let alpha = 0.0525_f64 * 0.0525;
+    let a2 = alpha * alpha;
+    let step = 2.0_f64.powi(-24);
+    let denom = (a2 / step).round() * step;
+    let floored = eval_deg(
+        r#"{"ndf":"ggx","roughness":0.01,"engine":"threejs"}"#,
+        &[0.0],
+    );
+    close(floored[0], a2 / (PI * denom * denom), 1e-5);
+    close(floored[0] / peak(alpha), 1.0073, 1e-3);
+    // Filament on mobile: half floats, floor 0.089 (common_material.fs l.3).
+    let mobile = eval_deg(
+        r#"{"ndf":"ggx","roughness":0.5,"engine":"filament-mobile"}"#,
+        &[0.0],
+    );
+    close(mobile[0], peak(0.25), 1e-3);
+}
+
+/// Where an engine's expression is the exact one, it agrees to float32: Cycles' and pbrt's G1 and
+/// height-correlated G2, Filament's V_SmithGGXCorrelated as G2, Mitsuba's separable G2.
+#[test]
+fn exact_smith_forms_agree_to_float32() {
+    let degrees = [0.0, 20.0, 45.0, 70.0, 85.0];
+    let pairs = [
+        (
+            r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g1"}"#,
+            r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g1","engine":"cycles"}"#,
+        ),
+        (
+            r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g1"}"#,
+            r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g1","engine":"pbrt-v4"}"#,
+        ),
+        (
+            r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2"}"#,
+            r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2","engine":"filament"}"#,
+        ),
+        (
+            r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2","g2":"separable","theta_i":0.3}"#,
+            r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2","theta_i":0.3,"engine":"mitsuba3"}"#,
+        ),
+    ];
+    for (exact, engine) in pairs {
+        for (e, x) in eval_deg(engine, &degrees)
+            .iter()
+            .zip(eval_deg(exact, &degrees))
+        {
+            close(*e, x, 1e-5);
+        }
+    }
+    // Unreal's Vis_SmithJointApprox (Hammon 2017) is an approximation: apart by more than float32.
+    let hammon = eval_deg(
+        r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2","engine":"unreal"}"#,
+        &[70.0],
+    )[0];
+    let exact = eval_deg(r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2"}"#, &[70.0])[0];
+    assert!((hammon / exact - 1.0).abs() > 1e-3, "{hammon} {exact}");
+}
+
+#[test]
+fn engines_refuse_what_they_do_not_compute_by_name() {
+    let run = |curve: &str| ndfplot(&["eval", "--curve", curve, "--theta", "0"]);
+    refused(
+        &run(r#"{"fresnel":"schlick","f0":0.04,"engine":"pbrt-v4"}"#),
+        "--curve: engine: pbrt-v4 has no Schlick F (it has: GGX D, GGX G1, GGX G2)",
+    );
+    refused(
+        &run(r#"{"ndf":"beckmann","alpha_b":0.3,"engine":"threejs"}"#),
+        "threejs has no Beckmann D (it has: GGX D, GGX G2, Schlick F)",
+    );
+    refused(
+        &run(r#"{"ndf":"ggx","alpha_tr":0.3,"quantity":"g1","engine":"filament"}"#),
+        "filament has no GGX G1",
+    );
+    refused(
+        &run(r#"{"ndf":"phong","alpha_p":3,"engine":"cycles"}"#),
+        "--curve: engine: an engine computes GGX and Beckmann lobes",
+    );
+    refused(
+        &run(r#"{"ndf":"ggx","alpha_tr":0.3,"quantity":"albedo","engine":"cycles"}"#),
+        "--curve: quantity: an engine's curve shows one of: d, g1, g2",
+    );
+    refused(
+        &run(r#"{"ndf":"ggx","alpha_tr":0.3,"quantity":"g2","g2":"separable","engine":"cycles"}"#),
+        "--curve: g2: the G2 of cycles is height-correlated",
+    );
+    refused(
+        &run(r#"{"ndf":"ggx","roughness":0.3}"#),
+        "--curve: roughness: a roughness maps to α by an engine's convention",
+    );
+    refused(
+        &run(r#"{"ndf":"ggx","roughness":1.5,"engine":"cycles"}"#),
+        "--curve: roughness: out of domain (got 1.5",
+    );
+    refused(
+        &run(r#"{"ndf":"ggx","alpha_tr":0.3,"engine":"pbrtv4"}"#),
+        "did you mean \"pbrt-v4\"",
+    );
+}
+
+/// Engine names are matched in any case; canonical JSON writes the registry name last, and a G2
+/// curve its engine's G2 model.
+#[test]
+fn canonical_json_carries_the_engine() {
+    let output = ndfplot(&[
+        "eval",
+        "--curve",
+        r#"{"engine":"PBRT-V4","roughness":0.25,"ndf":"ggx"}"#,
+        "--curve",
+        r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2","engine":"Mitsuba3"}"#,
+        "--theta",
+        "0",
+    ]);
+    assert_eq!(output.status.code(), Some(0), "{}", text(&output.stderr));
+    let header = text(&output.stdout).lines().next().unwrap().to_string();
+    assert_eq!(
+        header,
+        r#"theta,"{""ndf"":""trowbridge_reitz"",""roughness"":0.25,""engine"":""pbrt-v4""}","{""ndf"":""trowbridge_reitz"",""alpha_tr"":0.5,""quantity"":""g2"",""g2"":""separable"",""theta_i"":""same"",""engine"":""mitsuba3""}""#
+    );
+}
+
+/// A scene sweeps an engine curve's roughness like any parameter; its automatic label names the engine,
+/// and its CSV holds what `eval` prints for the same curve and θ.
+#[test]
+fn scenes_sweep_roughness_and_write_what_eval_prints() {
+    let dir = scratch("engine-scene");
+    let spec = dir.join("engines.json");
+    std::fs::write(
+        &spec,
+        r#"{"id": "engines", "panels": [{"curves": [
+            {"ndf": "ggx", "alpha_tr": 0.5},
+            {"ndf": "ggx", "roughness": [0.1, 0.3], "engine": "cycles"}]}]}"#,
+    )
+    .unwrap();
+    let out = dir.join("out");
+    render_into(&[&spec], &out, "svg,csv");
+    let svg = std::fs::read_to_string(out.join("engines.svg")).unwrap();
+    assert!(svg.contains("cycles"), "the legend names the engine");
+    let records = csv_records(out.join("engines.csv").to_str().unwrap());
+    let engine_rows: Vec<_> = records.iter().filter(|r| &r[1] == "2").collect();
+    assert!(!engine_rows.is_empty());
+    assert_eq!(
+        &engine_rows[0][2],
+        r#"{"ndf":"trowbridge_reitz","roughness":0.3,"engine":"cycles"}"#
+    );
+    for row in engine_rows.iter().step_by(engine_rows.len() / 5 + 1) {
+        let theta = number(row, 3);
+        let output = ndfplot(&["eval", "--curve", &row[2], "--theta", &format!("{theta:?}")]);
+        let printed: f64 = text(&output.stdout)
+            .lines()
+            .nth(1)
+            .unwrap()
+            .split(',')
+            .nth(1)
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert_eq!(printed, number(row, 4), "θ = {theta}");
+    }
+}
