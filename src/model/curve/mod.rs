@@ -105,7 +105,7 @@ impl Curve {
             } => 1,
             Curve::Difference { a, b, .. } => a.integrals_per_value() + b.integrals_per_value(),
             Curve::Transformed { curve, .. } => curve.integrals_per_value(),
-            Curve::Ndf(_) | Curve::Fresnel(_) | Curve::Quantity { .. } => 0,
+            Curve::Ndf(_) | Curve::Fresnel(_) | Curve::Quantity { .. } | Curve::Emulated(_) => 0,
         }
     }
 
