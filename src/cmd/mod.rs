@@ -74,7 +74,7 @@ fn run_coeffs(args: CoeffsArgs) -> Result<()> {
 
 /// The curves of a curve argument ([`input::load_curves`]), resolved.
 fn load_curves(args: &[String], flag: &str) -> Result<Vec<Curve>> {
-    input::load_curves(args, flag, input::read_stdin)?
+    input::load_curves(args, flag, input::read_stdin_bytes)?
         .iter()
         .map(|spec| resolve::curve(spec).map_err(|p| input_error(flag, p)))
         .collect()
@@ -127,7 +127,7 @@ fn load_operand(arg: &str, flag: &str, allow_read: &[PathBuf]) -> Result<(Operan
 /// The pairs of `compare --pairs` ([`input::read_pairs`]), each side resolved on its own: one bad
 /// line does not keep the others from being compared.
 fn load_pairs(arg: &str, allow_read: &[PathBuf]) -> Result<Vec<compare::LoadedPair>> {
-    let pairs = input::read_pairs(arg, allow_read, input::read_stdin)?
+    let pairs = input::read_pairs(arg, allow_read, input::read_stdin_bytes)?
         .into_iter()
         .map(|(source, pair)| {
             let sides =
@@ -237,7 +237,7 @@ fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {
 /// The curves of a curve argument ([`input::read_curves`]), each resolved on its own, with its source
 /// name: one bad curve does not keep the others from being used.
 fn load_targets(args: &[String], flag: &str) -> Result<Vec<fit::Target>> {
-    let targets = input::read_curves(args, flag, input::read_stdin)?
+    let targets = input::read_curves(args, flag, input::read_stdin_bytes)?
         .into_iter()
         .map(|(source, spec)| {
             let curve = spec.and_then(|spec| {

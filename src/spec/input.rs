@@ -15,9 +15,20 @@ use std::io::Read;
 /// any scene within the curve caps needs, and small enough that parsing it stays well under 1 GiB.
 pub const MAX_INPUT_BYTES: u64 = 16 << 20;
 
-/// Reads a text file, naming it in the error; a leading byte order mark is skipped. Only regular files of at most [`MAX_INPUT_BYTES`]
-/// are read: a FIFO or a device is refused before it is opened (opening a FIFO would block).
+/// Reads a text file, naming it in the error; a leading byte order mark is skipped. Only regular
+/// files of at most [`MAX_INPUT_BYTES`] are read ([`read_file_bytes`]).
 pub fn read_file(path: &str) -> Result<String> {
+    utf8(read_file_bytes(path)?).map_err(|(line, column)| {
+        Error::Usage(format!(
+            "{path}: {line}:{column}: not UTF-8 text (a byte sequence that is not UTF-8 starts here)"
+        ))
+    })
+}
+
+/// The bytes of a file, naming it in the error. Only regular files of at most
+/// [`MAX_INPUT_BYTES`] are read: a FIFO or a device is refused before it is opened (opening a
+/// FIFO would block).
+pub fn read_file_bytes(path: &str) -> Result<Vec<u8>> {
     let meta = std::fs::metadata(path).map_err(|e| Error::io(path, e))?;
     let refuse = |what: String| {
         let kind = std::io::ErrorKind::InvalidInput;
@@ -30,21 +41,21 @@ pub fn read_file(path: &str) -> Result<String> {
         return refuse(too_large(&meta.len().to_string()));
     }
     let file = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
-    let bytes = read_capped(file).map_err(|e| Error::io(path, e))?;
-    String::from_utf8(bytes).map(without_bom).map_err(|e| {
-        let (line, column) = line_column(&e.as_bytes()[..e.utf8_error().valid_up_to()]);
-        Error::Usage(format!(
-            "{path}: {line}:{column}: not UTF-8 text (a byte sequence that is not UTF-8 starts here)"
-        ))
-    })
+    read_capped(file).map_err(|e| Error::io(path, e))
+}
+
+/// `bytes` as text without a leading byte order mark ([`without_bom`]), or the 1-based line and
+/// column where a byte sequence that is not UTF-8 starts.
+fn utf8(bytes: Vec<u8>) -> std::result::Result<String, (usize, usize)> {
+    String::from_utf8(bytes)
+        .map(without_bom)
+        .map_err(|e| line_column(&e.as_bytes()[..e.utf8_error().valid_up_to()]))
 }
 
 /// Standard input as text (a leading byte order mark skipped), at most [`MAX_INPUT_BYTES`] of it; more, or bytes that are not UTF-8,
 /// is an `InvalidData` error saying so.
 pub fn read_stdin() -> std::io::Result<String> {
-    let bytes = read_capped(std::io::stdin().lock())?;
-    String::from_utf8(bytes).map(without_bom).map_err(|e| {
-        let (line, column) = line_column(&e.as_bytes()[..e.utf8_error().valid_up_to()]);
+    utf8(read_stdin_bytes()?).map_err(|(line, column)| {
         std::io::Error::new(
             std::io::ErrorKind::InvalidData,
             format!(
@@ -52,6 +63,12 @@ pub fn read_stdin() -> std::io::Result<String> {
             ),
         )
     })
+}
+
+/// Standard input's bytes, at most [`MAX_INPUT_BYTES`] of them (more is an `InvalidData` error),
+/// for JSON Lines, whose lines are decoded one by one ([`json_lines`]).
+pub fn read_stdin_bytes() -> std::io::Result<Vec<u8>> {
+    read_capped(std::io::stdin().lock())
 }
 
 /// `text` without a leading UTF-8 byte order mark, which some editors write at the start of a
@@ -261,7 +278,7 @@ fn parse_pair(line: &str, source: &str, scope: &DataScope) -> std::result::Resul
 pub fn read_pairs(
     arg: &str,
     allow_read: &[std::path::PathBuf],
-    stdin: impl FnOnce() -> std::io::Result<String>,
+    stdin: impl FnOnce() -> std::io::Result<Vec<u8>>,
 ) -> Result<Vec<(String, std::result::Result<Pair, Problems>)>> {
     let (text, name, folder) = if arg == "-" {
         let text = stdin().map_err(|e| Error::io("stdin", e))?;
@@ -270,7 +287,7 @@ pub fn read_pairs(
         let folder = std::path::Path::new(arg)
             .parent()
             .unwrap_or(std::path::Path::new("."));
-        (read_file(arg)?, arg, folder)
+        (read_file_bytes(arg)?, arg, folder)
     };
     let scope = DataScope::new(folder, std::sync::Arc::from(allow_read));
     let pairs = json_lines(&text, name, |line, source| parse_pair(line, source, &scope));
@@ -282,19 +299,37 @@ pub fn read_pairs(
     Ok(pairs)
 }
 
-/// The non-blank lines of the JSON Lines `text` read from `name` (`stdin` or a file path), in
-/// order, each with its source name `<name>:<line>` (1-based) and what `parse` makes of it.
+/// The non-blank lines of the JSON Lines `bytes` read from `name` (`stdin` or a file path), in
+/// order, each with its source name `<name>:<line>` (1-based) and what `parse` makes of it. The
+/// one reader of every batch input: lines are split on `\n` (a `\r` before it dropped) and decoded
+/// one by one, so a line that is not UTF-8 is that line's problem, not the batch's; a byte order
+/// mark before the first line is skipped.
 fn json_lines<T>(
-    text: &str,
+    bytes: &[u8],
     name: &str,
     parse: impl Fn(&str, &str) -> std::result::Result<T, Problems>,
 ) -> Vec<(String, std::result::Result<T, Problems>)> {
-    text.lines()
+    let bytes = bytes.strip_prefix("\u{feff}".as_bytes()).unwrap_or(bytes);
+    bytes
+        .split(|&b| b == b'\n')
         .enumerate()
-        .filter(|(_, line)| !line.trim().is_empty())
+        .map(|(i, line)| (i, line.strip_suffix(b"\r").unwrap_or(line)))
+        .filter(|(_, line)| !line.trim_ascii().is_empty())
         .map(|(i, line)| {
             let source = format!("{name}:{}", i + 1);
-            let parsed = parse(line, &source);
+            let parsed = match std::str::from_utf8(line) {
+                Ok(text) => parse(text, &source),
+                Err(e) => Err(Problems {
+                    source: source.clone(),
+                    list: vec![Problem::new(
+                        "",
+                        format!(
+                            "column {}: not UTF-8 text (a byte sequence that is not UTF-8 starts here)",
+                            line_column(&line[..e.valid_up_to()]).1
+                        ),
+                    )],
+                }),
+            };
             (source, parsed)
         })
         .collect()
@@ -316,7 +351,7 @@ fn parse_curve(text: &str, source: &str) -> std::result::Result<CurveSpec, Probl
 pub fn read_curves(
     args: &[String],
     flag: &str,
-    stdin: impl FnOnce() -> std::io::Result<String>,
+    stdin: impl FnOnce() -> std::io::Result<Vec<u8>>,
 ) -> Result<Vec<(String, std::result::Result<CurveSpec, Problems>)>> {
     let mut curves = Vec::new();
     let mut stdin = Some(stdin);
@@ -350,7 +385,7 @@ pub fn read_curves(
 pub fn load_curves(
     args: &[String],
     flag: &str,
-    stdin: impl FnOnce() -> std::io::Result<String>,
+    stdin: impl FnOnce() -> std::io::Result<Vec<u8>>,
 ) -> Result<Vec<CurveSpec>> {
     let mut curves = Vec::new();
     let mut problems = Vec::new();

@@ -1347,3 +1347,30 @@ fn messages_quote_long_keys_numbers_and_control_characters_as_short_escaped_exce
         text(&out.stderr)
     );
 }
+
+/// One JSON Lines reader for every batch input: a line that is not UTF-8 is that line's error,
+/// and the lines around it are still answered (`compare --pairs` from a file, with a byte order
+/// mark and CRLF line ends).
+#[test]
+fn a_line_that_is_not_utf8_fails_alone_in_a_json_lines_batch() {
+    let dir = scratch("robustness-jsonl-utf8");
+    let pair = br#"{"a":{"ndf":"ggx","alpha_tr":0.3},"b":{"ndf":"beckmann","alpha_b":0.3}}"#;
+    let mut bytes = b"\xef\xbb\xbf".to_vec();
+    bytes.extend_from_slice(pair);
+    bytes.extend_from_slice(b"\r\n\xff\xfe not text\r\n");
+    bytes.extend_from_slice(pair);
+    bytes.extend_from_slice(b"\n");
+    std::fs::write(dir.join("pairs.jsonl"), bytes).unwrap();
+    let out = run_in(
+        &dir,
+        &["compare", "--pairs", "pairs.jsonl", "--metric", "max_abs"],
+    );
+    assert_eq!(out.status.code(), Some(2));
+    let answered = text(&out.stdout);
+    assert_eq!(answered.lines().count(), 2, "{answered}");
+    assert!(
+        text(&out.stderr).contains("pairs.jsonl:2: column 1: not UTF-8 text"),
+        "{}",
+        text(&out.stderr)
+    );
+}
