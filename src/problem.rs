@@ -134,19 +134,34 @@ pub fn join_index(path: &str, index: usize) -> String {
 }
 
 /// The candidate nearest to `word` by edit distance, if it is close enough to be a likely
-/// misspelling (distance ≤ max(1, len/3)).
+/// misspelling (distance ≤ max(1, len/3)); else the one candidate `word` (3 characters or more)
+/// begins, a name cut short (`alpha` → `alpha_tr`).
 pub fn did_you_mean<'a>(
     word: &str,
     candidates: impl IntoIterator<Item = &'a str>,
 ) -> Option<&'a str> {
+    let candidates: Vec<&'a str> = candidates.into_iter().collect();
+    nearest(word, &candidates).or_else(|| {
+        let mut longer = candidates
+            .iter()
+            .filter(|c| word.len() >= 3 && c.len() > word.len() && c.starts_with(word));
+        match (longer.next(), longer.next()) {
+            (Some(only), None) => Some(*only),
+            _ => None,
+        }
+    })
+}
+
+/// The candidate nearest to `word` by edit distance within max(1, len/3).
+fn nearest<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str> {
     let length = word.chars().count();
     let limit = (length / 3).max(1);
     // The distance is at least the difference of the lengths: a candidate farther than the limit
     // by length alone is not compared (a long unknown key costs no quadratic table).
     candidates
-        .into_iter()
+        .iter()
         .filter(|c| c.chars().count().abs_diff(length) <= limit)
-        .map(|c| (edit_distance(word, c), c))
+        .map(|&c| (edit_distance(word, c), c))
         .filter(|&(d, _)| d <= limit)
         .min_by_key(|&(d, _)| d)
         .map(|(_, c)| c)
@@ -183,6 +198,20 @@ fn edit_distance(a: &str, b: &str) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_name_cut_short_suggests_the_one_name_it_begins() {
+        assert_eq!(
+            did_you_mean("alpha", ["alpha_tr", "quantity"]),
+            Some("alpha_tr")
+        );
+        assert_eq!(did_you_mean("alpha", ["alpha_abc1", "alpha_abc2"]), None);
+        assert_eq!(did_you_mean("al", ["alpha_tr"]), None);
+        assert_eq!(
+            did_you_mean("stlye", ["style", "styles_of_old"]),
+            Some("style")
+        );
+    }
 
     #[test]
     fn excerpts_are_bounded_and_printable() {

@@ -34,9 +34,12 @@ macro_rules! named {
                 }
             }
 
-            /// The value named `name`, if any.
+            /// The value named `name` in any case (`Height-Correlated`), if any.
             pub fn from_name(name: &str) -> Option<$name> {
-                Self::NAMES.iter().find(|(n, _)| *n == name).map(|&(_, v)| v)
+                Self::NAMES
+                    .iter()
+                    .find(|(n, _)| n.eq_ignore_ascii_case(name))
+                    .map(|&(_, v)| v)
             }
         }
     };
@@ -67,6 +70,8 @@ mod tests {
             assert_eq!(value.name(), name);
             assert_eq!(Choice::from_name(name), Some(value));
         }
-        assert_eq!(Choice::from_name("First"), None);
+        assert_eq!(Choice::from_name("First"), Some(Choice::First));
+        assert_eq!(Choice::from_name("SECOND-ONE"), Some(Choice::Second));
+        assert_eq!(Choice::from_name("third"), None);
     }
 }

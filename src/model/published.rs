@@ -60,9 +60,11 @@ impl Source {
         }
     }
 
-    /// Looks a source up by name.
+    /// Looks a source up by name, in any case.
     pub fn from_name(name: &str) -> Option<Source> {
-        Source::ALL.into_iter().find(|s| s.name() == name)
+        Source::ALL
+            .into_iter()
+            .find(|s| s.name().eq_ignore_ascii_case(name))
     }
 
     /// How legends name the source: authors, year and fitted model.
@@ -153,9 +155,11 @@ impl Channel {
         }
     }
 
-    /// Looks a channel up by name.
+    /// Looks a channel up by name, in any case.
     pub fn from_name(name: &str) -> Option<Channel> {
-        Channel::ALL.into_iter().find(|c| c.name() == name)
+        Channel::ALL
+            .into_iter()
+            .find(|c| c.name().eq_ignore_ascii_case(name))
     }
 
     fn index(self) -> usize {

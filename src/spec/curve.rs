@@ -641,7 +641,7 @@ impl Model {
         match key {
             "ndf" => Family::from_name(name).map(Model::Ndf),
             _ => FresnelModel::all()
-                .find(|m| m.name() == name)
+                .find(|m| m.name().eq_ignore_ascii_case(name))
                 .map(Model::Fresnel),
         }
     }
@@ -1388,7 +1388,7 @@ fn names_at<'k>(
             ));
             continue;
         };
-        match known.iter().find(|k| **k == name.as_str()) {
+        match known.iter().find(|k| k.eq_ignore_ascii_case(name)) {
             Some(&found) => names.push((found, at)),
             None => {
                 let listed = if known.len() > 8 {

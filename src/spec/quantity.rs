@@ -138,9 +138,10 @@ pub fn parse<F>(
     let name = match get(QUANTITY_KEY) {
         None => "d",
         Some(node) => match &node.value {
-            Value::String(name) if NAMES.contains(&name.as_str()) => {
-                NAMES.into_iter().find(|n| n == name).expect("checked")
-            }
+            Value::String(name) if NAMES.iter().any(|n| n.eq_ignore_ascii_case(name)) => NAMES
+                .into_iter()
+                .find(|n| n.eq_ignore_ascii_case(name))
+                .expect("checked"),
             Value::String(name) => {
                 return Err(vec![Problem::new(
                     join_key(path, QUANTITY_KEY),

@@ -493,9 +493,11 @@ impl Metric {
         }
     }
 
-    /// Looks a metric up by name.
+    /// Looks a metric up by name, in any case.
     pub fn from_name(name: &str) -> Option<Metric> {
-        Metric::ALL.into_iter().find(|m| m.name() == name)
+        Metric::ALL
+            .into_iter()
+            .find(|m| m.name().eq_ignore_ascii_case(name))
     }
 
     /// The metric's value in a comparison; `None` for a `max_log_ratio` without a qualifying θ.

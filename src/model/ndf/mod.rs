@@ -290,11 +290,13 @@ families! {
 }
 
 impl Family {
-    /// Looks a family up by canonical name or alias (`ggx` → Trowbridge–Reitz).
+    /// Looks a family up by canonical name or alias (`ggx` → Trowbridge–Reitz), in any case
+    /// (`GGX`).
     pub fn from_name(name: &str) -> Option<Family> {
-        Family::ALL
-            .into_iter()
-            .find(|f| f.name() == name || f.aliases().contains(&name))
+        Family::ALL.into_iter().find(|f| {
+            f.name().eq_ignore_ascii_case(name)
+                || f.aliases().iter().any(|a| a.eq_ignore_ascii_case(name))
+        })
     }
 
     /// Parameter names in docs/maths.md's order.
