@@ -246,9 +246,10 @@ pub struct EvalArgs {
     )]
     pub curve: Vec<String>,
     /// Angles: comma-separated (0,0.1,pi/2) or start:stop:count (numpy linspace, both ends
-    /// included; 0:pi/2:91). Radians in [0, π/2], any of them a multiple of π (pi, pi/2, 3pi/8),
-    /// unless --degrees. Use --theta=-1 for negatives.
-    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    /// included; 0:pi/2:91), or @FILE with one angle per line (blank lines and # comments
+    /// skipped). Radians in [0, π/2], any of them a multiple of π (pi, pi/2, 3pi/8), unless
+    /// --degrees. Use --theta=-1 for negatives.
+    #[arg(long, value_name = "LIST|@FILE", allow_hyphen_values = true)]
     pub theta: String,
     /// Read the angles in degrees (θ = d·π/180) and print them as given, in a column named theta_deg.
     #[arg(long)]

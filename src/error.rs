@@ -37,6 +37,18 @@ impl Error {
         Error::Input(vec![problems])
     }
 
+    /// The error named by the option `flag` it came through (`--theta: notes.txt: No such file
+    /// or directory`): a read of `@FILE` says which option named the file.
+    pub fn for_option(self, flag: &str) -> Error {
+        match self {
+            Error::Io { path, source } => Error::Io {
+                path: format!("{flag}: {path}"),
+                source,
+            },
+            other => other,
+        }
+    }
+
     /// An I/O error on `path`.
     pub fn io(path: impl Into<String>, source: std::io::Error) -> Error {
         Error::Io {

@@ -141,6 +141,49 @@ pub fn parse_theta_list(text: &str, unit: AngleUnit) -> Result<ThetaList> {
     })
 }
 
+/// The angles of `eval --theta @FILE`: `text` (read from `name`) holds one angle per line in the
+/// syntax of a `--theta` item; blank lines and lines starting with `#` are skipped. A bad line is
+/// named by its number.
+pub fn parse_theta_file(text: &str, name: &str, unit: AngleUnit) -> Result<ThetaList> {
+    let mut angles = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let item = line.trim();
+        if item.is_empty() || item.starts_with('#') {
+            continue;
+        }
+        if angles.len() as u64 >= MAX_THETA_COUNT {
+            return Err(Error::Usage(format!(
+                "--theta: {name}: more than {MAX_THETA_COUNT} values"
+            )));
+        }
+        let at = |e: Error| match e {
+            Error::Usage(message) => Error::Usage(message.replacen(
+                "--theta:",
+                &format!("--theta: {}:{}:", crate::problem::excerpt(name), i + 1),
+                1,
+            )),
+            other => other,
+        };
+        if item.contains([',', ':']) {
+            return Err(at(Error::Usage(format!(
+                "--theta: one angle per line (got \"{}\")",
+                crate::problem::excerpt(item)
+            ))));
+        }
+        match parse_theta_list(item, unit).map_err(at)? {
+            ThetaList::Listed(one) => angles.extend(one),
+            ThetaList::Spaced { .. } => unreachable!("a line without ':' is a list"),
+        }
+    }
+    if angles.is_empty() {
+        return Err(Error::Usage(format!(
+            "--theta: {}: no angle (expected one per line)",
+            crate::problem::excerpt(name)
+        )));
+    }
+    Ok(ThetaList::Listed(angles))
+}
+
 /// The integrals (albedo values) a table of `curves` at `thetas` computes, refused past
 /// [`MAX_INTEGRALS`] before any is computed.
 pub fn check_integrals(curves: &[Curve], thetas: &ThetaList) -> Result<()> {

@@ -56,7 +56,14 @@ fn run_show(id: &str) -> Result<()> {
 
 fn run_eval(args: EvalArgs) -> Result<()> {
     let unit = crate::spec::angle::AngleUnit::of(args.degrees);
-    let thetas = eval::parse_theta_list(&args.theta, unit)?;
+    let thetas = match args.theta.strip_prefix('@') {
+        Some(path) => eval::parse_theta_file(
+            &input::read_file(path).map_err(|e| e.for_option("--theta"))?,
+            path,
+            unit,
+        )?,
+        None => eval::parse_theta_list(&args.theta, unit)?,
+    };
     let curves = load_curves(&args.curve, "--curve")?;
     eval::check_integrals(&curves, &thetas)?;
     eval::write_table(&curves, &thetas, unit, &mut stdout::stream)?;

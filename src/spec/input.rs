@@ -173,7 +173,10 @@ pub fn load_operand(
             "stdin".to_string(),
         )
     } else if let Some(path) = arg.strip_prefix('@') {
-        (read_file(path)?, path.to_string())
+        (
+            read_file(path).map_err(|e| e.for_option(flag))?,
+            path.to_string(),
+        )
     } else {
         (arg.to_string(), flag.to_string())
     };
@@ -363,7 +366,8 @@ pub fn read_curves(
             let text = read().map_err(|e| Error::io("stdin", e))?;
             curves.extend(json_lines(&text, "stdin", parse_curve));
         } else if let Some(path) = arg.strip_prefix('@') {
-            curves.push((path.to_string(), parse_curve(&read_file(path)?, path)));
+            let text = read_file(path).map_err(|e| e.for_option(flag))?;
+            curves.push((path.to_string(), parse_curve(&text, path)));
         } else {
             let source = if args.len() == 1 {
                 flag.to_string()

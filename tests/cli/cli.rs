@@ -1208,3 +1208,67 @@ fn the_catalogue_is_listed_shown_and_rendered_by_id() {
         text(&missing.stderr)
     );
 }
+
+/// `eval --theta @FILE` reads one angle per line (blank lines and `#` comments skipped) and gives
+/// the table the same angles give inline; a bad line is named by its number, and a file that
+/// cannot be read names the option that named it.
+#[test]
+fn eval_reads_angles_from_a_file_one_per_line() {
+    let dir = scratch("eval-theta-file");
+    let angles = dir.join("angles.txt");
+    std::fs::write(&angles, "# hemisphere\n0\n\npi/4\n  0.3  \n").unwrap();
+    let curve = r#"{"ndf":"ggx","alpha_tr":0.3}"#;
+    let from_file = ndfplot(&[
+        "eval",
+        "--curve",
+        curve,
+        "--theta",
+        &format!("@{}", angles.display()),
+    ]);
+    let inline = ndfplot(&["eval", "--curve", curve, "--theta", "0,pi/4,0.3"]);
+    assert_eq!(
+        from_file.status.code(),
+        Some(0),
+        "{}",
+        text(&from_file.stderr)
+    );
+    assert_eq!(text(&from_file.stdout), text(&inline.stdout));
+
+    std::fs::write(&angles, "0\n2\n").unwrap();
+    let out = ndfplot(&[
+        "eval",
+        "--curve",
+        curve,
+        "--theta",
+        &format!("@{}", angles.display()),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).contains("angles.txt:2: angle out of range (got 2"),
+        "{}",
+        text(&out.stderr)
+    );
+
+    for (flag, args) in [
+        (
+            "--theta",
+            vec!["eval", "--curve", curve, "--theta", "@no-such-angles.txt"],
+        ),
+        (
+            "--curve",
+            vec!["eval", "--curve", "@no-such-curve.json", "--theta", "0"],
+        ),
+        (
+            "--a",
+            vec!["compare", "--a", "@no-such-curve.json", "--b", curve],
+        ),
+    ] {
+        let out = ndfplot(&args);
+        assert_eq!(out.status.code(), Some(2));
+        assert!(
+            text(&out.stderr).starts_with(&format!("error: {flag}: no-such-")),
+            "{}",
+            text(&out.stderr)
+        );
+    }
+}
