@@ -472,7 +472,7 @@ pub fn median_slope(ndf: impl Fn(f64) -> f64) -> f64 {
 
 /// E_avg = 2 ∫₀¹ E(μ) μ dμ, the cosine-weighted average of [`Microfacet::albedo`] over the
 /// hemisphere (for F ≡ 1, the fraction of uniform incident light the single-scattering lobe
-/// reflects), by fixed Gauss–Legendre rules ([`AVERAGE_POINTS`] points per panel) on the panels of
+/// reflects), by fixed Gauss–Legendre rules (16 points per panel, [`AVERAGE_POINTS`]) on the panels of
 /// the two places where E(μ) is not a polynomial to working precision: it turns over to its grazing
 /// limit where μ falls below the lobe width w, so the panels are graded geometrically (ratio
 /// [`AVERAGE_GRADING`]) from μ = min(w, 1)/64 up to 1/4 (below μ = [`AVERAGE_FLOOR`], E = E(0)); and near μ = 1 the horizon cut's
@@ -502,7 +502,7 @@ where
         // The last panel in s with μ = 1 − s⁴, (1 − μ)^{5/4} becoming s⁵, as two halves in s.
         let pieces = if k == last { 2 } else { 1 };
         for piece in 0..pieces {
-            for &(x, weight) in &average_rule().points {
+            for &(x, weight) in &average_rule(surface.tolerance).points {
                 let (mu, jacobian) = if k == last {
                     let top = (1.0 - a).powf(0.25) / 2.0;
                     let s = top * (piece as f64 + x);
@@ -522,13 +522,18 @@ const AVERAGE_GRADING: f64 = 4.0;
 /// The smallest μ at which [`average_albedo`] evaluates E.
 const AVERAGE_FLOOR: f64 = 1e-5;
 
-/// Points of [`average_albedo`]'s rule per panel.
-const AVERAGE_POINTS: usize = 16;
+/// Points of [`average_albedo`]'s rule per panel: for the default tolerance, and for a surface held
+/// to [`AVERAGE_LOOSE_TOL`] or looser (a legend's E_avg), where 8 points land within ~4e-9.
+const AVERAGE_POINTS: [usize; 2] = [16, 8];
 
-/// The [`AVERAGE_POINTS`]-point rule, built once.
-fn average_rule() -> &'static Rule {
-    static RULE: OnceLock<Rule> = OnceLock::new();
-    RULE.get_or_init(|| Rule::new(AVERAGE_POINTS))
+/// The tolerance from which [`average_albedo`] takes its shorter rule.
+const AVERAGE_LOOSE_TOL: f64 = 1e-8;
+
+/// The rule of [`average_albedo`] for a surface held to `tolerance`, built once.
+fn average_rule(tolerance: f64) -> &'static Rule {
+    static RULES: OnceLock<[Rule; 2]> = OnceLock::new();
+    let rules = RULES.get_or_init(|| AVERAGE_POINTS.map(Rule::new));
+    &rules[usize::from(tolerance >= AVERAGE_LOOSE_TOL)]
 }
 
 /// The panel ends of [`average_albedo`]'s μ axis for a lobe of width w: 0, then s, 4s, 16s, … below
