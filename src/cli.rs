@@ -485,7 +485,8 @@ pub struct CheckArgs {
 #[command(
     after_long_help = "Tables of the single-scattering microfacet BRDF f = F D G2 / (4 cos theta_o cos theta_i)\n\
     (docs/maths.md \"Masking–shadowing and albedo\"), on Cycles' grid: mu = cos theta_o = i/(n_mu - 1),\n\
-    r = j/(n_r - 1), alpha = r^2 (--map r2) or r (--map r); r maps to the family's first parameter.\n\
+    r = j/(n_r - 1), alpha = r^2 (--map r2), r (--map r) or sqrt(r) (--map sqrt); r maps to the family's\n\
+    first parameter.\n\
     The mu = 0 row is the limit mu -> 0+, the r = 0 column the family's lobe at alpha = 0: the mirror\n\
     limit alpha -> 0+ (E = F(theta_o)) for a width, the uniform lobe 1/pi for phong and abc; gtr with\n\
     gamma_gtr < 1, whose lobe tends to (1 - gamma)/(pi sin^(2 gamma) theta), is refused.\n\n\
@@ -496,7 +497,24 @@ pub struct CheckArgs {
     1/(pi (1 - E_avg)) (empty, JSON null, where E_avg = 1); with --fresnel also F_avg and\n             \
     F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)) (E_avg stays F = 1)\n  \
     split-sum  mu,r,alpha,E_0,E_1,E_2,E_3: Belcour-Bati-Barla tables, E_k the albedo with F = b_k, so\n             \
-    that E_F = sum c_k E_k for F = sum c_k b_k (see coeffs); no --fresnel\n\n\
+    that E_F = sum c_k E_k for F = sum c_k b_k (see coeffs); no --fresnel\n  \
+    dfg        mu,r,alpha,DFG1,DFG2: the split-sum pair of Schlick's Fresnel, DFG1 = E_F with\n             \
+    F = 1 - Fc, DFG2 = E_F with F = Fc, Fc = (1 - cos theta_d)^5; no --fresnel\n\n\
+    Auditing an engine's table (--against FILE --layout KEY=VALUE,...; tables e, average, dfg):\n\
+    FILE is a CSV matrix (.csv, .txt), a C/C++ header holding one array (.h, .hpp, .c, .cpp, .inc)\n\
+    or raw little-endian binary (anything else); regular files up to 64 MiB. Layout keys, defaults first:\n  \
+    rows=mu|r cols=r|mu  the axis along each line of the file and along its columns\n  \
+    grid=endpoints|centers  i/(n - 1) (Cycles) or texel centres (i + 1/2)/n (Filament, Unreal)\n  \
+    map=r2|alpha|sqrt    alpha = r^2, the axis is alpha, alpha = sqrt(r)\n  \
+    value=e|1-e|dfg1|dfg2  E (E_avg for average) or 1 - E; DFG1 or DFG2 with --table dfg\n  \
+    encoding=text|f32|f16|unorm8|unorm16  raw files default to f32; unorm k/255, k/65535\n  \
+    g2=(--g2)|height-correlated|separable   fresnel=none|given (given: the --fresnel curve)\n  \
+    file=(extension)|csv|header|raw   clamp=0 (coordinates evaluated at max(c, clamp); Cycles 1e-4)\n  \
+    channels=1 channel=0  numbers per cell (an RG or RGBA texture) and which one is audited\n\
+    The grid is --size or --mu-count/--r-count when given, else the CSV's lines, else a square.\n\
+    Prints max_abs, rms and max_rel (cells with |exact| >= 1e-3) with the worst cell (mu, r, engine,\n\
+    exact); -o DIR writes audit.csv (every cell) and the heat map audit.svg/audit.png of\n\
+    engine - exact; --max-error X exits 1 when max_abs > X.\n\n\
     The CSV starts with # lines naming the table, NDF, G2, map, Fresnel, grid, limits and accuracy;\n\
     --format json prints one object with the same keys, \"columns\" and \"rows\" (arrays of numbers).\n\
     Cells are computed in parallel; a progress bar shows on a terminal unless -q. Exit 2 on bad\n\
@@ -506,7 +524,8 @@ pub struct CheckArgs {
     ndfplot albedo > ggx_E.csv\n  \
     ndfplot albedo --table average --size 32 --format json\n  \
     ndfplot albedo --ndf beckmann --map r --fresnel '{\"fresnel\":\"exact\",\"eta\":1.5}' --size 16\n  \
-    ndfplot albedo --ndf gtr --fix gamma_gtr=1.5 --table split-sum --mu-count 16 --r-count 16 -o gtr_split.csv"
+    ndfplot albedo --ndf gtr --fix gamma_gtr=1.5 --table split-sum --mu-count 16 --r-count 16 -o gtr_split.csv\n  \
+    ndfplot albedo --against ggx_E.csv --layout clamp=1e-4 --max-error 2e-6"
 )]
 pub struct AlbedoArgs {
     /// The NDF family, by name or alias (ggx); r maps to its first parameter, the others take --fix.
@@ -515,8 +534,9 @@ pub struct AlbedoArgs {
     /// Fix a parameter of the family other than its first as NAME=VALUE. Repeatable.
     #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true)]
     pub fix: Vec<String>,
-    /// How the roughness r maps to the first parameter: r2 (alpha = r^2, as Cycles, Filament, glTF) or
-    /// r (alpha = r).
+    /// How the roughness r maps to the first parameter: r2 (alpha = r^2, as Cycles, Filament, glTF),
+    /// r (alpha = r) or sqrt (alpha = sqrt(r), pbrt-v4's RoughnessToAlpha). With --against the
+    /// layout's map.
     #[arg(long, value_name = "MAP", default_value = "r2",
         value_parser = clap::builder::PossibleValuesParser::new(crate::model::albedo::RoughnessMap::KEYS.map(|(key, _)| key)))]
     pub map: String,
@@ -537,7 +557,8 @@ pub struct AlbedoArgs {
     /// ('{"fresnel":"exact","eta":1.5}') or @FILE. Default F = 1.
     #[arg(long, value_name = "JSON|@FILE")]
     pub fresnel: Option<String>,
-    /// The table: e (E per mu and r), average (E_avg per r) or split-sum (E_0..E_3 per mu and r).
+    /// The table: e (E per mu and r), average (E_avg per r), split-sum (E_0..E_3 per mu and r) or
+    /// dfg (the split-sum pair DFG1, DFG2 per mu and r).
     #[arg(long, value_name = "TABLE", default_value = "e",
         value_parser = clap::builder::PossibleValuesParser::new(crate::model::albedo::Table::NAMES.map(|(name, _)| name)))]
     pub table: String,
@@ -547,9 +568,20 @@ pub struct AlbedoArgs {
     pub format: ReportFormat,
     /// Write the table to FILE (atomically: a temporary renamed into place) instead of stdout; an
     /// existing FILE that is not a regular file (device, FIFO, socket, folder) is refused (exit 2).
-    /// - is stdout.
+    /// - is stdout. With --against, a folder DIR for audit.csv, audit.svg and audit.png.
     #[arg(short, long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+    /// Audit an engine's table: compare FILE with the exact table on the engine's grid, as
+    /// --layout describes it (see --help).
+    #[arg(long, value_name = "FILE")]
+    pub against: Option<PathBuf>,
+    /// What --against's numbers are: KEY=VALUE,... (rows, cols, grid, map, value, encoding, g2,
+    /// fresnel, file, clamp, channels, channel; see --help).
+    #[arg(long, value_name = "KEY=VALUE,...", requires = "against")]
+    pub layout: Option<String>,
+    /// With --against: exit 1 when max_abs exceeds X.
+    #[arg(long, value_name = "X", requires = "against")]
+    pub max_error: Option<f64>,
 }
 
 /// Arguments of `ndfplot bench`.

@@ -283,8 +283,7 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
     let g2 =
         crate::model::masking::G2Model::from_name(&args.g2).expect("clap allows only G2 names");
     let family = fit::parse_family("--ndf", &args.ndf)?;
-    let surface = albedo::Surface::new(family, &fit::parse_fixed(&args.fix)?, map)?;
-    let grid = albedo::grid(table, args.size, args.mu_count, args.r_count)?;
+    let fixed = fit::parse_fixed(&args.fix)?;
     let fresnel = match &args.fresnel {
         Some(arg) => Some(albedo::fresnel_factor(load_curves(
             std::slice::from_ref(arg),
@@ -292,6 +291,11 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
         )?)?),
         None => None,
     };
+    if let Some(path) = &args.against {
+        return run_albedo_audit(&args, path, table, g2, family, &fixed, fresnel, quiet);
+    }
+    let surface = albedo::Surface::new(family, &fixed, map)?;
+    let grid = albedo::grid(table, args.size, args.mu_count, args.r_count)?;
     let request = albedo::Request::new(table, surface, g2, grid, fresnel)?;
     // `-o -` is standard output, as without -o.
     let destination = args
@@ -316,5 +320,59 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
             crate::output::write::write_files("-o", dir, &[(name, text)]).map(drop)
         }
         None => stdout::print(&text),
+    }
+}
+
+/// `albedo --against FILE`: reads the engine's table, computes the exact one on its grid, prints
+/// the comparison and writes `-o DIR`'s files; exit 1 when `--max-error` is exceeded.
+#[allow(clippy::too_many_arguments)]
+fn run_albedo_audit(
+    args: &AlbedoArgs,
+    path: &std::path::Path,
+    table: crate::model::albedo::Table,
+    g2: crate::model::masking::G2Model,
+    family: crate::model::ndf::Family,
+    fixed: &[(String, f64)],
+    fresnel: Option<Curve>,
+    quiet: bool,
+) -> Result<()> {
+    let layout = crate::spec::lut::parse_layout(
+        args.layout.as_deref().unwrap_or(""),
+        &path.display().to_string(),
+        g2,
+    )
+    .map_err(crate::error::Error::input)?;
+    if let Some(x) = args.max_error
+        && !(x >= 0.0 && x.is_finite())
+    {
+        return Err(crate::error::Error::Usage(format!(
+            "--max-error: not a tolerance (got {x}, expected a finite number >= 0)"
+        )));
+    }
+    let surface = albedo::Surface::new(family, fixed, layout.map)?;
+    if let Some(dir) = &args.out {
+        albedo::audit::check_outputs(dir)?;
+    }
+    let against = albedo::audit::read(
+        path,
+        layout,
+        table,
+        (args.size, args.mu_count, args.r_count),
+    )?;
+    let steps = against.n_mu.unwrap_or(1) * against.n_r;
+    let progress = crate::pipeline::progress::Progress::new(steps as u64, quiet);
+    progress.stage("integrating");
+    let audit = against.audit(&surface, table, fresnel.as_ref(), &progress)?;
+    progress.finish();
+    if let Some(dir) = &args.out {
+        audit.write(dir)?;
+    }
+    stdout::print(&audit.report())?;
+    match args.max_error {
+        Some(x) if audit.audit.max_abs > x => Err(crate::error::Error::CheckFailed(format!(
+            "albedo --against: max_abs {:.3e} exceeds --max-error {x:e}",
+            audit.audit.max_abs
+        ))),
+        _ => Ok(()),
     }
 }

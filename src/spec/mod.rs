@@ -10,6 +10,7 @@ pub mod input;
 pub mod json;
 pub mod keys;
 pub mod look;
+pub mod lut;
 pub mod numbers;
 pub mod quantity;
 pub mod scene;

@@ -16,6 +16,7 @@ mod fit;
 mod heatmap;
 mod lazy_basis;
 mod lint;
+mod lut_audit;
 mod man;
 mod published;
 mod quantity;

@@ -8,8 +8,8 @@
 
 use crate::common::{number, root};
 use ndfplot::model::albedo::{
-    Microfacet, RoughnessMap, albedo_table, average_albedo, average_albedo_table, split_sum_tables,
-    turquin_factor,
+    Microfacet, RoughnessMap, albedo_table, average_albedo, average_albedo_table, dfg_tables,
+    split_sum_tables, turquin_factor,
 };
 use ndfplot::model::fresnel::basis::coeffs;
 use ndfplot::model::fresnel::exact::{Incidence, Index, reflectance};
@@ -324,4 +324,57 @@ fn albedo_tables_follow_the_grid_convention_and_split_sum_is_linear() {
     assert!(e_gold.values.iter().all(|e| (0.0..=1.0).contains(e)));
     let averages = average_albedo_table(3, RoughnessMap::Linear, surface, None, None).unwrap();
     assert_eq!(averages[0], 1.0);
+}
+
+#[test]
+fn dfg_pair_sums_to_e_and_matches_a_direct_integral_at_normal_incidence() {
+    let surface = |alpha: f64| (alpha > 0.0).then(|| ggx(alpha, G2Model::HeightCorrelated));
+    let grid = vec![0.0, 0.5, 1.0];
+    let [dfg1, dfg2] = dfg_tables(
+        grid.clone(),
+        grid.clone(),
+        RoughnessMap::Squared,
+        surface,
+        None,
+    )
+    .unwrap();
+    let e = albedo_table(3, 3, RoughnessMap::Squared, surface, None, None).unwrap();
+    for cell in 0..9 {
+        let sum = dfg1.values[cell] + dfg2.values[cell];
+        assert!(
+            (sum - e.values[cell]).abs() <= ALBEDO_TOL,
+            "cell {cell}: {sum} vs {}",
+            e.values[cell]
+        );
+    }
+    // At the mirror column DFG2 is Schlick's weight at θd = θo: (1 − μ)⁵.
+    assert!((dfg2.get(1, 0) - 0.5f64.powi(5)).abs() <= 1e-15);
+    // α = 1 at μ = 1: D = 1/π, Λ(θ) = (1/cos θ − 1)/2, θi = 2θh, so
+    // DFG2 = 2 ∫₀^{π/4} 2 cos 2θ/(1 + cos 2θ) (1 − cos θ)⁵ cos θ sin θ dθ, here by Simpson's rule
+    // on 20 000 intervals (a smooth integrand: error ~1e-17).
+    let f = |t: f64| {
+        let c2 = (2.0 * t).cos();
+        2.0 * (2.0 * c2 / (1.0 + c2)) * (1.0 - t.cos()).powi(5) * t.cos() * t.sin()
+    };
+    let n = 20_000;
+    let h = PI / 4.0 / n as f64;
+    let simpson: f64 = (0..=n)
+        .map(|k| {
+            let w = if k == 0 || k == n {
+                1.0
+            } else if k % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
+            w * f(k as f64 * h)
+        })
+        .sum::<f64>()
+        * h
+        / 3.0;
+    assert!(
+        (dfg2.get(2, 2) - simpson).abs() <= ALBEDO_TOL,
+        "{} vs {simpson}",
+        dfg2.get(2, 2)
+    );
 }

@@ -1,8 +1,10 @@
-//! The fixed 16-point Gauss–Legendre rule: ∫ₐᵇ f(x) dx ≈ Σᵢ wᵢ f(xᵢ), exact for polynomials of degree 31.
+//! Fixed Gauss–Legendre rules: ∫ₐᵇ f(x) dx ≈ Σᵢ wᵢ f(xᵢ), the n-point rule exact for polynomials of
+//! degree 2n − 1.
 //!
 //! For integrands whose features are known in advance and split off into panels (the Smith Λ integrals of
-//! [`crate::model::masking`] and the Phong Λ): a fixed set of 16 evaluations per panel, no allocation, no
-//! error estimate. Where the features are unknown, use the adaptive [`crate::model::math::quad`].
+//! [`crate::model::masking`] and the Phong Λ): a fixed set of 16 evaluations per panel ([`integrate`]), no
+//! allocation, no error estimate; [`Rule`] gives the n-point rule for any n (the directional albedo's panels).
+//! Where the features are unknown, use the adaptive [`crate::model::math::quad`].
 
 /// Non-negative abscissae of the 16-point rule on [−1, 1] with their weights (the rule is symmetric),
 /// computed by Newton's method on P₁₆ with mpmath at 40 digits and rounded to 21.
@@ -29,9 +31,82 @@ pub fn integrate(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> f64 {
     half * sum
 }
 
+/// The n-point Gauss–Legendre rule on [0, 1]: nodes xᵢ = (1 + tᵢ)/2 and weights wᵢ/2, tᵢ the zeros of
+/// the Legendre polynomial Pₙ (ascending) and wᵢ = 2/((1 − tᵢ²) Pₙ'(tᵢ)²), each zero found by Newton's
+/// method from Tricomi's estimate cos(π(i + 3/4)/(n + 1/2)) until the step is below 1e-16 (nodes and
+/// weights then within a few ulps; the sum of the weights is 1 to rounding).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rule {
+    /// (xᵢ, wᵢ) on [0, 1], ascending in x.
+    pub points: Vec<(f64, f64)>,
+}
+
+impl Rule {
+    /// The rule with n ≥ 1 points.
+    pub fn new(n: usize) -> Rule {
+        assert!(n >= 1, "a rule needs a point");
+        let nf = n as f64;
+        let mut points: Vec<(f64, f64)> = (0..n)
+            .map(|i| {
+                let mut t = (std::f64::consts::PI * (i as f64 + 0.75) / (nf + 0.5)).cos();
+                let mut derivative = 1.0;
+                for _ in 0..100 {
+                    // Pₙ(t) and Pₙ'(t) by the three-term recurrence.
+                    let (mut p0, mut p1) = (1.0, t);
+                    for k in 2..=n {
+                        let kf = k as f64;
+                        (p0, p1) = (p1, ((2.0 * kf - 1.0) * t * p1 - (kf - 1.0) * p0) / kf);
+                    }
+                    derivative = nf * (t * p1 - p0) / (t * t - 1.0);
+                    let step = p1 / derivative;
+                    t -= step;
+                    if step.abs() <= 1e-16 {
+                        break;
+                    }
+                }
+                let weight = 2.0 / ((1.0 - t * t) * derivative * derivative);
+                (0.5 * (1.0 - t), 0.5 * weight)
+            })
+            .collect();
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        Rule { points }
+    }
+
+    /// ∫ₐᵇ f(x) dx by the rule (f is never evaluated at a or b).
+    #[inline]
+    pub fn integrate(&self, mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> f64 {
+        let length = b - a;
+        length
+            * self
+                .points
+                .iter()
+                .map(|&(x, w)| w * f(a + length * x))
+                .sum::<f64>()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn rules_reproduce_the_tabulated_16_point_rule_and_integrate_polynomials() {
+        let rule = Rule::new(16);
+        for (&(x, w), &(t, v)) in rule.points[8..].iter().zip(NODES.iter().rev()) {
+            assert!(
+                (2.0 * x - 1.0 - t).abs() <= 4.0 * f64::EPSILON,
+                "{x} vs {t}"
+            );
+            assert!((2.0 * w - v).abs() <= 4.0 * f64::EPSILON, "{w} vs {v}");
+        }
+        for n in [1, 2, 7, 24, 64] {
+            let rule = Rule::new(n);
+            let degree = 2 * n as i32 - 1;
+            let got = rule.integrate(|x| x.powi(degree), 0.0, 1.0);
+            let want = 1.0 / f64::from(degree + 1);
+            assert!((got - want).abs() <= 64.0 * f64::EPSILON, "n = {n}: {got}");
+        }
+    }
 
     #[test]
     fn integrates_polynomials_of_degree_31_exactly() {

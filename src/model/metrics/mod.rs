@@ -14,6 +14,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use std::fmt;
 
 pub mod sampled;
+pub mod table;
 
 /// Nodes of the c-grid of `l2_grid`: c_i = numpy linspace(0, 1, 1000), θ_i = arccos c_i — the Fresnel
 /// notebook's grid (docs/maths.md, "The Belcour–Bati–Barla basis").

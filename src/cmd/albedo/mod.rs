@@ -7,12 +7,14 @@
 //! parameters, the roughness map, the grid, the Fresnel factor) and the text of the output; the
 //! integrals and the grids are [`crate::model::albedo`]'s.
 
+pub mod audit;
+
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
 use crate::error::{Error, Result};
 use crate::model::albedo::{
-    self, NoLobe, RoughnessMap, Table, average_albedo_table, average_fresnel, kulla_conty_fresnel,
-    kulla_conty_lobe, split_sum_tables, turquin_factor, unit_grid,
+    self, NoLobe, RoughnessMap, Table, average_albedo_table, average_fresnel, dfg_tables,
+    kulla_conty_fresnel, kulla_conty_lobe, split_sum_tables, turquin_factor, unit_grid,
 };
 use crate::model::curve::{Curve, Kind};
 use crate::model::masking::G2Model;
@@ -116,9 +118,14 @@ impl Surface {
     /// error names `--fix` for a fixed value out of its domain (or one for which the family has no
     /// limit at r = 0 that ndfplot evaluates), `--map` for a mapped one, with r.
     pub fn check(&self, n_r: usize) -> Result<()> {
+        self.check_at(&unit_grid(n_r))
+    }
+
+    /// [`Surface::check`] at the roughness coordinates `roughness`.
+    pub fn check_at(&self, roughness: &[f64]) -> Result<()> {
         let mapped = self.family.params()[0].name;
         let others = &self.family.param_names()[1..];
-        for r in unit_grid(n_r) {
+        for &r in roughness {
             let e = match self.lobe(self.map.alpha(r)) {
                 Ok(_) => continue,
                 Err(NoLobe::Limit(what)) => {
@@ -265,7 +272,7 @@ pub struct Request {
     pub n_mu: Option<usize>,
     /// Points on the r axis.
     pub n_r: usize,
-    /// The Fresnel factor F(θd) (`None`: F = 1); never with [`Table::SplitSum`].
+    /// The Fresnel factor F(θd) (`None`: F = 1); never with [`Table::SplitSum`] or [`Table::Dfg`].
     pub fresnel: Option<Curve>,
 }
 
@@ -279,7 +286,7 @@ impl Request {
         (n_mu, n_r): (Option<usize>, usize),
         fresnel: Option<Curve>,
     ) -> Result<Request> {
-        if table == Table::SplitSum
+        if matches!(table, Table::SplitSum | Table::Dfg)
             && let Some(curve) = &fresnel
         {
             return Err(Error::input(Problems {
@@ -287,8 +294,10 @@ impl Request {
                 list: vec![Problem::new(
                     "",
                     format!(
-                        "the split-sum tables are Fresnel-independent, E_k has F = b_k (got {}, expected no --fresnel with --table split-sum)",
-                        crate::problem::excerpt(&curve.canonical_json())
+                        "the {} tables are Fresnel-independent, their weights are fixed (got {}, expected no --fresnel with --table {})",
+                        table.name(),
+                        crate::problem::excerpt(&curve.canonical_json()),
+                        table.name()
                     ),
                 )],
             }));
@@ -352,18 +361,21 @@ impl Request {
                 }
                 report
             }
+            (Table::Dfg, Some(n_mu)) => {
+                let tables = dfg_tables(
+                    unit_grid(n_mu),
+                    unit_grid(self.n_r),
+                    map,
+                    surface,
+                    Some(&tick),
+                )
+                .map_err(failed)?;
+                cell_report(&["DFG1", "DFG2"], &tables)
+            }
             (Table::SplitSum, Some(n_mu)) => {
                 let tables =
                     split_sum_tables(n_mu, self.n_r, map, surface, Some(&tick)).map_err(failed)?;
-                let mut report = Report::new(["mu", "r", "alpha", "E_0", "E_1", "E_2", "E_3"]);
-                for (i, &mu) in tables[0].mu.iter().enumerate() {
-                    for (j, &r) in tables[0].roughness.iter().enumerate() {
-                        let mut row = numbers(&[mu, r, map.alpha(r)]);
-                        row.extend(tables.iter().map(|t| Cell::Number(t.get(i, j))));
-                        report.push(row);
-                    }
-                }
-                report
+                cell_report(&["E_0", "E_1", "E_2", "E_3"], &tables)
             }
             _ => {
                 let e_avg = average_albedo_table(self.n_r, map, surface, None, Some(&tick))
@@ -416,6 +428,9 @@ impl Request {
             (Table::Average, Some(_)) => {
                 "average albedo E_avg = 2 int_0^1 E(mu) mu dmu (F = 1), one row per r, Kulla-Conty's 1/(pi (1 - E_avg)) (empty where E_avg = 1), F_avg = 2 int_0^1 F mu dmu and F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg))"
             }
+            (Table::Dfg, _) => {
+                "split-sum pair of Schlick's Fresnel: DFG1 = E_F with F = 1 - Fc and DFG2 = E_F with F = Fc, Fc = (1 - cos(theta_d))^5, one row per (mu, r); F0 DFG1 + F90 DFG2 is the albedo with F = F0 + (F90 - F0) Fc, and DFG1 + DFG2 = E"
+            }
             (Table::SplitSum, _) => {
                 "Belcour-Bati-Barla split-sum tables E_k(mu): the albedo with F = b_k(theta_d), k = 0..3 (E_0 = E), one row per (mu, r); E_F = sum c_k E_k for F = sum c_k b_k"
             }
@@ -434,6 +449,9 @@ impl Request {
             (Table::SplitSum, true) => {
                 format!("mu = 0 is the limit mu -> 0+; {zero}, E_k = b_k(theta_o)")
             }
+            (Table::Dfg, true) => format!(
+                "mu = 0 is the limit mu -> 0+; {zero}, DFG1 = 1 - Fc(theta_o), DFG2 = Fc(theta_o)"
+            ),
             (_, true) => format!("mu = 0 is the limit mu -> 0+; {zero}, E = F(theta_o)"),
             (_, false) => format!("mu = 0 is the limit mu -> 0+; {zero}"),
         };
@@ -464,6 +482,21 @@ impl Request {
         ]);
         metadata
     }
+}
+
+/// One row per (μ, r) cell of `tables` (on one grid): mu, r, alpha, then each table's value under
+/// its name in `names`.
+fn cell_report(names: &[&str], tables: &[albedo::AlbedoTable]) -> Report {
+    let first = &tables[0];
+    let mut report = Report::new(["mu", "r", "alpha"].iter().chain(names).copied());
+    for (i, &mu) in first.mu.iter().enumerate() {
+        for (j, &r) in first.roughness.iter().enumerate() {
+            let mut row = numbers(&[mu, r, first.map.alpha(r)]);
+            row.extend(tables.iter().map(|t| Cell::Number(t.get(i, j))));
+            report.push(row);
+        }
+    }
+    report
 }
 
 /// Number cells.

@@ -1,0 +1,503 @@
+//! An engine's albedo table as `ndfplot albedo --against FILE --layout KEY=VALUE,…` reads it: the
+//! layout that says what its numbers are (which axis runs along rows, where the grid points sit,
+//! how the axis maps to α, which value, how it is encoded, under which G2 and Fresnel), and the
+//! decoding of the file's bytes into values (docs/contracts.md "Auditing an engine's table").
+//!
+//! Owns the parsing of the layout and of the three file kinds — a CSV matrix, a C/C++ header
+//! holding one array, raw little-endian binary — and the decoding of the five encodings. The file
+//! is read by [`crate::spec::datafile::read_regular`] (regular files only, bounded); the exact
+//! table and the comparison are the model's.
+
+use crate::model::albedo::RoughnessMap;
+use crate::model::masking::G2Model;
+use crate::model::names::named;
+use crate::problem::{Problem, Problems};
+
+named! {
+    /// A table axis: μ = cos θo or the roughness coordinate r.
+    pub enum LutAxis {
+        /// μ = cos θo.
+        Mu = "mu",
+        /// The roughness coordinate r, α = map(r).
+        R = "r",
+    }
+}
+
+named! {
+    /// Where the n points of an axis sit in [0, 1].
+    pub enum LutGrid {
+        /// i/(n − 1): both ends on the grid (Cycles, Adobe).
+        Endpoints = "endpoints",
+        /// (i + ½)/n: texel centres (a texture sampled at its pixel centres: Filament, Unreal).
+        Centers = "centers",
+    }
+}
+
+named! {
+    /// What each number of the table is.
+    pub enum LutValue {
+        /// E (E_avg for `--table average`).
+        E = "e",
+        /// 1 − E: the energy single scattering loses (Adobe's tables).
+        OneMinusE = "1-e",
+        /// DFG1 = E_F with F = 1 − (1 − cos θd)⁵ (`--table dfg`).
+        Dfg1 = "dfg1",
+        /// DFG2 = E_F with F = (1 − cos θd)⁵ (`--table dfg`).
+        Dfg2 = "dfg2",
+    }
+}
+
+named! {
+    /// How each number is stored.
+    pub enum Encoding {
+        /// Little-endian IEEE binary32 (raw), or a decimal number (text).
+        F32 = "f32",
+        /// Little-endian IEEE binary16 (raw), or a decimal number (text).
+        F16 = "f16",
+        /// One byte k, the value k/255 (raw), or the integer k (text).
+        Unorm8 = "unorm8",
+        /// A little-endian 16-bit k, the value k/65535 (raw), or the integer k (text).
+        Unorm16 = "unorm16",
+        /// A decimal number (text files only).
+        Text = "text",
+    }
+}
+
+named! {
+    /// The kind of file holding the table.
+    pub enum LutFile {
+        /// Numbers separated by commas or white space, `#` comment lines skipped; rows are lines.
+        Csv = "csv",
+        /// A C/C++ source holding one array: the numbers between its first `{` and last `}`
+        /// (comments skipped, literal suffixes f/u/l and 0x hex integers accepted).
+        Header = "header",
+        /// Raw little-endian binary, row-major, no header.
+        Raw = "raw",
+    }
+}
+
+named! {
+    /// The Fresnel factor the engine's table integrates.
+    pub enum LutFresnel {
+        /// F = 1.
+        None = "none",
+        /// The curve given with `--fresnel`.
+        Given = "given",
+    }
+}
+
+/// Layout keys, in the order `--layout` documents them.
+pub const LAYOUT_KEYS: [&str; 12] = [
+    "rows", "cols", "grid", "map", "value", "encoding", "g2", "fresnel", "file", "clamp",
+    "channels", "channel",
+];
+
+/// Most channels per cell (`channels=`): RGBA.
+pub const MAX_CHANNELS: usize = 4;
+
+/// What an engine's table holds and how (`--layout`); every key has a default.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Layout {
+    /// The axis along each row of the file (`rows=mu`: one row per μ, the default).
+    pub rows: LutAxis,
+    /// The axis along the columns (`cols=r` by default); differs from `rows`.
+    pub cols: LutAxis,
+    /// Where the grid points sit (`endpoints`).
+    pub grid: LutGrid,
+    /// How r maps to α (`map=r2` α = r², `alpha` the axis is α, `sqrt` α = √r; `r2`).
+    pub map: RoughnessMap,
+    /// What the numbers are (`e`).
+    pub value: LutValue,
+    /// How they are stored (`text` for CSV and headers, `f32` for raw files).
+    pub encoding: Encoding,
+    /// The G2 model (`--g2`'s unless given).
+    pub g2: G2Model,
+    /// The Fresnel factor (`none`).
+    pub fresnel: LutFresnel,
+    /// The kind of file (from its extension: `.csv`/`.txt` CSV, `.h`/`.hpp`/`.c`/`.cpp`/`.inc`
+    /// header, anything else raw).
+    pub file: LutFile,
+    /// The engine evaluates its grid at max(coordinate, clamp) (Cycles: 1e-4); 0 by default.
+    pub clamp: f64,
+    /// Numbers per cell, interleaved (an RG or RGBA texture); 1 by default.
+    pub channels: usize,
+    /// Which of them is audited, from 0.
+    pub channel: usize,
+}
+
+/// The layout of `text` (`KEY=VALUE,…`, empty for all defaults) for the file `path` under the
+/// command's G2 model `g2`: an unknown or repeated key, a value outside its choices, rows equal
+/// to cols, or an encoding the file kind cannot hold is a problem naming `--layout` and the key.
+pub fn parse_layout(text: &str, path: &str, g2: G2Model) -> Result<Layout, Problems> {
+    let problem = |key: &str, message: String| Problems {
+        source: "--layout".into(),
+        list: vec![Problem::new(key, message)],
+    };
+    let extension = std::path::Path::new(path)
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    let file = match extension.as_str() {
+        "csv" | "txt" => LutFile::Csv,
+        "h" | "hh" | "hpp" | "c" | "cc" | "cpp" | "inc" => LutFile::Header,
+        _ => LutFile::Raw,
+    };
+    let mut layout = Layout {
+        rows: LutAxis::Mu,
+        cols: LutAxis::R,
+        grid: LutGrid::Endpoints,
+        map: RoughnessMap::Squared,
+        value: LutValue::E,
+        encoding: Encoding::Text,
+        g2,
+        fresnel: LutFresnel::None,
+        file,
+        clamp: 0.0,
+        channels: 1,
+        channel: 0,
+    };
+    let mut seen: Vec<&str> = Vec::new();
+    let mut encoding = None;
+    for pair in text.split(',').filter(|p| !p.trim().is_empty()) {
+        let Some((key, value)) = pair.split_once('=') else {
+            return Err(problem(
+                "",
+                format!(
+                    "not KEY=VALUE (got {:?}, expected e.g. rows=mu)",
+                    crate::problem::excerpt(pair)
+                ),
+            ));
+        };
+        let (key, value) = (key.trim(), value.trim());
+        let Some(&key) = LAYOUT_KEYS.iter().find(|k| **k == key) else {
+            return Err(problem(
+                "",
+                format!(
+                    "unknown key (got {:?}, expected one of: {}){}",
+                    crate::problem::excerpt(key),
+                    LAYOUT_KEYS.join(", "),
+                    crate::problem::suggestion(key, LAYOUT_KEYS)
+                ),
+            ));
+        };
+        if seen.contains(&key) {
+            return Err(problem(key, format!("given twice (got {key}={value})")));
+        }
+        seen.push(key);
+        let bad = |choices: &[&str]| {
+            problem(
+                key,
+                format!(
+                    "unknown value (got {:?}, expected one of: {})",
+                    crate::problem::excerpt(value),
+                    choices.join(", ")
+                ),
+            )
+        };
+        macro_rules! choice {
+            ($ty:ty) => {
+                <$ty>::from_name(value).ok_or_else(|| bad(&<$ty>::NAMES.map(|(n, _)| n)))?
+            };
+        }
+        let count = |min: usize, max: usize| {
+            value
+                .parse::<usize>()
+                .ok()
+                .filter(|n| (min..=max).contains(n))
+                .ok_or_else(|| {
+                    problem(
+                        key,
+                        format!(
+                            "not a whole number in range (got {:?}, expected {min} to {max})",
+                            crate::problem::excerpt(value)
+                        ),
+                    )
+                })
+        };
+        match key {
+            "rows" => layout.rows = choice!(LutAxis),
+            "cols" => layout.cols = choice!(LutAxis),
+            "grid" => layout.grid = choice!(LutGrid),
+            "map" => {
+                layout.map = match value {
+                    "r2" => RoughnessMap::Squared,
+                    "alpha" | "r" => RoughnessMap::Linear,
+                    "sqrt" => RoughnessMap::Root,
+                    _ => return Err(bad(&["r2", "alpha", "sqrt"])),
+                }
+            }
+            "value" => layout.value = choice!(LutValue),
+            "encoding" => encoding = Some(choice!(Encoding)),
+            "g2" => layout.g2 = choice!(G2Model),
+            "fresnel" => layout.fresnel = choice!(LutFresnel),
+            "file" => layout.file = choice!(LutFile),
+            "clamp" => {
+                layout.clamp = value
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|c| (0.0..1.0).contains(c))
+                    .ok_or_else(|| {
+                        problem(
+                            key,
+                            format!(
+                                "not a clamp (got {:?}, expected a number in [0, 1))",
+                                crate::problem::excerpt(value)
+                            ),
+                        )
+                    })?
+            }
+            "channels" => layout.channels = count(1, MAX_CHANNELS)?,
+            _ => layout.channel = count(0, MAX_CHANNELS - 1)?,
+        }
+    }
+    if layout.channel >= layout.channels {
+        return Err(problem(
+            "channel",
+            format!(
+                "no such channel (got {}, expected 0 to {} with channels={})",
+                layout.channel,
+                layout.channels - 1,
+                layout.channels
+            ),
+        ));
+    }
+    if layout.rows == layout.cols {
+        return Err(problem(
+            "cols",
+            format!(
+                "rows and cols name the same axis (got rows={} and cols={}, expected one mu and one r)",
+                layout.rows.name(),
+                layout.cols.name()
+            ),
+        ));
+    }
+    layout.encoding = match (encoding, layout.file) {
+        (None, LutFile::Raw) => Encoding::F32,
+        (None, _) => Encoding::Text,
+        (Some(Encoding::Text), LutFile::Raw) => {
+            return Err(problem(
+                "encoding",
+                "text in a raw file (got encoding=text with file=raw, expected f32, f16, unorm8 or unorm16)".into(),
+            ));
+        }
+        (Some(encoding), _) => encoding,
+    };
+    Ok(layout)
+}
+
+/// The numbers of a table file with the shape its text gives, before any channel is picked.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Decoded {
+    /// The values, row-major, decoded by the encoding (unorm k/255, k/65535).
+    pub values: Vec<f64>,
+    /// (rows, numbers per row) when a CSV file has several lines of equal length.
+    pub shape: Option<(usize, usize)>,
+}
+
+/// Decodes the bytes of a table file by `layout` (its file kind and encoding); errs with a message
+/// that quotes no more than an excerpt of the file.
+pub fn decode(bytes: &[u8], layout: &Layout) -> Result<Decoded, String> {
+    match layout.file {
+        LutFile::Raw => decode_raw(bytes, layout.encoding).map(|values| Decoded {
+            values,
+            shape: None,
+        }),
+        LutFile::Csv | LutFile::Header => {
+            let text = std::str::from_utf8(bytes).map_err(|e| {
+                format!(
+                    "not UTF-8 text at byte {} (expected a {} file; a binary table takes file=raw)",
+                    e.valid_up_to(),
+                    layout.file.name()
+                )
+            })?;
+            if layout.file == LutFile::Csv {
+                decode_csv(text, layout.encoding)
+            } else {
+                decode_header(text, layout.encoding).map(|values| Decoded {
+                    values,
+                    shape: None,
+                })
+            }
+        }
+    }
+}
+
+/// Raw little-endian numbers of `encoding`.
+fn decode_raw(bytes: &[u8], encoding: Encoding) -> Result<Vec<f64>, String> {
+    let width = match encoding {
+        Encoding::F32 => 4,
+        Encoding::F16 | Encoding::Unorm16 => 2,
+        Encoding::Unorm8 => 1,
+        Encoding::Text => unreachable!("parse_layout refuses text in raw files"),
+    };
+    if bytes.len() % width != 0 {
+        return Err(format!(
+            "not a whole number of {} values (got {} bytes, expected a multiple of {width})",
+            encoding.name(),
+            bytes.len()
+        ));
+    }
+    Ok(bytes
+        .chunks_exact(width)
+        .map(|b| match encoding {
+            Encoding::F32 => f64::from(f32::from_le_bytes([b[0], b[1], b[2], b[3]])),
+            Encoding::F16 => half_to_f64(u16::from_le_bytes([b[0], b[1]])),
+            Encoding::Unorm16 => f64::from(u16::from_le_bytes([b[0], b[1]])) / 65535.0,
+            _ => f64::from(b[0]) / 255.0,
+        })
+        .collect())
+}
+
+/// The IEEE binary16 number with bits `h`, exactly (every half is a double).
+pub fn half_to_f64(h: u16) -> f64 {
+    let sign = if h & 0x8000 != 0 { -1.0 } else { 1.0 };
+    let exponent = i32::from((h >> 10) & 0x1f);
+    let mantissa = f64::from(h & 0x3ff);
+    sign * match exponent {
+        0 => mantissa * 2f64.powi(-24),
+        31 if mantissa == 0.0 => f64::INFINITY,
+        31 => f64::NAN,
+        e => (1.0 + mantissa / 1024.0) * 2f64.powi(e - 15),
+    }
+}
+
+/// One number of a text file under `encoding`: a decimal (or a 0x hex integer), suffixes f/u/l
+/// dropped; unorm values are integers in range, divided by 255 or 65535.
+fn text_number(token: &str, encoding: Encoding) -> Result<f64, String> {
+    let quoted = || crate::problem::excerpt(token);
+    let bare = token.trim_end_matches(['f', 'F', 'u', 'U', 'l', 'L']);
+    let value = match bare.strip_prefix("0x").or_else(|| bare.strip_prefix("0X")) {
+        Some(hex) => u64::from_str_radix(hex, 16).ok().map(|v| v as f64),
+        None => bare.parse::<f64>().ok().filter(|v| v.is_finite()),
+    }
+    .ok_or_else(|| format!("not a number (got {:?})", quoted()))?;
+    let unorm = |max: f64| {
+        if value.fract() == 0.0 && (0.0..=max).contains(&value) {
+            Ok(value / max)
+        } else {
+            Err(format!(
+                "not a {} integer (got {:?}, expected 0 to {max})",
+                encoding.name(),
+                quoted()
+            ))
+        }
+    };
+    match encoding {
+        Encoding::Unorm8 => unorm(255.0),
+        Encoding::Unorm16 => unorm(65535.0),
+        _ => Ok(value),
+    }
+}
+
+/// A CSV matrix: numbers separated by commas or white space, one table row per line, `#` lines
+/// and blank lines skipped.
+fn decode_csv(text: &str, encoding: Encoding) -> Result<Decoded, String> {
+    let mut values = Vec::new();
+    let mut widths = Vec::new();
+    for (number, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let before = values.len();
+        for token in line
+            .split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|t| !t.is_empty())
+        {
+            values.push(
+                text_number(token, encoding).map_err(|e| format!("line {}: {e}", number + 1))?,
+            );
+        }
+        widths.push(values.len() - before);
+    }
+    let shape = (widths.len() > 1 && widths.iter().all(|&w| w == widths[0]))
+        .then(|| (widths.len(), widths[0]));
+    Ok(Decoded { values, shape })
+}
+
+/// The numbers of the one array of a C/C++ source: the text between its first `{` and last `}`,
+/// comments removed, split at commas, braces and white space.
+fn decode_header(text: &str, encoding: Encoding) -> Result<Vec<f64>, String> {
+    let mut code = String::with_capacity(text.len());
+    let mut rest = text;
+    while !rest.is_empty() {
+        if let Some(after) = rest.strip_prefix("//") {
+            rest = after.find('\n').map_or("", |i| &after[i..]);
+        } else if let Some(after) = rest.strip_prefix("/*") {
+            rest = after.find("*/").map_or("", |i| &after[i + 2..]);
+            code.push(' ');
+        } else {
+            let c = rest.chars().next().expect("not empty");
+            code.push(c);
+            rest = &rest[c.len_utf8()..];
+        }
+    }
+    let (Some(open), Some(close)) = (code.find('{'), code.rfind('}')) else {
+        return Err("no array (expected one { … } holding the numbers)".into());
+    };
+    if close < open {
+        return Err("no array (expected one { … } holding the numbers)".into());
+    }
+    code[open + 1..close]
+        .split(|c: char| c == ',' || c == '{' || c == '}' || c.is_whitespace())
+        .filter(|t| !t.is_empty())
+        .map(|t| text_number(t, encoding))
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn halves_decode_exactly() {
+        // IEEE 754 binary16: 0x3C00 = 1, 0x3555 = 0.333251953125, 0x0001 = 2^-24, 0xC000 = -2.
+        assert_eq!(half_to_f64(0x3C00), 1.0);
+        assert_eq!(half_to_f64(0x3555), 0.333251953125);
+        assert_eq!(half_to_f64(0x0001), 2f64.powi(-24));
+        assert_eq!(half_to_f64(0xC000), -2.0);
+        assert_eq!(half_to_f64(0x7C00), f64::INFINITY);
+    }
+
+    #[test]
+    fn headers_and_csv_matrices_decode() {
+        let header = "// table\nstatic const float t[4] = { 0.5f, /* x */ 1.0f,\n 0x0, 2e-1 };\n";
+        let layout = parse_layout("", "t.h", G2Model::HeightCorrelated).unwrap();
+        assert_eq!(layout.file, LutFile::Header);
+        assert_eq!(
+            decode(header.as_bytes(), &layout).unwrap().values,
+            [0.5, 1.0, 0.0, 0.2]
+        );
+        let layout = parse_layout("encoding=unorm8", "t.csv", G2Model::Separable).unwrap();
+        let decoded = decode(b"# c\n0,255\n51 102\n", &layout).unwrap();
+        assert_eq!(decoded.values, [0.0, 1.0, 0.2, 0.4]);
+        assert_eq!(decoded.shape, Some((2, 2)));
+    }
+
+    #[test]
+    fn layouts_refuse_what_they_cannot_mean() {
+        let g2 = G2Model::HeightCorrelated;
+        for bad in [
+            "rows=r",
+            "rows=mu,rows=mu",
+            "colour=red",
+            "map=r3",
+            "encoding=text",
+            "channel=2",
+            "clamp=1",
+        ] {
+            assert!(parse_layout(bad, "t.bin", g2).is_err(), "{bad}");
+        }
+        let layout = parse_layout(
+            "rows=r,cols=mu,grid=centers,map=sqrt,value=1-e,encoding=unorm16,g2=separable,channels=2,channel=1",
+            "t.bin",
+            g2,
+        )
+        .unwrap();
+        assert_eq!(layout.rows, LutAxis::R);
+        assert_eq!(layout.map, RoughnessMap::Root);
+        assert_eq!(layout.g2, G2Model::Separable);
+        assert_eq!((layout.channels, layout.channel), (2, 1));
+    }
+}
