@@ -509,7 +509,8 @@ fn check_integrals(sampling: Sampling, panels: &[ScenePanel]) -> Option<Problem>
 }
 
 /// The columns `x_column` and `y_column` of the CSV text `bytes` (with a header), as finite
-/// numbers. Messages quote no cell, and of the header only an [`excerpt`].
+/// numbers; a column named twice is refused, not picked. Messages quote no cell, and of the header
+/// only an [`excerpt`].
 fn read_columns(
     bytes: &[u8],
     x_column: &str,
@@ -518,17 +519,22 @@ fn read_columns(
     let mut csv = csv::Reader::from_reader(bytes);
     let headers = csv.headers().map_err(|e| e.to_string())?.clone();
     let column = |name: &str| {
-        headers
-            .iter()
-            .position(|h| h.trim() == name)
-            .ok_or_else(|| {
+        let mut found = headers.iter().enumerate().filter(|(_, h)| h.trim() == name);
+        match (found.next(), found.next()) {
+            (Some((i, _)), None) => Ok(i),
+            (Some(_), Some(_)) => Err(format!(
+                "column \"{}\" appears more than once in the header (expected each name once)",
+                excerpt(name)
+            )),
+            (None, _) => {
                 let names: Vec<&str> = headers.iter().map(str::trim).collect();
-                format!(
+                Err(format!(
                     "no column \"{}\" (expected one of: {})",
                     excerpt(name),
                     excerpt(&names.join(", "))
-                )
-            })
+                ))
+            }
+        }
     };
     let (xi, yi) = (column(x_column)?, column(y_column)?);
     let (mut x, mut y) = (Vec::new(), Vec::new());

@@ -479,6 +479,7 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
         "data-csv-parent-path",
         "the file system decides: where the path leads",
     ),
+    ("data-csv-repeated-column", "the file's contents decide"),
     ("data-csv-unknown-column", "the file's contents decide"),
     (
         "data-gulbrandsen-grid-cap",
