@@ -1150,8 +1150,9 @@ pub fn scalar(node: &Node, kind: ParamKind, path: &str) -> Result<ParamValue, Pr
 /// into its description ([`crate::pipeline::resolve::curve`] makes it a [`Curve`]).
 pub fn parse(node: &Node, path: &str) -> Result<CurveSpec, Vec<Problem>> {
     if is_published(node) {
-        return match published(node, path, &[])?.as_slice() {
-            [one] => Ok(CurveSpec::Published(one.preset)),
+        let choices = published(node, path, quantity::KEYS)?;
+        return match choices.as_slice() {
+            [one] => published_showing(node, path, one.preset),
             _ => Err(vec![Problem::new(
                 path,
                 format!(
@@ -1215,6 +1216,31 @@ pub struct PublishedChoice {
     /// `<source title>`, then the material when the object lists several, then the channel when
     /// given: `Bagher 2012 SGD, red`.
     pub label: String,
+}
+
+/// The published fit `preset` of the object `node` at `path` showing the quantity its
+/// [`quantity::KEYS`] name (checked against the source's family), or D without them.
+pub fn published_showing(
+    node: &Node,
+    path: &str,
+    preset: Preset,
+) -> Result<CurveSpec, Vec<Problem>> {
+    let ndf = CurveSpec::Published(preset);
+    let Value::Object(members) = &node.value else {
+        return Ok(ndf);
+    };
+    match quantity::parse(members, path, albedo_fresnel)? {
+        None => Ok(ndf),
+        Some(quantity) => {
+            quantity
+                .check_family(preset.source().family(), path)
+                .map_err(|p| vec![p])?;
+            Ok(CurveSpec::Quantity {
+                quantity,
+                ndf: Box::new(ndf),
+            })
+        }
+    }
 }
 
 /// Checks the published-fit object `node` at `path` (keys [`PUBLISHED_KEYS`] plus `extra_keys`, which

@@ -102,8 +102,8 @@ fn domain(model: Model, name: &str) -> Option<&'static Param> {
 }
 
 /// A published fit of `source`: its name, one of its materials (or, where `lists`, a non-empty list
-/// of them), and `channel` exactly when the source fits per channel; `extras` are the keys the
-/// context adds.
+/// of them), `channel` exactly when the source fits per channel, and the keys of a quantity;
+/// `extras` are the keys the context adds.
 fn published(source: Source, extras: &[&str], lists: bool) -> Value {
     let name_or_list = |names: Vec<&str>, description: &str| {
         if lists {
@@ -119,6 +119,7 @@ fn published(source: Source, extras: &[&str], lists: bool) -> Value {
     let keys: Vec<&str> = PUBLISHED_KEYS
         .iter()
         .filter(|&&k| k != "channel" || source.per_channel())
+        .chain(quantity::KEYS)
         .chain(extras)
         .copied()
         .collect();
@@ -127,7 +128,7 @@ fn published(source: Source, extras: &[&str], lists: bool) -> Value {
         .copied()
         .filter(|k| PUBLISHED_KEYS.contains(k))
         .collect();
-    object(&keys, &required, |key| match key {
+    let mut schema = object(&keys, &required, |key| match key {
         PUBLISHED_KEY => json!({ "const": source.name(), "description": source.title() }),
         "material" => name_or_list(
             source.materials().collect(),
@@ -137,8 +138,11 @@ fn published(source: Source, extras: &[&str], lists: bool) -> Value {
             Channel::ALL.iter().map(|c| c.name()).collect(),
             "the colour channel: the source fits each separately",
         ),
+        key if quantity::KEYS.contains(&key) => quantity_key(key),
         extra => extra_key(extra),
-    })
+    });
+    schema["dependentSchemas"] = quantity_dependencies();
+    schema
 }
 
 /// The `$defs` name of a data entry of `kind` (`data_spectrum`).

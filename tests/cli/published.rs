@@ -171,3 +171,38 @@ fn a_bad_material_in_a_scene_names_the_file_and_path() {
         "{stderr}"
     );
 }
+
+/// A published fit shows a quantity as its resolved family curve does: `"quantity": "g1"` on Low
+/// 2012's ABC fit of gold-metallic-paint is G1 of that ABC lobe (the published parameters typed out),
+/// in `eval` and in a scene; a quantity the family cannot show is refused at the fit's path.
+#[test]
+fn a_published_fit_shows_quantities_as_its_family_curve_does() {
+    let published =
+        r#"{"published":"low2012-abc","material":"gold-metallic-paint","quantity":"g1"}"#;
+    let typed = r#"{"ndf":"abc","alpha_abc1":53.738525,"alpha_abc2":1.51173,"quantity":"g1"}"#;
+    let theta = "0,0.5,1,1.4,1.5707963267948966";
+    let a = ndfplot(&["eval", "--curve", published, "--theta", theta]);
+    let b = ndfplot(&["eval", "--curve", typed, "--theta", theta]);
+    assert_eq!(a.status.code(), Some(0), "{}", text(&a.stderr));
+    assert_eq!(text(&a.stdout), text(&b.stdout));
+
+    let dir = scratch("published-quantity");
+    let spec = dir.join("published-g1.json");
+    std::fs::write(
+        &spec,
+        format!(r#"{{"id":"published-g1","sampling":{{"uniform":5}},"panels":[{{"curves":[{published}]}}]}}"#),
+    )
+    .unwrap();
+    render_into(&[&spec], &dir, "csv");
+    let rows = csv_records(dir.join("published-g1.csv").to_str().unwrap());
+    assert_eq!(rows.len(), 5);
+
+    let furnace = r#"{"published":"low2012-abc","material":"gold-metallic-paint","quantity":"furnace","g1":"no-such"}"#;
+    let out = ndfplot(&["eval", "--curve", furnace, "--theta", "0"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).contains("--curve: g1:"),
+        "{}",
+        text(&out.stderr)
+    );
+}

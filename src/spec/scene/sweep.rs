@@ -11,9 +11,7 @@ use super::{Pending, SceneCurve, Spec, default_colour, read_curve_entry, read_st
 use crate::model::fit::By;
 use crate::model::grid;
 use crate::problem::{join_index, join_key};
-use crate::spec::curve::{
-    self, CurveSpec, Fitted, Label, Model, ParamKind, ParamSpec, ParamValue, symbol,
-};
+use crate::spec::curve::{self, Fitted, Label, Model, ParamKind, ParamSpec, ParamValue, symbol};
 use crate::spec::json::{Node, Value};
 
 /// Most curves one scene may expand to (docs/contracts.md).
@@ -383,7 +381,12 @@ pub fn published_entry(
     path: &str,
     out: &mut Vec<SceneCurve<Spec>>,
 ) {
-    let Some(choices) = reader.accept(curve::published(node, path, super::CURVE_EXTRA_KEYS)) else {
+    let extra: Vec<&str> = super::CURVE_EXTRA_KEYS
+        .iter()
+        .chain(crate::spec::quantity::KEYS)
+        .copied()
+        .collect();
+    let Some(choices) = reader.accept(curve::published(node, path, &extra)) else {
         return;
     };
     let Some((entry, template)) = super::entry_with_label(reader, node, path) else {
@@ -407,8 +410,11 @@ pub fn published_entry(
                 .replace("{channel}", preset.channel().map_or("", |c| c.name())),
             None => choice.label,
         };
+        let Some(curve) = reader.accept(curve::published_showing(node, path, preset)) else {
+            return;
+        };
         out.push(SceneCurve {
-            curve: CurveSpec::Published(preset),
+            curve,
             label: Label::Template {
                 template: text,
                 values: vec![],
