@@ -181,7 +181,7 @@ fn assert_complete(dir: &Path, reference: &Path) -> usize {
 #[test]
 fn a_render_killed_mid_run_leaves_only_complete_files_and_a_later_run_removes_old_temporaries() {
     let dir = scratch("robustness-kill");
-    let total = write_specs(&dir, 40);
+    let total = write_specs(&dir, 16);
     let specs = dir.join("specs");
     let reference = dir.join("reference");
     let start = Instant::now();
