@@ -11,7 +11,7 @@ const MAX_THREADS: usize = 64;
 
 fn main() -> ExitCode {
     let cli = ndfplot::cli::Cli::parse();
-    if let Err(message) = start_threads() {
+    if let Err(message) = watch_interrupts().and_then(|()| start_threads()) {
         let _ = writeln!(std::io::stderr(), "error: {message}");
         return ExitCode::from(2);
     }
@@ -23,6 +23,37 @@ fn main() -> ExitCode {
             ExitCode::from(error.exit_code())
         }
     }
+}
+
+/// Takes SIGINT, SIGTERM and SIGHUP on one watcher thread: they are blocked here, before any
+/// other thread starts (threads inherit the mask), and the watcher waits for them; on one, the
+/// temporaries being written are removed and the process exits with 128 + the signal's number,
+/// as a shell reports a process the signal ended.
+fn watch_interrupts() -> Result<(), String> {
+    // SAFETY: `set` is initialized by sigemptyset before use; pthread_sigmask and sigwait only
+    // read it; no handler runs in signal context (the signals are waited for, not caught).
+    let set = unsafe {
+        let mut set: libc::sigset_t = std::mem::zeroed();
+        libc::sigemptyset(&mut set);
+        for signal in [libc::SIGINT, libc::SIGTERM, libc::SIGHUP] {
+            libc::sigaddset(&mut set, signal);
+        }
+        if libc::pthread_sigmask(libc::SIG_BLOCK, &set, std::ptr::null_mut()) != 0 {
+            return Err("cannot block the interrupt signals".to_owned());
+        }
+        set
+    };
+    std::thread::Builder::new()
+        .name("interrupts".to_owned())
+        .spawn(move || {
+            let mut signal: libc::c_int = 0;
+            // SAFETY: `set` is a valid signal set and `signal` a valid place to write.
+            if unsafe { libc::sigwait(&set, &mut signal) } == 0 {
+                ndfplot::output::write::exit_removing_temporaries(128 + signal);
+            }
+        })
+        .map(drop)
+        .map_err(|e| format!("cannot start the interrupt watcher: {e}"))
 }
 
 /// Starts rayon's global pool with the threads `RAYON_NUM_THREADS` asks for (the core count when

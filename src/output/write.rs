@@ -29,6 +29,69 @@ fn prefix(name: &str) -> String {
 
 /// The end of every temporary's name.
 const SUFFIX: &str = ".tmp";
+/// Random characters between a temporary's prefix and its suffix: a file is taken as one of
+/// ours only when exactly this many letters and digits stand there.
+const UNIQUE_CHARS: usize = 6;
+
+/// Whether `file_name` is a temporary of the output `name`: `.<name>.` then [`UNIQUE_CHARS`]
+/// letters or digits, then [`SUFFIX`] — not merely a name that starts and ends alike (a user's
+/// `.fig.csv.backup.tmp` is left alone).
+fn is_temporary_of(file_name: &str, name: &str) -> bool {
+    file_name
+        .strip_prefix(&prefix(name))
+        .and_then(|rest| rest.strip_suffix(SUFFIX))
+        .is_some_and(|unique| {
+            unique.len() == UNIQUE_CHARS && unique.chars().all(|c| c.is_ascii_alphanumeric())
+        })
+}
+
+/// The temporaries being written now, removed by [`exit_removing_temporaries`] when the
+/// process is interrupted.
+static LIVE: std::sync::Mutex<Vec<std::path::PathBuf>> = std::sync::Mutex::new(Vec::new());
+
+/// Ends the process with exit code `code` after removing every temporary it is writing: what an
+/// interrupted run (SIGINT, SIGTERM, SIGHUP) does, so it leaves no half-written file behind.
+/// Renamed files are complete and stay. The list stays locked until the exit, so no writer
+/// registers a temporary after the clean-up.
+pub fn exit_removing_temporaries(code: i32) -> ! {
+    let live = LIVE
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    for path in live.iter() {
+        let _ = fs::remove_file(path);
+    }
+    std::process::exit(code)
+}
+
+/// A temporary's entry in [`LIVE`] for as long as the guard lives.
+struct Live(std::path::PathBuf);
+
+impl Live {
+    /// Creates a temporary with `create` and enters it in [`LIVE`], the list locked throughout:
+    /// an interrupt's clean-up never runs between the two and misses the file.
+    fn create(
+        create: impl FnOnce() -> std::io::Result<tempfile::NamedTempFile>,
+    ) -> std::io::Result<(tempfile::NamedTempFile, Live)> {
+        let mut live = LIVE
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        let file = create()?;
+        live.push(file.path().to_path_buf());
+        let entry = Live(file.path().to_path_buf());
+        Ok((file, entry))
+    }
+}
+
+impl Drop for Live {
+    fn drop(&mut self) {
+        let mut live = LIVE
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        if let Some(i) = live.iter().position(|p| *p == self.0) {
+            live.swap_remove(i);
+        }
+    }
+}
 
 /// Writes `bytes` to `dir/name` atomically (exclusive temporary with a unique name, rename).
 /// `name` must be a plain file name (the caller validated the scene id it comes from). The file
@@ -37,12 +100,15 @@ fn write_atomic(flag: &str, dir: &Path, name: &str, bytes: &[u8]) -> Result<()> 
     debug_assert!(!name.contains(['/', '\\']) && !name.starts_with('.'));
     let target = joined(dir, name);
     let shown = target.display().to_string();
-    let mut file = tempfile::Builder::new()
-        .prefix(&prefix(name))
-        .suffix(SUFFIX)
-        .permissions(fs::Permissions::from_mode(0o666))
-        .tempfile_in(dir)
-        .map_err(|e| Error::io(&shown, e))?;
+    let (mut file, _live) = Live::create(|| {
+        tempfile::Builder::new()
+            .prefix(&prefix(name))
+            .suffix(SUFFIX)
+            .rand_bytes(UNIQUE_CHARS)
+            .permissions(fs::Permissions::from_mode(0o666))
+            .tempfile_in(dir)
+    })
+    .map_err(|e| Error::io(&shown, e))?;
     file.write_all(bytes).map_err(|e| Error::io(&shown, e))?;
     // Checked again just before the rename: the target may have changed since the first check.
     // On failure the temporary is removed when dropped.
@@ -102,8 +168,7 @@ fn remove_abandoned(dir: &Path, names: &[&str], age: Duration) -> Result<()> {
         let Some(file_name) = file_name.to_str() else {
             continue;
         };
-        let ours =
-            file_name.ends_with(SUFFIX) && names.iter().any(|n| file_name.starts_with(&prefix(n)));
+        let ours = names.iter().any(|n| is_temporary_of(file_name, n));
         let old = || {
             entry.metadata().is_ok_and(|m| {
                 m.is_file()
@@ -206,5 +271,20 @@ fn ensure_dir(flag: &str, dir: &Path) -> Result<()> {
             taken(crate::spec::datafile::file_kind(meta.file_type()))
         }
         _ => Err(Error::io(dir.display().to_string(), error)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_our_temporary_names_are_taken_for_temporaries() {
+        assert!(is_temporary_of(".fig.csv.a1B2c3.tmp", "fig.csv"));
+        assert!(!is_temporary_of(".fig.csv.old-backup.tmp", "fig.csv"));
+        assert!(!is_temporary_of(".fig.csv.bak.tmp", "fig.csv"));
+        assert!(!is_temporary_of(".fig.csv.my-file.tmp", "fig.csv"));
+        assert!(!is_temporary_of(".fig.csv.a1B2c3.tmp", "fig.svg"));
+        assert!(!is_temporary_of(".fig.csv.a1B2c3", "fig.csv"));
     }
 }

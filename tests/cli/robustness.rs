@@ -178,16 +178,85 @@ fn assert_complete(dir: &Path, reference: &Path) -> usize {
     visible.len()
 }
 
-#[test]
-fn a_render_killed_mid_run_leaves_only_complete_files_and_a_later_run_removes_old_temporaries() {
-    let dir = scratch("robustness-kill");
-    let total = write_specs(&dir, 16);
-    let specs = dir.join("specs");
-    let reference = dir.join("reference");
+/// Sixteen specs in `dir/specs` rendered whole into `dir/reference`: what killed or interrupted
+/// runs are compared with.
+struct Rendered {
+    /// Files a whole run writes.
+    total: usize,
+    specs: PathBuf,
+    reference: PathBuf,
+    /// How long the whole run took.
+    full: Duration,
+}
+
+fn rendered_whole(dir: &Path) -> Rendered {
+    let total = write_specs(dir, 16);
+    let (specs, reference) = (dir.join("specs"), dir.join("reference"));
     let start = Instant::now();
     assert!(render_into(&specs, &reference).status().unwrap().success());
     let full = start.elapsed();
     assert_eq!(files_in(&reference).len(), total);
+    Rendered {
+        total,
+        specs,
+        reference,
+        full,
+    }
+}
+
+/// SIGINT and SIGTERM at any moment of a render leave no temporary behind: the run removes the
+/// temporaries it is writing and exits 128 + the signal (130, 143); the files it had renamed are
+/// complete. The moment is bisected between "nothing written" and "all written" as above.
+#[test]
+fn an_interrupted_render_removes_its_temporaries_and_leaves_only_complete_files() {
+    let dir = scratch("robustness-interrupt");
+    let Rendered {
+        total,
+        specs,
+        reference,
+        full,
+    } = rendered_whole(&dir);
+    let (mut early, mut late) = (Duration::ZERO, full + full / 2);
+    for attempt in 0..12 {
+        let signal = if attempt % 2 == 0 {
+            libc::SIGINT
+        } else {
+            libc::SIGTERM
+        };
+        let out = dir.join(format!("attempt-{attempt}"));
+        let at = (early + late) / 2;
+        let mut child = render_into(&specs, &out).spawn().unwrap();
+        std::thread::sleep(at);
+        let pid = libc::pid_t::try_from(child.id()).unwrap();
+        // SAFETY: signals the child this test started and has not yet waited for.
+        assert_eq!(unsafe { libc::kill(pid, signal) }, 0);
+        let status = child.wait().unwrap();
+        assert!(
+            matches!(status.code(), Some(0)) || status.code() == Some(128 + signal),
+            "attempt {attempt}: {status:?}"
+        );
+        let hidden: Vec<String> = files_in(&out)
+            .into_iter()
+            .filter(|f| f.starts_with('.'))
+            .collect();
+        assert!(hidden.is_empty(), "attempt {attempt} left {hidden:?}");
+        match assert_complete(&out, &reference) {
+            0 => early = at,
+            n if n == total => late = at,
+            _ => {}
+        }
+    }
+}
+
+#[test]
+fn a_render_killed_mid_run_leaves_only_complete_files_and_a_later_run_removes_old_temporaries() {
+    let dir = scratch("robustness-kill");
+    let Rendered {
+        total,
+        specs,
+        reference,
+        full,
+    } = rendered_whole(&dir);
 
     // Bisect the kill time between "nothing written yet" and "everything written" until a kill
     // lands while the files are being written; every attempt checks what the kill left.
@@ -232,6 +301,8 @@ fn a_render_killed_mid_run_leaves_only_complete_files_and_a_later_run_removes_ol
     plant(".scene-00.csv.abc123.tmp", Duration::from_secs(7200));
     plant(".scene-01.csv.def456.tmp", Duration::ZERO);
     plant(".unrelated.csv.ghi789.tmp", Duration::from_secs(7200));
+    // A user's file that merely starts and ends like a temporary of an output is not one.
+    plant(".scene-02.csv.my-backup.tmp", Duration::from_secs(7200));
     let rerun = render_into(&specs, &out)
         .stderr(Stdio::piped())
         .output()
@@ -255,6 +326,10 @@ fn a_render_killed_mid_run_leaves_only_complete_files_and_a_later_run_removes_ol
     );
     assert!(
         hidden.contains(&".unrelated.csv.ghi789.tmp".to_string()),
+        "{hidden:?}"
+    );
+    assert!(
+        hidden.contains(&".scene-02.csv.my-backup.tmp".to_string()),
         "{hidden:?}"
     );
     assert!(hidden.iter().all(|f| f.ends_with(".tmp")), "{hidden:?}");
