@@ -17,6 +17,7 @@ use crate::problem::{Problem, Problems, excerpt, join_key};
 use crate::spec::curve::{self, CurveSpec, Fitted, Label, Model, ParamValue, Part};
 use crate::spec::look::PanelKind;
 use crate::spec::scene::data::{CsvFile, DataSpec, MAX_DATA_POINTS};
+use crate::spec::scene::interactive::Slider;
 use crate::spec::scene::{
     DEFAULT_SAMPLES, Invalid, MAX_INTEGRALS, MAX_POINTS_PER_SCENE, Pending, Sampling, Scene,
     SceneCurve, SceneData, ScenePanel, Spec,
@@ -65,12 +66,16 @@ pub fn scenes(loaded: Vec<Loaded>) -> Result<Vec<Scene>> {
 /// Resolves one valid spec; every problem is returned with its JSON path.
 pub fn scene(spec: Scene<Spec>) -> std::result::Result<Scene, Vec<Problem>> {
     let mut problems = Vec::new();
+    let sliders = spec
+        .interactive
+        .as_ref()
+        .map_or(&[][..], |i| &i.sliders[..]);
     let panels: Vec<ScenePanel> = spec
         .panels
         .into_iter()
         .map(|panel| ScenePanel {
             axes: panel.axes,
-            curves: resolve_curves(&panel.curves, &mut problems),
+            curves: at_slider_starts(resolve_curves(&panel.curves, &mut problems), sliders),
             data: panel
                 .data
                 .into_iter()
@@ -229,6 +234,21 @@ fn resolve_curves(specs: &[SceneCurve<Spec>], problems: &mut Vec<Problem>) -> Ve
         .iter()
         .filter_map(|c| scene_curve(c).map_err(|p| push_once(problems, p)).ok())
         .collect()
+}
+
+/// `curves` with each slider's `{=name}` in their labels written as the slider's start value:
+/// what a static output shows of a label the interactive page updates as the slider moves.
+fn at_slider_starts(mut curves: Vec<SceneCurve>, sliders: &[Slider]) -> Vec<SceneCurve> {
+    for curve in &mut curves {
+        for slider in sliders {
+            let placeholder = format!("{{={}}}", slider.name);
+            if curve.label.contains(&placeholder) {
+                let start = crate::spec::numbers::significant(slider.start, TEMPLATE_DIGITS);
+                curve.label = curve.label.replace(&placeholder, &start);
+            }
+        }
+    }
+    curves
 }
 
 /// A fit's outcome: the fitted value and the legend text of its target.

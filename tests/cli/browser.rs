@@ -317,3 +317,30 @@ fn bad_interactive_declarations_exit_2_naming_the_path() {
         assert!(!out_dir.exists(), "a bad spec wrote files");
     }
 }
+
+/// A label's `{=name}` is the slider's value: the page keeps the placeholder and updates it as the
+/// slider moves; the static outputs write the slider's start value in its place.
+#[test]
+fn a_slider_placeholder_shows_the_start_value_in_static_outputs() {
+    let dir = crate::common::scratch("browser-slider-label");
+    let spec = dir.join("slid.json");
+    std::fs::write(
+        &spec,
+        r#"{"id": "slid", "interactive": {"params": [{"name": "a", "range": [0.1, 1.0], "start": 0.3}]},
+            "panels": [{"curves": [{"ndf": "beckmann", "alpha_b": {"slider": "a"}, "label": "slid to {=a}"},
+                                   {"ndf": "ggx", "alpha_tr": 0.5}]}]}"#,
+    )
+    .unwrap();
+    crate::common::render_into(&[&spec], &dir, "svg,html");
+    let svg = std::fs::read_to_string(dir.join("slid.svg")).unwrap();
+    assert!(
+        svg.contains(">slid to 0.3<"),
+        "the legend shows the start value"
+    );
+    assert!(!svg.contains("{=a}"));
+    let page = std::fs::read_to_string(dir.join("slid.html")).unwrap();
+    assert!(
+        page.contains("slid to {=a}"),
+        "the page keeps the placeholder"
+    );
+}
