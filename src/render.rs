@@ -97,9 +97,9 @@ pub fn check(
     if ok {
         Ok(stats.warnings)
     } else {
+        let shown = crate::problem::one_line(&dir.display().to_string()).into_owned();
         Err(Error::CheckFailed(format!(
-            "error: render --check: the figures differ from {}",
-            crate::problem::one_line(&dir.display().to_string())
+            "error: render --check: the figures differ from {shown}; if the change is intended, render the same specs with -o {shown} (instead of --check {shown}) and commit the result"
         )))
     }
 }

@@ -402,9 +402,14 @@ pub fn compare(
             "render --check: all {total} CSVs match {shown} within {tolerance:e} relative, and their stored SVGs the drawing"
         )
     } else {
+        let differ = values_differ + drawings_differ;
+        let figures = if differ == 1 {
+            "1 figure differs".to_owned()
+        } else {
+            format!("{differ} figures differ")
+        };
         format!(
-            "render --check: {} figures differ from {shown} ({total} rendered): {values_differ} in their values beyond {tolerance:e} relative, {drawings_differ} in their drawing only",
-            values_differ + drawings_differ
+            "render --check: {figures} from {shown} ({total} rendered): {values_differ} in their values beyond {tolerance:e} relative, {drawings_differ} in their drawing only"
         )
     });
     Ok((lines.join("\n") + "\n", ok))

@@ -681,7 +681,7 @@ fn render_check_catches_a_change_of_the_drawing_alone() {
         );
         assert!(
             report.starts_with("checked.svg: the drawing differs though every value matches")
-                && report.contains("1 figures differ")
+                && report.contains("1 figure differs")
                 && report.contains("0 in their values")
                 && report.contains("1 in their drawing only"),
             "{to}: {report}"
