@@ -178,8 +178,8 @@ pub struct RenderArgs {
     #[arg(long, value_name = "PX", value_parser = float_in(4.0, 200.0))]
     pub font_px: Option<f64>,
     /// Write nothing: re-render the CSVs and SVGs and compare them with those in DIR (exit 1 on a
-    /// difference in values or drawing).
-    #[arg(long, value_name = "DIR")]
+    /// difference in values or drawing); -o is refused with it (exit 2), as it writes.
+    #[arg(long, value_name = "DIR", conflicts_with = "out")]
     pub check: Option<PathBuf>,
     /// Largest accepted relative difference of a CSV value under --check.
     #[arg(long, value_name = "X", requires = "check", default_value_t = crate::output::stored::DEFAULT_TOLERANCE, value_parser = float_in(0.0, 1.0))]

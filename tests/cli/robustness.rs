@@ -1449,3 +1449,19 @@ fn a_line_that_is_not_utf8_fails_alone_in_a_json_lines_batch() {
         text(&out.stderr)
     );
 }
+
+/// `--check` writes nothing, so an output named with it is refused rather than ignored
+/// (`render - -o - --check DIR` printed nothing and compared).
+#[test]
+fn render_check_refuses_an_output_it_would_ignore() {
+    for out in ["-", "elsewhere"] {
+        let result = ndfplot(&["render", "tr-vs-phong", "-o", out, "--check", "plots"]);
+        assert_eq!(result.status.code(), Some(2), "-o {out}");
+        assert!(
+            text(&result.stderr).contains("cannot be used with '--check <DIR>'"),
+            "{}",
+            text(&result.stderr)
+        );
+        assert!(result.stdout.is_empty());
+    }
+}
