@@ -1,7 +1,7 @@
 // Math text of an interactive page, set as the drawn figures set it (src/output/plot/mathtext.rs):
 // `_` and `^` with one character or a {…} group make a sub- or superscript, groups nest, a
 // backslash escapes; a letter standing alone within its run (not part of a word, nor the end of an
-// elided word such as notebook's) is a variable, set in italics, except a lone a, A or I before a
+// elided word such as notebook's, nor a version such as pbrt-v4) is a variable, set in italics, except a lone a, A or I before a
 // word, a panel letter opening the label, and π, Σ and Π. ndfplotMathRuns(text) →
 // [{text, scale, rise, italic}].
 "use strict";
@@ -73,7 +73,8 @@ const ndfplotMathRuns = (function () {
       let piece = "";
       chars.forEach((c, i) => {
         const elided = i > 1 && (chars[i - 1] === "'" || chars[i - 1] === "\u2019") && letter(chars[i - 2]);
-        const alone = letter(c) && !letter(chars[i - 1]) && !letter(chars[i + 1]) && !elided;
+        const versioned = i > 1 && chars[i - 1] === "-" && letter(chars[i - 2]) && /[0-9]/.test(chars[i + 1] || "");
+        const alone = letter(c) && !letter(chars[i - 1]) && !letter(chars[i + 1]) && !elided && !versioned;
         const prose = (c === "a" || c === "A" || c === "I") && chars[i + 1] === " "
           && letter(chars[i + 2]) && letter(chars[i + 3]);
         const constant = c === "π" || c === "Σ" || c === "Π";

@@ -13,7 +13,7 @@ mod tests {
 
     /// Labels with every case of the slant rule: lone letters, words, subscripts, articles,
     /// elisions, constants and panel letters.
-    const LABELS: [&str; 12] = [
+    const LABELS: [&str; 14] = [
         "θ (radians)",
         "G_1(θ_o) (1 + Λ(θ_o))",
         "ln D(θ) and cos θ",
@@ -26,6 +26,8 @@ mod tests {
         "(b) D(θ) of (a)",
         "D_{fit}(θ) / D_{ABC}(θ)",
         "Schlick's F_0 at η = 1.5",
+        "pbrt-v4 α = √r",
+        "Student-t",
     ];
 
     #[test]

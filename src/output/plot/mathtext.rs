@@ -8,7 +8,7 @@
 //!
 //! Variables are italic, as TeX and matplotlib's mathtext set them: a letter (Latin or Greek) that
 //! stands alone — not part of a word of two or more letters, nor the end of an elided word
-//! (`notebook's`) — is drawn in the oblique face (`D(θ)`, `α_p`, `G_1`, `Λ`); words (`cos`, `ln`, `radians`, `ABC`, `tr`) and digits stay upright, and so
+//! (`notebook's`), nor a version hyphenated to a word (`pbrt-v4`) — is drawn in the oblique face (`D(θ)`, `α_p`, `G_1`, `Λ`); words (`cos`, `ln`, `radians`, `ABC`, `tr`) and digits stay upright, and so
 //! does a lone `a`, `A` or `I` followed by a word (an article or pronoun in prose), a panel letter
 //! opening a label (`(a)`), and π, Σ and Π (a constant and operators).
 //!
@@ -188,7 +188,17 @@ fn slant_variables(runs: &mut Vec<Run>) {
         for (i, &c) in chars.iter().enumerate() {
             // The s of "notebook's" ends a word: an apostrophe between letters joins them.
             let elided = i > 1 && matches!(chars[i - 1], '\'' | '’') && letter(i - 2);
-            let alone = c.is_alphabetic() && !(i > 0 && letter(i - 1)) && !letter(i + 1) && !elided;
+            // A letter and digits hyphenated to a word are a version's name: the v of "pbrt-v4"
+            // (the t of "Student-t" stays a variable).
+            let versioned = i > 1
+                && chars[i - 1] == '-'
+                && letter(i - 2)
+                && chars.get(i + 1).is_some_and(char::is_ascii_digit);
+            let alone = c.is_alphabetic()
+                && !(i > 0 && letter(i - 1))
+                && !letter(i + 1)
+                && !elided
+                && !versioned;
             // "a reference", "A sweep", "I": an article or pronoun before a word stays upright.
             let prose = matches!(c, 'a' | 'A' | 'I')
                 && chars.get(i + 1) == Some(&' ')
@@ -468,6 +478,8 @@ mod tests {
         assert_eq!(slanted("ABC 2048"), "");
         assert_eq!(slanted("π/6 and Σ x"), "x");
         assert_eq!(slanted("the notebook's α and θ'"), "αθ");
+        assert_eq!(slanted("pbrt-v4 α = √r"), "αr");
+        assert_eq!(slanted("Student-t"), "t");
         assert_eq!(
             slanted("(b) D(θ) of (a)"),
             "Dθa",
