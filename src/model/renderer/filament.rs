@@ -20,7 +20,7 @@
 //!   F = f0 + (f90 − f0) (1 − VoH)⁵ with x⁵ = x² x² x (`pow5`). For a grey f0 the dot product sums
 //!   three channels: f90 = saturate(49.5 f0), 1 for every f0 ≥ 0.0202.
 
-use super::precision::{Real, cos_sin};
+use super::precision::{Real, cos_sin, floored_square};
 use super::{Function, Lobe, Recipe, Refusal, Width};
 use half::f16;
 use std::marker::PhantomData;
@@ -107,16 +107,7 @@ impl<T: Target> Recipe for Filament<T> {
     const ROUGHNESS_MAP: &'static str = "α = r²";
 
     fn alpha(width: Width) -> Result<f64, Refusal> {
-        let r_min = T::of(T::MIN_PERCEPTUAL_ROUGHNESS);
-        let one = T::of(1.0);
-        let alpha = match width {
-            Width::Alpha(alpha) => T::of(alpha).clamp(r_min * r_min, one),
-            Width::Roughness(r) => {
-                let r = T::of(r).clamp(r_min, one);
-                r * r
-            }
-        };
-        Ok(alpha.widen())
+        Ok(floored_square(width, T::of(T::MIN_PERCEPTUAL_ROUGHNESS)))
     }
 
     fn eval(function: Function, alpha: f64, f0: f64, theta_o: f64, theta_i: f64) -> f64 {

@@ -5,6 +5,7 @@
 //! rounds back; for +, −, ×, ÷ and √ that double rounding is exact (f32's 24 bits are at least
 //! 2 × 11 + 2, Figueroa 1995), so every operation is correctly rounded to half precision.
 
+use super::Width;
 use half::f16;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -36,6 +37,21 @@ pub(super) trait Real:
     fn clamp(self, lo: Self, hi: Self) -> Self {
         self.max(lo).min(hi)
     }
+}
+
+/// α as an engine that maps α = r² forms it in `T`: the roughness r clamped to [`r_min`, 1] and
+/// squared, or an α given directly clamped to [`r_min`², 1] — the floors of Filament, Unreal and
+/// three.js.
+pub(super) fn floored_square<T: Real>(width: Width, r_min: T) -> f64 {
+    let one = T::of(1.0);
+    let alpha = match width {
+        Width::Alpha(alpha) => T::of(alpha).clamp(r_min * r_min, one),
+        Width::Roughness(r) => {
+            let r = T::of(r).clamp(r_min, one);
+            r * r
+        }
+    };
+    alpha.widen()
 }
 
 impl Real for f32 {

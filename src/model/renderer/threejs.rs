@@ -12,7 +12,7 @@
 //!   w = exp2((−5.55473 VoH − 6.98316) VoH), F = f0 (1 − w) + f90 w with f90 = 1 (the default
 //!   `specularIntensity`). It runs up to 6.9 % above the (1 − VoH)⁵ form at F₀ = 0.04, VoH = 0.633.
 
-use super::precision::cos_sin;
+use super::precision::{cos_sin, floored_square};
 use super::{Function, Lobe, Recipe, Refusal, Width};
 
 /// three.js.
@@ -59,14 +59,7 @@ impl Recipe for Threejs {
     const ROUGHNESS_MAP: &'static str = "α = r²";
 
     fn alpha(width: Width) -> Result<f64, Refusal> {
-        let alpha = match width {
-            Width::Alpha(alpha) => (alpha as f32).clamp(MIN_ROUGHNESS * MIN_ROUGHNESS, 1.0),
-            Width::Roughness(r) => {
-                let r = (r as f32).clamp(MIN_ROUGHNESS, 1.0);
-                r * r
-            }
-        };
-        Ok(f64::from(alpha))
+        Ok(floored_square(width, MIN_ROUGHNESS))
     }
 
     fn eval(function: Function, alpha: f64, f0: f64, theta_o: f64, theta_i: f64) -> f64 {

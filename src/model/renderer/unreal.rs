@@ -13,7 +13,7 @@
 //! - F (`F_Schlick(SpecularColor, VoH)`): Fc = (1 − VoH)⁵ as x² x² x (`Pow5`), F = saturate(50 F₀.g) Fc + (1 − Fc) F₀:
 //!   reflectances below 2 % are taken as pre-shadowed, so their grazing value drops to 50 F₀.
 
-use super::precision::cos_sin;
+use super::precision::{cos_sin, floored_square};
 use super::{Function, Lobe, Recipe, Refusal, Width};
 
 /// Unreal Engine.
@@ -56,14 +56,7 @@ impl Recipe for Unreal {
     const ROUGHNESS_MAP: &'static str = "α = r²";
 
     fn alpha(width: Width) -> Result<f64, Refusal> {
-        let alpha = match width {
-            Width::Alpha(alpha) => (alpha as f32).clamp(MIN_ROUGHNESS * MIN_ROUGHNESS, 1.0),
-            Width::Roughness(r) => {
-                let r = (r as f32).clamp(MIN_ROUGHNESS, 1.0);
-                r * r
-            }
-        };
-        Ok(f64::from(alpha))
+        Ok(floored_square(width, MIN_ROUGHNESS))
     }
 
     fn eval(function: Function, alpha: f64, f0: f64, theta_o: f64, theta_i: f64) -> f64 {
