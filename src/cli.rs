@@ -336,9 +336,12 @@ An NDF curve may add \"quantity\" (theta is then the view angle theta_o):
     --pairs FILE|- compares every pair of a JSON Lines input ({\"a\": …, \"b\": …} or fit's\n\
     {\"target\": …, \"fit\": …} records) in parallel and writes them in input order: --format json one\n\
     object per line, --format csv a header and one row per pair, --metric one number per line, and\n\
-    by default a table of one row per pair (its source line, the five metrics, both sides). A line\n\
-    that cannot be read or compared is one error line naming it (stdin:<line> or <FILE>:<line>); the\n\
-    others are still written, and the exit code is 2.\n\n\
+    by default a table of one row per pair (its source line, the five metrics, both sides). JSON and\n\
+    CSV records start with line (the pair's input line) and end with status (ok or error) and error\n\
+    (why, on one line). A line that cannot be read or compared is such a row (an empty line with\n\
+    --metric) and one error line naming it (stdin:<line> or <FILE>:<line>); the others are still\n\
+    written, and the exit code is 2 (0 with --keep-going, which leaves the errors to the rows). A\n\
+    closing line on stderr says how many pairs were written and how long it took (-q: none).\n\n\
     Exit 1 when a --max-error bound is exceeded (or bounds an undefined max_log_ratio), 2 on bad\n\
     input (an NDF against a Fresnel curve, an unknown --metric name).\n\n\
     Examples:\n  \
@@ -404,6 +407,9 @@ pub struct CompareArgs {
     /// working directory). Repeatable.
     #[arg(long = "allow-read", value_name = "DIR")]
     pub allow_read: Vec<PathBuf>,
+    /// With --pairs: exit 0 even when some pairs could not be compared (their rows say status error).
+    #[arg(long = "keep-going", requires = "pairs")]
+    pub keep_going: bool,
 }
 
 /// Arguments of `ndfplot fit`.
@@ -416,10 +422,14 @@ pub struct CompareArgs {
     not fixed (Nelder-Mead in log coordinates within the family's domain, from several starts).\n\n\
     Output without --format: per target, the fitted curve as one line of canonical curve JSON on\n\
     stdout (feed it to eval) and residual=<x> (d0_rel | dmax_rel | l2_projected) on stderr.\n\
-    --format jsonl: per target {\"target\": <curve>, \"fit\": <curve>, \"residual\": <x>, \"metric\": <name>};\n\
-    --format csv: columns target,fit,residual,metric. Targets are fitted in parallel and written in\n\
-    input order. A target that cannot be fitted is one error line naming it (stdin:<line> for\n\
-    --target -); the others are still written, and the exit code is 2.\n\n\
+    --format csv|jsonl: one record per target with the columns (JSON fields)\n  \
+    line,family,<each parameter of the family>,residual,metric,status,target,fit,error\n\
+    line: the target's line (--target -) or position among --target arguments; target and fit:\n\
+    canonical curve JSON; status: ok or error; error: why, on one line (empty when ok). Targets are\n\
+    fitted in parallel and written in input order. A target that cannot be fitted is a row with\n\
+    status error and an error line on stderr naming it (stdin:<line>); the others are still\n\
+    written, and the exit code is 2 (0 with --keep-going, which leaves the errors to the rows).\n\
+    A closing line on stderr says how many records were written and how long it took (-q: none).\n\n\
     Examples:\n  \
     ndfplot fit --target '{\"ndf\":\"trowbridge_reitz\",\"alpha_tr\":0.3}' --family abc --fix alpha_abc2=1.75\n  \
     ndfplot fit --target '{\"ndf\":\"trowbridge_reitz\",\"alpha_tr\":0.3}' --family abc --by l2\n  \
@@ -442,9 +452,12 @@ pub struct FitArgs {
     /// What to match: peak (D(0)), max (the maxima) or l2 (least l2_projected).
     #[arg(long, value_name = "METHOD", default_value = "peak")]
     pub by: String,
-    /// Write one record per target with its fit and residual: jsonl or csv (nothing on stderr).
+    /// Write one record per target, each parameter in its own column: jsonl or csv.
     #[arg(long, value_name = "FORMAT", value_parser = choice(&RecordFormat::NAMES, &RecordFormat::ALL))]
     pub format: Option<RecordFormat>,
+    /// Exit 0 even when some targets could not be fitted (their records say status error).
+    #[arg(long = "keep-going")]
+    pub keep_going: bool,
 }
 
 /// Arguments of `ndfplot check`.

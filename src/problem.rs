@@ -36,6 +36,30 @@ pub struct Problems {
 /// Most problems of one source printed; the rest are counted in a last line.
 pub const MAX_PRINTED_PROBLEMS: usize = 100;
 
+impl Problems {
+    /// The problems as the `error` field of a batch output's row: `<at>: <message>` joined with
+    /// `; ` on one line (the source is the row's own `line`); past [`MAX_PRINTED_PROBLEMS`], a count
+    /// of the rest.
+    pub fn field(&self) -> String {
+        let mut parts: Vec<String> = self
+            .list
+            .iter()
+            .take(MAX_PRINTED_PROBLEMS)
+            .map(|p| match p.at.is_empty() {
+                true => one_line(&p.message).into_owned(),
+                false => format!("{}: {}", one_line(&p.at), one_line(&p.message)),
+            })
+            .collect();
+        if self.list.len() > MAX_PRINTED_PROBLEMS {
+            parts.push(format!(
+                "{} more problems not shown",
+                self.list.len() - MAX_PRINTED_PROBLEMS
+            ));
+        }
+        parts.join("; ")
+    }
+}
+
 impl fmt::Display for Problems {
     /// One `error: <source>: <at>: <message>` line per problem, without a trailing newline; past
     /// [`MAX_PRINTED_PROBLEMS`], one line saying how many more there are.

@@ -14,6 +14,7 @@ use crate::output::report::ReportFormat;
 use crate::output::report::{Cell, Report};
 use crate::problem::{Problem, Problems, join_key, suggestion};
 use crate::spec::angle::AngleUnit;
+use crate::spec::input::Record;
 use rayon::prelude::*;
 
 /// A `--max-error <metric>=<x>` bound.
@@ -379,7 +380,7 @@ fn range_line(span: &Span) -> String {
 /// one row per pair: its source, the value of every metric (`undefined` for an undefined
 /// `max_log_ratio`), and the two sides' canonical JSON; columns aligned, the θ of each maximum and the
 /// peaks left to `--format json|csv`.
-pub fn batch_table(pairs: &[Compared], span: &Span) -> String {
+pub fn batch_table(pairs: &[&Compared], span: &Span) -> String {
     let header = std::iter::once("pair")
         .chain(Metric::ALL.iter().map(|m| m.name()))
         .chain(["a", "b"])
@@ -474,6 +475,20 @@ pub fn check_bounds(c: &Comparison, bounds: &[Bound], span: &Span) -> Result<()>
     }
 }
 
+/// How a `--pairs` run reports: where the metrics are taken, what is printed, the bounds that gate it
+/// and whether failed pairs still exit 0 (`--keep-going`).
+#[derive(Debug, Clone)]
+pub struct Batch {
+    /// Where the metrics are taken and θ's unit.
+    pub span: Span,
+    /// What is printed per pair.
+    pub output: Output,
+    /// The `--max-error` bounds.
+    pub bounds: Vec<Bound>,
+    /// Exit 0 although some pairs failed (their rows say so).
+    pub keep_going: bool,
+}
+
 /// One side of a pair, ready to compare: the key it was given under (`a`, `fit`, …), the operand and
 /// its canonical JSON.
 #[derive(Debug, Clone)]
@@ -486,13 +501,13 @@ pub struct ReadySide {
     pub json: String,
 }
 
-/// A pair as read: the name of its source and its two sides, or the problems that kept it from being
+/// A pair as read: its source, its line and its two sides, or the problems that kept it from being
 /// read.
-pub type LoadedPair = (String, std::result::Result<[ReadySide; 2], Problems>);
+pub type LoadedPair = Record<[ReadySide; 2]>;
 
 /// What a `--pairs` run writes: the text for stdout, the `compare: <source>: …` line of every exceeded
 /// bound (the run exits 1 when there are any), and the problems of the pairs that could not be
-/// compared (it exits 2 when there are any).
+/// compared (it exits 2 when there are any, unless `--keep-going`).
 #[derive(Debug)]
 pub struct BatchReport {
     /// Standard output.
@@ -501,54 +516,81 @@ pub struct BatchReport {
     pub exceeded: Vec<String>,
     /// One entry per failed pair, in input order.
     pub problems: Vec<Problems>,
+    /// How many pairs were compared.
+    pub compared: usize,
+}
+
+/// One pair of a `--pairs` run: its line, its sides' canonical JSON when they could be read, and its
+/// metrics or problems.
+struct Outcome {
+    line: usize,
+    sides: Option<[String; 2]>,
+    result: std::result::Result<Compared, Problems>,
 }
 
 /// Compares every readable pair over `span` (in parallel) and writes the results in input order in
 /// `output`; a pair whose sides are of different kinds, whose numerics fail or whose `--metric` is
-/// undefined becomes a problem of its source, and the others are still written.
+/// undefined becomes a problem of its source, and the others are still written. In JSON and CSV a
+/// failed pair is a row with status `error` ([`batch_report`]); with `--metric`, an empty line.
 pub fn run_pairs(
     pairs: Vec<LoadedPair>,
     span: &Span,
     output: Output,
     bounds: &[Bound],
 ) -> BatchReport {
-    let results: Vec<std::result::Result<Compared, Problems>> = pairs
+    let outcomes: Vec<Outcome> = pairs
         .into_par_iter()
-        .map(|(source, sides)| {
+        .map(|pair| {
+            let source = pair.source;
             let problem = |p: Problem| Problems {
                 source: source.clone(),
                 list: vec![p],
             };
-            let [a, b] = sides?;
-            let metrics = compare_sides(&a.operand, &b.operand, b.key, span.range)
-                .map_err(problem)?
-                .map_err(|e| problem(Problem::new("", format!("compare: {e}"))))?;
-            if let Output::Metric(field) = output {
-                one_number(field, &metrics, span).map_err(|m| problem(Problem::new("", m)))?;
+            let [a, b] = match pair.value {
+                Ok(sides) => sides,
+                Err(p) => {
+                    return Outcome {
+                        line: pair.line,
+                        sides: None,
+                        result: Err(p),
+                    };
+                }
+            };
+            let result = (|| {
+                let metrics = compare_sides(&a.operand, &b.operand, b.key, span.range)
+                    .map_err(problem)?
+                    .map_err(|e| problem(Problem::new("", format!("compare: {e}"))))?;
+                if let Output::Metric(field) = output {
+                    one_number(field, &metrics, span).map_err(|m| problem(Problem::new("", m)))?;
+                }
+                Ok(Compared {
+                    source: source.clone(),
+                    a: a.json.clone(),
+                    b: b.json.clone(),
+                    metrics,
+                })
+            })();
+            Outcome {
+                line: pair.line,
+                sides: Some([a.json, b.json]),
+                result,
             }
-            Ok(Compared {
-                source: source.clone(),
-                a: a.json,
-                b: b.json,
-                metrics,
-            })
         })
         .collect();
-    let mut compared = Vec::with_capacity(results.len());
-    let mut problems = Vec::new();
-    for result in results {
-        match result {
-            Ok(pair) => compared.push(pair),
-            Err(p) => problems.push(p),
-        }
-    }
+    let compared: Vec<&Compared> = outcomes
+        .iter()
+        .filter_map(|o| o.result.as_ref().ok())
+        .collect();
     let stdout = match output {
         Output::Table => batch_table(&compared, span),
-        Output::Json => report(&compared, span).json_lines(),
-        Output::Csv => report(&compared, span).csv(),
-        Output::Metric(field) => compared
+        Output::Json => batch_report(&outcomes, span).json_lines(),
+        Output::Csv => batch_report(&outcomes, span).csv(),
+        Output::Metric(field) => outcomes
             .iter()
-            .filter_map(|pair| one_number(field, &pair.metrics, span).ok())
+            .map(|o| match &o.result {
+                Ok(pair) => one_number(field, &pair.metrics, span).unwrap_or_default(),
+                Err(_) => "\n".into(),
+            })
             .collect(),
     };
     let exceeded = compared
@@ -559,11 +601,56 @@ pub fn run_pairs(
                 .map(|line| format!("compare: {}: {line}", pair.source))
         })
         .collect();
+    let count = compared.len();
     BatchReport {
         stdout,
         exceeded,
-        problems,
+        problems: outcomes
+            .into_iter()
+            .filter_map(|o| o.result.err())
+            .collect(),
+        compared: count,
     }
+}
+
+/// The report of `--pairs --format json|csv`: `line` (the pair's line), the columns of [`report`],
+/// then `status` (`ok` or `error`) and `error` (the problems on one line, empty when ok); a failed
+/// pair's numbers are empty, and its sides too when they could not be read.
+fn batch_report(outcomes: &[Outcome], span: &Span) -> Report {
+    let mut report = Report::new(
+        ["line".to_string(), "a".to_string(), "b".to_string()]
+            .into_iter()
+            .chain(Field::ALL.iter().map(|f| f.name(span.unit)))
+            .chain(["status".to_string(), "error".to_string()]),
+    );
+    for outcome in outcomes {
+        let sides = match &outcome.sides {
+            Some([a, b]) => [Cell::Json(a.clone()), Cell::Json(b.clone())],
+            None => [Cell::Missing, Cell::Missing],
+        };
+        let (numbers, status, error): (Vec<Cell>, _, _) = match &outcome.result {
+            Ok(pair) => (
+                Field::ALL
+                    .iter()
+                    .map(|f| {
+                        f.of(&pair.metrics, span)
+                            .map_or(Cell::Missing, Cell::Number)
+                    })
+                    .collect(),
+                "ok",
+                String::new(),
+            ),
+            Err(p) => (vec![Cell::Missing; Field::ALL.len()], "error", p.field()),
+        };
+        report.push(
+            std::iter::once(Cell::Count(outcome.line))
+                .chain(sides)
+                .chain(numbers)
+                .chain([Cell::Text(status.into()), Cell::Text(error)])
+                .collect(),
+        );
+    }
+    report
 }
 
 #[cfg(test)]

@@ -1,7 +1,8 @@
 //! `ndfplot fit` (docs/contracts.md): per target, without `--format`, the fitted curve on stdout (one line of
 //! canonical curve JSON, ready for `eval`) and `residual=<x> (<metric>)` on stderr; with `--format jsonl`
-//! or `csv`, one record per target holding target, fit, residual and metric. A target that cannot be
-//! fitted becomes a problem of its source; the others are still written.
+//! or `csv`, one record per target holding its line, family, every parameter in its own column,
+//! residual, metric, status, target, fit and error. A target that cannot be fitted becomes a problem of its
+//! source (and, in the record formats, a row with status `error`); the others are still written.
 //!
 //! Owns the reading of `--family`, `--fix`, `--by` and `--format`, the mapping of fit errors to their
 //! argument or target, and the text of the output; the fitting itself is [`crate::model::fit`]'s.
@@ -10,9 +11,9 @@ use crate::error::{Error, Result};
 use crate::model::curve::Curve;
 use crate::model::fit::{By, Fit, FitError, FitSpec, Subject};
 use crate::model::ndf::Family;
-use crate::output::csv::Table;
-use crate::output::report::RecordFormat;
+use crate::output::report::{Cell, RecordFormat};
 use crate::problem::{Problem, Problems, suggestion};
+use crate::spec::input::Record;
 
 fn usage(source: &str, at: &str, message: String) -> Error {
     Error::input(Problems {
@@ -106,9 +107,9 @@ pub fn fit_error(e: FitError) -> Error {
 pub enum Format {
     /// Per target, the fitted curve's line on stdout and its residual line on stderr.
     Curves,
-    /// Per target, `{"target": <curve>, "fit": <curve>, "residual": <x>, "metric": "<name>"}`.
+    /// One JSON object per target, the fields of [`records`].
     Jsonl,
-    /// CSV with columns `target,fit,residual,metric`, curves as canonical JSON.
+    /// CSV with the columns of [`records`].
     Csv,
 }
 
@@ -123,12 +124,12 @@ impl Format {
     }
 }
 
-/// A target as read: the name of its source and its curve, or the problems that kept it from being
-/// read.
-pub type Target = (String, std::result::Result<Curve, Problems>);
+/// A target as read and resolved: its source, its line and its curve, or the problems that kept it
+/// from being read.
+pub type Target = Record<Curve>;
 
 /// What a fit run writes: the text for stdout and for stderr, and the problems of the targets that
-/// could not be fitted (the run exits 2 when there are any).
+/// could not be fitted (the run exits 2 when there are any, unless `--keep-going`).
 #[derive(Debug)]
 pub struct Report {
     /// Standard output.
@@ -137,48 +138,65 @@ pub struct Report {
     pub stderr: String,
     /// One entry per failed target, in input order.
     pub problems: Vec<Problems>,
+    /// How many targets were fitted.
+    pub fitted: usize,
+}
+
+/// One target's outcome: its line, its curve when it could be read, and its fit or problems.
+struct Outcome {
+    line: usize,
+    target: Option<Curve>,
+    fit: std::result::Result<Fit, Problems>,
 }
 
 /// Fits every readable target (in parallel, [`FitSpec::fit_all`]) and writes the results in input order
-/// in `format`.
+/// in `format`: the record formats hold one row per target, failed ones included.
 pub fn run(spec: &FitSpec, targets: Vec<Target>, format: Format) -> Report {
     let curves: Vec<Curve> = targets
         .iter()
-        .filter_map(|(_, curve)| curve.as_ref().ok().cloned())
+        .filter_map(|t| t.value.as_ref().ok().cloned())
         .collect();
     let mut fits = spec.fit_all(&curves).into_iter();
-    let mut fitted = Vec::with_capacity(targets.len());
-    let mut problems = Vec::new();
-    for (source, target) in targets {
-        let result = target.and_then(|curve| {
-            let fit = fits.next().expect("one fit per readable target");
-            fit.map(|fit| (curve, fit))
-                .map_err(|e| fit_problems(e, &source))
-        });
-        match result {
-            Ok(pair) => fitted.push(pair),
-            Err(p) => problems.push(p),
-        }
-    }
+    let outcomes: Vec<Outcome> = targets
+        .into_iter()
+        .map(|t| match t.value {
+            Ok(curve) => {
+                let fit = fits.next().expect("one fit per readable target");
+                Outcome {
+                    line: t.line,
+                    fit: fit.map_err(|e| fit_problems(e, &t.source)),
+                    target: Some(curve),
+                }
+            }
+            Err(p) => Outcome {
+                line: t.line,
+                target: None,
+                fit: Err(p),
+            },
+        })
+        .collect();
     let by = spec.by();
+    let fitted = outcomes.iter().filter(|o| o.fit.is_ok()).count();
     let (stdout, stderr) = match format {
-        Format::Curves => (
-            fitted
-                .iter()
-                .map(|(_, fit)| format!("{}\n", fit.curve.canonical_json()))
-                .collect(),
-            fitted
-                .iter()
-                .map(|(_, fit)| format!("{}\n", residual_line(fit, by)))
-                .collect(),
-        ),
-        Format::Jsonl => (jsonl(&fitted, by), String::new()),
-        Format::Csv => (csv(&fitted, by), String::new()),
+        Format::Curves => {
+            let fits = || outcomes.iter().filter_map(|o| o.fit.as_ref().ok());
+            (
+                fits()
+                    .map(|fit| format!("{}\n", fit.curve.canonical_json()))
+                    .collect(),
+                fits()
+                    .map(|fit| format!("{}\n", residual_line(fit, by)))
+                    .collect(),
+            )
+        }
+        Format::Jsonl => (records(spec, &outcomes).json_lines(), String::new()),
+        Format::Csv => (records(spec, &outcomes).csv(), String::new()),
     };
     Report {
         stdout,
         stderr,
-        problems,
+        problems: outcomes.into_iter().filter_map(|o| o.fit.err()).collect(),
+        fitted,
     }
 }
 
@@ -187,32 +205,54 @@ fn residual_line(fit: &Fit, by: By) -> String {
     format!("residual={:?} ({})", fit.residual, by.residual_name())
 }
 
-/// One line per fit: `{"target":<curve>,"fit":<curve>,"residual":<x>,"metric":"<name>"}`, curves as
-/// canonical curve JSON objects, the residual in shortest round-trip form.
-fn jsonl(fitted: &[(Curve, Fit)], by: By) -> String {
-    fitted
-        .iter()
-        .map(|(target, fit)| {
-            format!(
-                "{{\"target\":{},\"fit\":{},\"residual\":{:?},\"metric\":\"{}\"}}\n",
-                target.canonical_json(),
-                fit.curve.canonical_json(),
-                fit.residual,
-                by.residual_name()
-            )
-        })
-        .collect()
-}
-
-/// CSV `target,fit,residual,metric`, one row per fit, curves as canonical curve JSON (quoted).
-fn csv(fitted: &[(Curve, Fit)], by: By) -> String {
-    let mut table = Table::new(["target", "fit", "residual", "metric"], 160 * fitted.len());
-    for (target, fit) in fitted {
-        table.text(&target.canonical_json());
-        table.text(&fit.curve.canonical_json());
-        table.number(fit.residual);
-        table.text(by.residual_name());
-        table.end_row();
+/// One record per target, in input order, with the columns `line` (the target's line, or its
+/// position among `--target` arguments), `family`, one column per parameter of the family by its
+/// registry name (fixed ones included), `residual`, `metric`, `status` (`ok` or `error`), then the
+/// JSON text: `target` and `fit` (canonical curve JSON; the target empty when it could not be read),
+/// and `error` (the problems on one line, empty when ok). The plain columns come first so that a
+/// field splitter reaches them before any quoted JSON. A failed target's parameters, residual and
+/// fit are empty.
+fn records(spec: &FitSpec, outcomes: &[Outcome]) -> crate::output::report::Report {
+    let family = spec.family();
+    let names = family.param_names();
+    let columns = ["line", "family"]
+        .into_iter()
+        .chain(names.iter().copied())
+        .chain(["residual", "metric", "status", "target", "fit", "error"]);
+    let mut report = crate::output::report::Report::new(columns);
+    for outcome in outcomes {
+        let target = outcome
+            .target
+            .as_ref()
+            .map_or(Cell::Missing, |c| Cell::Json(c.canonical_json()));
+        let head = [Cell::Count(outcome.line), Cell::Text(family.name().into())];
+        let metric = Cell::Text(spec.by().residual_name().into());
+        let row: Vec<Cell> = match &outcome.fit {
+            Ok(fit) => head
+                .into_iter()
+                .chain(fit.params().into_iter().map(|(_, v)| Cell::Number(v)))
+                .chain([
+                    Cell::Number(fit.residual),
+                    metric,
+                    Cell::Text("ok".into()),
+                    target,
+                    Cell::Json(fit.curve.canonical_json()),
+                    Cell::Text(String::new()),
+                ])
+                .collect(),
+            Err(problems) => head
+                .into_iter()
+                .chain(std::iter::repeat_n(Cell::Missing, names.len() + 1))
+                .chain([
+                    metric,
+                    Cell::Text("error".into()),
+                    target,
+                    Cell::Missing,
+                    Cell::Text(problems.field()),
+                ])
+                .collect(),
+        };
+        report.push(row);
     }
-    table.into_string()
+    report
 }

@@ -30,7 +30,7 @@ pub fn run(command: Command, quiet: bool) -> Result<()> {
         Command::Eval(args) => run_eval(args),
         Command::Render(args) => render::run(args, quiet),
         Command::Coeffs(args) => run_coeffs(args),
-        Command::Compare(args) => run_compare(args),
+        Command::Compare(args) => run_compare(args, quiet),
         Command::Fit(args) => run_fit(args, quiet),
         Command::Check(args) => run_check(args),
         Command::Albedo(args) => run_albedo(args, quiet),
@@ -136,23 +136,25 @@ fn load_operand(arg: &str, flag: &str, allow_read: &[PathBuf]) -> Result<(Operan
 fn load_pairs(arg: &str, allow_read: &[PathBuf]) -> Result<Vec<compare::LoadedPair>> {
     let pairs = input::read_pairs(arg, allow_read, input::read_stdin_bytes)?
         .into_iter()
-        .map(|(source, pair)| {
-            let sides =
-                pair.and_then(|pair| {
-                    let ready =
-                        |(key, side)| {
-                            resolve_side(&source, key, side)
-                                .map(|(operand, json)| compare::ReadySide { key, operand, json })
-                        };
-                    Ok([ready(pair.a)?, ready(pair.b)?])
-                });
-            (source, sides)
+        .map(|record| {
+            let value = record.value.and_then(|pair| {
+                let ready = |(key, side)| {
+                    resolve_side(&record.source, key, side)
+                        .map(|(operand, json)| compare::ReadySide { key, operand, json })
+                };
+                Ok([ready(pair.a)?, ready(pair.b)?])
+            });
+            input::Record {
+                source: record.source,
+                line: record.line,
+                value,
+            }
         })
         .collect();
     Ok(pairs)
 }
 
-fn run_compare(args: CompareArgs) -> Result<()> {
+fn run_compare(args: CompareArgs, quiet: bool) -> Result<()> {
     let bounds: Vec<compare::Bound> = args
         .max_error
         .iter()
@@ -165,7 +167,13 @@ fn run_compare(args: CompareArgs) -> Result<()> {
     let output = compare::Output::of(args.format, args.metric.as_deref(), span.unit)?;
     let (a, b) = match (&args.pairs, args.a.as_deref(), args.b.as_deref()) {
         (Some(pairs), None, None) => {
-            return run_compare_pairs(pairs, &args.allow_read, &span, output, &bounds);
+            let batch = compare::Batch {
+                span,
+                output,
+                bounds,
+                keep_going: args.keep_going,
+            };
+            return run_compare_pairs(pairs, &args.allow_read, &batch, quiet);
         }
         (None, Some(a), Some(b)) => (a, b),
         _ => {
@@ -194,26 +202,39 @@ fn run_compare(args: CompareArgs) -> Result<()> {
     compare::check_bounds(&compared[0].metrics, &bounds, &span)
 }
 
-/// `compare --pairs`: every pair compared ([`compare::run_pairs`]), the output printed, then the exceeded
-/// bounds on stderr and the problems of the pairs that could not be compared (exit 2 when there are
-/// any, else exit 1 when a bound is exceeded).
+/// `compare --pairs`: every pair compared ([`compare::run_pairs`]), the output printed, the closing
+/// line, then the exceeded bounds on stderr and the problems of the pairs that could not be compared
+/// (exit 2 when there are any and not `--keep-going`, else exit 1 when a bound is exceeded).
 fn run_compare_pairs(
     arg: &str,
     allow_read: &[PathBuf],
-    span: &compare::Span,
-    output: compare::Output,
-    bounds: &[compare::Bound],
+    batch: &compare::Batch,
+    quiet: bool,
 ) -> Result<()> {
-    let report = compare::run_pairs(load_pairs(arg, allow_read)?, span, output, bounds);
+    let started = std::time::Instant::now();
+    let report = compare::run_pairs(
+        load_pairs(arg, allow_read)?,
+        &batch.span,
+        batch.output,
+        &batch.bounds,
+    );
     stdout::print(&report.stdout)?;
+    let done = counted(report.compared, report.problems.len(), "pairs compared");
+    summary(
+        quiet,
+        &format!("compare: {done}, written to stdout"),
+        started,
+    );
     let exceeded = report.exceeded.join("\n");
-    if !report.problems.is_empty() {
+    let in_rows = matches!(batch.output, compare::Output::Json | compare::Output::Csv);
+    if !report.problems.is_empty() && !batch.keep_going {
         if !exceeded.is_empty() {
             // The problems decide the exit code; the exceeded bounds are still said.
             let _ = writeln!(std::io::stderr(), "{exceeded}");
         }
         return Err(Error::Input(report.problems));
     }
+    batch_verdict(report.problems, batch.keep_going, in_rows)?;
     if exceeded.is_empty() {
         Ok(())
     } else {
@@ -222,23 +243,65 @@ fn run_compare_pairs(
 }
 
 fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {
+    let started = std::time::Instant::now();
     let family = fit::parse_family("--family", &args.family)?;
     let by = fit::parse_by(&args.by)?;
     let fixed = fit::parse_fixed(&args.fix)?;
     let format = fit::Format::of(args.format);
     let spec = crate::model::fit::FitSpec::new(family, &fixed, by).map_err(fit::fit_error)?;
     let targets = load_targets(&args.target, "--target")?;
+    let count = targets.len();
     let report = fit::run(&spec, targets, format);
     stdout::print(&report.stdout)?;
     // stderr is informative only: a closed or full stderr does not fail the fit.
     if !quiet {
         let _ = write!(std::io::stderr(), "{}", report.stderr);
     }
-    if report.problems.is_empty() {
-        Ok(())
-    } else {
-        Err(Error::Input(report.problems))
+    if format != fit::Format::Curves {
+        let done = counted(report.fitted, count - report.fitted, "targets fitted");
+        summary(quiet, &format!("fit: {done}, written to stdout"), started);
     }
+    batch_verdict(
+        report.problems,
+        args.keep_going,
+        format != fit::Format::Curves,
+    )
+}
+
+/// How many of a batch's records succeeded: `5 targets fitted`, or `19 of 20 targets fitted (1
+/// failed)`.
+fn counted(done: usize, failed: usize, what: &str) -> String {
+    match failed {
+        0 => format!("{done} {what}"),
+        _ => format!("{done} of {} {what} ({failed} failed)", done + failed),
+    }
+}
+
+/// The closing line of a command on stderr: `<what> in <seconds> s`, unless `quiet`. Informative
+/// only: a closed stderr does not fail the command.
+pub fn summary(quiet: bool, what: &str, started: std::time::Instant) {
+    if !quiet {
+        let seconds = started.elapsed().as_secs_f64();
+        let _ = writeln!(std::io::stderr(), "{what} in {seconds:.2} s");
+    }
+}
+
+/// The exit of a batch whose failed records are `problems`: 0 when there are none; with
+/// `keep_going`, 0 as well (the rows say which failed, so their problems are printed only when
+/// `in_rows` is false); otherwise exit 2 with every problem.
+fn batch_verdict(problems: Vec<Problems>, keep_going: bool, in_rows: bool) -> Result<()> {
+    if problems.is_empty() {
+        return Ok(());
+    }
+    if !keep_going {
+        return Err(Error::Input(problems));
+    }
+    if !in_rows {
+        for p in &problems {
+            let _ = writeln!(std::io::stderr(), "{p}");
+        }
+    }
+    Ok(())
 }
 
 /// The curves of a curve argument ([`input::read_curves`]), each resolved on its own, with its source
@@ -246,14 +309,18 @@ fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {
 fn load_targets(args: &[String], flag: &str) -> Result<Vec<fit::Target>> {
     let targets = input::read_curves(args, flag, input::read_stdin_bytes)?
         .into_iter()
-        .map(|(source, spec)| {
-            let curve = spec.and_then(|spec| {
+        .map(|record| {
+            let value = record.value.and_then(|spec| {
                 resolve::curve(&spec).map_err(|p| Problems {
-                    source: source.clone(),
+                    source: record.source.clone(),
                     list: vec![p],
                 })
             });
-            (source, curve)
+            input::Record {
+                source: record.source,
+                line: record.line,
+                value,
+            }
         })
         .collect();
     Ok(targets)

@@ -144,6 +144,21 @@ pub struct Fit {
     pub residual: f64,
 }
 
+impl Fit {
+    /// Every parameter of the fitted NDF with its value, in the family's order, fixed ones included.
+    pub fn params(&self) -> Vec<(&'static str, f64)> {
+        match &self.curve {
+            Curve::Ndf(d) => d
+                .family()
+                .param_names()
+                .into_iter()
+                .zip(d.params())
+                .collect(),
+            _ => Vec::new(),
+        }
+    }
+}
+
 /// The search interval of a free parameter: [lo, hi] within its family's stated domain, searched in
 /// u = ln x (`log`) or u = x.
 #[derive(Debug, Clone, Copy)]
@@ -366,6 +381,11 @@ impl FitSpec {
             values,
             fixed_text: fixed_text.join(","),
         })
+    }
+
+    /// The family fitted.
+    pub fn family(&self) -> Family {
+        self.family
     }
 
     /// The method.

@@ -39,6 +39,8 @@ named! {
 pub enum Cell {
     /// A number (JSON number; CSV shortest round-trip form).
     Number(f64),
+    /// A count or a line number (JSON integer; CSV digits).
+    Count(usize),
     /// A value that does not exist (JSON `null`; CSV empty field): an undefined metric.
     Missing,
     /// Text (JSON string; CSV field).
@@ -51,6 +53,7 @@ impl Serialize for Cell {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         match self {
             Cell::Number(v) => serializer.serialize_f64(*v),
+            Cell::Count(n) => serializer.serialize_u64(*n as u64),
             Cell::Missing => serializer.serialize_none(),
             Cell::Text(text) => serializer.serialize_str(text),
             Cell::Json(text) => match serde_json::from_str::<&RawValue>(text) {
@@ -142,6 +145,7 @@ impl Report {
             for cell in row {
                 match cell {
                     Cell::Number(v) => table.number(*v),
+                    Cell::Count(n) => table.count(*n),
                     Cell::Missing => table.text(""),
                     Cell::Text(text) | Cell::Json(text) => table.text(text),
                 }
@@ -164,18 +168,22 @@ mod tests {
             Cell::Number(0.1),
             Cell::Missing,
         ]);
-        report.push(vec![Cell::Text("x, y".into()), Cell::Number(1e-300)]);
+        report.push(vec![
+            Cell::Text("x, y".into()),
+            Cell::Number(1e-300),
+            Cell::Count(7),
+        ]);
         assert_eq!(
             report.json_lines(),
-            "{\"curve\":{\"ndf\":\"phong\",\"alpha_p\":1.0},\"value\":0.1,\"theta\":null}\n{\"curve\":\"x, y\",\"value\":1e-300,\"theta\":null}\n"
+            "{\"curve\":{\"ndf\":\"phong\",\"alpha_p\":1.0},\"value\":0.1,\"theta\":null}\n{\"curve\":\"x, y\",\"value\":1e-300,\"theta\":7}\n"
         );
         assert_eq!(
             report.json_array(),
-            "[{\"curve\":{\"ndf\":\"phong\",\"alpha_p\":1.0},\"value\":0.1,\"theta\":null},{\"curve\":\"x, y\",\"value\":1e-300,\"theta\":null}]\n"
+            "[{\"curve\":{\"ndf\":\"phong\",\"alpha_p\":1.0},\"value\":0.1,\"theta\":null},{\"curve\":\"x, y\",\"value\":1e-300,\"theta\":7}]\n"
         );
         assert_eq!(
             report.csv(),
-            "curve,value,theta\n\"{\"\"ndf\"\":\"\"phong\"\",\"\"alpha_p\"\":1.0}\",0.1,\n\"x, y\",1e-300,\n"
+            "curve,value,theta\n\"{\"\"ndf\"\":\"\"phong\"\",\"\"alpha_p\"\":1.0}\",0.1,\n\"x, y\",1e-300,7\n"
         );
     }
 }

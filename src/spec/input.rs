@@ -206,12 +206,14 @@ pub struct Pair {
 /// `{"target": …, "fit": …}`.
 const PAIR_SIDES: [[&str; 2]; 2] = [["a", "b"], ["target", "fit"]];
 
-/// The other keys of a `fit --format jsonl` record, accepted in a pair and not read.
-const FIT_RECORD_KEYS: [&str; 2] = ["residual", "metric"];
+/// The other keys of a `fit --format jsonl` record, accepted in a pair and not read (with every
+/// family's parameter names).
+const FIT_RECORD_KEYS: [&str; 6] = ["line", "family", "residual", "metric", "status", "error"];
 
 /// Parses one line of `compare --pairs`: a JSON object holding `a` and `b`, or `target` and `fit`
-/// (a record of `fit --format jsonl`, whose `residual` and `metric` are accepted and not read); each
-/// side a curve or a CSV series read from `scope`. Every problem of the line is reported.
+/// (a record of `fit --format jsonl`, whose other fields are accepted and not read; a record with
+/// status `error` is refused with its error); each side a curve or a CSV series read from `scope`.
+/// Every problem of the line is reported.
 fn parse_pair(line: &str, source: &str, scope: &DataScope) -> std::result::Result<Pair, Problems> {
     let problems = |list| Problems {
         source: source.to_string(),
@@ -225,6 +227,10 @@ fn parse_pair(line: &str, source: &str, scope: &DataScope) -> std::result::Resul
             format!("a pair must be an object (got {node}, {expected})"),
         )]));
     };
+    let parameters: Vec<&str> = crate::model::ndf::Family::ALL
+        .into_iter()
+        .flat_map(|f| f.param_names())
+        .collect();
     let listed: Vec<&str> = PAIR_SIDES
         .iter()
         .flatten()
@@ -234,10 +240,23 @@ fn parse_pair(line: &str, source: &str, scope: &DataScope) -> std::result::Resul
     let accepted = crate::spec::keys::Accepted {
         object: Some("a pair"),
         listed: &listed,
-        unlisted: &[],
+        unlisted: &parameters,
     };
     let mut list = crate::spec::keys::validate(members, "", Some(&accepted));
     let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, v)| v);
+    if let Some(json::Value::String(status)) = get("status").map(|v| &v.value)
+        && status == "error"
+    {
+        let error = match get("error").map(|v| &v.value) {
+            Some(json::Value::String(e)) => crate::problem::excerpt(e),
+            _ => String::new(),
+        };
+        list.push(Problem::new(
+            "status",
+            format!("a record of a failed fit has no fit to compare (got error \"{error}\")"),
+        ));
+        return Err(problems(list));
+    }
     let given: Vec<[&'static str; 2]> = PAIR_SIDES
         .into_iter()
         .filter(|keys| keys.iter().any(|k| get(k).is_some()))
@@ -282,7 +301,7 @@ pub fn read_pairs(
     arg: &str,
     allow_read: &[std::path::PathBuf],
     stdin: impl FnOnce() -> std::io::Result<Vec<u8>>,
-) -> Result<Vec<(String, std::result::Result<Pair, Problems>)>> {
+) -> Result<Vec<Record<Pair>>> {
     let (text, name, folder) = if arg == "-" {
         let text = stdin().map_err(|e| Error::io("stdin", e))?;
         (text, "stdin", std::path::Path::new("."))
@@ -302,6 +321,19 @@ pub fn read_pairs(
     Ok(pairs)
 }
 
+/// One record of a batch input: where it was read and what was read there.
+#[derive(Debug, Clone)]
+pub struct Record<T> {
+    /// The name problems carry: `<name>:<line>` for JSON Lines, the argument (`--target[2]`) or the
+    /// file otherwise.
+    pub source: String,
+    /// The 1-based line of a JSON Lines input, or the 1-based position of the argument among the
+    /// records read from arguments: the `line` column of batch outputs.
+    pub line: usize,
+    /// The record, or the problems that kept it from being read.
+    pub value: std::result::Result<T, Problems>,
+}
+
 /// The non-blank lines of the JSON Lines `bytes` read from `name` (`stdin` or a file path), in
 /// order, each with its source name `<name>:<line>` (1-based) and what `parse` makes of it. The
 /// one reader of every batch input: lines are split on `\n` (a `\r` before it dropped) and decoded
@@ -311,7 +343,7 @@ fn json_lines<T>(
     bytes: &[u8],
     name: &str,
     parse: impl Fn(&str, &str) -> std::result::Result<T, Problems>,
-) -> Vec<(String, std::result::Result<T, Problems>)> {
+) -> Vec<Record<T>> {
     let bytes = bytes.strip_prefix("\u{feff}".as_bytes()).unwrap_or(bytes);
     bytes
         .split(|&b| b == b'\n')
@@ -333,7 +365,11 @@ fn json_lines<T>(
                     )],
                 }),
             };
-            (source, parsed)
+            Record {
+                source,
+                line: i + 1,
+                value: parsed,
+            }
         })
         .collect()
 }
@@ -355,7 +391,7 @@ pub fn read_curves(
     args: &[String],
     flag: &str,
     stdin: impl FnOnce() -> std::io::Result<Vec<u8>>,
-) -> Result<Vec<(String, std::result::Result<CurveSpec, Problems>)>> {
+) -> Result<Vec<Record<CurveSpec>>> {
     let mut curves = Vec::new();
     let mut stdin = Some(stdin);
     for (i, arg) in args.iter().enumerate() {
@@ -367,14 +403,22 @@ pub fn read_curves(
             curves.extend(json_lines(&text, "stdin", parse_curve));
         } else if let Some(path) = arg.strip_prefix('@') {
             let text = read_file(path).map_err(|e| e.for_option(flag))?;
-            curves.push((path.to_string(), parse_curve(&text, path)));
+            curves.push(Record {
+                source: path.to_string(),
+                line: i + 1,
+                value: parse_curve(&text, path),
+            });
         } else {
             let source = if args.len() == 1 {
                 flag.to_string()
             } else {
                 format!("{flag}[{i}]")
             };
-            curves.push((source.clone(), parse_curve(arg, &source)));
+            curves.push(Record {
+                value: parse_curve(arg, &source),
+                source,
+                line: i + 1,
+            });
         }
     }
     if curves.is_empty() {
@@ -393,8 +437,8 @@ pub fn load_curves(
 ) -> Result<Vec<CurveSpec>> {
     let mut curves = Vec::new();
     let mut problems = Vec::new();
-    for (_, result) in read_curves(args, flag, stdin)? {
-        match result {
+    for record in read_curves(args, flag, stdin)? {
+        match record.value {
             Ok(curve) => curves.push(curve),
             Err(p) => problems.push(p),
         }

@@ -370,6 +370,9 @@ fn batch(input: &str, extra: &[&str]) -> Output {
     ndfplot_stdin(&args, input)
 }
 
+/// The input lines of [`pairs_input`]'s pairs.
+const PAIR_LINES: [usize; 4] = [1, 3, 4, 5];
+
 #[test]
 fn every_pair_gives_the_row_of_its_single_compare_in_input_order() {
     let input = pairs_input();
@@ -379,18 +382,32 @@ fn every_pair_gives_the_row_of_its_single_compare_in_input_order() {
         &["--metric", "l2_projected"],
         &["--metric", "max_rel_theta", "--theta-range", "0:pi/4"],
     ] {
-        let expected: String = pairs().iter().map(|(a, b)| single(a, b, extra)).collect();
+        // A batch record is the single record between its line and its status.
+        let expected: String = pairs()
+            .iter()
+            .zip(PAIR_LINES)
+            .map(|((a, b), line)| {
+                let one = single(a, b, extra);
+                match one.strip_prefix('{') {
+                    Some(fields) => format!(
+                        "{{\"line\":{line},{},\"status\":\"ok\",\"error\":\"\"}}\n",
+                        fields.trim_end().strip_suffix('}').unwrap()
+                    ),
+                    None => one,
+                }
+            })
+            .collect();
         assert_eq!(ok(&batch(&input, extra)), expected, "{extra:?}");
     }
     let csv = ok(&batch(&input, &["--format", "csv"]));
     let mut expected = String::new();
-    for (i, (a, b)) in pairs().iter().enumerate() {
+    for (i, ((a, b), line)) in pairs().iter().zip(PAIR_LINES).enumerate() {
         let one = single(a, b, &["--format", "csv"]);
         let (header, row) = one.split_once('\n').unwrap();
         if i == 0 {
-            expected = format!("{header}\n");
+            expected = format!("line,{header},status,error\n");
         }
-        expected.push_str(row);
+        expected.push_str(&format!("{line},{},ok,\n", row.trim_end()));
     }
     assert_eq!(csv, expected);
 }
@@ -417,13 +434,13 @@ fn the_pairs_table_has_one_row_per_pair_named_by_its_line() {
     assert_eq!(lines.len(), 1 + pairs().len(), "{table}");
     for ((line, source), (a, b)) in lines[1..]
         .iter()
-        .zip(["stdin:1", "stdin:3", "stdin:4", "stdin:5"])
+        .zip(PAIR_LINES.map(|line| format!("stdin:{line}")))
         .zip(pairs())
     {
         let json: serde_json::Value =
             serde_json::from_str(&single(&a, &b, &["--format", "json"])).unwrap();
         let cells: Vec<&str> = line.split_whitespace().collect();
-        assert_eq!(cells[0], source, "{table}");
+        assert_eq!(cells[0], &source, "{table}");
         for (cell, name) in cells[1..6].iter().zip(&header[1..6]) {
             assert_eq!(
                 number(cell),
@@ -484,15 +501,19 @@ fn a_bad_line_is_reported_by_its_line_and_the_others_are_still_compared() {
         good.as_str(),
     ]
     .join("\n");
-    let out = batch(&input, &["--metric", "max_abs"]);
+    let out = batch(&input, &["--metric", "max_abs", "-q"]);
     assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
+    // One line per pair: a failed pair's is empty.
     let value = single(GGX, BECKMANN, &["--metric", "max_abs"]);
-    assert_eq!(text(&out.stdout), format!("{value}{value}"));
+    assert_eq!(
+        text(&out.stdout),
+        format!("{value}{}{value}", "\n".repeat(6))
+    );
     let err = text(&out.stderr);
     let lines: Vec<&str> = err.lines().collect();
     let expected = [
         "error: stdin:2: 1:1: invalid JSON",
-        "error: stdin:3: c: unknown key for a pair (got {\"ndf\":\"ggx\",\"alpha_tr\":0.2}, expected one of: a, b, target, fit, residual, metric)",
+        "error: stdin:3: c: unknown key for a pair (got {\"ndf\":\"ggx\",\"alpha_tr\":0.2}, expected one of: a, b, target, fit, line, family, residual, metric, status, error)",
         "error: stdin:3: b: missing side (got only a, expected {\"a\": <curve>, \"b\": <curve>} or a record of fit --format jsonl)",
         "error: stdin:4: b.fresnel: compare needs two curves of the same kind",
         "error: stdin:5: a pair needs its two sides under a and b, or target and fit",
@@ -503,6 +524,41 @@ fn a_bad_line_is_reported_by_its_line_and_the_others_are_still_compared() {
     for (line, start) in lines.iter().zip(expected) {
         assert!(line.starts_with(start), "{start:?} in {err}");
     }
+    // As CSV, each line is a row: the failed ones with status error and why.
+    let rows = batch(&input, &["--format", "csv", "-q", "--keep-going"]);
+    assert_eq!(rows.status.code(), Some(0), "{}", text(&rows.stderr));
+    assert!(rows.stderr.is_empty(), "{}", text(&rows.stderr));
+    let mut reader = csv::Reader::from_reader(&rows.stdout[..]);
+    let records: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    let status: Vec<(&str, &str)> = records.iter().map(|r| (&r[0], &r[17])).collect();
+    assert_eq!(
+        status,
+        [
+            ("1", "ok"),
+            ("2", "error"),
+            ("3", "error"),
+            ("4", "error"),
+            ("5", "error"),
+            ("6", "error"),
+            ("7", "error"),
+            ("8", "ok")
+        ]
+    );
+    assert!(records[3][18].starts_with("b.fresnel: compare needs two curves of the same kind"));
+    // The sides of a pair that was read but not compared are still written.
+    assert_eq!(
+        &records[3][2],
+        r#"{"fresnel":"exact","eta":1.5,"kappa":0.0}"#
+    );
+    // A failed fit's record is refused with its error.
+    let failed_fit = r#"{"line":4,"target":{"fresnel":"exact","eta":1.5},"family":"abc","fit":null,"alpha_abc1":null,"alpha_abc2":null,"residual":null,"metric":"l2_projected","status":"error","error":"fresnel: a fit needs an NDF target"}"#;
+    let refused = batch(failed_fit, &["-q"]);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(
+        text(&refused.stderr).starts_with("error: stdin:1: status: a record of a failed fit has no fit to compare (got error \"fresnel: a fit needs an NDF target\")"),
+        "{}",
+        text(&refused.stderr)
+    );
 }
 
 #[test]
@@ -530,7 +586,14 @@ fn pairs_read_a_file_gate_on_bounds_and_refuse_a_and_b() {
         2,
         "the CSV path resolves against the file's folder"
     );
-    let gated = ndfplot(&["compare", "--pairs", path, "--max-error", "max_rel=0.5"]);
+    let gated = ndfplot(&[
+        "compare",
+        "--pairs",
+        path,
+        "--max-error",
+        "max_rel=0.5",
+        "-q",
+    ]);
     assert_eq!(gated.status.code(), Some(1));
     let err = text(&gated.stderr);
     assert!(

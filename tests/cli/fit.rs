@@ -1,6 +1,7 @@
 //! `ndfplot fit` on several targets and with several free parameters: batch order, the jsonl and csv
-//! records, a failing target among good ones, repeated `--target`, the single-target output, the
-//! multi-parameter L2 acceptance case against `compare`, and identical bytes on 1 and 2 threads.
+//! records with a column per parameter, failing targets as rows with status error (exit 2, or 0 with
+//! `--keep-going`), repeated `--target`, the single-target output, the multi-parameter L2 acceptance
+//! case against `compare`, and identical bytes on 1 and 2 threads.
 
 use crate::common::{ndfplot, ndfplot_stdin, ndfplot_stdin_env, text};
 
@@ -17,11 +18,22 @@ fn json(line: &str) -> serde_json::Value {
     serde_json::from_str(line).unwrap_or_else(|e| panic!("{e}: {line}"))
 }
 
-/// The fitted curve of a jsonl record as written: the text between `"fit":` and `,"residual":`.
+/// The fitted curve of a jsonl record as written: the object after `"fit":` (a curve object holds
+/// no nested object).
 fn fit_text(record: &str) -> &str {
     let start = record.find(r#","fit":"#).unwrap() + r#","fit":"#.len();
-    let end = record.find(r#","residual":"#).unwrap();
+    let end = start + record[start..].find('}').unwrap() + 1;
     &record[start..end]
+}
+
+/// Asserts that `stderr` is the closing line of a batch: `<what> in <seconds> s`.
+fn assert_summary(stderr: &[u8], what: &str) {
+    let stderr = text(stderr);
+    let seconds = stderr
+        .strip_prefix(&format!("{what} in "))
+        .and_then(|rest| rest.strip_suffix(" s\n"))
+        .unwrap_or_else(|| panic!("expected \"{what} in <x> s\", got {stderr:?}"));
+    assert!(seconds.parse::<f64>().is_ok_and(|s| s >= 0.0), "{stderr}");
 }
 
 /// `fit --target TARGET --family abc --fix alpha_abc2=1.75` followed by `more`.
@@ -45,24 +57,31 @@ fn fit_batch_keeps_input_order_in_jsonl_and_csv_records() {
     let stdin: String = alphas.iter().map(|&a| ggx(a) + "\n").collect();
     let jsonl = ndfplot_stdin(&abc_fixed("-", &["--format", "jsonl"]), &stdin);
     assert_eq!(jsonl.status.code(), Some(0), "{}", text(&jsonl.stderr));
-    assert!(jsonl.stderr.is_empty(), "{}", text(&jsonl.stderr));
+    assert_summary(&jsonl.stderr, "fit: 5 targets fitted, written to stdout");
     let stdout = text(&jsonl.stdout);
     let lines: Vec<&str> = stdout.lines().collect();
     assert!(
         lines
             .iter()
-            .all(|l| l.starts_with(r#"{"target":{"ndf":"trowbridge_reitz","#)
-                && l.contains(r#"},"fit":{"ndf":"abc","#)
-                && l.ends_with(r#","metric":"d0_rel"}"#)),
+            .enumerate()
+            .all(|(i, l)| l.starts_with(&format!(
+                r#"{{"line":{},"family":"abc","alpha_abc1":"#,
+                i + 1
+            )) && l.contains(
+                r#","metric":"d0_rel","status":"ok","target":{"ndf":"trowbridge_reitz","#
+            ) && l.contains(r#"},"fit":{"ndf":"abc","#)
+                && l.ends_with(r#"},"error":""}"#)),
         "{stdout}"
     );
     let records: Vec<serde_json::Value> = lines.iter().copied().map(json).collect();
     assert_eq!(records.len(), alphas.len());
     for (record, &alpha) in records.iter().zip(&alphas) {
-        assert_eq!(record.as_object().unwrap().len(), 4, "{record}");
+        assert_eq!(record.as_object().unwrap().len(), 10, "{record}");
         assert_eq!(record["target"], json(&ggx(alpha)));
         assert_eq!(record["fit"]["ndf"], "abc");
-        assert_eq!(record["fit"]["alpha_abc2"], 1.75);
+        assert_eq!(record["alpha_abc2"], 1.75);
+        // The parameter columns are the fitted curve's values, to the last digit.
+        assert_eq!(record["alpha_abc1"], record["fit"]["alpha_abc1"]);
         assert!(record["residual"].as_f64().unwrap() < 1e-12, "{record}");
         assert_eq!(record["metric"], "d0_rel");
     }
@@ -70,25 +89,42 @@ fn fit_batch_keeps_input_order_in_jsonl_and_csv_records() {
     let a1 = |i: usize| records[i]["fit"]["alpha_abc1"].as_f64().unwrap();
     assert!(a1(3) > a1(1) && a1(1) > a1(2) && a1(2) > a1(4) && a1(4) > a1(0));
 
-    let csv = ndfplot_stdin(&abc_fixed("-", &["--format", "csv"]), &stdin);
+    let csv = ndfplot_stdin(&abc_fixed("-", &["--format", "csv", "-q"]), &stdin);
     assert_eq!(csv.status.code(), Some(0), "{}", text(&csv.stderr));
-    assert!(csv.stderr.is_empty(), "{}", text(&csv.stderr));
+    assert!(csv.stderr.is_empty(), "-q: {}", text(&csv.stderr));
     let mut reader = csv::Reader::from_reader(&csv.stdout[..]);
     assert_eq!(
         reader.headers().unwrap(),
-        vec!["target", "fit", "residual", "metric"]
+        vec![
+            "line",
+            "family",
+            "alpha_abc1",
+            "alpha_abc2",
+            "residual",
+            "metric",
+            "status",
+            "target",
+            "fit",
+            "error"
+        ]
     );
     let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
     assert_eq!(rows.len(), alphas.len());
     for ((row, record), line) in rows.iter().zip(&records).zip(&lines) {
-        // The same curves as canonical JSON text, the same residual to the last digit.
-        assert_eq!(json(&row[0]), record["target"]);
-        assert_eq!(&row[1], fit_text(line));
-        assert_eq!(
-            row[2].parse::<f64>().unwrap(),
-            record["residual"].as_f64().unwrap()
-        );
-        assert_eq!(&row[3], "d0_rel");
+        // The same curves as canonical JSON text, the same numbers to the last digit.
+        assert_eq!(row[0].parse::<u64>().ok(), record["line"].as_u64());
+        assert_eq!(&row[1], "abc");
+        for (column, key) in [(2, "alpha_abc1"), (3, "alpha_abc2"), (4, "residual")] {
+            assert_eq!(
+                row[column].parse::<f64>().ok(),
+                record[key].as_f64(),
+                "{key}"
+            );
+        }
+        assert_eq!((&row[5], &row[6]), ("d0_rel", "ok"));
+        assert_eq!(json(&row[7]), record["target"]);
+        assert_eq!(&row[8], fit_text(line));
+        assert_eq!(&row[9], "");
     }
 }
 
@@ -115,11 +151,43 @@ fn fit_batch_reports_a_failing_line_by_number_and_still_fits_the_others() {
     let out = ndfplot_stdin(&args, &stdin);
     assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
     let records: Vec<serde_json::Value> = text(&out.stdout).lines().map(json).collect();
-    let targets: Vec<&serde_json::Value> = records.iter().map(|r| &r["target"]).collect();
-    assert_eq!(targets, [&json(&ggx(0.3)), &json(&ggx(0.6))]);
+    let lines_and_status: Vec<(u64, &str)> = records
+        .iter()
+        .map(|r| (r["line"].as_u64().unwrap(), r["status"].as_str().unwrap()))
+        .collect();
+    assert_eq!(
+        lines_and_status,
+        [
+            (1, "ok"),
+            (2, "error"),
+            (3, "error"),
+            (5, "error"),
+            (6, "ok")
+        ]
+    );
+    let ok: Vec<&serde_json::Value> = records
+        .iter()
+        .filter(|r| r["status"] == "ok")
+        .map(|r| &r["target"])
+        .collect();
+    assert_eq!(ok, [&json(&ggx(0.3)), &json(&ggx(0.6))]);
+    // A failed row has its error and no numbers; an unreadable target has no target either.
+    assert!(records[1]["target"].is_null() && records[1]["alpha_ts"].is_null());
+    assert!(
+        records[2]["error"]
+            .as_str()
+            .unwrap()
+            .starts_with("alpha_ts: torrance_sparrow cannot reach")
+    );
+    assert!(records[2]["residual"].is_null() && records[2]["fit"].is_null());
     let stderr = text(&out.stderr);
     let lines: Vec<&str> = stderr.lines().collect();
-    assert_eq!(lines.len(), 3, "{stderr}");
+    assert_eq!(lines.len(), 4, "{stderr}");
+    assert!(
+        lines[0].starts_with("fit: 2 of 5 targets fitted (3 failed), written to stdout in "),
+        "{stderr}"
+    );
+    let lines = &lines[1..];
     assert!(
         lines[0].starts_with("error: stdin:2: 1:") && lines[0].contains("invalid JSON"),
         "{stderr}"
@@ -133,6 +201,14 @@ fn fit_batch_reports_a_failing_line_by_number_and_still_fits_the_others() {
     assert!(
         lines[2].starts_with("error: stdin:5: fresnel: a fit needs an NDF target"),
         "{stderr}"
+    );
+    // --keep-going: the same records, exit 0, the errors left to the rows.
+    let kept = ndfplot_stdin(&[&args[..], &["--keep-going"]].concat(), &stdin);
+    assert_eq!(kept.status.code(), Some(0), "{}", text(&kept.stderr));
+    assert_eq!(kept.stdout, out.stdout);
+    assert_summary(
+        &kept.stderr,
+        "fit: 2 of 5 targets fitted (3 failed), written to stdout",
     );
 }
 
@@ -155,18 +231,27 @@ fn fit_takes_repeated_targets_in_order_and_names_a_failing_one_by_index() {
     assert_eq!(out.status.code(), Some(2));
     let stdout = text(&out.stdout);
     let lines: Vec<&str> = stdout.lines().collect();
-    assert_eq!(lines.len(), 3, "{stdout}");
+    assert_eq!(lines.len(), 4, "{stdout}");
     assert!(
-        lines[1].starts_with(r#""{""ndf"":""trowbridge_reitz"",""alpha_tr"":0.3}","#),
+        lines[1].starts_with("1,torrance_sparrow,0.30968")
+            && lines[1]
+                .contains(r#",d0_rel,ok,"{""ndf"":""trowbridge_reitz"",""alpha_tr"":0.3}","#),
         "{stdout}"
     );
     assert!(
-        lines[2].starts_with(r#""{""ndf"":""trowbridge_reitz"",""alpha_tr"":0.6}","#),
+        lines[2].starts_with("2,torrance_sparrow,0.70337")
+            && lines[2]
+                .contains(r#",d0_rel,ok,"{""ndf"":""trowbridge_reitz"",""alpha_tr"":0.6}","#),
         "{stdout}"
     );
     assert!(
-        text(&out.stderr)
-            .starts_with("error: --target[2]: alpha_ts: torrance_sparrow cannot reach"),
+        lines[3].starts_with(r#"3,torrance_sparrow,,,d0_rel,error,"{""ndf"":""phong"",""alpha_p"":0.0}",,"alpha_ts: torrance_sparrow cannot reach"#),
+        "{stdout}"
+    );
+    assert!(
+        text(&out.stderr).lines().nth(1).is_some_and(
+            |l| l.starts_with("error: --target[2]: alpha_ts: torrance_sparrow cannot reach")
+        ),
         "{}",
         text(&out.stderr)
     );
@@ -258,15 +343,15 @@ fn fit_by_peak_or_max_with_two_free_parameters_is_an_error_naming_them() {
 fn fit_batch_gives_the_same_bytes_on_one_and_two_threads() {
     let stdin: String = (1..=20).map(|i| ggx(0.05 * i as f64) + "\n").collect();
     let gtr = [
-        "fit", "--target", "-", "--family", "gtr", "--by", "l2", "--format", "csv",
+        "fit", "--target", "-", "--family", "gtr", "--by", "l2", "--format", "csv", "-q",
     ];
     for args in [
-        abc_fixed("-", &["--by", "l2", "--format", "jsonl"]),
+        abc_fixed("-", &["--by", "l2", "--format", "jsonl", "-q"]),
         gtr.to_vec(),
     ] {
         let one = ndfplot_stdin_env(&args, &stdin, &[("RAYON_NUM_THREADS", "1")]);
         let two = ndfplot_stdin_env(&args, &stdin, &[("RAYON_NUM_THREADS", "2")]);
-        // GTR cannot determine γ for the uniform GGX α = 1: 19 records and one error line, both times.
+        // GTR cannot determine γ for the uniform GGX α = 1: one error line, both times.
         assert!(
             text(&one.stdout).lines().count() >= 19,
             "{}",

@@ -1215,7 +1215,7 @@ fn objects_with_tens_of_thousands_of_keys_report_the_first_problems_and_a_count(
     let err = text(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(
-        err.contains("pairs.jsonl:1: k0: unknown key for a pair (got 0, expected one of: a, b, target, fit, residual, metric)"),
+        err.contains("pairs.jsonl:1: k0: unknown key for a pair (got 0, expected one of: a, b, target, fit, line, family, residual, metric, status, error)"),
         "{}",
         &err[..err.len().min(600)]
     );
@@ -1441,8 +1441,11 @@ fn a_line_that_is_not_utf8_fails_alone_in_a_json_lines_batch() {
         &["compare", "--pairs", "pairs.jsonl", "--metric", "max_abs"],
     );
     assert_eq!(out.status.code(), Some(2));
+    // One line per pair, the failed one's empty.
     let answered = text(&out.stdout);
-    assert_eq!(answered.lines().count(), 2, "{answered}");
+    let lines: Vec<&str> = answered.lines().collect();
+    assert_eq!(lines.len(), 3, "{answered}");
+    assert!(lines[0] == lines[2] && lines[1].is_empty(), "{answered}");
     assert!(
         text(&out.stderr).contains("pairs.jsonl:2: column 1: not UTF-8 text"),
         "{}",
