@@ -1,6 +1,7 @@
 //! The command line: clap types that mirror the arguments, and nothing else.
 
 use crate::output::report::{RecordFormat, ReportFormat};
+use crate::output::stderr::ColorChoice;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
@@ -13,6 +14,14 @@ pub struct Cli {
     /// every command.
     #[arg(short, long, global = true)]
     pub quiet: bool,
+    /// More on stderr: with render, one line per figure (size, panels, series, points, warnings,
+    /// drawing time); works with every command.
+    #[arg(short, long, global = true)]
+    pub verbose: bool,
+    /// Colour the error: and warning: labels on stderr: auto (when stderr is a terminal and
+    /// NO_COLOR is unset or empty), always or never.
+    #[arg(long, global = true, value_name = "WHEN", default_value = "auto", value_parser = choice(&ColorChoice::NAMES, &ColorChoice::ALL))]
+    pub color: ColorChoice,
     /// The subcommand to run.
     #[command(subcommand)]
     pub command: Command,

@@ -2,7 +2,7 @@
 //! map the outcome to an exit code.
 
 use clap::Parser;
-use std::io::Write;
+use ndfplot::output::stderr;
 use std::process::ExitCode;
 
 /// Most worker threads started, whatever `RAYON_NUM_THREADS` asks: more would only compete for the
@@ -11,15 +11,16 @@ const MAX_THREADS: usize = 64;
 
 fn main() -> ExitCode {
     let cli = ndfplot::cli::Cli::parse();
+    stderr::configure(cli.color, cli.verbose);
     if let Err(message) = watch_interrupts().and_then(|()| start_threads()) {
-        let _ = writeln!(std::io::stderr(), "error: {message}");
+        stderr::say(&format!("error: {message}"));
         return ExitCode::from(2);
     }
     match ndfplot::cmd::run(cli.command, cli.quiet) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            // A closed or full stderr must not turn an error into a panic.
-            let _ = writeln!(std::io::stderr(), "{error}");
+            // A closed or full stderr must not turn an error into a panic (say ignores it).
+            stderr::say(&error.to_string());
             ExitCode::from(error.exit_code())
         }
     }
@@ -67,10 +68,9 @@ fn start_threads() -> Result<(), String> {
         .filter(|&n| n > 0)
         .unwrap_or(cores);
     if asked > MAX_THREADS {
-        let _ = writeln!(
-            std::io::stderr(),
-            "warning: RAYON_NUM_THREADS={asked} is more than {MAX_THREADS}; using {MAX_THREADS}"
-        );
+        stderr::warning(&format!(
+            "RAYON_NUM_THREADS={asked} is more than {MAX_THREADS}; using {MAX_THREADS}"
+        ));
     }
     rayon::ThreadPoolBuilder::new()
         .num_threads(asked.min(MAX_THREADS))

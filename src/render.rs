@@ -58,6 +58,75 @@ pub struct RenderStats {
     /// The figure lint's findings on the drawn figures, one line each (`FILE: panels[i]: …`),
     /// in source order.
     pub warnings: Vec<String>,
+    /// Scenes rendered.
+    pub scenes: usize,
+    /// One line per drawn figure, in source order, for `-v` ([`FigureDetail`]).
+    pub figures: Vec<FigureDetail>,
+}
+
+/// What `-v` says of one drawn figure: its source, id, size, what it holds and how long its
+/// drawing and encoding took.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FigureDetail {
+    /// The spec file or catalogue id.
+    pub source: String,
+    /// The figure's id (its files' stem).
+    pub id: String,
+    /// Width and height in CSS pixels.
+    pub size_px: (u32, u32),
+    /// The printed size, `3.3 × 2.47 in`, when the spec or preset gave one.
+    pub print: Option<String>,
+    /// Panels.
+    pub panels: usize,
+    /// Series over all panels.
+    pub series: usize,
+    /// Points drawn over all series.
+    pub points: usize,
+    /// The figure lint's findings on it.
+    pub warnings: usize,
+    /// Drawing and encoding its drawn formats (wall time on one worker).
+    pub drawing: std::time::Duration,
+}
+
+impl FigureDetail {
+    /// `render: <source>: <id>: 1100 × 800 px (3.3 × 2.4 in), 2 panels, 7 series, 3 214 points,
+    /// 0 warnings, drawn in 41 ms`.
+    pub fn line(&self) -> String {
+        let print = self
+            .print
+            .as_ref()
+            .map_or_else(String::new, |p| format!(" ({p})"));
+        format!(
+            "render: {}: {}: {} × {} px{print}, {} panels, {} series, {} points, {} warnings, drawn in {} ms",
+            self.source,
+            self.id,
+            self.size_px.0,
+            self.size_px.1,
+            self.panels,
+            self.series,
+            self.points,
+            self.warnings,
+            self.drawing.as_millis()
+        )
+    }
+
+    fn of(figure: &Figure, source: &str, warnings: usize, drawing: std::time::Duration) -> Self {
+        let series = figure.panels.iter().flat_map(|p| &p.series);
+        FigureDetail {
+            source: source.to_string(),
+            id: figure.id.clone(),
+            size_px: (figure.canvas.width_px, figure.canvas.height_px),
+            print: figure
+                .canvas
+                .print
+                .map(|p| format!("{:.2} × {:.2} {}", p.width, p.height, p.unit.symbol())),
+            panels: figure.panels.len(),
+            series: series.clone().count(),
+            points: series.map(|s| s.points.len()).sum(),
+            warnings,
+            drawing,
+        }
+    }
 }
 
 /// [`run`], also returning where the time went.
@@ -79,14 +148,14 @@ pub fn run_with_progress(
 
 /// `render --check DIR`: re-renders the CSVs and SVGs of `options` (writing nothing) and compares
 /// them with DIR's ([`stored::compare`]: values at a relative `tolerance`, then the drawing
-/// of figures whose values match); prints every difference, and fails (exit 1) on any. Only CSV
-/// and SVG are encoded, whatever `options.formats` says.
+/// of figures whose values match); prints every difference, and fails (exit 1) on any, else
+/// returns the run's stats. Only CSV and SVG are encoded, whatever `options.formats` says.
 pub fn check(
     options: &RenderOptions,
     dir: &Path,
     tolerance: f64,
     quiet: bool,
-) -> Result<Vec<String>> {
+) -> Result<RenderStats> {
     let options = RenderOptions {
         formats: vec![Format::Svg, Format::Csv],
         ..options.clone()
@@ -95,7 +164,7 @@ pub fn check(
     let (report, ok) = stored::compare(dir, &outputs, tolerance)?;
     crate::output::stdout::print(&report)?;
     if ok {
-        Ok(stats.warnings)
+        Ok(stats)
     } else {
         let shown = crate::problem::one_line(&dir.display().to_string()).into_owned();
         Err(Error::CheckFailed(format!(
@@ -169,9 +238,9 @@ fn encode_outputs(options: &RenderOptions, quiet: bool) -> Result<(Files, Render
 
 /// `render -o -`: the one output of `options` — one figure in one format — as bytes, for standard
 /// output. Several formats, several figures, or no output (`html` for a scene without sliders) is a
-/// usage error (exit 2) before anything is written. Returns the bytes and the figure lint's
-/// findings.
-pub fn to_stdout(options: &RenderOptions, quiet: bool) -> Result<(Vec<u8>, Vec<String>)> {
+/// usage error (exit 2) before anything is written. Returns the bytes and the run's stats
+/// (the figure lint's findings among them).
+pub fn to_stdout(options: &RenderOptions, quiet: bool) -> Result<(Vec<u8>, RenderStats)> {
     let refuse = |what: String| {
         Err(Error::Usage(format!(
             "-o -: writes one figure in one format to stdout ({what})"
@@ -194,7 +263,7 @@ pub fn to_stdout(options: &RenderOptions, quiet: bool) -> Result<(Vec<u8>, Vec<S
     }
     let (mut outputs, stats) = encode_sources(&sources, options, quiet)?;
     match outputs.pop() {
-        Some((_, bytes)) if outputs.is_empty() => Ok((bytes, stats.warnings)),
+        Some((_, bytes)) if outputs.is_empty() => Ok((bytes, stats)),
         _ => refuse(format!(
             "{} has no output in --format {}: html is written only for scenes with sliders",
             sources[0].0,
@@ -237,6 +306,7 @@ fn encode_sources(
     let mut stats = RenderStats {
         evaluation: start.elapsed(),
         evaluations: evaluated.iter().map(|e| e.evaluations).sum(),
+        scenes: scenes.len(),
         ..RenderStats::default()
     };
     let mut outputs: Vec<(String, Vec<u8>)> = Vec::new();
@@ -255,11 +325,12 @@ fn encode_sources(
             .zip(feeds)
             .map(|((s, p), f)| Figure::assemble(s, p, f, &evaluated))
             .collect();
-        type Encoded = (Vec<(Format, String, Vec<u8>)>, Vec<String>);
+        type Encoded = (Vec<(Format, String, Vec<u8>)>, Vec<String>, FigureDetail);
         let encoded: Vec<Encoded> = figures
             .par_iter()
             .zip(sources)
             .map(|(fig, (source, _, _))| {
+                let drawing = std::time::Instant::now();
                 let (encoded, findings) = encode_all_linted(fig, &formats)?;
                 progress.advance(formats.len() as u64);
                 Ok((
@@ -270,11 +341,21 @@ fn encode_sources(
                         })
                         .collect(),
                     findings.iter().map(|f| f.line(source)).collect(),
+                    FigureDetail::of(fig, source, findings.len(), drawing.elapsed()),
                 ))
             })
             .collect::<Result<_>>()?;
-        let (encoded, warnings): (Vec<_>, Vec<_>) = encoded.into_iter().unzip();
-        stats.warnings.extend(warnings.into_iter().flatten());
+        let mut warnings = Vec::new();
+        let mut files = Vec::new();
+        for (encoded, found, detail) in encoded {
+            files.push(encoded);
+            warnings.extend(found);
+            if points == Points::Drawn {
+                stats.figures.push(detail);
+            }
+        }
+        let encoded = files;
+        stats.warnings.extend(warnings);
         for (format, name, bytes) in encoded.into_iter().flatten() {
             *stats.produced.entry(format).or_default() += 1;
             outputs.push((name, bytes));

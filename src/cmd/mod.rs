@@ -17,6 +17,7 @@ use crate::model::curve::Curve;
 use crate::model::dataset::Dataset;
 use crate::model::metrics::sampled::{Operand, Samples};
 use crate::output::report::ReportFormat;
+use crate::output::stderr;
 use crate::problem::{Problem, Problems, join_key};
 use crate::spec::input::Side;
 use crate::{output::stdout, pipeline::resolve, spec::input, spec::source};
@@ -220,7 +221,7 @@ fn run_compare_pairs(
     );
     stdout::print(&report.stdout)?;
     let done = counted(report.compared, report.problems.len(), "pairs compared");
-    summary(
+    stderr::summary(
         quiet,
         &format!("compare: {done}, written to stdout"),
         started,
@@ -230,7 +231,7 @@ fn run_compare_pairs(
     if !report.problems.is_empty() && !batch.keep_going {
         if !exceeded.is_empty() {
             // The problems decide the exit code; the exceeded bounds are still said.
-            let _ = writeln!(std::io::stderr(), "{exceeded}");
+            stderr::say(&exceeded);
         }
         return Err(Error::Input(report.problems));
     }
@@ -259,7 +260,7 @@ fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {
     }
     if format != fit::Format::Curves {
         let done = counted(report.fitted, count - report.fitted, "targets fitted");
-        summary(quiet, &format!("fit: {done}, written to stdout"), started);
+        stderr::summary(quiet, &format!("fit: {done}, written to stdout"), started);
     }
     batch_verdict(
         report.problems,
@@ -277,15 +278,6 @@ fn counted(done: usize, failed: usize, what: &str) -> String {
     }
 }
 
-/// The closing line of a command on stderr: `<what> in <seconds> s`, unless `quiet`. Informative
-/// only: a closed stderr does not fail the command.
-pub fn summary(quiet: bool, what: &str, started: std::time::Instant) {
-    if !quiet {
-        let seconds = started.elapsed().as_secs_f64();
-        let _ = writeln!(std::io::stderr(), "{what} in {seconds:.2} s");
-    }
-}
-
 /// The exit of a batch whose failed records are `problems`: 0 when there are none; with
 /// `keep_going`, 0 as well (the rows say which failed, so their problems are printed only when
 /// `in_rows` is false); otherwise exit 2 with every problem.
@@ -298,7 +290,7 @@ fn batch_verdict(problems: Vec<Problems>, keep_going: bool, in_rows: bool) -> Re
     }
     if !in_rows {
         for p in &problems {
-            let _ = writeln!(std::io::stderr(), "{p}");
+            stderr::say(&p.to_string());
         }
     }
     Ok(())

@@ -11,6 +11,7 @@ pub mod pdf;
 pub mod plot;
 pub mod plot3d;
 pub mod report;
+pub mod stderr;
 pub mod stdout;
 pub mod stored;
 pub mod svg_tree;

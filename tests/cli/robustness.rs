@@ -484,6 +484,63 @@ fn render_check_reports_missing_and_extra_csvs() {
     );
 }
 
+/// `-v` says one line per figure before the closing line; `--color always` paints the labels of
+/// ndfplot's own messages (even into a pipe, and whatever NO_COLOR says), `never` and the default
+/// into a pipe do not.
+#[test]
+fn verbose_lines_and_coloured_labels_are_on_stderr_only() {
+    let out = ndfplot(&[
+        "render",
+        "tr-vs-phong",
+        "abc-grid",
+        "-o",
+        scratch("verbose").to_str().unwrap(),
+        "-v",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(out.stdout.is_empty());
+    let stderr = text(&out.stderr);
+    let lines: Vec<&str> = stderr.lines().collect();
+    assert_eq!(lines.len(), 3, "{stderr}");
+    assert!(
+        lines[0].starts_with(
+            "render: configs/tr-vs-phong.json: tr-vs-phong: 1280 × 460 px, 2 panels, 22 series, "
+        ),
+        "{stderr}"
+    );
+    assert!(
+        lines[1].starts_with("render: configs/abc-grid.json: abc-grid: "),
+        "{stderr}"
+    );
+    assert!(
+        lines[2].starts_with("render: 2 figures, 6 files (2 svg, 2 png, 2 csv) written to "),
+        "{stderr}"
+    );
+    let bad = r#"{"ndf":"ggx","alpha_tr":-1}"#;
+    let painted = ndfplot(&["eval", "--curve", bad, "--theta", "0", "--color", "always"]);
+    assert!(
+        text(&painted.stderr).starts_with("\x1b[1;31merror:\x1b[0m --curve: alpha_tr: "),
+        "{:?}",
+        text(&painted.stderr)
+    );
+    let forced = crate::common::ndfplot_stdin_env(
+        &["eval", "--curve", bad, "--theta", "0", "--color", "always"],
+        "",
+        &[("NO_COLOR", "1")],
+    );
+    assert_eq!(
+        forced.stderr, painted.stderr,
+        "--color always wins over NO_COLOR"
+    );
+    for plain in [&["--color", "never"][..], &[]] {
+        let out = ndfplot(&[&["eval", "--curve", bad, "--theta", "0"][..], plain].concat());
+        assert!(
+            text(&out.stderr).starts_with("error: --curve: alpha_tr: "),
+            "{plain:?}"
+        );
+    }
+}
+
 #[test]
 fn stdout_carries_results_only_and_no_bar_is_drawn_without_a_terminal() {
     let (spec, plots) = rendered("quiet");
@@ -497,11 +554,20 @@ fn stdout_carries_results_only_and_no_bar_is_drawn_without_a_terminal() {
         args.extend(flags);
         let out = ndfplot(&args);
         assert_eq!(out.status.code(), Some(0));
+        // No bar: stderr holds only the closing line, and nothing under -q.
+        let stderr = text(&out.stderr);
+        let closing = stderr.starts_with("render: 1 figure, ")
+            && stderr.ends_with(" s\n")
+            && stderr.lines().count() == 1;
         assert!(
-            out.stdout.is_empty() && out.stderr.is_empty(),
-            "{flags:?}: {}{}",
+            out.stdout.is_empty()
+                && (if flags.is_empty() {
+                    closing
+                } else {
+                    stderr.is_empty()
+                }),
+            "{flags:?}: {}{stderr}",
             text(&out.stdout),
-            text(&out.stderr)
         );
     }
 }
