@@ -12,8 +12,8 @@ use std::cell::RefCell;
 use super::theme::{self, Pattern};
 use super::{PlotError, SVG_UNITS_PER_PX, draw_figure};
 use crate::pipeline::figure::{Figure, Series};
-use crate::spec::numbers::significant;
 use crate::spec::look::{self, MIN_PRINT_PT, PanelKind, Rgb, delta_e00};
+use crate::spec::numbers::significant;
 use plotters::prelude::*;
 
 /// Significant digits of the θ range a left-out warning names: 1.571 for π/2.
