@@ -159,7 +159,7 @@ impl Side {
         match self {
             Side::Curve(curve) => Operand::Curve(curve.clone()),
             Side::Sampled(Dataset::Table { x, y } | Dataset::Csv { x, y, .. }) => {
-                Operand::Samples(Samples::new(x, y).unwrap_or_else(|| Samples::empty()))
+                Operand::Samples(Samples::new(x, y).unwrap_or_else(Samples::empty))
             }
             Side::Sampled(other) => unreachable!("only a series of θ is a side: {other:?}"),
         }
