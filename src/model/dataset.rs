@@ -1,12 +1,15 @@
 //! Series that are not functions of θ: the Belcour–Bati–Barla singular-value spectrum,
 //! coefficient paths and manifolds over Gulbrandsen's (r, g), the directional albedo of an NDF
-//! family over (μ, r) on Cycles' grid, and literal tables.
+//! family over (μ, r) on Cycles' grid, literal tables, and differences with a sampled side.
 //!
 //! A dataset is validated data (like a curve) and evaluates to points; it never draws or writes.
 
 use crate::model::albedo::{RoughnessMap, albedo_table, lobe, surface_of};
+use crate::model::curve::{Curve, DiffOp};
 use crate::model::fresnel::{basis, gulbrandsen};
 use crate::model::masking::G2Model;
+use crate::model::metrics::ThetaRange;
+use crate::model::metrics::sampled::{Operand, Samples, nodes};
 use crate::model::names::named;
 use crate::model::ndf::Family;
 use serde::ser::{Serialize, SerializeMap, Serializer};
@@ -127,6 +130,57 @@ pub enum Dataset {
         /// y values, as many as x.
         y: Vec<f64>,
     },
+    /// op(a, b) where a side is sampled (a [`Dataset::Csv`] or a [`Dataset::Table`] whose x is θ),
+    /// at the nodes of [`nodes`]: the sampled side's θ, the curve side evaluated there exactly;
+    /// when both are sampled, `a`'s θ inside `b`'s span with `b` linear between its samples (θ of
+    /// `a` outside that span are left out). Values may be non-finite (a ratio where b is 0).
+    Difference {
+        /// How the two values combine.
+        op: DiffOp,
+        /// The first operand.
+        a: Box<Side>,
+        /// The second operand.
+        b: Box<Side>,
+    },
+}
+
+/// One operand of a [`Dataset::Difference`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum Side {
+    /// An analytic curve, defined at every θ.
+    Curve(Curve),
+    /// Samples of θ (radians) and values: a [`Dataset::Csv`] or a [`Dataset::Table`].
+    Sampled(Dataset),
+}
+
+impl Side {
+    /// The side as a comparison operand: a curve, or the sampled side's points sorted by θ.
+    pub fn operand(&self) -> Operand {
+        match self {
+            Side::Curve(curve) => Operand::Curve(curve.clone()),
+            Side::Sampled(Dataset::Table { x, y } | Dataset::Csv { x, y, .. }) => {
+                Operand::Samples(Samples::new(x, y).unwrap_or_else(Samples::empty))
+            }
+            Side::Sampled(other) => unreachable!("only a series of θ is a side: {other:?}"),
+        }
+    }
+
+    fn len(&self) -> usize {
+        match self {
+            Side::Curve(_) => 0,
+            Side::Sampled(dataset) => dataset.len(),
+        }
+    }
+}
+
+impl Serialize for Side {
+    /// The curve's canonical JSON, or the sampled series'.
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        match self {
+            Side::Curve(curve) => curve.serialize(serializer),
+            Side::Sampled(dataset) => dataset.serialize(serializer),
+        }
+    }
 }
 
 /// Points of a dataset: (x, y), optional z per point, and the grid shape when the points form
@@ -144,7 +198,7 @@ pub struct DataPoints {
 impl Dataset {
     /// Whether the dataset's x is θ in radians (so it shares axes with curves).
     pub fn is_theta(&self) -> bool {
-        matches!(self, Dataset::Csv { .. })
+        matches!(self, Dataset::Csv { .. } | Dataset::Difference { .. })
     }
 
     /// Whether the dataset has a z coordinate (for surface and heat-map panels).
@@ -169,6 +223,7 @@ impl Dataset {
             Dataset::Gulbrandsen { r, g, .. } => r.len() * g.len(),
             Dataset::Albedo { mu, r, .. } => mu * r,
             Dataset::Table { x, .. } | Dataset::Csv { x, .. } => x.len(),
+            Dataset::Difference { a, b, .. } => a.len().max(b.len()),
         }
     }
 
@@ -269,6 +324,19 @@ impl Dataset {
                 z: None,
                 grid: None,
             },
+            Dataset::Difference { op, a, b } => {
+                let (a, b) = (a.operand(), b.operand());
+                let points = nodes(&a, &b, ThetaRange::FULL)
+                    .unwrap_or_default()
+                    .into_iter()
+                    .map(|t| (t, op.apply(a.at(t), b.at(t))))
+                    .collect();
+                DataPoints {
+                    points,
+                    z: None,
+                    grid: None,
+                }
+            }
         }
     }
 }
@@ -335,6 +403,11 @@ impl Serialize for Dataset {
                 map.serialize_entry("x", x_column)?;
                 map.serialize_entry("y", y_column)?;
                 map.serialize_entry("degrees", degrees)?;
+            }
+            Dataset::Difference { op, a, b } => {
+                map.serialize_entry("difference", op.name())?;
+                map.serialize_entry("a", a)?;
+                map.serialize_entry("b", b)?;
             }
         }
         map.end()

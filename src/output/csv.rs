@@ -180,7 +180,8 @@ fn quoted(field: &[u8]) -> std::borrow::Cow<'_, [u8]> {
 
 /// The CSV bytes of a figure: header `panel,series,curve,x,y` (and `,z` when any series has z
 /// values), then every point of every series, panels and series in order; `x` is θ in radians
-/// for curves. Series without z leave the z field empty.
+/// for curves. Series without z leave the z field empty. A point whose value is not finite (a ratio
+/// where its divisor underflowed) has no row: numbers printed are always finite.
 pub fn figure_csv(figure: &Figure) -> Vec<u8> {
     // Room for every row: its panel, series and curve, and up to 25 bytes per number.
     let bytes: usize = figure
@@ -208,6 +209,10 @@ pub fn figure_csv(figure: &Figure) -> Vec<u8> {
             let leading = quoted_fields(&[&p, &s.to_string(), &series.curve]);
             grid.format(series.points.iter().map(|&(x, _)| x));
             for (i, &(_, y)) in series.points.iter().enumerate() {
+                // A non-finite value is never printed: its row is left out (the lint names it).
+                if !y.is_finite() {
+                    continue;
+                }
                 table.quoted_fields(&leading);
                 table.formatted_number(grid.text(i));
                 table.number(y);

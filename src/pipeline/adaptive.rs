@@ -374,7 +374,12 @@ pub fn refine(
             .iter()
             .map(|&p| map.deviation(a, p, b))
             .fold(0.0, f64::max);
-        let deviation = if probes.iter().any(|p| !p.1.is_finite()) {
+        // Where the curve stops being finite, the edge is found by bisection; an interval
+        // finite nowhere is not drawn, so it needs no more points.
+        let finite = [a, probes[0], probes[1], b].map(|p| p.1.is_finite());
+        let deviation = if !finite.contains(&true) {
+            0.0
+        } else if finite.contains(&false) {
             f64::NAN
         } else {
             deviation

@@ -9,14 +9,16 @@
 
 use crate::error::{Error, Result};
 use crate::model::curve::Curve;
-use crate::model::dataset::Dataset;
+use crate::model::dataset::{Dataset, Side};
 use crate::model::fit;
 use crate::model::fresnel::Fresnel;
+use crate::model::metrics::ThetaRange;
+use crate::model::metrics::sampled::nodes;
 use crate::pipeline::adaptive;
 use crate::problem::{Problem, Problems, excerpt, join_key};
 use crate::spec::curve::{self, CurveSpec, Fitted, Label, Model, ParamValue, Part};
 use crate::spec::look::PanelKind;
-use crate::spec::scene::data::{CsvFile, DataSpec, MAX_DATA_POINTS};
+use crate::spec::scene::data::{CsvFile, DataSpec, MAX_DATA_POINTS, SideSpec};
 use crate::spec::scene::interactive::Slider;
 use crate::spec::scene::{
     DEFAULT_SAMPLES, Invalid, MAX_INTEGRALS, MAX_POINTS_PER_SCENE, Pending, Sampling, Scene,
@@ -217,15 +219,58 @@ fn scene_curve(spec: &SceneCurve<Spec>) -> std::result::Result<SceneCurve, Probl
 }
 
 fn scene_data(spec: SceneData<Spec>) -> std::result::Result<SceneData, Problem> {
-    let dataset = match spec.dataset {
-        DataSpec::Ready(dataset) => dataset,
-        DataSpec::Csv(file) => csv(&file)?,
+    let (dataset, label) = match spec.dataset {
+        DataSpec::Ready(dataset) => (dataset, spec.label),
+        DataSpec::Csv(file) => (csv(&file)?, spec.label),
+        DataSpec::Difference {
+            op,
+            a,
+            b,
+            template,
+            at,
+        } => {
+            let ((a, a_text), (b, b_text)) = (side(*a)?, side(*b)?);
+            if let Err(e) = nodes(&a.operand(), &b.operand(), ThetaRange::FULL) {
+                return Err(Problem::new(
+                    at,
+                    format!("a and b have no θ in common to take their difference at ({e})"),
+                ));
+            }
+            let text = match template {
+                Some(t) => t.replace("{a}", &a_text).replace("{b}", &b_text),
+                None => format!("{a_text} {} {b_text}", op.sign()),
+            };
+            let dataset = Dataset::Difference {
+                op,
+                a: Box::new(a),
+                b: Box::new(b),
+            };
+            (dataset, text)
+        }
     };
     Ok(SceneData {
         dataset,
-        label: spec.label,
+        label,
         style: spec.style,
     })
+}
+
+/// One operand of a difference with a sampled side, resolved, and its label.
+fn side(spec: SideSpec) -> std::result::Result<(Side, String), Problem> {
+    match spec {
+        SideSpec::Curve(c) => {
+            let (curve, text) = labelled(&c.curve, &c.label)?;
+            Ok((Side::Curve(curve), text))
+        }
+        SideSpec::Sampled { data, label } => {
+            let dataset = match data {
+                DataSpec::Csv(file) => csv(&file)?,
+                DataSpec::Ready(dataset) => dataset,
+                DataSpec::Difference { .. } => unreachable!("a side is a series of θ"),
+            };
+            Ok((Side::Sampled(dataset), label))
+        }
+    }
 }
 
 /// Resolves `specs` in order; the problems of those that fail go to `problems`.

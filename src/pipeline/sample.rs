@@ -18,7 +18,8 @@ use std::sync::Arc;
 /// The evaluated points of one job.
 #[derive(Debug, Clone)]
 pub struct Evaluated {
-    /// (x, y) per point; for curves (θ, value) with θ increasing.
+    /// (x, y) per point; for curves (θ, value) with θ increasing, the value possibly non-finite
+    /// (see [`evaluate_all`]).
     pub points: Arc<Vec<(f64, f64)>>,
     /// z per point (datasets with a z axis).
     pub z: Option<Arc<Vec<f64>>>,
@@ -66,8 +67,9 @@ enum Stage {
     },
 }
 
-/// Evaluates every job of `plan` in parallel; results are in job order. A job that fails (a
-/// non-finite value) is reported with its index, so the caller can name the curve's spec.
+/// Evaluates every job of `plan` in parallel; results are in job order. A dataset that is not a
+/// function of θ and gives a non-finite value fails, reported with its index so that the caller can
+/// name its spec; a series of θ keeps its non-finite values, for outputs to leave out.
 pub fn evaluate_all(plan: &Plan) -> std::result::Result<Vec<Evaluated>, JobError> {
     let mut stages: Vec<Stage> = plan
         .jobs
@@ -181,10 +183,13 @@ fn pixel_maps(frames: &[Frame], stages: &[Stage]) -> Vec<PixelMap> {
         .collect()
 }
 
-/// A non-finite value is an error, never output.
+/// A curve's non-finite values (a ratio where its divisor underflowed) stay in its points: drawings
+/// break the line there, tables leave those rows out, and the figure lint names them. A non-finite
+/// point of any other series is an error, never output.
 fn check_finite(job: &Job, evaluated: Evaluated) -> Result<Evaluated> {
     let name = match job {
-        Job::Uniform { curve, .. } | Job::Adaptive { curve, .. } => curve.canonical_json(),
+        Job::Uniform { .. } | Job::Adaptive { .. } => return Ok(evaluated),
+        Job::Data(dataset) if dataset.is_theta() => return Ok(evaluated),
         Job::Data(dataset) => dataset.canonical_json(),
     };
     let finite_z = evaluated

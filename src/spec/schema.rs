@@ -891,25 +891,28 @@ pub fn schema() -> Value {
             scene_curves.push(reference(&name));
         }
     }
-    let difference = |operand: &str, extras: &[&str]| {
+    let difference = |operand: Value, extras: &[&str]| {
         let keys: Vec<&str> = DIFFERENCE_KEYS.iter().chain(extras).copied().collect();
         object(&keys, DIFFERENCE_KEYS, |key| match key {
             DIFFERENCE_KEY => described(
                 strings(&ops),
                 "minus: a − b; ratio: a / b (0/0 = 1); relative: (a − b)/|b|; log-ratio: ln(a/b) (both 0 where a = b)",
             ),
-            "a" => described(reference(operand), "the first curve"),
-            "b" => described(
-                reference(operand),
-                "the second curve, of the same kind as a",
-            ),
+            "a" => described(operand.clone(), "the first curve"),
+            "b" => described(operand.clone(), "the second curve, of the same kind as a"),
             extra => extra_key(extra),
         })
     };
-    def("curve_difference", difference("curve", &[]));
+    def("curve_difference", difference(reference("curve"), &[]));
+    // In a scene, either side may be a series of θ: the difference is taken at its samples.
+    let scene_operand = json!({ "anyOf": [
+        reference("scene_curve"),
+        reference(&data_def("csv")),
+        reference(&data_def("table")),
+    ] });
     def(
         "scene_curve_difference",
-        difference("scene_curve", scene::CURVE_EXTRA_KEYS),
+        difference(scene_operand, scene::CURVE_EXTRA_KEYS),
     );
     def(
         "curve_transformed",

@@ -11,6 +11,7 @@ mod browser;
 mod cli;
 mod compare;
 mod conventions;
+mod difference;
 mod engine;
 mod fit;
 mod heatmap;

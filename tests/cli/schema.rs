@@ -551,10 +551,6 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
         "cross-field: the sign of (b − a)/s",
     ),
     (
-        "ratio-zero-denominator",
-        "computed: the ratio's denominator reaches 0 inside the range",
-    ),
-    (
         "slope-range-negative",
         "cross-field: the x unit decides the range's domain",
     ),

@@ -69,6 +69,22 @@ impl Kind {
     }
 }
 
+impl Kind {
+    /// The symbol of the values, math text: `D`, `Λ`, `G_1`, `G_2`, `E`, `W` (the furnace test's
+    /// G_1 (1 + Λ)), `F`.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Kind::Ndf("lambda") => "Λ",
+            Kind::Ndf("g1") => "G_1",
+            Kind::Ndf("g2") => "G_2",
+            Kind::Ndf("albedo") => "E",
+            Kind::Ndf("furnace") => "W",
+            Kind::Ndf(_) => "D",
+            Kind::Fresnel => "F",
+        }
+    }
+}
+
 impl Curve {
     /// The curve's value at θ ∈ [0, π/2] (radians).
     #[inline]
@@ -167,9 +183,45 @@ impl DiffOp {
     }
 }
 
+impl DiffOp {
+    /// The value axis label of a panel of such differences, math text, for operands whose values
+    /// are `symbol` ([`Kind::symbol`]; `None` when unknown, both sides being data):
+    /// `D_{a} − D_{b}`, `D_{a} / D_{b}`, `relative difference in D`, `ln(D_{a} / D_{b})`.
+    pub fn axis_label(self, symbol: Option<&str>) -> String {
+        let operand = |side: &str| match symbol {
+            // A subscripted symbol takes the side after its subscript: G_{1,a}.
+            Some(s) => match s.split_once('_') {
+                Some((base, sub)) => format!("{base}_{{{sub},{side}}}"),
+                None => format!("{s}_{{{side}}}"),
+            },
+            None => side.to_string(),
+        };
+        let (a, b) = (operand("a"), operand("b"));
+        match (self, symbol) {
+            (DiffOp::Minus, _) => format!("{a} − {b}"),
+            (DiffOp::Ratio, _) => format!("{a} / {b}"),
+            (DiffOp::Relative, Some(s)) => format!("relative difference in {s}"),
+            (DiffOp::Relative, None) => "relative difference".to_string(),
+            (DiffOp::LogRatio, _) => format!("ln({a} / {b})"),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::DiffOp;
+    use super::{DiffOp, Kind};
+
+    #[test]
+    fn difference_axes_name_the_operation_and_the_symbol() {
+        let d = Some(Kind::Ndf("d").symbol());
+        assert_eq!(DiffOp::Minus.axis_label(d), "D_{a} − D_{b}");
+        assert_eq!(DiffOp::Ratio.axis_label(d), "D_{a} / D_{b}");
+        assert_eq!(DiffOp::Relative.axis_label(d), "relative difference in D");
+        let g1 = Some(Kind::Ndf("g1").symbol());
+        assert_eq!(DiffOp::LogRatio.axis_label(g1), "ln(G_{1,a} / G_{1,b})");
+        assert_eq!(DiffOp::Relative.axis_label(None), "relative difference");
+        assert_eq!(DiffOp::Minus.axis_label(None), "a − b");
+    }
 
     #[test]
     fn relative_and_log_ratio_are_zero_where_the_operands_agree() {

@@ -34,6 +34,14 @@ impl Samples {
         })
     }
 
+    /// No samples: a side with nothing to compare, which shares no θ with any other.
+    pub fn empty() -> Samples {
+        Samples {
+            theta: Vec::new(),
+            value: Vec::new(),
+        }
+    }
+
     /// The θ interval the samples cover.
     pub fn span(&self) -> (f64, f64) {
         (self.theta[0], self.theta[self.theta.len() - 1])
@@ -83,7 +91,8 @@ pub enum Operand {
 }
 
 impl Operand {
-    fn at(&self, theta: f64) -> f64 {
+    /// The value at θ: the curve's, or the samples' by [`Samples::at`].
+    pub fn at(&self, theta: f64) -> f64 {
         match self {
             Operand::Curve(curve) => curve.eval(theta),
             Operand::Samples(samples) => samples.at(theta),
@@ -98,18 +107,12 @@ impl Operand {
     }
 }
 
-/// Every metric of `a` against `b` over `range`: [`super::compare`] for two curves; otherwise, over the
-/// nodes (the sampled side's θ inside `range`, or `a`'s θ inside `range` and `b`'s span when both are
-/// sampled): `max_abs`, `max_rel`, `max_log_ratio` and their θ at the nodes; `l2_projected` =
-/// sqrt(2π ∫ (a − b)² sin θ cos θ dθ) by the trapezoidal rule over the nodes; `l2_grid` over the c-grid
-/// nodes θ_i = arccos c_i inside the nodes' span; each peak the curve's maximum over `range` or the
-/// largest sample inside it. No series sample inside `range` is [`MetricError::OutsideRange`]; two
-/// series with no node in common, [`MetricError::Disjoint`].
-pub fn compare_operands(
-    a: &Operand,
-    b: &Operand,
-    range: ThetaRange,
-) -> Result<Comparison, MetricError> {
+/// Where a side is sampled, the θ at which `a` and `b` are compared (and a figure draws their
+/// difference), increasing: the sampled side's θ inside `range`, or, when both are sampled, `a`'s θ
+/// inside `range` and `b`'s span. Empty for two curves (they are compared at every θ). No sample
+/// inside `range` is [`MetricError::OutsideRange`]; two series with no node in common,
+/// [`MetricError::Disjoint`].
+pub fn nodes(a: &Operand, b: &Operand, range: ThetaRange) -> Result<Vec<f64>, MetricError> {
     let in_range = |s: &Samples| -> Result<Vec<f64>, MetricError> {
         let nodes: Vec<f64> = s
             .theta
@@ -124,7 +127,7 @@ pub fn compare_operands(
         }
     };
     let nodes: Vec<f64> = match (a, b) {
-        (Operand::Curve(a), Operand::Curve(b)) => return super::compare(a, b, range),
+        (Operand::Curve(_), Operand::Curve(_)) => return Ok(Vec::new()),
         (Operand::Samples(s), Operand::Curve(_)) | (Operand::Curve(_), Operand::Samples(s)) => {
             in_range(s)?
         }
@@ -140,6 +143,25 @@ pub fn compare_operands(
     if nodes.is_empty() {
         return Err(MetricError::Disjoint);
     }
+    Ok(nodes)
+}
+
+/// Every metric of `a` against `b` over `range`: [`super::compare`] for two curves; otherwise, over the
+/// nodes (the sampled side's θ inside `range`, or `a`'s θ inside `range` and `b`'s span when both are
+/// sampled): `max_abs`, `max_rel`, `max_log_ratio` and their θ at the nodes; `l2_projected` =
+/// sqrt(2π ∫ (a − b)² sin θ cos θ dθ) by the trapezoidal rule over the nodes; `l2_grid` over the c-grid
+/// nodes θ_i = arccos c_i inside the nodes' span; each peak the curve's maximum over `range` or the
+/// largest sample inside it. No series sample inside `range` is [`MetricError::OutsideRange`]; two
+/// series with no node in common, [`MetricError::Disjoint`].
+pub fn compare_operands(
+    a: &Operand,
+    b: &Operand,
+    range: ThetaRange,
+) -> Result<Comparison, MetricError> {
+    if let (Operand::Curve(a), Operand::Curve(b)) = (a, b) {
+        return super::compare(a, b, range);
+    }
+    let nodes = nodes(a, b, range)?;
     let difference = |theta: f64| {
         let (va, vb) = (a.at(theta), b.at(theta));
         if va.is_finite() && vb.is_finite() {

@@ -404,8 +404,14 @@ mod tests {
         let zero = linear(&[0.0, 0.0]);
         assert!(zero.lo < 0.0 && zero.hi > 0.0);
 
+        // Zeros (an underflowed curve) and non-finite values (a ratio whose divisor underflowed)
+        // are left out: the range is the finite positive values', decades 10⁻³ to 10².
         let log = Axis::y(
-            &panel(XUnit::Radians, Scale::Log, values(&[0.0, 2e-3, 40.0])),
+            &panel(
+                XUnit::Radians,
+                Scale::Log,
+                values(&[0.0, 2e-3, 40.0, f64::INFINITY, f64::NAN, 0.0]),
+            ),
             8.0,
         );
         assert_eq!((log.lo, log.hi), (-3.0, 2.0));

@@ -4,16 +4,20 @@
 //! text overlapping other text or leaving the canvas, every curve at 3:1 contrast with the page,
 //! no two legend entries alike in a panel or told apart only by colours too close (in normal
 //! vision or for a deuteranope), tick labels of at least 6 pt in print, and nothing the drawing
-//! could not do as asked.
+//! could not do as asked; and, not a rule of layout but said the same way, the points of each series
+//! left out of the drawing because their value is not finite.
 
 use std::cell::RefCell;
 
 use super::theme::{self, Pattern};
 use super::{PlotError, SVG_UNITS_PER_PX, draw_figure};
-use crate::pipeline::figure::Figure;
+use crate::pipeline::figure::{Figure, Series};
 use crate::spec::look::{self, MIN_PRINT_PT, PanelKind, Rgb, delta_e00};
+use crate::spec::numbers::significant;
 use plotters::prelude::*;
 
+/// Significant digits of the θ range a left-out warning names: 1.571 for π/2.
+const LEFT_OUT_DIGITS: usize = 4;
 /// Least labelled ticks per axis of a 2D panel.
 pub const MIN_LABELLED_TICKS: usize = 3;
 /// Least share of its grid cell's width and of its height a 2D panel's plot area keeps (the cells
@@ -150,6 +154,32 @@ fn flat(kind: &PanelKind) -> bool {
     matches!(kind, PanelKind::Cartesian | PanelKind::Heatmap { .. })
 }
 
+/// The points of `series` whose value is not finite (a ratio where its divisor underflowed), which
+/// the drawing and the table leave out: `"a / b": 12 points not finite, θ from 1.49 to 1.571, left
+/// out`; `None` when every value is finite.
+fn left_out(series: &Series) -> Option<String> {
+    let bad: Vec<f64> = series
+        .points
+        .iter()
+        .filter(|(_, y)| !y.is_finite())
+        .map(|&(x, _)| x)
+        .collect();
+    let (lo, hi) = bad
+        .iter()
+        .fold(None, |acc: Option<(f64, f64)>, &x| match acc {
+            None => Some((x, x)),
+            Some((lo, hi)) => Some((lo.min(x), hi.max(x))),
+        })?;
+    let shown = |x: f64| significant(x, LEFT_OUT_DIGITS);
+    let (count, plural) = (bad.len(), if bad.len() == 1 { "" } else { "s" });
+    Some(format!(
+        "{:?}: {count} point{plural} not finite, θ from {} to {}, left out",
+        series.label,
+        shown(lo),
+        shown(hi)
+    ))
+}
+
 fn overlap(a: &Rect, b: &Rect, tolerance: f64) -> bool {
     a[0] + tolerance < b[2]
         && b[0] + tolerance < a[2]
@@ -198,6 +228,13 @@ pub(super) fn findings(
     };
     for (panel, w) in &trace.warnings {
         push(*panel, w.clone());
+    }
+    for (p, panel) in figure.panels.iter().enumerate() {
+        for series in &panel.series {
+            if let Some(message) = left_out(series) {
+                push(Some(p), message);
+            }
+        }
     }
 
     for t in &trace.texts {

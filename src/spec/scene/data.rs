@@ -11,10 +11,14 @@
 //! values of a CSV file next to the spec, to overlay on analytic curves; the file is named here
 //! ([`CsvFile`]) and read by [`crate::pipeline::resolve`].
 //! Every entry also takes `label`, `style`, `colour` (or `color`) and `mark`.
+//!
+//! A difference entry (`{"difference": …, "a": …, "b": …}`) with a CSV or table series on a side is a
+//! data series too ([`read_difference`]): its values exist only where the samples are.
 
 use super::reader::{Object, Reader};
 use super::sweep;
-use super::{Pending, SceneData, Spec, read_style};
+use super::{Pending, SceneCurve, SceneData, Spec, read_curve_entry, read_style};
+use crate::model::curve::DiffOp;
 use crate::model::dataset::{AlbedoValue, Coefficient, Dataset, SpectrumQuantity};
 use crate::model::fresnel::{EDGE_TINT, REFLECTIVITY};
 use crate::spec::curve::ParamKind;
@@ -22,6 +26,7 @@ use crate::spec::datafile::DataScope;
 use crate::spec::json::{Node, Value};
 use crate::spec::look::Rgb;
 use crate::spec::numbers::pretty;
+use std::f64::consts::FRAC_PI_2;
 
 /// Most points one data series may have; a 1000 × 1000 coefficient grid is already far beyond
 /// what a figure can show.
@@ -44,12 +49,40 @@ pub const DEFAULT_ALBEDO_POINTS: usize = 33;
 const DATA_COLOUR: u32 = 0x268BD2;
 
 /// A validated data series as the spec describes it.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub enum DataSpec {
     /// A dataset given in the spec itself (spectrum, Gulbrandsen, table).
     Ready(Dataset),
     /// θ and values of a CSV file, read by resolve into a [`Dataset::Csv`].
     Csv(CsvFile),
+    /// A difference with a sampled side, made a [`Dataset::Difference`] by resolve, which also
+    /// writes its label (`<a> <sign> <b>`, or `template` with `{a}` and `{b}` filled in).
+    Difference {
+        /// How the two values combine.
+        op: DiffOp,
+        /// The first operand.
+        a: Box<SideSpec>,
+        /// The second operand.
+        b: Box<SideSpec>,
+        /// The entry's `label`, if given.
+        template: Option<String>,
+        /// JSON path of the entry, where a problem of the pair is reported.
+        at: String,
+    },
+}
+
+/// One operand of a difference entry with a sampled side, as the spec describes it.
+#[derive(Debug, Clone)]
+pub enum SideSpec {
+    /// A curve (one member of a sweep), with its label's description.
+    Curve(SceneCurve<Spec>),
+    /// A CSV or table series of θ, with its label.
+    Sampled {
+        /// The series.
+        data: DataSpec,
+        /// Its label.
+        label: String,
+    },
 }
 
 impl DataSpec {
@@ -57,7 +90,7 @@ impl DataSpec {
     pub fn is_theta(&self) -> bool {
         match self {
             DataSpec::Ready(dataset) => dataset.is_theta(),
-            DataSpec::Csv(_) => true,
+            DataSpec::Csv(_) | DataSpec::Difference { .. } => true,
         }
     }
 
@@ -70,7 +103,7 @@ impl DataSpec {
     pub fn has_z(&self) -> bool {
         match self {
             DataSpec::Ready(dataset) => dataset.has_z(),
-            DataSpec::Csv(_) => false,
+            DataSpec::Csv(_) | DataSpec::Difference { .. } => false,
         }
     }
 }
@@ -166,6 +199,101 @@ pub fn parse_csv_series(
         )]),
         _ => Err(reader.problems),
     }
+}
+
+/// Whether `node` is a difference entry with a data series on a side (read by [`read_difference`]).
+pub fn is_sampled_difference(node: &Node) -> bool {
+    crate::spec::curve::is_difference(node)
+        && matches!(&node.value, Value::Object(members)
+            if members.iter().any(|(k, v)| (k == "a" || k == "b") && is_data(v)))
+}
+
+/// Validates a difference entry with a CSV or table series on one side or both at `path`: one data
+/// series per member of the other side's sweep (a single curve against a CSV, or a sweep against it,
+/// pairs as [`super::sweep::difference_entry`] pairs curves).
+pub fn read_difference(reader: &mut Reader, node: &Node, path: &str) -> Vec<SceneData<Spec>> {
+    let parts = crate::spec::curve::difference_parts(node, path, super::CURVE_EXTRA_KEYS);
+    let Some((op, a_node, b_node)) = reader.accept(parts) else {
+        return Vec::new();
+    };
+    let before = reader.problems.len();
+    let a = read_side(reader, a_node, &crate::problem::join_key(path, "a"));
+    let b = read_side(reader, b_node, &crate::problem::join_key(path, "b"));
+    if reader.problems.len() > before
+        || a.is_empty()
+        || b.is_empty()
+        || !sweep::pairs(reader, path, a.len(), b.len())
+    {
+        return Vec::new();
+    }
+    let Value::Object(members) = &node.value else {
+        return Vec::new();
+    };
+    let entry = Object::from_members(members, path);
+    let template = reader.text(&entry, "label");
+    let colour = [&a[0], &b[0]]
+        .iter()
+        .find_map(|side| match side {
+            SideSpec::Curve(c) => Some(super::default_colour(c.curve.model())),
+            SideSpec::Sampled { .. } => None,
+        })
+        .unwrap_or(Rgb::from_hex(DATA_COLOUR));
+    let Some(style) = read_style(reader, &entry, colour) else {
+        return Vec::new();
+    };
+    let count = a.len().max(b.len());
+    (0..count)
+        .map(|k| SceneData {
+            dataset: DataSpec::Difference {
+                op,
+                a: Box::new(a[k.min(a.len() - 1)].clone()),
+                b: Box::new(b[k.min(b.len() - 1)].clone()),
+                template: template.clone(),
+                at: path.to_string(),
+            },
+            label: String::new(),
+            style: super::sweep_style(style, k, count),
+        })
+        .collect()
+}
+
+/// One side of a difference with a sampled side: a CSV or table series of θ, or a (swept) curve.
+fn read_side(reader: &mut Reader, node: &Node, path: &str) -> Vec<SideSpec> {
+    if !is_data(node) {
+        let mut curves = Vec::new();
+        read_curve_entry(reader, node, path, &mut curves);
+        return curves.into_iter().map(SideSpec::Curve).collect();
+    }
+    let Some(entry) = read_entry(reader, node, path) else {
+        return Vec::new();
+    };
+    match &entry.dataset {
+        DataSpec::Csv(_) => {}
+        DataSpec::Ready(Dataset::Table { x, .. }) => {
+            if let Some(bad) = x.iter().find(|t| !(0.0..=FRAC_PI_2).contains(*t)) {
+                reader.report(
+                    crate::problem::join_key(path, "x"),
+                    format!("θ out of range (got {bad:?}, expected radians within [0, π/2])"),
+                );
+                return Vec::new();
+            }
+        }
+        DataSpec::Ready(other) => {
+            reader.report(
+                crate::problem::join_key(path, "data"),
+                format!(
+                    "not a series of θ (got {}, expected {{\"data\": \"csv\", …}} or {{\"data\": \"table\", …}})",
+                    other.canonical_json()
+                ),
+            );
+            return Vec::new();
+        }
+        DataSpec::Difference { .. } => unreachable!("read_entry reads no difference"),
+    }
+    vec![SideSpec::Sampled {
+        data: entry.dataset,
+        label: entry.label,
+    }]
 }
 
 fn read_spectrum(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
@@ -399,6 +527,8 @@ fn default_label(dataset: &DataSpec) -> String {
     let dataset = match dataset {
         DataSpec::Ready(dataset) => dataset,
         DataSpec::Csv(csv) => return csv.path.clone(),
+        // Written by resolve, from its operands' labels.
+        DataSpec::Difference { .. } => return String::new(),
     };
     match dataset {
         Dataset::Spectrum { quantity, .. } => match quantity {
@@ -414,7 +544,7 @@ fn default_label(dataset: &DataSpec) -> String {
             }
         }
         Dataset::Albedo { value, .. } => albedo_symbol(*value).into(),
-        Dataset::Table { .. } | Dataset::Csv { .. } => "data".into(),
+        Dataset::Table { .. } | Dataset::Csv { .. } | Dataset::Difference { .. } => "data".into(),
     }
 }
 
@@ -431,12 +561,21 @@ pub fn default_labels(dataset: &DataSpec) -> (String, String) {
     let dataset = match dataset {
         DataSpec::Ready(dataset) => dataset,
         DataSpec::Csv(csv) => return (csv.x_column.clone(), csv.y_column.clone()),
+        DataSpec::Difference { op, a, b, .. } => {
+            let symbol = [a, b].iter().find_map(|side| match side.as_ref() {
+                SideSpec::Curve(c) => Some(c.curve.kind().symbol()),
+                SideSpec::Sampled { .. } => None,
+            });
+            return ("θ (radians)".into(), op.axis_label(symbol));
+        }
     };
     match dataset {
         Dataset::Spectrum { .. } => ("index k".into(), "singular values".into()),
         Dataset::Gulbrandsen { x, y, .. } => (symbol(*x).into(), symbol(*y).into()),
         Dataset::Albedo { .. } => ("μ = cos θ_o".into(), "r".into()),
-        Dataset::Table { .. } | Dataset::Csv { .. } => ("x".into(), "y".into()),
+        Dataset::Table { .. } | Dataset::Csv { .. } | Dataset::Difference { .. } => {
+            ("x".into(), "y".into())
+        }
     }
 }
 

@@ -1105,6 +1105,10 @@ fn default_curve_labels(
         (_, true) => "θ_o (radians)",
     };
     let y_label = match (&first.curve, transform) {
+        (CurveSpec::Difference { op, .. }, _) => {
+            let symbol = first.curve.kind().symbol();
+            return (x_label.to_string(), op.axis_label(Some(symbol)));
+        }
         (CurveSpec::Quantity { quantity, .. }, _) => quantity.axis_label(),
         (curve, _) if curve.kind() == Kind::Fresnel => "F(θ)",
         (_, Some(Transform::Projected)) => "D(θ) cos θ",
@@ -1301,7 +1305,9 @@ fn read_series(reader: &mut Reader, panel: &reader::Object) -> Option<PanelSerie
     let before = reader.problems.len();
     for (i, item) in items.iter().enumerate() {
         let item_path = join_index(&path, i);
-        if data::is_data(item) {
+        if data::is_sampled_difference(item) {
+            data.extend(data::read_difference(reader, item, &item_path));
+        } else if data::is_data(item) {
             data.extend(data::read_entry(reader, item, &item_path));
         } else {
             read_curve_entry(reader, item, &item_path, &mut curves);

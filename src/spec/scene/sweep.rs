@@ -447,15 +447,7 @@ pub fn difference_entry(
     if reader.problems.len() > before || a.is_empty() || b.is_empty() {
         return;
     }
-    if a.len() != b.len() && a.len() != 1 && b.len() != 1 {
-        reader.report(
-            path,
-            format!(
-                "a and b pair element-wise (got {} and {} curves, expected equal numbers, or one curve against a sweep)",
-                a.len(),
-                b.len()
-            ),
-        );
+    if !pairs(reader, path, a.len(), b.len()) {
         return;
     }
     let Value::Object(members) = &node.value else {
@@ -488,6 +480,21 @@ pub fn difference_entry(
             style: super::sweep_style(style, k, count),
         });
     }
+}
+
+/// Whether `a` and `b` operands of a difference at `path` pair element-wise: equal numbers, or one
+/// against a sweep. Otherwise reports it and returns `false`.
+pub fn pairs(reader: &mut Reader, path: &str, a: usize, b: usize) -> bool {
+    let paired = a == b || a == 1 || b == 1;
+    if !paired {
+        reader.report(
+            path,
+            format!(
+                "a and b pair element-wise (got {a} and {b} curves, expected equal numbers, or one curve against a sweep)"
+            ),
+        );
+    }
+    paired
 }
 
 #[cfg(test)]
