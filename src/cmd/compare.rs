@@ -362,6 +362,30 @@ pub fn table(pair: &Compared, span: &Span) -> String {
     out
 }
 
+/// The line under the readable table when a side is sampled, saying where each metric is taken
+/// (docs/contracts.md): the maxima at the sampled θ, `l2_projected` by the trapezoidal rule over
+/// them and `l2_grid` on the c-grid's nodes inside their span, reading samples linearly in between;
+/// empty when both sides are curves.
+pub fn sampled_note(a: &Operand, b: &Operand) -> String {
+    let sides: Vec<&str> = [("a", a), ("b", b)]
+        .into_iter()
+        .filter(|(_, side)| matches!(side, Operand::Samples(_)))
+        .map(|(name, _)| name)
+        .collect();
+    if sides.is_empty() {
+        return String::new();
+    }
+    format!(
+        "\n{} sampled: max_abs, max_rel and max_log_ratio are taken at the samples' theta; l2_projected\n\
+         integrates by the trapezoidal rule over them and l2_grid sums the c-grid's nodes inside their span,\n\
+         reading the samples as the straight lines drawn between them\n",
+        match sides[..] {
+            [one] => format!("{one} is"),
+            _ => "a and b are".to_string(),
+        }
+    )
+}
+
 /// The θ range line of the tables (`theta  0.0:0.7853981633974483`), or nothing over the whole
 /// hemisphere.
 fn range_line(span: &Span) -> String {

@@ -197,7 +197,9 @@ fn run_compare(args: CompareArgs, quiet: bool) -> Result<()> {
         }
         compare::Output::Json => compare::report(&compared, &span).json_lines(),
         compare::Output::Csv => compare::report(&compared, &span).csv(),
-        compare::Output::Table => compare::table(&compared[0], &span),
+        compare::Output::Table => {
+            compare::table(&compared[0], &span) + &compare::sampled_note(&a, &b)
+        }
     };
     stdout::print(&report)?;
     compare::check_bounds(&compared[0].metrics, &bounds, &span)
