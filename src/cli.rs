@@ -46,11 +46,13 @@ pub enum Command {
     /// Tabulate the directional albedo E(mu, r) of an NDF, its average E_avg(r) or the split-sum
     /// tables, for renderers; prints CSV.
     Albedo(AlbedoArgs),
-    /// List the built-in catalogue: one `id<TAB>title` line per figure.
+    /// List the built-in catalogue: one `id<TAB>title` line per figure (or, with --metals, the
+    /// measured metals).
     #[command(after_long_help = "Examples:\n  \
         ndfplot list\n  \
-        ndfplot list | cut -f1 | grep interactive | xargs ndfplot render -o pages")]
-    List,
+        ndfplot list | cut -f1 | grep interactive | xargs ndfplot render -o pages\n  \
+        ndfplot list --metals")]
+    List(ListArgs),
     /// Print the spec of a catalogue figure, ready to copy and edit.
     #[command(after_long_help = "Examples:\n  \
         ndfplot show gtr-gamma > my-figure.json\n  \
@@ -76,6 +78,15 @@ pub enum Command {
     /// Measure run time against error (drawing, normalization routes, throughput, Λ routes, an
     /// albedo table); writes bench.csv, bench.svg and bench.png.
     Bench(BenchArgs),
+}
+
+/// Arguments of `ndfplot list`.
+#[derive(Debug, Args)]
+pub struct ListArgs {
+    /// List the metals a Fresnel curve may name ("metal"): one
+    /// `symbol<TAB>names<TAB>min_nm<TAB>max_nm<TAB>samples` line each.
+    #[arg(long)]
+    pub metals: bool,
 }
 
 /// Arguments of `ndfplot show`.

@@ -35,13 +35,31 @@ pub fn run(command: Command, quiet: bool) -> Result<()> {
         Command::Fit(args) => run_fit(args, quiet),
         Command::Check(args) => run_check(args),
         Command::Albedo(args) => run_albedo(args, quiet),
-        Command::List => stdout::print(&crate::spec::catalogue::listing()),
+        Command::List(args) if args.metals => stdout::print(&metal_listing()),
+        Command::List(_) => stdout::print(&crate::spec::catalogue::listing()),
         Command::Show(args) => run_show(&args.id),
         Command::Schema => schema::run(),
         Command::Completions(args) => completions::completions(args.shell),
         Command::Man(args) => completions::man(args.dir.as_deref()),
         Command::Bench(args) => bench::run(&args.out).map(|_| ()),
     }
+}
+
+/// `symbol<TAB>names<TAB>min_nm<TAB>max_nm<TAB>samples` per measured metal, one line each, the names
+/// comma-separated and the wavelengths as the table writes them (shortest round trip).
+fn metal_listing() -> String {
+    crate::model::metal::Metal::ALL
+        .into_iter()
+        .map(|metal| {
+            let (min, max) = metal.range_nm();
+            format!(
+                "{}\t{}\t{min}\t{max}\t{}\n",
+                metal.symbol(),
+                metal.names().join(","),
+                metal.samples()
+            )
+        })
+        .collect()
 }
 
 /// Prints the spec of catalogue figure `id`; an unknown id is a usage error with a suggestion.

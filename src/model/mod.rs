@@ -1,5 +1,5 @@
 //! The mathematics: NDF families, masking, Fresnel, special functions and quadrature, metrics,
-//! albedo, fits and published presets. Pure f64 code: no I/O, no JSON, no drawing.
+//! albedo, fits, published presets and measured metals. Pure f64 code: no I/O, no JSON, no drawing.
 
 pub mod albedo;
 pub mod curve;
@@ -10,6 +10,7 @@ pub mod fresnel;
 pub mod grid;
 pub mod masking;
 pub mod math;
+pub mod metal;
 pub mod metrics;
 pub mod names;
 pub mod ndf;

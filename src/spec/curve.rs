@@ -14,6 +14,7 @@ use crate::model::curve::{Curve, DiffOp, Kind};
 use crate::model::domain::DomainError;
 use crate::model::fit::By;
 use crate::model::fresnel::{self, Fresnel, FresnelModel, Ior, SchlickF0};
+use crate::model::metal::Metal;
 use crate::model::ndf::Family;
 use crate::model::published::{Channel, Preset, PresetError, Source};
 use crate::model::renderer::{self, Emulation, Engine, Lobe, Refusal, Target, Width};
@@ -615,6 +616,14 @@ impl Model {
         Ok(CurveSpec::Ready(Curve::Fresnel(fresnel)))
     }
 
+    /// The index into [`Model::signatures`] of the signature `eta`/`kappa`, for the Fresnel models
+    /// that take an index of refraction that way (and so a metal's measured one).
+    pub fn eta_signature(self) -> Option<usize> {
+        self.signatures()
+            .iter()
+            .position(|s| s.first().is_some_and(|p| p.name == fresnel::ETA.name))
+    }
+
     /// Whether a renderer can compute curves of this model (`"engine"`): the GGX and Beckmann
     /// lobes, and Schlick's Fresnel.
     pub fn emulable(self) -> bool {
@@ -1149,6 +1158,18 @@ pub fn scalar(node: &Node, kind: ParamKind, path: &str) -> Result<ParamValue, Pr
 /// difference `{"difference": "minus"|"ratio"|"relative"|"log-ratio", "a": <curve>, "b": <curve>}` of two such curves,
 /// into its description ([`crate::pipeline::resolve::curve`] makes it a [`Curve`]).
 pub fn parse(node: &Node, path: &str) -> Result<CurveSpec, Vec<Problem>> {
+    if is_metal(node) {
+        let keys = metal_keys(node, path, &[], false)?;
+        let wavelength = scalar(
+            keys.wavelength,
+            ParamKind::Number,
+            &join_key(path, WAVELENGTH_KEY),
+        )
+        .map_err(|p| vec![p])?;
+        return metal_curve(keys.model, keys.metals[0], wavelength.number(), path)
+            .map(|(curve, _)| curve)
+            .map_err(|p| vec![p]);
+    }
     if is_published(node) {
         let choices = published(node, path, quantity::KEYS)?;
         return match choices.as_slice() {
@@ -1434,6 +1455,221 @@ fn names_at<'k>(
         }
     }
     (problems.len() == before).then_some(names)
+}
+
+/// The key naming a measured metal in a Fresnel curve: `{"fresnel": "exact", "metal": "Au",
+/// "wavelength_nm": 550}`.
+pub const METAL_KEY: &str = "metal";
+/// The key of the wavelength, in nm, at which a metal's index is taken.
+pub const WAVELENGTH_KEY: &str = "wavelength_nm";
+/// Keys of a metal's Fresnel curve besides the caller's extra keys.
+pub const METAL_KEYS: &[&str] = &["fresnel", METAL_KEY, WAVELENGTH_KEY];
+/// The keys that give an index directly, which a metal's measured index replaces.
+const INDEX_KEYS: &[&str] = &["eta", "kappa", "r", "g", "g_remap"];
+
+/// Whether `node` is a metal's Fresnel curve (has the key `"metal"` and no `"ndf"`).
+pub fn is_metal(node: &Node) -> bool {
+    matches!(&node.value, Value::Object(members)
+        if members.iter().any(|(k, _)| k == METAL_KEY) && !members.iter().any(|(k, _)| k == "ndf"))
+}
+
+/// A metal's Fresnel curve as its object names it, its wavelength not yet read.
+#[derive(Debug, Clone)]
+pub struct MetalKeys<'a> {
+    /// The Fresnel model, one that takes an index (η, κ).
+    pub model: Model,
+    /// The metals, in document order (one unless listed).
+    pub metals: Vec<Metal>,
+    /// The node of `wavelength_nm`.
+    pub wavelength: &'a Node,
+}
+
+/// Checks the metal's Fresnel object `node` at `path` (keys [`METAL_KEYS`] plus `extra_keys`, which
+/// the caller handles): a Fresnel model that takes an index (η, κ), one metal by symbol or English
+/// name in any case (or, where `lists`, a non-empty list of them; an unknown one gets a "did you
+/// mean"), and a `wavelength_nm`. Keys that give the index directly (`eta`, `kappa`, `r`, `g`,
+/// `g_remap`) are refused by name. Every problem is reported.
+pub fn metal_keys<'a>(
+    node: &'a Node,
+    path: &str,
+    extra_keys: &[&str],
+    lists: bool,
+) -> Result<MetalKeys<'a>, Vec<Problem>> {
+    let Value::Object(members) = &node.value else {
+        return Err(vec![Problem::new(
+            path,
+            format!("expected a curve object (got {node})"),
+        )]);
+    };
+    // The index keys pass the key check unlisted, to be refused by name below.
+    let listed: Vec<&str> = METAL_KEYS.iter().chain(extra_keys).copied().collect();
+    let accepted = Accepted {
+        object: Some("a metal's Fresnel curve"),
+        listed: &listed,
+        unlisted: INDEX_KEYS,
+    };
+    let mut problems = keys::validate(members, path, Some(&accepted));
+    let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, n)| n);
+    let given: Vec<&str> = INDEX_KEYS
+        .iter()
+        .copied()
+        .filter(|k| get(k).is_some())
+        .collect();
+    for key in &given {
+        let drop: Vec<String> = given.iter().map(|k| format!("\"{k}\"")).collect();
+        problems.push(Problem::new(
+            join_key(path, key),
+            format!(
+                "\"metal\" gives the index from measured data (got {}; drop {}, or drop \"metal\" to give the index yourself)",
+                get(key).expect("listed as given"),
+                drop.join(" and ")
+            ),
+        ));
+    }
+    let model = match get("fresnel") {
+        None => {
+            problems.push(Problem::new(
+                join_key(path, "fresnel"),
+                "missing the Fresnel model of the metal (expected one of: exact, schlick, belcour, normalized)",
+            ));
+            None
+        }
+        Some(name) => model_from_node("fresnel", name, path, &mut problems),
+    };
+    let takes_index = |model: Model| model.eta_signature().is_some();
+    if let Some(model) = model
+        && !takes_index(model)
+    {
+        let takers: Vec<&str> = FresnelModel::all()
+            .map(Model::Fresnel)
+            .filter(|&m| takes_index(m))
+            .map(Model::name)
+            .collect();
+        problems.push(Problem::new(
+            join_key(path, "fresnel"),
+            format!(
+                "fresnel \"{}\" takes no index of refraction, so no \"metal\" (expected one of: {})",
+                model.name(),
+                takers.join(", ")
+            ),
+        ));
+    }
+    let metals = metals_at(
+        get(METAL_KEY).expect("is_metal() was checked"),
+        &join_key(path, METAL_KEY),
+        lists,
+        &mut problems,
+    );
+    let wavelength = get(WAVELENGTH_KEY);
+    if wavelength.is_none() {
+        problems.push(Problem::new(
+            join_key(path, WAVELENGTH_KEY),
+            "missing the wavelength at which the metal's index is taken (expected a number of nm, such as 550)",
+        ));
+    }
+    match (model, metals, wavelength) {
+        (Some(model), Some(metals), Some(wavelength)) if problems.is_empty() => Ok(MetalKeys {
+            model,
+            metals,
+            wavelength,
+        }),
+        _ => Err(problems),
+    }
+}
+
+/// The metals `node` names at `path`: a symbol or English name in any case, or (where `lists`) a
+/// non-empty list of them; `None` after recording the problems.
+fn metals_at(
+    node: &Node,
+    path: &str,
+    lists: bool,
+    problems: &mut Vec<Problem>,
+) -> Option<Vec<Metal>> {
+    let items: Vec<(&Node, String)> = match &node.value {
+        Value::Array(items) if lists && !items.is_empty() => items
+            .iter()
+            .enumerate()
+            .map(|(i, item)| (item, join_index(path, i)))
+            .collect(),
+        _ => vec![(node, path.to_string())],
+    };
+    let names: Vec<&str> = Metal::all_names().collect();
+    let lower: Vec<String> = names.iter().map(|n| n.to_ascii_lowercase()).collect();
+    let before = problems.len();
+    let mut metals = Vec::with_capacity(items.len());
+    for (item, at) in items {
+        let Value::String(name) = &item.value else {
+            let expected = if lists {
+                "a metal's symbol or name, or a non-empty list of them"
+            } else {
+                "a metal's symbol or name"
+            };
+            problems.push(Problem::new(
+                at,
+                format!("expected {expected} (got {item})"),
+            ));
+            continue;
+        };
+        match Metal::from_name(name) {
+            Some(metal) => metals.push(metal),
+            None => {
+                // Suggested in the case the list writes it (Au, gold), whatever the case typed.
+                let near = crate::problem::did_you_mean(
+                    &name.to_ascii_lowercase(),
+                    lower.iter().map(String::as_str),
+                )
+                .and_then(|n| lower.iter().position(|l| l == n))
+                .map_or_else(String::new, |i| format!("; did you mean \"{}\"?", names[i]));
+                problems.push(Problem::new(
+                    at,
+                    format!(
+                        "unknown metal (got \"{}\", expected one of: {}){near}",
+                        crate::problem::excerpt(name),
+                        names.join(", ")
+                    ),
+                ));
+            }
+        }
+    }
+    (problems.len() == before).then_some(metals)
+}
+
+/// The Fresnel curve of `model` for `metal`'s measured index at `wavelength_nm` ([`Metal::index_at`]),
+/// with its automatic legend text (`exact, Au 550 nm`); a wavelength outside the metal's data is
+/// refused at `path`'s `wavelength_nm` with the data's range.
+pub fn metal_curve(
+    model: Model,
+    metal: Metal,
+    wavelength_nm: f64,
+    path: &str,
+) -> Result<(CurveSpec, String), Problem> {
+    let (min, max) = metal.range_nm();
+    let at = join_key(path, WAVELENGTH_KEY);
+    let (eta, kappa) = metal.index_at(wavelength_nm).ok_or_else(|| {
+        Problem::new(
+            &at,
+            format!(
+                "outside the measured data of {} (got {wavelength_nm:?}, expected in [{min:?}, {max:?}] nm)",
+                metal.symbol()
+            ),
+        )
+    })?;
+    let signature = model
+        .eta_signature()
+        .expect("metal_keys() checked that the model takes an index");
+    let curve = model
+        .build(
+            signature,
+            &[ParamValue::Number(eta), ParamValue::Number(kappa)],
+        )
+        .map_err(|e| domain_problem(&e, path))?;
+    let label = format!(
+        "{}, {} {} nm",
+        model.name(),
+        metal.symbol(),
+        crate::spec::numbers::pretty(wavelength_nm)
+    );
+    Ok((curve, label))
 }
 
 /// The model key of a difference series in the curve format.

@@ -20,13 +20,14 @@ use crate::model::domain::Param;
 use crate::model::fit::By;
 use crate::model::fresnel::{self, FresnelModel};
 use crate::model::masking::{G1Model, G2Model};
+use crate::model::metal::Metal;
 use crate::model::ndf::Family;
 use crate::model::published::{Channel, Source};
 use crate::model::renderer::Engine;
 use crate::model::transform::Transform;
 use crate::spec::curve::{
-    DIFFERENCE_KEY, DIFFERENCE_KEYS, ENGINE_KEY, Model, PUBLISHED_KEY, PUBLISHED_KEYS, ParamKind,
-    ParamSpec, TRANSFORM_KEY, TRANSFORM_KEYS,
+    DIFFERENCE_KEY, DIFFERENCE_KEYS, ENGINE_KEY, METAL_KEY, METAL_KEYS, Model, PUBLISHED_KEY,
+    PUBLISHED_KEYS, ParamKind, ParamSpec, TRANSFORM_KEY, TRANSFORM_KEYS, WAVELENGTH_KEY,
 };
 use crate::spec::quantity;
 use crate::spec::scene::interactive::{
@@ -937,6 +938,44 @@ pub fn schema() -> Value {
         def(&name, published(source, scene::CURVE_EXTRA_KEYS, true));
         scene_curves.push(reference(&name));
     }
+    // A metal's Fresnel curve: a model that takes an index, a metal, a wavelength.
+    let metal = |extras: &[&str], lists: bool| {
+        let takers: Vec<&str> = FresnelModel::all()
+            .map(Model::Fresnel)
+            .filter(|m| m.eta_signature().is_some())
+            .map(Model::name)
+            .collect();
+        let metals: Vec<&str> = Metal::all_names().collect();
+        let keys: Vec<&str> = METAL_KEYS.iter().chain(extras).copied().collect();
+        object(&keys, METAL_KEYS, |key| match key {
+            "fresnel" => described(
+                strings(&takers),
+                "a Fresnel model that takes an index (η, κ)",
+            ),
+            METAL_KEY if lists => described(
+                json!({ "anyOf": [strings(&metals), { "type": "array", "items": strings(&metals), "minItems": 1 }] }),
+                "a measured metal by symbol or English name (ndfplot list --metals), or a list of them",
+            ),
+            METAL_KEY => described(
+                strings(&metals),
+                "a measured metal by symbol or English name (ndfplot list --metals)",
+            ),
+            WAVELENGTH_KEY if lists => described(
+                reference("plain_sweep"),
+                "the wavelengths in nm at which the measured (η, κ) is interpolated, within the metal's data",
+            ),
+            WAVELENGTH_KEY => described(
+                reference("plain_number"),
+                "the wavelength in nm at which the measured (η, κ) is interpolated, within the metal's data",
+            ),
+            extra => extra_key(extra),
+        })
+    };
+    def("curve_metal", metal(&[], false));
+    def("scene_curve_metal", metal(scene::CURVE_EXTRA_KEYS, true));
+    curves.push(reference("curve_metal"));
+    fresnel_curves.push(reference("curve_metal"));
+    scene_curves.push(reference("scene_curve_metal"));
     // The branches exclude one another (each requires its model key and names, and admits no other
     // keys), so exactly one matches a valid curve.
     def(

@@ -530,6 +530,10 @@ const SCHEMA_CANNOT_TELL: &[(&str, &str)] = &[
         "cross-field: rows × cols against the number of panels",
     ),
     (
+        "metal-out-of-range",
+        "data: each metal's measured wavelength range is in its table",
+    ),
+    (
         "png-over-raster-cap",
         "computed: the product width × height × scale² against the cap",
     ),

@@ -11,6 +11,7 @@ mod fit;
 mod fresnel_properties;
 mod fresnel_reference;
 mod masking;
+mod metals;
 mod ndf_properties;
 mod ndf_reference;
 mod stress;

@@ -1332,6 +1332,9 @@ fn read_curve_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<
     if curve::is_published(node) {
         return sweep::published_entry(reader, node, path, out);
     }
+    if curve::is_metal(node) {
+        return sweep::metal_entry(reader, node, path, out);
+    }
     let Some(resolved) = reader.accept(curve::read_keys(node, path, CURVE_EXTRA_KEYS)) else {
         return;
     };

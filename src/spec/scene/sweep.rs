@@ -370,7 +370,74 @@ pub fn fit(
     Some(fits)
 }
 
-/// Expands a difference entry `{"difference": "minus"|"ratio", "a": …, "b": …}` at `path` into
+/// Expands a metal's Fresnel entry (`{"fresnel": "exact", "metal": …, "wavelength_nm": …}`, the
+/// metal a name or a list, the wavelength a number, list or range, see [`curve::metal_keys`]) into
+/// `out`, one curve per metal and wavelength, the later key varying fastest. Labels name the model,
+/// metal and wavelength (`exact, Au 550 nm`); a `label` may use `{metal}` and `{wavelength_nm}`.
+pub fn metal_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<SceneCurve<Spec>>) {
+    let Some(keys) = reader.accept(curve::metal_keys(node, path, super::CURVE_EXTRA_KEYS, true))
+    else {
+        return;
+    };
+    let Some((entry, template)) = super::entry_with_label(reader, node, path) else {
+        return;
+    };
+    let wavelength_path = join_key(path, curve::WAVELENGTH_KEY);
+    let Some(wavelengths) = expand(
+        reader,
+        curve::WAVELENGTH_KEY,
+        ParamKind::Number,
+        keys.wavelength,
+        &wavelength_path,
+    ) else {
+        return;
+    };
+    let Some(style) = read_style(reader, &entry, default_colour(keys.model)) else {
+        return;
+    };
+    let metal_node = match &node.value {
+        Value::Object(members) => members
+            .iter()
+            .find(|(k, _)| k == curve::METAL_KEY)
+            .map(|(_, n)| n),
+        _ => None,
+    };
+    let wavelength_first =
+        metal_node.is_some_and(|m| (keys.wavelength.line, keys.wavelength.col) < (m.line, m.col));
+    let mut pairs = Vec::new();
+    if wavelength_first {
+        for w in &wavelengths.values {
+            pairs.extend(keys.metals.iter().map(|&m| (m, w.value.number())));
+        }
+    } else {
+        for &m in &keys.metals {
+            pairs.extend(wavelengths.values.iter().map(|w| (m, w.value.number())));
+        }
+    }
+    let count = pairs.len();
+    for (k, (metal, wavelength)) in pairs.into_iter().enumerate() {
+        let Some((curve, label)) = reader
+            .accept(curve::metal_curve(keys.model, metal, wavelength, path).map_err(|p| vec![p]))
+        else {
+            return;
+        };
+        let text = match &template {
+            Some(template) => template
+                .replace("{metal}", metal.symbol())
+                .replace("{wavelength_nm}", &crate::spec::numbers::pretty(wavelength)),
+            None => label,
+        };
+        out.push(SceneCurve {
+            curve,
+            label: Label::Template {
+                template: text,
+                values: vec![],
+            },
+            style: super::sweep_style(style, k, count),
+        });
+    }
+}
+
 /// Expands a published-fit entry (`{"published": …, "material": …, "channel": …}`, material and
 /// channel each a name or a list, see [`curve::published`]) into `out`, one curve per fit. Labels
 /// name the source, the material when several are listed and the channel; a `label` may use
@@ -424,6 +491,7 @@ pub fn published_entry(
     }
 }
 
+/// Expands a difference entry `{"difference": "minus"|"ratio", "a": …, "b": …}` at `path` into
 /// `out`: a and b are curve entries (possibly swept) of the same kind, paired element-wise (equal
 /// numbers of curves, or one curve against a sweep). Labels are `<a> − <b>` or `<a> / <b>` unless
 /// the entry's `label` template says otherwise (`{a}` and `{b}` stand for the operands' labels).
