@@ -430,7 +430,7 @@ fn text(label: &Label, curve: &Curve, fit: Option<(&Fitted, &FitOutcome)>) -> St
                 })
                 .chain(engine_part(curve))
                 .collect();
-            with_family_prefix(curve, &parts.join(", "))
+            with_family_prefix(curve, &parts.join(", "), fit.is_some())
         }
         Label::Template { template, values } => {
             // A fitted value is computed: shown to the legend's digits, as written values are not.
@@ -464,13 +464,15 @@ fn engine_part(curve: &Curve) -> Option<String> {
     }
 }
 
-/// Prefixes the family's [`legend_prefix`](crate::model::ndf::Family::legend_prefix) where it has one.
-/// Belcour reconstructions also show their `l2_grid` error, to two decimals as the notebook
-/// prints it.
-fn with_family_prefix(curve: &Curve, text: &str) -> String {
+/// Prefixes the family's [`legend_prefix`](crate::model::ndf::Family::legend_prefix) where it has one,
+/// and a `fitted` curve's family title where it has none (`Beckmann α_b = 0.3 (peak fit to …)`): a
+/// fit's label names what was fitted. Belcour reconstructions also show their `l2_grid` error, to
+/// two decimals as the notebook prints it.
+fn with_family_prefix(curve: &Curve, text: &str, fitted: bool) -> String {
     match curve.model() {
         Model::Ndf(family) => match family.legend_prefix() {
             Some(prefix) => format!("{prefix} {text}"),
+            None if fitted => format!("{} {text}", family.title()),
             None => text.to_string(),
         },
         Model::Fresnel(model) => {
@@ -651,7 +653,9 @@ mod tests {
                 {"ndf": "abc", "alpha_abc2": 1.75, "alpha_abc1": {"fit": {"target": {"ndf": "ggx", "alpha_tr": 0.4}}}},
                 {"ndf": "abc", "alpha_abc2": 1.75, "label": "{alpha_abc1} by {alpha_abc2}",
                  "alpha_abc1": {"fit": {"target": {"ndf": "ggx", "alpha_tr": 0.4}}}},
-                {"difference": "minus", "a": {"ndf": "ggx", "alpha_tr": [0.4, 0.6]}, "b": {"ndf": "ggx", "alpha_tr": 0.5}}]}]}"#,
+                {"difference": "minus", "a": {"ndf": "ggx", "alpha_tr": [0.4, 0.6]}, "b": {"ndf": "ggx", "alpha_tr": 0.5}},
+                {"ndf": "beckmann", "alpha_b": {"fit": {"target": {"ndf": "ggx", "alpha_tr": 0.3}}}},
+                {"ndf": "beckmann", "alpha_b": 0.3}]}]}"#,
         )
         .unwrap();
         let labels: Vec<&str> = scene.panels[0]
@@ -665,8 +669,13 @@ mod tests {
         );
         assert_eq!(labels[1], "11.6 by 1.75", "a fitted value to three digits");
         assert_eq!(
-            labels[2..],
+            labels[2..4],
             ["α_{tr} = 0.4 − α_{tr} = 0.5", "α_{tr} = 0.6 − α_{tr} = 0.5"]
+        );
+        // A fit names the family it fitted, even one whose parameter alone would not.
+        assert_eq!(
+            labels[4..],
+            ["Beckmann α_b = 0.3 (peak fit to α_{tr} = 0.3)", "α_b = 0.3"]
         );
     }
 }
