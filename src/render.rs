@@ -14,7 +14,7 @@ use crate::pipeline::plan::{Outputs, Plan, plan};
 use crate::pipeline::progress::Progress;
 use crate::pipeline::provenance::Provenance;
 use crate::pipeline::resolve;
-use crate::pipeline::sample::{Evaluated, JobError, evaluate_all};
+use crate::pipeline::sample::{Evaluated, JobError, STEPS_PER_JOB, evaluate_all_counted};
 use crate::problem::{Problem, Problems};
 use crate::spec::source::{CanvasOverride, Source, load_scenes, sources};
 use rayon::prelude::*;
@@ -192,7 +192,7 @@ pub fn drawn_figures(
         table: false,
     };
     let plan = plan(&scenes, outputs);
-    let evaluated = evaluate(&plan, &sources)?;
+    let evaluated = evaluate(&plan, &sources, &Progress::new(0, true))?;
     let feeds = plan.drawn.as_ref().expect("drawn outputs were planned");
     Ok(scenes
         .iter()
@@ -202,26 +202,28 @@ pub fn drawn_figures(
         .collect())
 }
 
-/// Every job of `plan` evaluated ([`evaluate_all`]); a job that fails is reported against the
-/// spec it came from (`sources`, in scene order): its file, the JSON path of its panel and its
-/// series there.
-fn evaluate(plan: &Plan, sources: &[Source]) -> Result<Vec<Evaluated>> {
-    evaluate_all(plan).map_err(|JobError { job, error }| {
-        let message = match error {
-            Error::Numerics(message) => message,
-            other => other.to_string(),
-        };
-        match plan.first_use(job) {
-            Some((scene, panel, series)) => Error::Input(vec![Problems {
-                source: sources[scene].0.clone(),
-                list: vec![Problem::new(
-                    format!("panels[{panel}]"),
-                    format!("series {series}: {message}"),
-                )],
-            }]),
-            None => Error::Numerics(message),
-        }
-    })
+/// Every job of `plan` evaluated ([`evaluate_all_counted`], counted on `progress`); a job that
+/// fails is reported against the spec it came from (`sources`, in scene order): its file, the JSON
+/// path of its panel and its series there.
+fn evaluate(plan: &Plan, sources: &[Source], progress: &Progress) -> Result<Vec<Evaluated>> {
+    evaluate_all_counted(plan, &|steps| progress.advance(steps)).map_err(
+        |JobError { job, error }| {
+            let message = match error {
+                Error::Numerics(message) => message,
+                other => other.to_string(),
+            };
+            match plan.first_use(job) {
+                Some((scene, panel, series)) => Error::Input(vec![Problems {
+                    source: sources[scene].0.clone(),
+                    list: vec![Problem::new(
+                        format!("panels[{panel}]"),
+                        format!("series {series}: {message}"),
+                    )],
+                }]),
+                None => Error::Numerics(message),
+            }
+        },
+    )
 }
 
 /// Output files as (file name, bytes).
@@ -296,12 +298,11 @@ fn encode_sources(
     };
     let plan = plan(&scenes, outputs);
     let progress = Progress::new(
-        (plan.jobs.len() + scenes.len() * options.formats.len()) as u64,
+        plan.jobs.len() as u64 * STEPS_PER_JOB + (scenes.len() * options.formats.len()) as u64,
         quiet,
     );
     progress.stage("evaluating");
-    let evaluated = evaluate(&plan, sources)?;
-    progress.advance(plan.jobs.len() as u64);
+    let evaluated = evaluate(&plan, sources, &progress)?;
     progress.stage("encoding");
     let mut stats = RenderStats {
         evaluation: start.elapsed(),

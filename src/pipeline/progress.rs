@@ -32,10 +32,11 @@ impl Progress {
             return Progress { bar: None, done };
         }
         let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::hidden());
-        let style =
-            ProgressStyle::with_template("{spinner} {msg} [{bar:30}] {pos}/{len} {elapsed}")
-                .expect("the template is valid")
-                .progress_chars("=> ");
+        let style = ProgressStyle::with_template(
+            "{spinner} {msg} [{bar:30}] {pos}/{len} {elapsed}, {eta} left",
+        )
+        .expect("the template is valid")
+        .progress_chars("=> ");
         bar.set_style(style);
         let (delayed, finished) = (bar.clone(), Arc::clone(&done));
         std::thread::spawn(move || {

@@ -71,38 +71,35 @@ enum Stage {
 /// function of θ and gives a non-finite value fails, reported with its index so that the caller can
 /// name its spec; a series of θ keeps its non-finite values, for outputs to leave out.
 pub fn evaluate_all(plan: &Plan) -> std::result::Result<Vec<Evaluated>, JobError> {
+    evaluate_all_counted(plan, &|_| {})
+}
+
+/// Steps [`evaluate_all_counted`] counts per job: its first sampling and its refinement (a job that
+/// needs none counts both at once).
+pub const STEPS_PER_JOB: u64 = 2;
+
+/// [`evaluate_all`], calling `done(n)` from the worker threads as jobs reach their stages, so that
+/// a progress bar moves during evaluation: [`STEPS_PER_JOB`] steps per job in all.
+pub fn evaluate_all_counted(
+    plan: &Plan,
+    done: &(dyn Fn(u64) + Sync),
+) -> std::result::Result<Vec<Evaluated>, JobError> {
     let mut stages: Vec<Stage> = plan
         .jobs
         .par_iter()
-        .map(|job| match job {
-            Job::Uniform {
-                curve,
-                theta_range,
-                samples,
-            } => Stage::Done(uniform(curve, *theta_range, *samples)),
-            Job::Data(dataset) => {
-                let data = dataset.evaluate();
-                Stage::Done(Evaluated {
-                    points: Arc::new(data.points),
-                    z: data.z.map(Arc::new),
-                    grid: data.grid,
-                    evaluations: 0,
-                })
-            }
-            Job::Adaptive { curve, frame } => {
-                let refined = initial(curve, &plan.frames[*frame].theta_range);
-                Stage::Refining {
-                    curve: curve.clone(),
-                    frame: *frame,
-                    refined,
-                }
-            }
+        .map(|job| {
+            let stage = first_stage(job, plan);
+            done(match stage {
+                Stage::Done(_) => STEPS_PER_JOB,
+                Stage::Refining { .. } => 1,
+            });
+            stage
         })
         .collect();
     let mut maps = pixel_maps(&plan.frames, &stages);
     let mut pending: Vec<bool> = vec![true; plan.frames.len()];
     // At most two refinements: the second only where the first changed the pixel scale.
-    for _ in 0..2 {
+    for pass in 0..2 {
         stages.par_iter_mut().for_each(|stage| {
             if let Stage::Refining {
                 curve,
@@ -126,6 +123,9 @@ pub fn evaluate_all(plan: &Plan) -> std::result::Result<Vec<Evaluated>, JobError
                     adaptive::budget(curve),
                     start,
                 );
+                if pass == 0 {
+                    done(STEPS_PER_JOB - 1);
+                }
             }
         });
         let after = pixel_maps(&plan.frames, &stages);
@@ -157,6 +157,34 @@ pub fn evaluate_all(plan: &Plan) -> std::result::Result<Vec<Evaluated>, JobError
             check_finite(job, evaluated).map_err(failed)
         })
         .collect()
+}
+
+/// The first stage of `job`: a uniform or data job done, an adaptive one sampled once.
+fn first_stage(job: &Job, plan: &Plan) -> Stage {
+    match job {
+        Job::Uniform {
+            curve,
+            theta_range,
+            samples,
+        } => Stage::Done(uniform(curve, *theta_range, *samples)),
+        Job::Data(dataset) => {
+            let data = dataset.evaluate();
+            Stage::Done(Evaluated {
+                points: Arc::new(data.points),
+                z: data.z.map(Arc::new),
+                grid: data.grid,
+                evaluations: 0,
+            })
+        }
+        Job::Adaptive { curve, frame } => {
+            let refined = initial(curve, &plan.frames[*frame].theta_range);
+            Stage::Refining {
+                curve: curve.clone(),
+                frame: *frame,
+                refined,
+            }
+        }
+    }
 }
 
 /// Why the job at index `job` of a plan could not be evaluated.
