@@ -1,6 +1,6 @@
 //! The command line: clap types that mirror the arguments, and nothing else.
 
-use crate::output::report::{RecordFormat, ReportFormat};
+use crate::output::report::{RecordFormat, ReportFormat, TableShape};
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
@@ -557,12 +557,20 @@ pub struct AlbedoArgs {
     /// ('{"fresnel":"exact","eta":1.5}') or @FILE. Default F = 1.
     #[arg(long, value_name = "JSON|@FILE")]
     pub fresnel: Option<String>,
-    /// The table: e (E per mu and r), average (E_avg per r), split-sum (E_0..E_3 per mu and r) or
-    /// dfg (the split-sum pair DFG1, DFG2 per mu and r).
-    #[arg(long, value_name = "TABLE", default_value = "e",
-        value_parser = clap::builder::PossibleValuesParser::new(crate::model::albedo::Table::NAMES.map(|(name, _)| name)))]
+    /// The tables, comma-separated, each at most once (case-insensitive): e (E per mu and r),
+    /// average (E_avg per r), split-sum (E_0..E_3 per mu and r), dfg (the split-sum pair DFG1, DFG2
+    /// per mu and r); e.g. e,average. All on one grid, in one output.
+    #[arg(long, value_name = "TABLE[,TABLE...]", default_value = "e")]
     pub table: String,
-    /// Output: CSV with # metadata lines, or one JSON object.
+    /// The layout: long (one row per (mu, r) cell) or matrix (rows by mu, one column per r).
+    #[arg(long, value_name = "SHAPE", default_value = "long",
+        value_parser = choice(&TableShape::NAMES, &TableShape::ALL))]
+    pub shape: TableShape,
+    /// CSV without the # metadata lines: the header is the first line (--format json still
+    /// carries the metadata).
+    #[arg(long)]
+    pub no_comments: bool,
+    /// Output: CSV with # metadata lines, or JSON (an object per table).
     #[arg(long, value_name = "FORMAT", default_value = "csv",
         value_parser = choice(&ReportFormat::NAMES, &[ReportFormat::Csv, ReportFormat::Json]))]
     pub format: ReportFormat,
