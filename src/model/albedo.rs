@@ -486,8 +486,9 @@ pub fn median_slope(ndf: impl Fn(f64) -> f64) -> f64 {
 /// each). Each E is held to [`AVERAGE_E_TOL`] (or the surface's own tolerance if looser): the
 /// weights sum to 1, so E_avg keeps about that accuracy. 44–76 albedos per value, each about half
 /// the cost of a table cell at 1e-12, so a 32-value average costs less than the 32 × 32 E table;
-/// within 1.6e-9 of 16-point rules on panels 4× finer with every E to 1e-12 (GGX, Beckmann, both
-/// G2 models, maps r², r, √r, 32–64 values of r); [`AVERAGE_TOL`] is the bound stated.
+/// within 1.6e-9 of 16-point rules on panels 4× finer with every E to 1e-12 (GGX, Beckmann, GTR
+/// γ = 1.5, Student-t γ = 3; both G2 models; maps r², r, √r; 16–64 values of r); [`AVERAGE_TOL`]
+/// is the bound stated.
 pub fn average_albedo<D, L>(surface: &Microfacet<D, L>, fresnel: Fresnel) -> Result<f64, QuadError>
 where
     D: Fn(f64) -> f64,
