@@ -457,6 +457,7 @@ impl Request {
         };
         let roughness = unit_grid(self.n_r);
         Ok(Output {
+            table,
             metadata: self.metadata(table),
             mu: self.mu_count(table).map(unit_grid),
             roughness,
@@ -608,6 +609,8 @@ impl std::fmt::Display for Meta {
 /// A computed table with its metadata and axes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Output {
+    /// Which table.
+    pub table: Table,
     /// (key, value) pairs naming what the table is, in order.
     pub metadata: Vec<(&'static str, Meta)>,
     /// The μ axis (`None` for the average table).
@@ -620,13 +623,9 @@ pub struct Output {
 }
 
 impl Output {
-    /// The table's name (its `table` metadata).
-    pub fn name(&self) -> String {
-        self.metadata
-            .iter()
-            .find(|(key, _)| *key == "table")
-            .map(|(_, value)| value.to_string())
-            .unwrap_or_default()
+    /// The table's name, as `--table` takes it.
+    pub fn name(&self) -> &'static str {
+        self.table.name()
     }
 
     /// The number of leading columns that are axes (`mu`, `r`, `alpha` or `r`, `alpha`).

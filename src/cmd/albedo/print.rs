@@ -55,7 +55,7 @@ fn metadata_lines(outputs: &[Output]) -> String {
     }
     let mut text = String::new();
     for key in keys {
-        let values: Vec<(String, String)> = outputs
+        let values: Vec<(&str, String)> = outputs
             .iter()
             .filter_map(|o| {
                 let (_, value) = o.metadata.iter().find(|(k, _)| *k == key)?;
@@ -64,7 +64,7 @@ fn metadata_lines(outputs: &[Output]) -> String {
             .collect();
         let shared = values.len() == outputs.len() && values.iter().all(|(_, v)| *v == values[0].1);
         if key == "table" {
-            let names: Vec<String> = outputs.iter().map(Output::name).collect();
+            let names: Vec<&str> = outputs.iter().map(Output::name).collect();
             text.push_str(&format!("# table: {}\n", names.join(",")));
         } else if shared {
             text.push_str(&format!("# {key}: {}\n", values[0].1));
@@ -93,7 +93,7 @@ fn long(outputs: &[Output]) -> Report {
     for output in outputs {
         let own = output.report.columns();
         for row in output.report.rows() {
-            let mut cells = vec![Cell::Text(output.name())];
+            let mut cells = vec![Cell::Text(output.name().to_string())];
             cells.extend(columns.iter().map(|name| {
                 own.iter()
                     .position(|c| c == name)
@@ -122,8 +122,7 @@ fn matrices(output: &Output) -> Vec<Report> {
             .map(|(k, name)| {
                 let k = k + output.axis_columns();
                 let mut block = Report::new(header(name));
-                for (i, &mu) in mu.iter().enumerate() {
-                    let cells = &rows[i * output.roughness.len()..(i + 1) * output.roughness.len()];
+                for (&mu, cells) in mu.iter().zip(rows.chunks(output.roughness.len())) {
                     block.push(
                         std::iter::once(Cell::Number(mu))
                             .chain(cells.iter().map(|row| row[k].clone()))
@@ -210,7 +209,7 @@ impl Serialize for Keyed<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
         let mut map = serializer.serialize_map(Some(self.0.len()))?;
         for output in self.0 {
-            map.serialize_entry(&output.name(), &Json(output, self.1))?;
+            map.serialize_entry(output.name(), &Json(output, self.1))?;
         }
         map.end()
     }
