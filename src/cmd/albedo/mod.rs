@@ -361,11 +361,13 @@ impl Request {
             .sum()
     }
 
-    /// Computes every table, one after the other (cells in parallel; `progress` counts them), each
-    /// with its metadata.
+    /// Computes every table with its metadata, in the order asked: the tables side by side and
+    /// their cells in parallel, so one table's last slow cells overlap another's (`progress`
+    /// counts the cells of all).
     pub fn compute(&self, progress: &Progress) -> Result<Vec<Output>> {
+        use rayon::prelude::*;
         self.tables
-            .iter()
+            .par_iter()
             .map(|&table| self.compute_table(table, progress))
             .collect()
     }
