@@ -299,7 +299,19 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
                 args.table
             )));
         };
-        return run_albedo_audit(&args, path, table, g2, family, &fixed, fresnel, quiet);
+        return run_albedo_audit(&args, path, table, g2, family, &fixed, fresnel, quiet).inspect(
+            |()| {
+                if !quiet {
+                    let _ = writeln!(
+                        std::io::stderr(),
+                        "albedo: audited {} of {} in {:.2} s",
+                        table.name(),
+                        path.display(),
+                        started.elapsed().as_secs_f64()
+                    );
+                }
+            },
+        );
     }
     let surface = albedo::Surface::new(family, &fixed, map)?;
     let grid = albedo::grid(&tables, args.size, args.mu_count, args.r_count)?;

@@ -706,4 +706,16 @@ fn several_tables_go_to_one_file_with_a_summary_line_on_stderr() {
     assert!(text(&printed.stderr).starts_with("albedo: wrote e (2 × 2) to stdout in "));
     let quiet = ndfplot(&["albedo", "-q", "--size", "2"]);
     assert!(quiet.stderr.is_empty());
+    // An audit closes with its own line: E on the 2 × 2 grid is 1 but at μ = 1, α = 1 (1 − ln 2).
+    let engine = dir.join("engine.csv");
+    std::fs::write(&engine, "1,1\n1,0.3068528194400549\n").unwrap();
+    let audited = ndfplot(&["albedo", "--against", engine.to_str().unwrap()]);
+    assert_eq!(audited.status.code(), Some(0), "{}", text(&audited.stderr));
+    let stderr = text(&audited.stderr);
+    let prefix = format!("albedo: audited e of {} in ", engine.display());
+    assert!(
+        stderr.starts_with(&prefix) && stderr.ends_with(" s\n"),
+        "{stderr}"
+    );
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
 }
