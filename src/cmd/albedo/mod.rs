@@ -1,11 +1,12 @@
 //! `ndfplot albedo`: the tables renderers precompute from an NDF — the directional albedo E(μ, r)
 //! with Turquin's factor, the average E_avg(r) with Kulla–Conty's normalisation and Fresnel
 //! colouring, and the Belcour–Bati–Barla split-sum tables E_0 … E_3 — with metadata naming what
-//! they are, as CSV or JSON.
+//! they are, as CSV or JSON, several in one run.
 //!
-//! Owns the reading of the command's arguments into a [`Request`] (the family, its fixed
-//! parameters, the roughness map, the grid, the Fresnel factor) and the text of the output; the
-//! integrals and the grids are [`crate::model::albedo`]'s.
+//! Owns the reading of the command's arguments into a [`Request`] (the tables, the family, its
+//! fixed parameters, the roughness map, the grid, the Fresnel factor) and each table's rows and
+//! metadata ([`Output`]); their text in each shape and format is [`print`]'s, the integrals and the
+//! grids are [`crate::model::albedo`]'s.
 
 pub mod audit;
 pub mod print;
