@@ -1,6 +1,6 @@
 //! The command line: clap types that mirror the arguments, and nothing else.
 
-use crate::output::report::{RecordFormat, ReportFormat};
+use crate::output::report::{RecordFormat, ReportFormat, TableShape};
 use crate::output::stderr::ColorChoice;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Args, Parser, Subcommand};
@@ -523,12 +523,13 @@ pub struct CheckArgs {
     The mu = 0 row is the limit mu -> 0+, the r = 0 column the family's lobe at alpha = 0: the mirror\n\
     limit alpha -> 0+ (E = F(theta_o)) for a width, the uniform lobe 1/pi for phong and abc; gtr with\n\
     gamma_gtr < 1, whose lobe tends to (1 - gamma)/(pi sin^(2 gamma) theta), is refused.\n\n\
-    Tables (CSV columns):\n  \
+    Tables (--table, comma-separated for several in one output, e.g. e,average; CSV columns):\n  \
     e          mu,r,alpha,E,turquin_f0_1: E(mu) and Turquin's compensation factor 1/E (F0 = 1);\n             \
     with --fresnel mu,r,alpha,E_F, the albedo with F(theta_d)\n  \
     average    r,alpha,E_avg,kulla_conty_norm: E_avg = 2 integral E(mu) mu dmu and Kulla-Conty's\n             \
     1/(pi (1 - E_avg)) (empty, JSON null, where E_avg = 1); with --fresnel also F_avg and\n             \
-    F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)) (E_avg stays F = 1)\n  \
+    F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)) (E_avg stays F = 1). E_avg is within 1e-8\n             \
+    (fixed rules in mu on its own nodes; the other tables within 1e-10)\n  \
     split-sum  mu,r,alpha,E_0,E_1,E_2,E_3: Belcour-Bati-Barla tables, E_k the albedo with F = b_k, so\n             \
     that E_F = sum c_k E_k for F = sum c_k b_k (see coeffs); no --fresnel\n  \
     dfg        mu,r,alpha,DFG1,DFG2: the split-sum pair of Schlick's Fresnel, DFG1 = E_F with\n             \
@@ -548,14 +549,24 @@ pub struct CheckArgs {
     Prints max_abs, rms and max_rel (cells with |exact| >= 1e-3) with the worst cell (mu, r, engine,\n\
     exact); -o DIR writes audit.csv (every cell) and the heat map audit.svg/audit.png of\n\
     engine - exact; --max-error X exits 1 when max_abs > X.\n\n\
-    The CSV starts with # lines naming the table, NDF, G2, map, Fresnel, grid, limits and accuracy;\n\
-    --format json prints one object with the same keys, \"columns\" and \"rows\" (arrays of numbers).\n\
+    The CSV starts with # lines naming the table, NDF, G2, map, Fresnel, grid, limits and accuracy\n\
+    (a key whose value differs between tables once per table: # accuracy (average): ...);\n\
+    --no-comments leaves them out, the header then the first line. Several tables share one CSV:\n\
+    long, a leading table column and the union of their columns (empty where a table has none).\n\
+    --shape matrix: per value a block, header the value's name then the r values, one row per mu\n\
+    led by mu; the average one block, header r then the r values, one row per value led by its\n\
+    name; blocks separated by an empty line. --format json prints one object per table with the\n\
+    same keys, then \"columns\" and \"rows\" (long) or \"mu\", \"r\" and \"values\" (matrix: per value\n\
+    an array per mu of the values per r); several tables, one object keyed by table name.\n\
+    Unless -q, one closing line on stderr: what was written, where and how long it took.\n\
     Cells are computed in parallel; a progress bar shows on a terminal unless -q. Exit 2 on bad\n\
     input (unknown family, missing --fix, grid over the cap, a parameter out of its domain) or a\n\
     quadrature that does not converge.\n\n\
     Examples:\n  \
     ndfplot albedo > ggx_E.csv\n  \
+    ndfplot albedo --table e,average -o ggx.csv\n  \
     ndfplot albedo --table average --size 32 --format json\n  \
+    ndfplot albedo --shape matrix --no-comments --size 16 > ggx_E_16.csv\n  \
     ndfplot albedo --ndf beckmann --map r --fresnel '{\"fresnel\":\"exact\",\"eta\":1.5}' --size 16\n  \
     ndfplot albedo --ndf gtr --fix gamma_gtr=1.5 --table split-sum --mu-count 16 --r-count 16 -o gtr_split.csv\n  \
     ndfplot albedo --against ggx_E.csv --layout clamp=1e-4 --max-error 2e-6"
@@ -590,12 +601,20 @@ pub struct AlbedoArgs {
     /// ('{"fresnel":"exact","eta":1.5}') or @FILE. Default F = 1.
     #[arg(long, value_name = "JSON|@FILE")]
     pub fresnel: Option<String>,
-    /// The table: e (E per mu and r), average (E_avg per r), split-sum (E_0..E_3 per mu and r) or
-    /// dfg (the split-sum pair DFG1, DFG2 per mu and r).
-    #[arg(long, value_name = "TABLE", default_value = "e",
-        value_parser = clap::builder::PossibleValuesParser::new(crate::model::albedo::Table::NAMES.map(|(name, _)| name)))]
+    /// The tables, comma-separated, each at most once (case-insensitive): e (E per mu and r),
+    /// average (E_avg per r), split-sum (E_0..E_3 per mu and r), dfg (the split-sum pair DFG1, DFG2
+    /// per mu and r); e.g. e,average. All on one grid, in one output.
+    #[arg(long, value_name = "TABLE[,TABLE...]", default_value = "e")]
     pub table: String,
-    /// Output: CSV with # metadata lines, or one JSON object.
+    /// The layout: long (one row per (mu, r) cell) or matrix (rows by mu, one column per r).
+    #[arg(long, value_name = "SHAPE", default_value = "long",
+        value_parser = choice(&TableShape::NAMES, &TableShape::ALL))]
+    pub shape: TableShape,
+    /// CSV without the # metadata lines: the header is the first line (--format json still
+    /// carries the metadata).
+    #[arg(long)]
+    pub no_comments: bool,
+    /// Output: CSV with # metadata lines, or JSON (an object per table).
     #[arg(long, value_name = "FORMAT", default_value = "csv",
         value_parser = choice(&ReportFormat::NAMES, &[ReportFormat::Csv, ReportFormat::Json]))]
     pub format: ReportFormat,

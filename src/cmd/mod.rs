@@ -353,10 +353,11 @@ fn run_check(args: CheckArgs) -> Result<()> {
 }
 
 /// `ndfplot albedo`: every argument checked (and the output folder of `-o` made writable) before
-/// anything is integrated; the table goes to stdout or, with `-o`, to its file.
+/// anything is integrated; the tables go to stdout or, with `-o`, to one file; a closing summary on
+/// stderr unless `quiet`.
 fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
-    let table =
-        crate::model::albedo::Table::from_name(&args.table).expect("clap allows only table names");
+    let started = std::time::Instant::now();
+    let tables = albedo::parse_tables(&args.table)?;
     let map = crate::model::albedo::RoughnessMap::from_key(&args.map)
         .expect("clap allows only map names");
     let g2 =
@@ -371,11 +372,29 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
         None => None,
     };
     if let Some(path) = &args.against {
-        return run_albedo_audit(&args, path, table, g2, family, &fixed, fresnel, quiet);
+        let &[table] = tables.as_slice() else {
+            return Err(Error::Usage(format!(
+                "--table: --against audits one table (got \"{}\", expected one of e, average, dfg)",
+                args.table
+            )));
+        };
+        return run_albedo_audit(&args, path, table, g2, family, &fixed, fresnel, quiet).inspect(
+            |()| {
+                if !quiet {
+                    let _ = writeln!(
+                        std::io::stderr(),
+                        "albedo: audited {} of {} in {:.2} s",
+                        table.name(),
+                        path.display(),
+                        started.elapsed().as_secs_f64()
+                    );
+                }
+            },
+        );
     }
     let surface = albedo::Surface::new(family, &fixed, map)?;
-    let grid = albedo::grid(table, args.size, args.mu_count, args.r_count)?;
-    let request = albedo::Request::new(table, surface, g2, grid, fresnel)?;
+    let grid = albedo::grid(&tables, args.size, args.mu_count, args.r_count)?;
+    let request = albedo::Request::new(tables, surface, g2, grid, fresnel)?;
     // `-o -` is standard output, as without -o.
     let destination = args
         .out
@@ -388,18 +407,28 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
     }
     let progress = crate::pipeline::progress::Progress::new(request.steps() as u64, quiet);
     progress.stage("integrating");
-    let output = request.compute(&progress)?;
+    let outputs = request.compute(&progress)?;
     progress.finish();
-    let text = match args.format {
-        ReportFormat::Json => output.json(),
-        ReportFormat::Csv | ReportFormat::Table => output.csv(),
-    };
+    let text = albedo::print::text(&outputs, args.format, args.shape, !args.no_comments);
     match destination {
         Some((dir, name)) => {
-            crate::output::write::write_files("-o", dir, &[(name, text)]).map(drop)
+            crate::output::write::write_files("-o", dir, &[(name, text)]).map(drop)?
         }
-        None => stdout::print(&text),
+        None => stdout::print(&text)?,
     }
+    if !quiet {
+        let place = args
+            .out
+            .as_deref()
+            .filter(|path| path.as_os_str() != "-")
+            .map_or("stdout".to_string(), |path| path.display().to_string());
+        let _ = writeln!(
+            std::io::stderr(),
+            "{}",
+            albedo::print::summary(&outputs, &place, started.elapsed())
+        );
+    }
+    Ok(())
 }
 
 /// `albedo --against FILE`: reads the engine's table, computes the exact one on its grid, prints

@@ -149,14 +149,20 @@ where
     /// E, which lands smooth, non-negative F within 1e-10 of the exact value (measured: ≤ 4e-14).
     /// Errs if an integrand is not finite or a nested integral fails to converge.
     pub fn albedo(&self, mu_o: f64, fresnel: Fresnel) -> Result<f64, QuadError> {
+        self.albedo_within(mu_o, fresnel, self.tolerance)
+    }
+
+    /// [`Microfacet::albedo`] with each nested integral held to `tolerance` instead of the
+    /// surface's own.
+    fn albedo_within(&self, mu_o: f64, fresnel: Fresnel, tolerance: f64) -> Result<f64, QuadError> {
         assert!(
             (0.0..=1.0).contains(&mu_o),
             "μo must lie in [0, 1], got {mu_o}"
         );
         if mu_o == 1.0 {
-            self.normal_albedo(fresnel)
+            self.normal_albedo(fresnel, tolerance)
         } else {
-            self.oblique_albedo(mu_o, fresnel)
+            self.oblique_albedo(mu_o, fresnel, tolerance)
         }
     }
 
@@ -168,7 +174,7 @@ where
     }
 
     /// E(1) = 2π ∫₀^{π/4} D(θh) G2(Λ(0), Λ(2θh)) F(θh) cos θh sin θh dθh, in β.
-    fn normal_albedo(&self, fresnel: Fresnel) -> Result<f64, QuadError> {
+    fn normal_albedo(&self, fresnel: Fresnel, tolerance: f64) -> Result<f64, QuadError> {
         let lambda_o = (self.lambda)(0.0);
         let beta_max = (1.0 / self.width).atan();
         let integrand = |beta: f64| {
@@ -177,12 +183,17 @@ where
             let f = fresnel.map_or(1.0, |f| f(theta_h));
             Ok((self.ndf)(theta_h) * g2 * f * theta_h.cos() * theta_h.sin() * jacobian)
         };
-        Ok(2.0 * PI * integrate_to(integrand, 0.0, beta_max, 1.0 / (2.0 * PI), self.tolerance)?)
+        Ok(2.0 * PI * integrate_to(integrand, 0.0, beta_max, 1.0 / (2.0 * PI), tolerance)?)
     }
 
     /// E(μo) for μo ∈ [0, 1): the two-dimensional integral of the module docs, each level held to
-    /// an absolute error of [`ALBEDO_QUAD_REL_TOL`] in units of E (of E·C at μo = 0).
-    fn oblique_albedo(&self, mu_o: f64, fresnel: Fresnel) -> Result<f64, QuadError> {
+    /// an absolute error of `tolerance` in units of E (of E·C at μo = 0).
+    fn oblique_albedo(
+        &self,
+        mu_o: f64,
+        fresnel: Fresnel,
+        tolerance: f64,
+    ) -> Result<f64, QuadError> {
         let view = View::new(mu_o);
         let w = self.width;
         // β where 2θh = ε (all azimuths reflect upwards below it) and where 2θh = π − ε (none
@@ -214,7 +225,7 @@ where
                 },
                 0.0,
                 1.0,
-                self.tolerance,
+                tolerance,
             )?;
             (None, visible)
         };
@@ -244,16 +255,10 @@ where
                 let f = fresnel.map_or(1.0, |f| f(sin_cross.atan2(dot)));
                 Ok(weight((self.lambda)(cos_i.min(1.0).acos())) * f * dot)
             };
-            Ok(outer * integrate_to(integrand, 0.0, slice.phi_max, scale, self.tolerance)?)
+            Ok(outer * integrate_to(integrand, 0.0, slice.phi_max, scale, tolerance)?)
         };
         let uncut = if beta_cut > 0.0 {
-            integrate_to(
-                |beta| radial(beta, 1.0),
-                0.0,
-                beta_cut,
-                unit,
-                self.tolerance,
-            )?
+            integrate_to(|beta| radial(beta, 1.0), 0.0, beta_cut, unit, tolerance)?
         } else {
             0.0
         };
@@ -265,7 +270,7 @@ where
             0.0,
             1.0,
             unit,
-            self.tolerance,
+            tolerance,
         )?;
         Ok((uncut + cut) / unit)
     }
@@ -472,37 +477,44 @@ pub fn median_slope(ndf: impl Fn(f64) -> f64) -> f64 {
 
 /// E_avg = 2 ∫₀¹ E(μ) μ dμ, the cosine-weighted average of [`Microfacet::albedo`] over the
 /// hemisphere (for F ≡ 1, the fraction of uniform incident light the single-scattering lobe
-/// reflects), by fixed Gauss–Legendre rules (16 points per panel, [`AVERAGE_POINTS`]) on the panels of
-/// the two places where E(μ) is not a polynomial to working precision: it turns over to its grazing
-/// limit where μ falls below the lobe width w, so the panels are graded geometrically (ratio
-/// [`AVERAGE_GRADING`]) from μ = min(w, 1)/64 up to 1/4 (below μ = [`AVERAGE_FLOOR`], E = E(0)); and near μ = 1 the horizon cut's
-/// contribution vanishes like (1 − μ)^{5/4} (the cut spans θh ∈ [ε/2, π/2 − ε/2], ε = arcsin μ),
-/// so the last panel [1/4, 1] runs in s with μ = 1 − s⁴ (two halves in s). About 50–150 albedos
-/// per value, a third of what an adaptive rule in μ spends; within 2e-11 of it (and of 64-point
-/// rules) for every closed-form family at α ∈ {0.001, 0.05, 0.3, 1, 3}.
+/// reflects), by fixed Gauss–Legendre rules on the panels of the two places where E(μ) is not a
+/// polynomial to working precision: it turns over to its grazing limit where μ falls below the lobe
+/// width w, so the panels are graded geometrically (ratio [`AVERAGE_GRADING`], 8 points each) from
+/// μ = min(w, 1)/16 up to 1/4 (below μ = [`AVERAGE_FLOOR`], E = E(0)); and near μ = 1 the horizon
+/// cut's contribution vanishes like (1 − μ)^{5/4} (the cut spans θh ∈ [ε/2, π/2 − ε/2],
+/// ε = arcsin μ), so the last panel [1/4, 1] runs in s with μ = 1 − s⁴ (two halves in s, 14 points
+/// each). Each E is held to [`AVERAGE_E_TOL`] (or the surface's own tolerance if looser): the
+/// weights sum to 1, so E_avg keeps about that accuracy. 44–76 albedos per value, each about half
+/// the cost of a table cell at 1e-12, so a 32-value average costs less than the 32 × 32 E table;
+/// within 1.6e-9 of 16-point rules on panels 4× finer with every E to 1e-12 (GGX, Beckmann, GTR
+/// γ = 1.5, Student-t γ = 3; both G2 models; maps r², r, √r; 16–64 values of r); [`AVERAGE_TOL`]
+/// is the bound stated.
 pub fn average_albedo<D, L>(surface: &Microfacet<D, L>, fresnel: Fresnel) -> Result<f64, QuadError>
 where
     D: Fn(f64) -> f64,
     L: Fn(f64) -> f64,
 {
+    let tolerance = surface.tolerance.max(AVERAGE_E_TOL);
+    let albedo = |mu: f64| surface.albedo_within(mu, fresnel, tolerance);
     let edges = average_edges(surface.width);
     // Below μ = [`AVERAGE_FLOOR`] E is taken as its limit E(0): the panel carries at most
     // AVERAGE_FLOOR²/2 = 5e-11 of E_avg/2, and E's quadrature needs μ well above a tiny lobe width.
     let mut half = if edges[1] == AVERAGE_FLOOR {
-        surface.albedo(0.0, fresnel)? * AVERAGE_FLOOR * AVERAGE_FLOOR / 2.0
+        albedo(0.0)? * AVERAGE_FLOOR * AVERAGE_FLOOR / 2.0
     } else {
         0.0
     };
     let last = edges.len() - 2;
+    let [graded, top] = average_rules();
     for (k, pair) in edges.windows(2).enumerate() {
         let (a, b) = (pair[0], pair[1]);
         if a == 0.0 && b == AVERAGE_FLOOR {
             continue;
         }
         // The last panel in s with μ = 1 − s⁴, (1 − μ)^{5/4} becoming s⁵, as two halves in s.
-        let pieces = if k == last { 2 } else { 1 };
+        let (pieces, rule) = if k == last { (2, top) } else { (1, graded) };
         for piece in 0..pieces {
-            for &(x, weight) in &average_rule(surface.tolerance).points {
+            for &(x, weight) in &rule.points {
                 let (mu, jacobian) = if k == last {
                     let top = (1.0 - a).powf(0.25) / 2.0;
                     let s = top * (piece as f64 + x);
@@ -510,37 +522,41 @@ where
                 } else {
                     (a + (b - a) * x, b - a)
                 };
-                half += jacobian * weight * surface.albedo(mu, fresnel)? * mu;
+                half += jacobian * weight * albedo(mu)? * mu;
             }
         }
     }
     Ok(2.0 * half)
 }
 
-/// Ratio of successive panel ends of [`average_albedo`]'s μ axis.
-const AVERAGE_GRADING: f64 = 4.0;
+/// The accuracy [`average_albedo`] holds E_avg to (at the default tolerance): its rule and the
+/// looser [`AVERAGE_E_TOL`] of each E together (measured: within 1.6e-9), below float32's
+/// half-ulp at 1 (6e-8), the precision engines store it in.
+pub const AVERAGE_TOL: f64 = 1e-8;
+
+/// The tolerance of each nested integral of the E values [`average_albedo`] weighs.
+pub const AVERAGE_E_TOL: f64 = 3e-10;
+
+/// Ratio of successive panel ends of [`average_albedo`]'s μ axis below 1/4.
+const AVERAGE_GRADING: f64 = 6.0;
 /// The smallest μ at which [`average_albedo`] evaluates E.
 const AVERAGE_FLOOR: f64 = 1e-5;
 
-/// Points of [`average_albedo`]'s rule per panel: for the default tolerance, and for a surface held
-/// to [`AVERAGE_LOOSE_TOL`] or looser (a legend's E_avg), where 8 points land within ~4e-9.
-const AVERAGE_POINTS: [usize; 2] = [16, 8];
+/// Points of [`average_albedo`]'s rules: per graded panel below μ = 1/4, and per half of the last
+/// panel [1/4, 1].
+const AVERAGE_POINTS: [usize; 2] = [8, 14];
 
-/// The tolerance from which [`average_albedo`] takes its shorter rule.
-const AVERAGE_LOOSE_TOL: f64 = 1e-8;
-
-/// The rule of [`average_albedo`] for a surface held to `tolerance`, built once.
-fn average_rule(tolerance: f64) -> &'static Rule {
+/// The rules of [`average_albedo`], built once.
+fn average_rules() -> &'static [Rule; 2] {
     static RULES: OnceLock<[Rule; 2]> = OnceLock::new();
-    let rules = RULES.get_or_init(|| AVERAGE_POINTS.map(Rule::new));
-    &rules[usize::from(tolerance >= AVERAGE_LOOSE_TOL)]
+    RULES.get_or_init(|| AVERAGE_POINTS.map(Rule::new))
 }
 
-/// The panel ends of [`average_albedo`]'s μ axis for a lobe of width w: 0, then s, 4s, 16s, … below
-/// 1/4 from s = max(min(w, 1)/64, [`AVERAGE_FLOOR`]), then 1/4 and 1.
+/// The panel ends of [`average_albedo`]'s μ axis for a lobe of width w: 0, then s, 6s, 36s, … below
+/// 1/4 from s = max(min(w, 1)/16, [`AVERAGE_FLOOR`]), then 1/4 and 1.
 fn average_edges(width: f64) -> Vec<f64> {
     let mut edges = vec![0.0];
-    let mut end = (width.min(1.0) / 64.0).max(AVERAGE_FLOOR);
+    let mut end = (width.min(1.0) / 16.0).max(AVERAGE_FLOOR);
     while end < 0.25 {
         edges.push(end);
         end *= AVERAGE_GRADING;

@@ -34,6 +34,17 @@ named! {
     }
 }
 
+named! {
+    /// The layouts of a grid table (`albedo --shape`): one row per cell, or a matrix with a row
+    /// per μ and a column per r.
+    pub enum TableShape {
+        /// One row per cell, the axes' coordinates in its first columns.
+        Long = "long",
+        /// Rows by the first axis, one column per value of the second.
+        Matrix = "matrix",
+    }
+}
+
 /// One cell of a report.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Cell {

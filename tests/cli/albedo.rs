@@ -6,7 +6,7 @@
 use crate::common::{ndfplot, root, scratch, text};
 
 /// A table as printed: the `# key: value` metadata, the column names and the rows of numbers
-/// (`NaN` for an empty field).
+/// (`NaN` for an empty field or a table name).
 struct Printed {
     metadata: Vec<(String, String)>,
     columns: Vec<String>,
@@ -30,9 +30,9 @@ impl Printed {
     }
 }
 
-/// Runs `ndfplot albedo ARGS` (CSV), which must succeed with nothing on stderr.
+/// Runs `ndfplot albedo -q ARGS` (CSV), which must succeed with nothing on stderr.
 fn albedo(args: &[&str]) -> Printed {
-    let mut all = vec!["albedo"];
+    let mut all = vec!["albedo", "-q"];
     all.extend(args);
     let out = ndfplot(&all);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
@@ -57,12 +57,10 @@ fn parse(csv: &str) -> Printed {
     let rows = lines
         .map(|line| {
             line.split(',')
-                .map(|f| {
-                    if f.is_empty() {
-                        f64::NAN
-                    } else {
-                        f.parse().unwrap()
-                    }
+                .map(|f| match f {
+                    // An empty cell, or a table's name in the table column.
+                    "" | "e" | "average" | "dfg" | "split-sum" => f64::NAN,
+                    _ => f.parse().unwrap(),
                 })
                 .collect()
         })
@@ -279,7 +277,7 @@ fn metadata_names_the_table_in_csv_and_json_alike() {
     }
     assert_eq!(csv.meta("fresnel"), "none (F = 1)");
     assert_eq!(csv.meta("mu_count"), "2");
-    let out = ndfplot(&["albedo", "--size", "2", "--format", "json"]);
+    let out = ndfplot(&["albedo", "-q", "--size", "2", "--format", "json"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(json["ndf"]["alpha_tr"], "r^2");
@@ -334,6 +332,31 @@ fn bad_arguments_exit_2_with_one_line_naming_them() {
             &["--table", "average", "--mu-count", "4"],
             "error: --mu-count: the average table has no mu axis",
         ),
+        (
+            &["--table", "e,average,E"],
+            r#"error: --table: e given twice (got "e,average,E", expected each table at most once)"#,
+        ),
+        (
+            &["--table", "e,avrage"],
+            r#"error: --table: unknown table (got "avrage", expected a comma-separated list of e, average, split-sum, dfg); did you mean "average"?"#,
+        ),
+        (
+            &["--table", "e,"],
+            r#"error: --table: unknown table (got "", expected"#,
+        ),
+        (
+            &[
+                "--table",
+                "e,dfg",
+                "--fresnel",
+                r#"{"fresnel":"schlick","f0":0.04}"#,
+            ],
+            "error: --fresnel: the dfg tables are Fresnel-independent",
+        ),
+        (
+            &["--table", "e,average", "--against", "table.csv"],
+            r#"error: --table: --against audits one table (got "e,average", expected one of e, average, dfg)"#,
+        ),
     ];
     for (args, expected) in cases {
         let mut all = vec!["albedo"];
@@ -353,10 +376,10 @@ fn bad_arguments_exit_2_with_one_line_naming_them() {
 fn dash_o_writes_the_file_and_nothing_on_stdout() {
     let dir = scratch("albedo-out");
     let path = dir.join("nested").join("ggx_E.csv");
-    let out = ndfplot(&["albedo", "--size", "2", "-o", path.to_str().unwrap()]);
+    let out = ndfplot(&["albedo", "-q", "--size", "2", "-o", path.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert!(out.stdout.is_empty() && out.stderr.is_empty());
-    let printed = ndfplot(&["albedo", "--size", "2"]);
+    let printed = ndfplot(&["albedo", "-q", "--size", "2"]);
     assert_eq!(std::fs::read(&path).unwrap(), printed.stdout);
     let names: Vec<_> = std::fs::read_dir(path.parent().unwrap())
         .unwrap()
@@ -420,4 +443,279 @@ fn the_r_0_column_is_the_familys_own_limit_not_always_the_mirror() {
         "{err}"
     );
     assert!(out.stdout.is_empty());
+}
+
+/// Parses a `--no-comments` CSV with a CSV reader: the first record is the header.
+fn read_csv(text: &str) -> (Vec<String>, Vec<Vec<String>>) {
+    let mut reader = csv::ReaderBuilder::new()
+        .flexible(false)
+        .from_reader(text.as_bytes());
+    let header = reader.headers().unwrap().iter().map(String::from).collect();
+    let rows = reader
+        .records()
+        .map(|r| r.unwrap().iter().map(String::from).collect())
+        .collect();
+    (header, rows)
+}
+
+/// The standard output of `ndfplot albedo -q ARGS`, which must succeed.
+fn stdout_of(args: &[&str]) -> String {
+    let mut all = vec!["albedo", "-q"];
+    all.extend(args);
+    let out = ndfplot(&all);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{args:?}: {}",
+        text(&out.stderr)
+    );
+    text(&out.stdout)
+}
+
+/// A field of a CSV as a number (NaN when empty).
+fn number(field: &str) -> f64 {
+    if field.is_empty() {
+        f64::NAN
+    } else {
+        field.parse().unwrap()
+    }
+}
+
+#[test]
+fn several_tables_share_one_long_csv_under_a_table_column() {
+    let both = albedo(&["--table", "E,average", "--mu-count", "3", "--r-count", "32"]);
+    let e = albedo(&["--mu-count", "3", "--r-count", "32"]);
+    let average = albedo(&["--table", "average", "--r-count", "32"]);
+    assert_eq!(
+        both.columns,
+        [
+            "table",
+            "mu",
+            "r",
+            "alpha",
+            "E",
+            "turquin_f0_1",
+            "E_avg",
+            "kulla_conty_norm"
+        ]
+    );
+    assert_eq!(both.meta("table"), "e,average");
+    assert_eq!(both.meta("ndf"), e.meta("ndf"));
+    assert_eq!(both.meta("mu_count (e)"), "3");
+    assert!(both.meta("accuracy (average)").contains("1e-8"));
+    // The table column is text: the parser reads it as NaN; e rows first, then average rows.
+    assert_eq!(both.rows.len(), 3 * 32 + 32);
+    let same = |a: &[f64], b: &[f64]| {
+        a.iter()
+            .zip(b)
+            .all(|(x, y)| x == y || (x.is_nan() && y.is_nan()))
+    };
+    for (row, alone) in both.rows.iter().zip(&e.rows) {
+        assert!(same(&row[1..6], alone), "{row:?} vs {alone:?}");
+        assert!(row[6].is_nan() && row[7].is_nan());
+    }
+    for (row, alone) in both.rows[3 * 32..].iter().zip(&average.rows) {
+        assert!(
+            row[1].is_nan() && row[4].is_nan() && row[5].is_nan(),
+            "{row:?}"
+        );
+        assert!(
+            same(&row[2..4], &alone[..2]) && same(&row[6..8], &alone[2..4]),
+            "{row:?}"
+        );
+    }
+    // The average at its stated accuracy against Cycles' table_ggx_Eavg (Monte Carlo, 6 decimals:
+    // its rounding plus noise, 2.5e-6), the same r = x/31 (Cycles clamps r = 0 to 1e-4).
+    let cycles = std::fs::read_to_string(root().join("tests/data/cycles_ggx_E.csv")).unwrap();
+    let reference: Vec<f64> = cycles
+        .lines()
+        .filter(|l| l.starts_with("ggx_Eavg,"))
+        .map(|l| l.rsplit(',').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(reference.len(), 32);
+    for (row, want) in average.rows.iter().zip(&reference) {
+        assert!(
+            (row[2] - want).abs() <= 2.5e-6,
+            "r = {}: {} vs Cycles {want}",
+            row[0],
+            row[2]
+        );
+    }
+}
+
+#[test]
+fn a_matrix_cell_is_the_long_row_of_the_same_mu_and_r() {
+    let long = albedo(&["--table", "e,average", "--mu-count", "3", "--r-count", "4"]);
+    let matrix = stdout_of(&[
+        "--table",
+        "e,average",
+        "--mu-count",
+        "3",
+        "--r-count",
+        "4",
+        "--shape",
+        "matrix",
+        "--no-comments",
+    ]);
+    let blocks: Vec<&str> = matrix.split("\n\n").collect();
+    assert_eq!(
+        blocks.len(),
+        3,
+        "E, turquin_f0_1, then the average: {matrix}"
+    );
+    let r_values = [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0];
+    let header = |block: &str| -> Vec<String> { read_csv(block).0 };
+    for (block, name, column) in [(blocks[0], "E", 4), (blocks[1], "turquin_f0_1", 5)] {
+        let (head, rows) = read_csv(block);
+        assert_eq!(head[0], name);
+        let r: Vec<f64> = head[1..].iter().map(|f| number(f)).collect();
+        assert_eq!(r, r_values);
+        assert_eq!(rows.len(), 3);
+        for row in &rows {
+            let mu = number(&row[0]);
+            for (j, field) in row[1..].iter().enumerate() {
+                let cell = long
+                    .rows
+                    .iter()
+                    .find(|l| l[1] == mu && l[2] == r_values[j])
+                    .unwrap();
+                assert_eq!(
+                    number(field),
+                    cell[column],
+                    "{name} at mu = {mu}, r = {}",
+                    r_values[j]
+                );
+            }
+        }
+    }
+    // The average is one row per value over r.
+    assert_eq!(header(blocks[2])[0], "r");
+    let (_, rows) = read_csv(blocks[2]);
+    assert_eq!(rows[0][0], "E_avg");
+    assert_eq!(rows[1][0], "kulla_conty_norm");
+    let averages: Vec<&Vec<f64>> = long.rows.iter().skip(12).collect();
+    for (j, field) in rows[0][1..].iter().enumerate() {
+        assert_eq!(number(field), averages[j][6]);
+    }
+
+    // JSON: an object per table, keyed by name, with the same numbers.
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "--table",
+        "e,average",
+        "--mu-count",
+        "3",
+        "--r-count",
+        "4",
+        "--shape",
+        "matrix",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(json["e"]["table"], "e");
+    assert_eq!(json["e"]["mu"], serde_json::json!([0.0, 0.5, 1.0]));
+    assert_eq!(json["average"]["r"].as_array().unwrap().len(), 4);
+    assert!(json["average"].get("mu").is_none());
+    for cell in long.rows.iter().take(12) {
+        let (i, j) = ((cell[1] * 2.0) as usize, (cell[2] * 3.0).round() as usize);
+        assert_eq!(json["e"]["values"]["E"][i][j].as_f64().unwrap(), cell[4]);
+    }
+    assert_eq!(
+        json["average"]["values"]["kulla_conty_norm"][0],
+        serde_json::Value::Null
+    );
+    assert_eq!(
+        json["average"]["values"]["E_avg"][3].as_f64().unwrap(),
+        averages[3][6]
+    );
+    // JSON long: each table's object is the one it prints alone.
+    let keyed: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "--table", "dfg,e", "--size", "2", "--format", "json",
+    ]))
+    .unwrap();
+    for name in ["dfg", "e"] {
+        let alone: serde_json::Value = serde_json::from_str(&stdout_of(&[
+            "--table", name, "--size", "2", "--format", "json",
+        ]))
+        .unwrap();
+        assert_eq!(keyed[name], alone, "{name}");
+    }
+}
+
+#[test]
+fn without_comments_the_csv_is_the_header_and_rows_for_a_csv_reader() {
+    for args in [
+        &["--size", "3"][..],
+        &["--table", "average,e", "--size", "3"][..],
+    ] {
+        let with = stdout_of(args);
+        let mut plain_args = args.to_vec();
+        plain_args.push("--no-comments");
+        let plain = stdout_of(&plain_args);
+        let kept: String = with
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        assert_eq!(plain, kept, "{args:?}");
+        let (header, rows) = read_csv(&plain);
+        assert!(header[0] == "mu" || header[0] == "table", "{header:?}");
+        assert!(rows.iter().all(|r| r.len() == header.len()));
+        assert_eq!(rows.len(), if args.len() == 2 { 9 } else { 9 + 3 });
+    }
+}
+
+#[test]
+fn several_tables_go_to_one_file_with_a_summary_line_on_stderr() {
+    let dir = scratch("albedo-several");
+    let path = dir.join("ggx.csv");
+    let args = [
+        "albedo",
+        "--table",
+        "e,average",
+        "--size",
+        "2",
+        "-o",
+        path.to_str().unwrap(),
+    ];
+    let out = ndfplot(&args);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(out.stdout.is_empty());
+    let stderr = text(&out.stderr);
+    let line = stderr
+        .strip_suffix(" s\n")
+        .unwrap_or_else(|| panic!("{stderr}"));
+    let prefix = format!(
+        "albedo: wrote e (2 × 2) and average (2) to {} in ",
+        path.display()
+    );
+    let seconds = line
+        .strip_prefix(&prefix)
+        .unwrap_or_else(|| panic!("{stderr}"));
+    assert!(seconds.parse::<f64>().unwrap() >= 0.0, "{stderr}");
+    assert_eq!(
+        std::fs::read_to_string(&path).unwrap(),
+        stdout_of(&["--table", "e,average", "--size", "2"])
+    );
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names, ["ggx.csv"], "one file, no temporary left");
+    let printed = ndfplot(&["albedo", "--size", "2"]);
+    assert!(text(&printed.stderr).starts_with("albedo: wrote e (2 × 2) to stdout in "));
+    let quiet = ndfplot(&["albedo", "-q", "--size", "2"]);
+    assert!(quiet.stderr.is_empty());
+    // An audit closes with its own line: E on the 2 × 2 grid is 1 but at μ = 1, α = 1 (1 − ln 2).
+    let engine = dir.join("engine.csv");
+    std::fs::write(&engine, "1,1\n1,0.3068528194400549\n").unwrap();
+    let audited = ndfplot(&["albedo", "--against", engine.to_str().unwrap()]);
+    assert_eq!(audited.status.code(), Some(0), "{}", text(&audited.stderr));
+    let stderr = text(&audited.stderr);
+    let prefix = format!("albedo: audited e of {} in ", engine.display());
+    assert!(
+        stderr.starts_with(&prefix) && stderr.ends_with(" s\n"),
+        "{stderr}"
+    );
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
 }

@@ -1,13 +1,15 @@
 //! `ndfplot albedo`: the tables renderers precompute from an NDF — the directional albedo E(μ, r)
 //! with Turquin's factor, the average E_avg(r) with Kulla–Conty's normalisation and Fresnel
 //! colouring, and the Belcour–Bati–Barla split-sum tables E_0 … E_3 — with metadata naming what
-//! they are, as CSV or JSON.
+//! they are, as CSV or JSON, several in one run.
 //!
-//! Owns the reading of the command's arguments into a [`Request`] (the family, its fixed
-//! parameters, the roughness map, the grid, the Fresnel factor) and the text of the output; the
-//! integrals and the grids are [`crate::model::albedo`]'s.
+//! Owns the reading of the command's arguments into a [`Request`] (the tables, the family, its
+//! fixed parameters, the roughness map, the grid, the Fresnel factor) and each table's rows and
+//! metadata ([`Output`]); their text in each shape and format is [`print`]'s, the integrals and the
+//! grids are [`crate::model::albedo`]'s.
 
 pub mod audit;
+pub mod print;
 
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
@@ -16,6 +18,7 @@ use crate::model::albedo::{
     self, NoLobe, RoughnessMap, Table, average_albedo_table, average_fresnel, dfg_tables,
     kulla_conty_fresnel, kulla_conty_lobe, split_sum_tables, turquin_factor, unit_grid,
 };
+use crate::model::albedo::{AVERAGE_E_TOL, AVERAGE_TOL};
 use crate::model::curve::{Curve, Kind};
 use crate::model::masking::G2Model;
 use crate::model::math::quad::QuadError;
@@ -192,11 +195,42 @@ impl Serialize for Surface {
     }
 }
 
+/// The tables of `--table`: names separated by commas, matched case-insensitively, each at most
+/// once, in the order given. Errs naming `--table` for an empty, unknown or repeated name.
+pub fn parse_tables(text: &str) -> Result<Vec<Table>> {
+    let names = || Table::NAMES.map(|(name, _)| name);
+    let mut tables: Vec<Table> = Vec::new();
+    for item in text.split(',') {
+        let item = item.trim();
+        let Some(table) = Table::from_name(item) else {
+            return Err(Error::Usage(format!(
+                "--table: unknown table (got \"{item}\", expected a comma-separated list of {}){}",
+                names().join(", "),
+                crate::problem::suggestion(item, names())
+            )));
+        };
+        if tables.contains(&table) {
+            return Err(Error::Usage(format!(
+                "--table: {} given twice (got \"{text}\", expected each table at most once)",
+                table.name()
+            )));
+        }
+        tables.push(table);
+    }
+    Ok(tables)
+}
+
+/// Whether `table` has a μ axis (every table but [`Table::Average`]).
+pub fn has_mu_axis(table: Table) -> bool {
+    table != Table::Average
+}
+
 /// The grid `(n_μ, n_r)` of `--size` or `--mu-count`/`--r-count` (each [`DEFAULT_AXIS`] unless
-/// given); n_μ is `None` for [`Table::Average`], which has no μ axis (`--mu-count` refused). Each
-/// count must be 2 … [`MAX_AXIS`] and the cells at most [`MAX_CELLS`].
+/// given) shared by `tables`; n_μ is `None` when every table is [`Table::Average`], which has no μ
+/// axis (`--mu-count` refused). Each count must be 2 … [`MAX_AXIS`] and the cells at most
+/// [`MAX_CELLS`].
 pub fn grid(
-    table: Table,
+    tables: &[Table],
     size: Option<usize>,
     mu_count: Option<usize>,
     r_count: Option<usize>,
@@ -213,7 +247,7 @@ pub fn grid(
         None => ("--mu-count", "--r-count"),
     };
     let n_r = axis(r_flag, size.or(r_count))?;
-    if table == Table::Average {
+    if !tables.iter().copied().any(has_mu_axis) {
         return match mu_count {
             Some(n) => Err(Error::Usage(format!(
                 "--mu-count: the average table has no mu axis (got {n}, expected no --mu-count with --table average)"
@@ -262,13 +296,13 @@ pub fn fresnel_factor(curves: Vec<Curve>) -> Result<Curve> {
 /// Everything `ndfplot albedo` computes from, validated.
 #[derive(Debug, Clone)]
 pub struct Request {
-    /// Which table.
-    pub table: Table,
+    /// Which tables, in output order.
+    pub tables: Vec<Table>,
     /// The NDF family with its fixed parameters and roughness map.
     pub surface: Surface,
     /// The G2 model.
     pub g2: G2Model,
-    /// Points on the μ axis (`None` for [`Table::Average`]).
+    /// Points on the μ axis (`None` when every table is [`Table::Average`]).
     pub n_mu: Option<usize>,
     /// Points on the r axis.
     pub n_r: usize,
@@ -277,16 +311,18 @@ pub struct Request {
 }
 
 impl Request {
-    /// The request, checked: no Fresnel factor for the split-sum tables, every NDF of the grid in
+    /// The request, checked: no Fresnel factor with the split-sum tables, every NDF of the grid in
     /// its domain.
     pub fn new(
-        table: Table,
+        tables: Vec<Table>,
         surface: Surface,
         g2: G2Model,
         (n_mu, n_r): (Option<usize>, usize),
         fresnel: Option<Curve>,
     ) -> Result<Request> {
-        if matches!(table, Table::SplitSum | Table::Dfg)
+        if let Some(&table) = tables
+            .iter()
+            .find(|t| matches!(t, Table::SplitSum | Table::Dfg))
             && let Some(curve) = &fresnel
         {
             return Err(Error::input(Problems {
@@ -304,7 +340,7 @@ impl Request {
         }
         surface.check(n_r)?;
         Ok(Request {
-            table,
+            tables,
             surface,
             g2,
             n_mu,
@@ -313,13 +349,32 @@ impl Request {
         })
     }
 
-    /// The number of progress steps: cells, or r values for [`Table::Average`].
-    pub fn steps(&self) -> usize {
-        self.n_mu.unwrap_or(1) * self.n_r
+    /// The μ count of `table`: `None` for [`Table::Average`].
+    fn mu_count(&self, table: Table) -> Option<usize> {
+        self.n_mu.filter(|_| has_mu_axis(table))
     }
 
-    /// Computes the table (cells in parallel; `progress` counts them) with its metadata.
-    pub fn compute(&self, progress: &Progress) -> Result<Output> {
+    /// The number of progress steps: the cells of every table, r values for [`Table::Average`].
+    pub fn steps(&self) -> usize {
+        self.tables
+            .iter()
+            .map(|&t| self.mu_count(t).unwrap_or(1) * self.n_r)
+            .sum()
+    }
+
+    /// Computes every table with its metadata, in the order asked: the tables side by side and
+    /// their cells in parallel, so one table's last slow cells overlap another's (`progress`
+    /// counts the cells of all).
+    pub fn compute(&self, progress: &Progress) -> Result<Vec<Output>> {
+        use rayon::prelude::*;
+        self.tables
+            .par_iter()
+            .map(|&table| self.compute_table(table, progress))
+            .collect()
+    }
+
+    /// Computes `table` with its metadata.
+    fn compute_table(&self, table: Table, progress: &Progress) -> Result<Output> {
         let tick = |_: usize, _: usize| progress.advance(1);
         let surface = |alpha: f64| {
             self.surface
@@ -336,10 +391,10 @@ impl Request {
         let failed = |e: QuadError| {
             Error::Numerics(format!(
                 "albedo: --table {}: {e} (expected a convergent integral)",
-                self.table.name()
+                table.name()
             ))
         };
-        let report = match (self.table, self.n_mu) {
+        let report = match (table, self.mu_count(table)) {
             (Table::E, Some(n_mu)) => {
                 let table =
                     albedo::albedo_table(n_mu, self.n_r, map, surface, fresnel, Some(&tick))
@@ -403,19 +458,23 @@ impl Request {
                 report
             }
         };
+        let roughness = unit_grid(self.n_r);
         Ok(Output {
-            metadata: self.metadata(),
+            table,
+            metadata: self.metadata(table),
+            mu: self.mu_count(table).map(unit_grid),
+            roughness,
             report,
         })
     }
 
-    /// The metadata of the table, in output order.
-    fn metadata(&self) -> Vec<(&'static str, Meta)> {
+    /// The metadata of `table`, in output order.
+    fn metadata(&self, table: Table) -> Vec<(&'static str, Meta)> {
         let fresnel = match &self.fresnel {
             Some(curve) => Meta::Json(curve.canonical_json()),
             None => Meta::Absent("none (F = 1)"),
         };
-        let what = match (self.table, &self.fresnel) {
+        let what = match (table, &self.fresnel) {
             (Table::E, None) => {
                 "directional albedo E(mu) of f = F D G2 / (4 cos(theta_o) cos(theta_i)), one row per (mu, r), and Turquin's compensation factor 1/E (F0 = 1)"
             }
@@ -435,7 +494,7 @@ impl Request {
                 "Belcour-Bati-Barla split-sum tables E_k(mu): the albedo with F = b_k(theta_d), k = 0..3 (E_0 = E), one row per (mu, r); E_F = sum c_k E_k for F = sum c_k b_k"
             }
         };
-        let grid = match self.n_mu {
+        let grid = match self.mu_count(table) {
             Some(_) => {
                 "mu = cos(theta_o) = i/(mu_count - 1), r = j/(r_count - 1), alpha = map(r); rows by mu, then r"
             }
@@ -443,7 +502,7 @@ impl Request {
         };
         let zero = self.surface.zero_column();
         let mirror = self.surface.lobe(self.surface.map.alpha(0.0)) == Ok(None);
-        let limits = match (self.table, mirror) {
+        let limits = match (table, mirror) {
             (Table::Average, true) => format!("{zero} (E_avg = 1)"),
             (Table::Average, false) => zero,
             (Table::SplitSum, true) => {
@@ -455,23 +514,26 @@ impl Request {
             (_, true) => format!("mu = 0 is the limit mu -> 0+; {zero}, E = F(theta_o)"),
             (_, false) => format!("mu = 0 is the limit mu -> 0+; {zero}"),
         };
-        let accuracy = match self.table {
+        let accuracy = match table {
             Table::SplitSum => format!(
                 "each nested integral to {ALBEDO_TABULATED_TOL:e} absolute (the basis is tabulated, linear between 1000 nodes in cos(theta_d))"
+            ),
+            Table::Average => format!(
+                "within {AVERAGE_TOL:e} of the exact integral (fixed Gauss-Legendre rules in mu on panels graded from the lobe width, each E to {AVERAGE_E_TOL:e}; F_avg adaptive to {ALBEDO_QUAD_REL_TOL:e})"
             ),
             _ => format!(
                 "within {ALBEDO_TOL:e} of the exact integrals for smooth F (nested adaptive Gauss-Kronrod, each level to {ALBEDO_QUAD_REL_TOL:e})"
             ),
         };
         let mut metadata = vec![
-            ("table", Meta::Text(self.table.name().into())),
+            ("table", Meta::Text(table.name().into())),
             ("quantity", Meta::Text(what.into())),
             ("ndf", Meta::Json(self.surface.description())),
             ("g2", Meta::Text(self.g2.name().into())),
             ("map", Meta::Text(self.surface.map.name().into())),
             ("fresnel", fresnel),
         ];
-        if let Some(n_mu) = self.n_mu {
+        if let Some(n_mu) = self.mu_count(table) {
             metadata.push(("mu_count", Meta::Count(n_mu)));
         }
         metadata.extend([
@@ -547,43 +609,39 @@ impl std::fmt::Display for Meta {
     }
 }
 
-/// A computed table with its metadata.
+/// A computed table with its metadata and axes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Output {
+    /// Which table.
+    pub table: Table,
     /// (key, value) pairs naming what the table is, in order.
     pub metadata: Vec<(&'static str, Meta)>,
-    /// The columns and rows.
+    /// The μ axis (`None` for the average table).
+    pub mu: Option<Vec<f64>>,
+    /// The r axis.
+    pub roughness: Vec<f64>,
+    /// The columns and rows, one row per (μ, r) cell (rows by μ, then r) or per r: the axes'
+    /// columns (`mu`, `r`, `alpha`) first, then the values.
     pub report: Report,
 }
 
 impl Output {
-    /// CSV: one `# <key>: <value>` line per metadata pair, then the header and the rows.
-    pub fn csv(&self) -> String {
-        let mut text: String = self
-            .metadata
-            .iter()
-            .map(|(key, value)| format!("# {key}: {value}\n"))
-            .collect();
-        text.push_str(&self.report.csv());
-        text
+    /// The table's name, as `--table` takes it.
+    pub fn name(&self) -> &'static str {
+        self.table.name()
     }
 
-    /// One compact JSON object and a newline: the metadata's keys, then `"columns"` (the names) and
-    /// `"rows"` (arrays of numbers, `null` for an empty cell).
-    pub fn json(&self) -> String {
-        crate::spec::json::to_string(self) + "\n"
+    /// The number of leading columns that are axes (`mu`, `r`, `alpha` or `r`, `alpha`).
+    pub fn axis_columns(&self) -> usize {
+        if self.mu.is_some() { 3 } else { 2 }
     }
-}
 
-impl Serialize for Output {
-    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
-        let mut map = serializer.serialize_map(Some(self.metadata.len() + 2))?;
-        for (key, value) in &self.metadata {
-            map.serialize_entry(key, value)?;
+    /// The table's size for people: `32 × 32` (μ × r) or `32` (r).
+    pub fn size(&self) -> String {
+        match &self.mu {
+            Some(mu) => format!("{} × {}", mu.len(), self.roughness.len()),
+            None => self.roughness.len().to_string(),
         }
-        map.serialize_entry("columns", self.report.columns())?;
-        map.serialize_entry("rows", self.report.rows())?;
-        map.end()
     }
 }
 
@@ -616,21 +674,34 @@ mod tests {
 
     #[test]
     fn grids_are_capped_and_the_average_has_no_mu_axis() {
-        assert_eq!(grid(Table::E, None, None, None).unwrap(), (Some(32), 32));
-        assert_eq!(grid(Table::E, Some(4), None, None).unwrap(), (Some(4), 4));
+        let (e, average) = (&[Table::E][..], &[Table::Average][..]);
+        assert_eq!(grid(e, None, None, None).unwrap(), (Some(32), 32));
+        assert_eq!(grid(e, Some(4), None, None).unwrap(), (Some(4), 4));
         assert_eq!(
-            grid(Table::SplitSum, None, Some(3), Some(5)).unwrap(),
+            grid(&[Table::SplitSum], None, Some(3), Some(5)).unwrap(),
             (Some(3), 5)
         );
+        assert_eq!(grid(average, Some(8), None, None).unwrap(), (None, 8));
         assert_eq!(
-            grid(Table::Average, Some(8), None, None).unwrap(),
-            (None, 8)
+            grid(&[Table::Average, Table::E], None, Some(3), Some(5)).unwrap(),
+            (Some(3), 5)
         );
-        assert!(grid(Table::Average, None, Some(8), None).is_err());
-        assert!(grid(Table::E, Some(1), None, None).is_err());
-        assert!(grid(Table::E, Some(MAX_AXIS + 1), None, None).is_err());
-        assert!(grid(Table::E, None, Some(MAX_AXIS), Some(MAX_AXIS)).is_err());
-        assert!(grid(Table::Average, None, None, Some(MAX_AXIS)).is_ok());
+        assert!(grid(average, None, Some(8), None).is_err());
+        assert!(grid(e, Some(1), None, None).is_err());
+        assert!(grid(e, Some(MAX_AXIS + 1), None, None).is_err());
+        assert!(grid(e, None, Some(MAX_AXIS), Some(MAX_AXIS)).is_err());
+        assert!(grid(average, None, None, Some(MAX_AXIS)).is_ok());
+    }
+
+    #[test]
+    fn table_lists_are_case_insensitive_and_refuse_repeats() {
+        assert_eq!(
+            parse_tables("E, Average,dfg").unwrap(),
+            [Table::E, Table::Average, Table::Dfg]
+        );
+        assert!(parse_tables("e,average,E").is_err());
+        assert!(parse_tables("e,").is_err());
+        assert!(parse_tables("avg").is_err());
     }
 
     #[test]
