@@ -380,15 +380,12 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
         };
         return run_albedo_audit(&args, path, table, g2, family, &fixed, fresnel, quiet).inspect(
             |()| {
-                if !quiet {
-                    let _ = writeln!(
-                        std::io::stderr(),
-                        "albedo: audited {} of {} in {:.2} s",
-                        table.name(),
-                        path.display(),
-                        started.elapsed().as_secs_f64()
-                    );
-                }
+                let audited = format!(
+                    "albedo: audited {} of {}",
+                    table.name(),
+                    crate::problem::one_line(&path.display().to_string())
+                );
+                stderr::summary(quiet, &audited, started);
             },
         );
     }
@@ -416,18 +413,14 @@ fn run_albedo(args: AlbedoArgs, quiet: bool) -> Result<()> {
         }
         None => stdout::print(&text)?,
     }
-    if !quiet {
-        let place = args
-            .out
-            .as_deref()
-            .filter(|path| path.as_os_str() != "-")
-            .map_or("stdout".to_string(), |path| path.display().to_string());
-        let _ = writeln!(
-            std::io::stderr(),
-            "{}",
-            albedo::print::summary(&outputs, &place, started.elapsed())
-        );
-    }
+    let place = args
+        .out
+        .as_deref()
+        .filter(|path| path.as_os_str() != "-")
+        .map_or("stdout".to_string(), |path| {
+            crate::problem::one_line(&path.display().to_string()).into_owned()
+        });
+    stderr::summary(quiet, &albedo::print::summary(&outputs, &place), started);
     Ok(())
 }
 

@@ -215,8 +215,8 @@ impl Serialize for Keyed<'_> {
     }
 }
 
-/// The closing line of a run: `albedo: wrote e (32 × 32) and average (32) to ggx.csv in 0.41 s`.
-pub fn summary(outputs: &[Output], place: &str, elapsed: std::time::Duration) -> String {
+/// What a run wrote, for its closing line: `albedo: wrote e (32 × 32) and average (32) to ggx.csv`.
+pub fn summary(outputs: &[Output], place: &str) -> String {
     let tables: Vec<String> = outputs
         .iter()
         .map(|o| format!("{} ({})", o.name(), o.size()))
@@ -226,8 +226,5 @@ pub fn summary(outputs: &[Output], place: &str, elapsed: std::time::Duration) ->
         Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
         None => String::new(),
     };
-    format!(
-        "albedo: wrote {list} to {place} in {:.2} s",
-        elapsed.as_secs_f64()
-    )
+    format!("albedo: wrote {list} to {place}")
 }
