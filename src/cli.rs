@@ -158,11 +158,11 @@ pub struct CoeffsArgs {
     100 000 integrals a scene (albedo curves: each counts its table's samples plus up to 1033 drawn).\n\n\
     Examples:\n  \
     ndfplot render\n  \
-    ndfplot render configs/abc-vs-tr.json my-scenes/ -o out --format svg,csv\n  \
-    ndfplot render configs/beckmann-vs-phong.json -o out --format pdf\n  \
+    ndfplot render abc-vs-tr my-scenes/ -o out --format svg,csv\n  \
+    ndfplot render beckmann-vs-phong -o out --format pdf --preset paper-column\n  \
     ndfplot show gtr-gamma | ndfplot render - -o - --format svg --theme dark > gtr-gamma-dark.svg\n  \
     ndfplot render --check plots\n  \
-    ndfplot render configs/ --check plots --tolerance 1e-9"
+    ndfplot render tr-vs-phong --check plots --tolerance 1e-9"
 )]
 pub struct RenderArgs {
     /// Scene spec files, folders whose *.json are rendered in name order, catalogue ids, or - for a
@@ -493,7 +493,7 @@ pub struct FitArgs {
     Exit 1 when an NDF's normalization or Smith consistency is off by more than --tolerance.\n\n\
     Examples:\n  \
     ndfplot check\n  \
-    ndfplot check configs/abc-vs-tr.json my-scenes/ --tolerance 1e-12\n  \
+    ndfplot check abc-vs-tr my-scenes/ --tolerance 1e-12\n  \
     ndfplot check --format csv > normalization.csv"
 )]
 pub struct CheckArgs {

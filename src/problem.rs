@@ -191,9 +191,26 @@ fn nearest<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str> {
         .map(|(_, c)| c)
 }
 
-/// Appends `; did you mean "<x>"?` when a near candidate exists.
+/// Most names a suggestion lists when several begin with what was given.
+const MAX_SUGGESTED: usize = 4;
+
+/// Appends `; did you mean "<x>"?` when a near candidate exists ([`did_you_mean`]), or `; did you
+/// mean one of "<x>", "<y>"?` when several (at most [`MAX_SUGGESTED`]) begin with a `word` of three
+/// or more characters (`alpha` on ABC: `alpha_abc1`, `alpha_abc2`).
 pub fn suggestion<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> String {
-    did_you_mean(word, candidates).map_or_else(String::new, |c| format!("; did you mean \"{c}\"?"))
+    let candidates: Vec<&'a str> = candidates.into_iter().collect();
+    if let Some(c) = did_you_mean(word, candidates.iter().copied()) {
+        return format!("; did you mean \"{c}\"?");
+    }
+    let longer: Vec<String> = candidates
+        .iter()
+        .filter(|c| word.len() >= 3 && c.len() > word.len() && c.starts_with(word))
+        .map(|c| format!("\"{c}\""))
+        .collect();
+    match longer.len() {
+        2..=MAX_SUGGESTED => format!("; did you mean one of {}?", longer.join(", ")),
+        _ => String::new(),
+    }
 }
 
 /// Edit distance in characters counting insertions, deletions, substitutions and swaps of
@@ -230,6 +247,12 @@ mod tests {
             Some("alpha_tr")
         );
         assert_eq!(did_you_mean("alpha", ["alpha_abc1", "alpha_abc2"]), None);
+        // Several that it begins are listed, as long as they are few.
+        assert_eq!(
+            suggestion("alpha", ["alpha_abc1", "alpha_abc2", "quantity"]),
+            "; did you mean one of \"alpha_abc1\", \"alpha_abc2\"?"
+        );
+        assert_eq!(suggestion("a", ["alpha_abc1", "alpha_abc2"]), "");
         assert_eq!(did_you_mean("al", ["alpha_tr"]), None);
         assert_eq!(
             did_you_mean("stlye", ["style", "styles_of_old"]),

@@ -108,13 +108,14 @@ fn write_atomic(flag: &str, dir: &Path, name: &str, bytes: &[u8]) -> Result<()> 
             .permissions(fs::Permissions::from_mode(0o666))
             .tempfile_in(dir)
     })
-    .map_err(|e| Error::io(&shown, e))?;
-    file.write_all(bytes).map_err(|e| Error::io(&shown, e))?;
+    .map_err(|e| Error::io(&shown, e).for_option(flag))?;
+    file.write_all(bytes)
+        .map_err(|e| Error::io(&shown, e).for_option(flag))?;
     // Checked again just before the rename: the target may have changed since the first check.
     // On failure the temporary is removed when dropped.
     check_target(flag, &target)?;
     file.persist(&target)
-        .map_err(|e| Error::io(shown, e.error))?;
+        .map_err(|e| Error::io(shown, e.error).for_option(flag))?;
     Ok(())
 }
 
@@ -248,7 +249,7 @@ pub fn check_writable(flag: &str, dir: &Path, names: &[&str]) -> Result<()> {
         .suffix(SUFFIX)
         .tempfile_in(dir)
         .map(drop)
-        .map_err(|e| Error::io(dir.display().to_string(), e))
+        .map_err(|e| Error::io(dir.display().to_string(), e).for_option(flag))
 }
 
 /// Creates the output folder `dir` of the option `flag` (and its parents) if needed. When it cannot,
@@ -270,7 +271,7 @@ fn ensure_dir(flag: &str, dir: &Path) -> Result<()> {
         (Ok(_), Ok(meta)) if !meta.is_dir() => {
             taken(crate::spec::datafile::file_kind(meta.file_type()))
         }
-        _ => Err(Error::io(dir.display().to_string(), error)),
+        _ => Err(Error::io(dir.display().to_string(), error).for_option(flag)),
     }
 }
 

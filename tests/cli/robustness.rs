@@ -484,6 +484,21 @@ fn render_check_reports_missing_and_extra_csvs() {
     );
 }
 
+/// An output folder the system cannot create names the option it came from, not only the path.
+#[test]
+fn an_output_folder_that_cannot_be_made_names_its_option() {
+    let dir = scratch("robustness-o-error");
+    std::fs::write(dir.join("file"), "x").unwrap();
+    let inside = dir.join("file").join("sub");
+    let out = ndfplot(&["render", "tr-vs-phong", "-o", inside.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = text(&out.stderr);
+    assert!(
+        err.starts_with(&format!("error: -o: {}: ", inside.display())),
+        "{err}"
+    );
+}
+
 /// `-v` says one line per figure before the closing line; `--color always` paints the labels of
 /// ndfplot's own messages (even into a pipe, and whatever NO_COLOR says), `never` and the default
 /// into a pipe do not.
