@@ -271,6 +271,10 @@ pub struct EvalArgs {
     /// --degrees. Use --theta=-1 for negatives.
     #[arg(long, value_name = "LIST|@FILE", allow_hyphen_values = true)]
     pub theta: String,
+    /// With --theta @FILE: FILE is a CSV with a header row, and the angles are its column NAME (a
+    /// shader's or renderer's samples, evaluated at their own θ).
+    #[arg(long = "theta-column", value_name = "NAME")]
+    pub theta_column: Option<String>,
     /// Read the angles in degrees (θ = d·π/180) and print them as given, in a column named theta_deg.
     #[arg(long)]
     pub degrees: bool,

@@ -184,6 +184,64 @@ pub fn parse_theta_file(text: &str, name: &str, unit: AngleUnit) -> Result<Theta
     Ok(ThetaList::Listed(angles))
 }
 
+/// The angles of `eval --theta @FILE --theta-column NAME`: `text` (read from `name`) is CSV with a
+/// header row, and every cell of the column `column` is an angle in the syntax of a `--theta` item.
+/// A missing column names the columns there are; a bad cell is named by its line.
+pub fn parse_theta_column(
+    text: &str,
+    name: &str,
+    column: &str,
+    unit: AngleUnit,
+) -> Result<ThetaList> {
+    let shown = crate::problem::excerpt(name);
+    let bad = |what: String| Error::Usage(format!("--theta-column: {shown}: {what}"));
+    let mut reader = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .comment(Some(b'#'))
+        .from_reader(text.as_bytes());
+    let headers = reader
+        .headers()
+        .map_err(|e| bad(format!("not CSV ({e})")))?
+        .clone();
+    let Some(index) = headers.iter().position(|h| h == column) else {
+        let names: Vec<&str> = headers.iter().collect();
+        return Err(bad(format!(
+            "no column \"{}\" (expected one of: {}){}",
+            crate::problem::excerpt(column),
+            names.join(", "),
+            crate::problem::suggestion(column, names.iter().copied())
+        )));
+    };
+    let mut angles = Vec::new();
+    for record in reader.records() {
+        let record = record.map_err(|e| bad(format!("not CSV ({e})")))?;
+        let line = record.position().map_or(0, |p| p.line());
+        let cell = record.get(index).unwrap_or_default();
+        if cell.is_empty() || cell.contains([',', ':']) {
+            return Err(bad(format!(
+                "line {line}: not one angle (got \"{}\")",
+                crate::problem::excerpt(cell)
+            )));
+        }
+        if angles.len() as u64 >= MAX_THETA_COUNT {
+            return Err(bad(format!("more than {MAX_THETA_COUNT} values")));
+        }
+        match parse_theta_list(cell, unit) {
+            Ok(ThetaList::Listed(one)) => angles.extend(one),
+            Ok(ThetaList::Spaced { .. }) => unreachable!("a cell without ':' is a list"),
+            Err(Error::Usage(message)) => {
+                let why = message.strip_prefix("--theta: ").unwrap_or(&message);
+                return Err(bad(format!("line {line}: {why}")));
+            }
+            Err(other) => return Err(other),
+        }
+    }
+    if angles.is_empty() {
+        return Err(bad("no angle (expected one per row)".into()));
+    }
+    Ok(ThetaList::Listed(angles))
+}
+
 /// The integrals (albedo values) a table of `curves` at `thetas` computes, refused past
 /// [`MAX_INTEGRALS`] before any is computed.
 pub fn check_integrals(curves: &[Curve], thetas: &ThetaList) -> Result<()> {

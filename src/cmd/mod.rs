@@ -75,13 +75,20 @@ fn run_show(id: &str) -> Result<()> {
 
 fn run_eval(args: EvalArgs) -> Result<()> {
     let unit = crate::spec::angle::AngleUnit::of(args.degrees);
-    let thetas = match args.theta.strip_prefix('@') {
-        Some(path) => eval::parse_theta_file(
-            &input::read_file(path).map_err(|e| e.for_option("--theta"))?,
-            path,
-            unit,
-        )?,
-        None => eval::parse_theta_list(&args.theta, unit)?,
+    let thetas = match (args.theta.strip_prefix('@'), &args.theta_column) {
+        (Some(path), column) => {
+            let text = input::read_file(path).map_err(|e| e.for_option("--theta"))?;
+            match column {
+                Some(column) => eval::parse_theta_column(&text, path, column, unit)?,
+                None => eval::parse_theta_file(&text, path, unit)?,
+            }
+        }
+        (None, Some(_)) => {
+            return Err(Error::Usage(
+                "--theta-column: reads a column of the CSV file --theta @FILE names (got an angle list)".into(),
+            ));
+        }
+        (None, None) => eval::parse_theta_list(&args.theta, unit)?,
     };
     let curves = load_curves(&args.curve, "--curve")?;
     eval::check_integrals(&curves, &thetas)?;

@@ -1209,6 +1209,68 @@ fn the_catalogue_is_listed_shown_and_rendered_by_id() {
     );
 }
 
+/// `eval --theta @FILE --theta-column NAME` takes the angles of a CSV column (a shader's samples),
+/// the same table the angles give inline; a missing column lists the columns, a bad cell names its
+/// line, and the option without a file is refused.
+#[test]
+fn eval_reads_angles_from_a_csv_column() {
+    let dir = scratch("eval-theta-column");
+    let samples = dir.join("shader.csv");
+    std::fs::write(
+        &samples,
+        "value,theta\n3.5,0\n0.1,pi/4\n# a note\n0.02, 1.5 \n",
+    )
+    .unwrap();
+    let curve = r#"{"ndf":"ggx","alpha_tr":0.3}"#;
+    let file = format!("@{}", samples.display());
+    let column = |name: &str| {
+        ndfplot(&[
+            "eval",
+            "--curve",
+            curve,
+            "--theta",
+            &file,
+            "--theta-column",
+            name,
+        ])
+    };
+    let from_column = column("theta");
+    let inline = ndfplot(&["eval", "--curve", curve, "--theta", "0,pi/4,1.5"]);
+    assert_eq!(
+        from_column.status.code(),
+        Some(0),
+        "{}",
+        text(&from_column.stderr)
+    );
+    assert_eq!(text(&from_column.stdout), text(&inline.stdout));
+    let missing = column("thta");
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(
+        text(&missing.stderr).starts_with("error: --theta-column: ")
+            && text(&missing.stderr).contains(
+                "shader.csv: no column \"thta\" (expected one of: value, theta); did you mean \"theta\"?"
+            ),
+        "{}",
+        text(&missing.stderr)
+    );
+    let bad = column("value");
+    assert!(
+        text(&bad.stderr).contains("shader.csv: line 2: angle out of range (got 3.5"),
+        "{}",
+        text(&bad.stderr)
+    );
+    let no_file = ndfplot(&[
+        "eval",
+        "--curve",
+        curve,
+        "--theta",
+        "0",
+        "--theta-column",
+        "theta",
+    ]);
+    assert_eq!(no_file.status.code(), Some(2));
+}
+
 /// `eval --theta @FILE` reads one angle per line (blank lines and `#` comments skipped) and gives
 /// the table the same angles give inline; a bad line is named by its number, and a file that
 /// cannot be read names the option that named it.
