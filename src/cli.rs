@@ -46,7 +46,7 @@ pub enum Command {
     /// Tabulate the directional albedo E(mu, r) of an NDF, its average E_avg(r) or the split-sum
     /// tables, for renderers; prints CSV.
     Albedo(AlbedoArgs),
-    /// List the built-in catalogue: one `id<TAB>title` line per figure (or, with --metals, the
+    /// List the built-in catalogue: one id<TAB>title line per figure (or, with --metals, the
     /// measured metals).
     #[command(after_long_help = "Examples:\n  \
         ndfplot list\n  \
@@ -84,7 +84,7 @@ pub enum Command {
 #[derive(Debug, Args)]
 pub struct ListArgs {
     /// List the metals a Fresnel curve may name ("metal"): one
-    /// `symbol<TAB>names<TAB>min_nm<TAB>max_nm<TAB>samples` line each.
+    /// symbol<TAB>names<TAB>min_nm<TAB>max_nm<TAB>samples line each.
     #[arg(long)]
     pub metals: bool,
 }
@@ -92,7 +92,7 @@ pub struct ListArgs {
 /// Arguments of `ndfplot show`.
 #[derive(Debug, Args)]
 pub struct ShowArgs {
-    /// The catalogue id (as `ndfplot list` prints it).
+    /// The catalogue id (as ndfplot list prints it).
     pub id: String,
 }
 
@@ -213,7 +213,7 @@ pub struct RenderArgs {
     #[arg(long, value_name = "NAME", value_parser = clap::builder::PossibleValuesParser::new(crate::spec::scene::PRESETS))]
     pub preset: Option<String>,
     /// Exit 1 when the figure lint warns about any figure (the outputs are still written).
-    /// Warnings (`warning: FILE: panels[i]: …`: plot areas squeezed, text overlapping or clipped,
+    /// Warnings (warning: FILE: panels[i]: …: plot areas squeezed, text overlapping or clipped,
     /// too few ticks, low contrast, legends alike or not where asked) are printed either way.
     #[arg(long)]
     pub strict: bool,

@@ -77,6 +77,12 @@ fn man_pages_render_with_their_options_and_exit_codes() {
             assert!(shown.contains(word), "{name} lacks {word}:\n{shown}");
         }
     }
+    // Markdown does not render in a man page: no literal backticks on any page.
+    for page in std::fs::read_dir(&dir).unwrap() {
+        let page = page.unwrap().path();
+        let roff = std::fs::read_to_string(&page).unwrap();
+        assert!(!roff.contains('`'), "{} shows a backtick", page.display());
+    }
     let printed = ndfplot(&["man"]);
     assert_eq!(
         printed.stdout,
