@@ -182,7 +182,10 @@ pub fn parse_layout(text: &str, path: &str, g2: G2Model) -> Result<Layout, Probl
             ));
         };
         if seen.contains(&key) {
-            return Err(problem(key, format!("given twice (got {key}={value})")));
+            return Err(problem(
+                key,
+                format!("given twice (got {key}={})", crate::problem::excerpt(value)),
+            ));
         }
         seen.push(key);
         let bad = |choices: &[&str]| {

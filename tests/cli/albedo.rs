@@ -337,6 +337,14 @@ fn bad_arguments_exit_2_with_one_line_naming_them() {
             r#"error: --table: e given twice (got "e,average,E", expected each table at most once)"#,
         ),
         (
+            // A long list is quoted as an excerpt.
+            &[
+                "--table",
+                "e,average,average,average,average,average,average,average,average,e",
+            ],
+            r#"error: --table: average given twice (got "e,average,average,average,average,average,average,average,av…", expected"#,
+        ),
+        (
             &["--table", "e,avrage"],
             r#"error: --table: unknown table (got "avrage", expected a comma-separated list of e, average, split-sum, dfg); did you mean "average"?"#,
         ),

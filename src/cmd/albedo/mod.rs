@@ -204,15 +204,17 @@ pub fn parse_tables(text: &str) -> Result<Vec<Table>> {
         let item = item.trim();
         let Some(table) = Table::from_name(item) else {
             return Err(Error::Usage(format!(
-                "--table: unknown table (got \"{item}\", expected a comma-separated list of {}){}",
+                "--table: unknown table (got \"{}\", expected a comma-separated list of {}){}",
+                crate::problem::excerpt(item),
                 names().join(", "),
                 crate::problem::suggestion(item, names())
             )));
         };
         if tables.contains(&table) {
             return Err(Error::Usage(format!(
-                "--table: {} given twice (got \"{text}\", expected each table at most once)",
-                table.name()
+                "--table: {} given twice (got \"{}\", expected each table at most once)",
+                table.name(),
+                crate::problem::excerpt(text)
             )));
         }
         tables.push(table);
