@@ -67,7 +67,7 @@ impl Scale {
     /// the span below the minimum, to [`AUTO_MARGIN`] of the span above the maximum; (0, 1)
     /// without data. Log: the decade at or below the minimum to the decade at or above the
     /// maximum, at least one decade; (0, 1) without data. An empty range (a flat curve) is
-    /// opened around its value: ±1 at 0, else ±half its magnitude.
+    /// opened around its value: ±1 at 0, else ±half its magnitude. The ends stay finite.
     pub fn range(self, given: Option<(f64, f64)>, extent: Option<(f64, f64)>) -> (f64, f64) {
         match (self, self.shown(given)) {
             (_, Some((lo, hi))) => widen_if_flat(lo, hi),
@@ -76,9 +76,15 @@ impl Scale {
                     return (0.0, 1.0);
                 };
                 let lo = lo.min(0.0);
-                let margin = AUTO_MARGIN * (hi - lo);
-                let lo = if lo == 0.0 { 0.0 } else { lo - margin };
-                widen_if_flat(lo, hi + margin)
+                // Halved before subtracting: data near ±f64::MAX (a relative difference whose
+                // divisor nearly vanished) must not give an infinite span or end.
+                let margin = AUTO_MARGIN * 2.0 * (hi / 2.0 - lo / 2.0);
+                let lo = if lo == 0.0 {
+                    0.0
+                } else {
+                    (lo - margin).max(f64::MIN)
+                };
+                widen_if_flat(lo, (hi + margin).min(f64::MAX))
             }
             (Scale::Log, None) => match extent {
                 Some((lo, hi)) => {
@@ -142,6 +148,11 @@ mod tests {
             "0 has no log"
         );
         assert_eq!(Scale::Log.range(Some((1e-3, 10.0)), None), (-3.0, 1.0));
+        // Data near the largest doubles keep finite ends (no margin beyond them).
+        assert_eq!(
+            Scale::Linear.range(None, Some((-1.7e308, 1.7e308))),
+            (f64::MIN, f64::MAX)
+        );
     }
 
     #[test]

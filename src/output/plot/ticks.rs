@@ -64,10 +64,14 @@ pub(super) fn multiples(lo: f64, hi: f64, step: f64) -> Vec<f64> {
 
 /// The finest step `m × 10ⁿ` (m from `mantissas`) with [`MIN_TICKS`] to `most` multiples in
 /// `[lo, hi]`; when no step gives that many, the coarsest with at least [`MIN_TICKS`].
+/// A span wider than the largest double (ends of opposite sign near ±f64::MAX) counts as f64::MAX.
 pub(super) fn nice_step(lo: f64, hi: f64, most: usize, mantissas: &[f64]) -> f64 {
-    let span = hi - lo;
+    let span = (hi - lo).min(f64::MAX);
+    if !(span > 0.0) {
+        return 1.0;
+    }
     let first = (span / (most as f64 * 10.0)).log10().floor() as i32;
-    let steps: Vec<f64> = (first..=first + 4)
+    let steps: Vec<f64> = (first..=first.saturating_add(4))
         .flat_map(|e| mantissas.iter().map(move |&m| m * 10f64.powi(e)))
         .collect();
     let count = |step: f64| multiples(lo, hi, step).len();
@@ -116,15 +120,40 @@ pub(super) fn linear(lo: f64, hi: f64, room: f64, mantissas: &[f64], suffix: &st
 /// `major` labelled with the fewest decimals that write each exactly (multiples of `step`).
 pub(super) fn labelled(major: Vec<f64>, step: f64, suffix: &str) -> Ticks {
     let d = decimals(&major, step);
+    let huge = major.iter().any(|v| v.abs() >= SCIENTIFIC_FROM);
     // A value within rounding of 0 (a multiple computed as −1e-17) is written 0.
     let labels = major
         .iter()
-        .map(|&v| fixed(if v.abs() < EDGE_SLACK * step { 0.0 } else { v }, d, suffix))
+        .map(|&v| if v.abs() < EDGE_SLACK * step { 0.0 } else { v })
+        .map(|v| match huge {
+            true => scientific_linear(v, suffix),
+            false => fixed(v, d, suffix),
+        })
         .collect();
     Ticks {
         major,
         labels,
         minor: Vec::new(),
+    }
+}
+
+/// Linear ticks from this magnitude on are written `m×10ᵏ` (all of an axis's labels, so they
+/// compare at a glance): a plain decimal of 10⁸ has nine digits, of 10³⁰⁸ three hundred.
+const SCIENTIFIC_FROM: f64 = 1e7;
+
+/// `v` as `m×10ᵏ` with m to at most four significant digits (`1.5×10³⁰⁸`, `10⁸`, `−2×10⁷`, `0`).
+fn scientific_linear(v: f64, suffix: &str) -> String {
+    if v == 0.0 {
+        return format!("0{suffix}");
+    }
+    let text = format!("{:.3e}", v.abs());
+    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+    let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+    let power = format!("10{}", superscript(exponent.parse().unwrap_or(0)));
+    let sign = if v < 0.0 { "−" } else { "" };
+    match mantissa {
+        "1" => format!("{sign}{power}{suffix}"),
+        m => format!("{sign}{m}×{power}{suffix}"),
     }
 }
 
@@ -317,6 +346,28 @@ pub(super) fn log(lo: f64, hi: f64, room: f64) -> Ticks {
 mod tests {
     use super::*;
     use std::f64::consts::FRAC_PI_2;
+
+    #[test]
+    fn a_range_as_wide_as_the_doubles_gets_a_few_finite_ticks() {
+        // A relative difference whose divisor nearly vanishes spans ±1e308: the span overflows.
+        let t = linear(-1e308, 1e308, 400.0, &[1.0, 2.0, 5.0], "");
+        assert!(
+            (MIN_TICKS..=MAX_LINEAR_TICKS).contains(&t.major.len())
+                && t.major.iter().all(|v| v.is_finite()),
+            "{:?}",
+            t.major
+        );
+        assert_eq!(nice_step(1.0, 1.0, 5, &[1.0]), 1.0, "an empty span");
+        assert!(
+            t.labels.iter().all(|l| l.chars().count() <= 12),
+            "{:?}",
+            t.labels
+        );
+        assert_eq!(
+            [1.5e308, 1e8, -2e7, 0.0].map(|v| scientific_linear(v, "")),
+            ["1.5×10³⁰⁸", "10⁸", "−2×10⁷", "0"]
+        );
+    }
 
     #[test]
     fn many_decades_get_a_bounded_number_of_unlabelled_lines() {
