@@ -84,13 +84,17 @@ pub struct FigureDetail {
     pub points: usize,
     /// The figure lint's findings on it.
     pub warnings: usize,
+    /// What the drawing chose where the spec left it open, one line each
+    /// (`panels[0]: legend of 4 entries inside the plot, clear of the curves, 1 column at 100 % size`).
+    pub decisions: Vec<String>,
     /// Drawing and encoding its drawn formats (wall time on one worker).
     pub drawing: std::time::Duration,
 }
 
 impl FigureDetail {
     /// `render: <source>: <id>: 1100 × 800 px (3.3 × 2.4 in), 2 panels, 7 series, 3 214 points,
-    /// 0 warnings, drawn in 41 ms`.
+    /// 0 warnings, drawn in 41 ms`, then one `render: <source>: panels[i]: <decision>` line per
+    /// decision.
     pub fn line(&self) -> String {
         let print = self
             .print
@@ -107,10 +111,19 @@ impl FigureDetail {
             self.points,
             self.warnings,
             self.drawing.as_millis()
-        )
+        ) + &self
+            .decisions
+            .iter()
+            .map(|d| format!("\nrender: {}: {d}", self.source))
+            .collect::<String>()
     }
 
-    fn of(figure: &Figure, source: &str, warnings: usize, drawing: std::time::Duration) -> Self {
+    fn of(
+        figure: &Figure,
+        source: &str,
+        linted: &crate::output::plot::Linted,
+        drawing: std::time::Duration,
+    ) -> Self {
         let series = figure.panels.iter().flat_map(|p| &p.series);
         FigureDetail {
             source: source.to_string(),
@@ -123,7 +136,15 @@ impl FigureDetail {
             panels: figure.panels.len(),
             series: series.clone().count(),
             points: series.map(|s| s.points.len()).sum(),
-            warnings,
+            warnings: linted.findings.len(),
+            decisions: linted
+                .decisions
+                .iter()
+                .map(|d| match d.panel {
+                    Some(i) => format!("panels[{i}]: {}", d.message),
+                    None => d.message.clone(),
+                })
+                .collect(),
             drawing,
         }
     }
@@ -332,7 +353,8 @@ fn encode_sources(
             .zip(sources)
             .map(|(fig, (source, _, _))| {
                 let drawing = std::time::Instant::now();
-                let (encoded, findings) = encode_all_linted(fig, &formats)?;
+                let (encoded, linted) = encode_all_linted(fig, &formats)?;
+                let findings = &linted.findings;
                 progress.advance(formats.len() as u64);
                 Ok((
                     encoded
@@ -342,7 +364,7 @@ fn encode_sources(
                         })
                         .collect(),
                     findings.iter().map(|f| f.line(source)).collect(),
-                    FigureDetail::of(fig, source, findings.len(), drawing.elapsed()),
+                    FigureDetail::of(fig, source, &linted, drawing.elapsed()),
                 ))
             })
             .collect::<Result<_>>()?;

@@ -98,22 +98,23 @@ pub fn encode_all(figure: &Figure, formats: &[Format]) -> Result<Vec<(Format, Ve
     Ok(encode_all_linted(figure, formats)?.0)
 }
 
-/// [`encode_all`], with what the figure lint finds in the drawing when one of `formats` draws
-/// it (SVG, PNG or PDF; none otherwise), from the same drawing.
+/// [`encode_all`], with what the figure lint finds in the drawing and what the drawing chose
+/// ([`plot::Linted`]) when one of `formats` draws it (SVG, PNG or PDF; nothing otherwise), from
+/// the same drawing.
 pub fn encode_all_linted(
     figure: &Figure,
     formats: &[Format],
-) -> Result<(Vec<(Format, Vec<u8>)>, Vec<plot::Finding>)> {
+) -> Result<(Vec<(Format, Vec<u8>)>, plot::Linted)> {
     let plot_error =
         |e: plot::PlotError| Error::Numerics(format!("{}: drawing failed: {e}", figure.id));
     let mut svg: Option<Vec<u8>> = None;
-    let mut findings = Vec::new();
+    let mut linted = plot::Linted::default();
     let mut encoded = Vec::with_capacity(formats.len());
     for &format in formats {
         if matches!(format, Format::Svg | Format::Png | Format::Pdf) && svg.is_none() {
             let (drawn, found) = plot::svg_linted(figure).map_err(plot_error)?;
             svg = Some(drawn);
-            findings = found;
+            linted = found;
         }
         let drawn = || svg.as_ref().expect("the SVG is drawn first");
         let bytes = match format {
@@ -129,5 +130,5 @@ pub fn encode_all_linted(
         };
         encoded.extend(bytes.map(|b| (format, b)));
     }
-    Ok((encoded, findings))
+    Ok((encoded, linted))
 }

@@ -516,19 +516,28 @@ fn verbose_lines_and_coloured_labels_are_on_stderr_only() {
     assert!(out.stdout.is_empty());
     let stderr = text(&out.stderr);
     let lines: Vec<&str> = stderr.lines().collect();
-    assert_eq!(lines.len(), 3, "{stderr}");
     assert!(
         lines[0].starts_with(
             "render: configs/tr-vs-phong.json: tr-vs-phong: 1280 × 460 px, 2 panels, 22 series, "
         ),
         "{stderr}"
     );
+    // Then what the drawing chose: each panel's legend, where and at what size.
+    assert_eq!(
+        lines[1],
+        "render: configs/tr-vs-phong.json: panels[0]: legend of 3 entries inside the plot, clear of the curves, 1 column at 100 % size"
+    );
     assert!(
-        lines[1].starts_with("render: configs/abc-grid.json: abc-grid: "),
+        lines
+            .iter()
+            .any(|l| l.starts_with("render: configs/abc-grid.json: abc-grid: ")),
         "{stderr}"
     );
     assert!(
-        lines[2].starts_with("render: 2 figures, 6 files (2 svg, 2 png, 2 csv) written to "),
+        lines
+            .last()
+            .unwrap()
+            .starts_with("render: 2 figures, 6 files (2 svg, 2 png, 2 csv) written to "),
         "{stderr}"
     );
     let bad = r#"{"ndf":"ggx","alpha_tr":-1}"#;

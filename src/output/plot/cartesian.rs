@@ -199,7 +199,7 @@ where
         (left + (plot_w - box_w) / 2.0).clamp(inset, (dims.0 - inset - box_w).max(inset)),
         f64::from(chart_h) + inset,
     );
-    legend.draw(area, at, setting, m)
+    legend.draw(area, at, setting, m, "in a band below the plots it serves")
 }
 
 /// Draws a 2D panel: axes, each series in its mark and look, legend (inside the plot area
@@ -291,7 +291,7 @@ where
                     height - inset - box_h,
                 ),
             };
-            legend.draw(area, at, setting, m)
+            legend.draw(area, at, setting, m, side.placed())
         }
     }
 }

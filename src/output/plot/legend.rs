@@ -113,6 +113,16 @@ pub(super) enum Side {
     Below,
 }
 
+impl Side {
+    /// Where a legend on this side is, in words (`-v`).
+    pub(super) fn placed(self) -> &'static str {
+        match self {
+            Side::Right => "right of the plot",
+            Side::Below => "below the plot",
+        }
+    }
+}
+
 /// A legend outside the plot area: its side, its setting and the size of its strip (the box
 /// and the inset around it), in device pixels.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -402,7 +412,10 @@ impl Legend {
             return self.draw_over(plot, covered, m);
         };
         match self.corner_setting((f64::from(w), f64::from(h)), corner, m) {
-            Some((setting, at)) => self.draw(plot, at, setting, m),
+            Some((setting, at)) => {
+                let placed = format!("in the {} corner asked for", corner.name());
+                self.draw(plot, at, setting, m, &placed)
+            }
             None => {
                 record_warning(
                     &m.trace,
@@ -462,7 +475,8 @@ impl Legend {
         let (w, h) = area.dim_in_pixel();
         let dims = (f64::from(w), f64::from(h));
         if let Some((setting, at)) = self.inside(dims, covered, m) {
-            return self.draw(area, (f64::from(at.0), f64::from(at.1)), setting, m);
+            let placed = "inside the plot, clear of the curves";
+            return self.draw(area, (f64::from(at.0), f64::from(at.1)), setting, m, placed);
         }
         let inset = Self::inset(m);
         let (box_w, box_h) = self.size(Setting::FULL, m);
@@ -472,22 +486,35 @@ impl Legend {
             self.outside(dims, m, |_, _| Some(0.0)).setting
         };
         let (at, _) = legend_position(dims, self.size(setting, m), inset, covered);
-        self.draw(area, (f64::from(at.0), f64::from(at.1)), setting, m)
+        let placed = "over the plot where it hides the least";
+        self.draw(area, (f64::from(at.0), f64::from(at.1)), setting, m, placed)
     }
 
     /// Draws the legend set as `setting` with its box's top-left corner at `at` (pixels of
-    /// `area`).
+    /// `area`), recording where it was `placed` (in words) and how for `-v`.
     pub(super) fn draw<DB: DrawingBackend>(
         &self,
         area: &DrawingArea<DB, Shift>,
         at: (f64, f64),
         setting: Setting,
         m: &Metrics,
+        placed: &str,
     ) -> Result<(), PlotError>
     where
         DB::ErrorType: 'static,
     {
         let (box_w, box_h) = self.size(setting, m);
+        super::lint::record_decision(
+            &m.trace,
+            format!(
+                "legend of {} entr{} {placed}, {} column{} at {:.0} % size",
+                self.entries.len(),
+                if self.entries.len() == 1 { "y" } else { "ies" },
+                setting.columns,
+                if setting.columns == 1 { "" } else { "s" },
+                setting.scale * 100.0
+            ),
+        );
         let (x0, y0) = (at.0.round() as i32, at.1.round() as i32);
         let background = m.palette.background.mix(LEGEND_OPACITY).filled();
         // Saturating: on a canvas far too small for its legend the box may reach past i32 (the

@@ -76,6 +76,9 @@ pub(super) struct Trace {
     /// What the drawing could not do as asked (a legend that fits no corner), in words, with the
     /// panel it was drawing.
     pub(super) warnings: Vec<(Option<usize>, String)>,
+    /// What the drawing chose where the spec left it open (where each legend went, at what size),
+    /// in words, with the panel it was drawing: `-v`'s decisions.
+    pub(super) decisions: Vec<(Option<usize>, String)>,
     /// The panel being drawn (its index in the figure), once the panels are.
     pub(super) current: Option<usize>,
     /// The top of the panel grid, below the figure title's band, in device pixels.
@@ -125,6 +128,15 @@ pub(super) fn record_warning(recorder: &Recorder, warning: String) {
         let mut trace = trace.borrow_mut();
         let panel = trace.current;
         trace.warnings.push((panel, warning));
+    }
+}
+
+/// Records `decision`, when a trace is kept.
+pub(super) fn record_decision(recorder: &Recorder, decision: String) {
+    if let Some(trace) = recorder {
+        let mut trace = trace.borrow_mut();
+        let panel = trace.current;
+        trace.decisions.push((panel, decision));
     }
 }
 
@@ -568,6 +580,7 @@ mod tests {
                 Some(0),
                 "the legend \"a\" does not fit its upper right corner".to_owned(),
             )],
+            decisions: Vec::new(),
             current: None,
             grid_top: 0.0,
         };

@@ -116,14 +116,39 @@ pub fn svg(figure: &Figure) -> Result<Vec<u8>, PlotError> {
     Ok(draw_svg(figure, None)?.0)
 }
 
-/// [`svg`] and what the figure lint finds in the drawing (see [`lint`]), from one drawing.
-pub fn svg_linted(figure: &Figure) -> Result<(Vec<u8>, Vec<Finding>), PlotError> {
+/// What drawing a figure found and chose: the figure lint's findings (see [`lint`]) and the
+/// drawing's own decisions where the spec left them open (where each legend went and at what
+/// size), each with its panel, for `-v`.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Linted {
+    /// The broken rules.
+    pub findings: Vec<Finding>,
+    /// The decisions, in the shape of a finding: the panel and the words.
+    pub decisions: Vec<Finding>,
+}
+
+/// [`svg`] and what drawing it found and chose ([`Linted`]), from one drawing.
+pub fn svg_linted(figure: &Figure) -> Result<(Vec<u8>, Linted), PlotError> {
     let (svg, trace) = draw_svg(figure, Some(std::cell::RefCell::default()))?;
     let size = device_size(&figure.canvas, SVG_UNITS_PER_PX)?;
     let trace = trace
         .map(std::cell::RefCell::into_inner)
         .unwrap_or_default();
-    Ok((svg, lint::findings(figure, &trace, size)))
+    let decisions = trace
+        .decisions
+        .iter()
+        .map(|(panel, message)| Finding {
+            panel: *panel,
+            message: message.clone(),
+        })
+        .collect();
+    Ok((
+        svg,
+        Linted {
+            findings: lint::findings(figure, &trace, size),
+            decisions,
+        },
+    ))
 }
 
 /// The SVG of `figure` and the trace it recorded into `trace`, when one is given.

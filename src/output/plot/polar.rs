@@ -342,7 +342,7 @@ where
                 ),
                 Side::Below => ((width - box_w) / 2.0, height - strip.1 + inset),
             };
-            legend.draw(area, at, setting, m)
+            legend.draw(area, at, setting, m, side.placed())
         }
     }
 }

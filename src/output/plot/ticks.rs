@@ -67,7 +67,7 @@ pub(super) fn multiples(lo: f64, hi: f64, step: f64) -> Vec<f64> {
 /// A span wider than the largest double (ends of opposite sign near ±f64::MAX) counts as f64::MAX.
 pub(super) fn nice_step(lo: f64, hi: f64, most: usize, mantissas: &[f64]) -> f64 {
     let span = (hi - lo).min(f64::MAX);
-    if !(span > 0.0) {
+    if span.is_nan() || span <= 0.0 {
         return 1.0;
     }
     let first = (span / (most as f64 * 10.0)).log10().floor() as i32;
