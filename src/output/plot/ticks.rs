@@ -66,10 +66,11 @@ pub(super) fn multiples(lo: f64, hi: f64, step: f64) -> Vec<f64> {
 /// `[lo, hi]`; when no step gives that many, the coarsest with at least [`MIN_TICKS`].
 /// A span wider than the largest double (ends of opposite sign near ±f64::MAX) counts as f64::MAX.
 pub(super) fn nice_step(lo: f64, hi: f64, most: usize, mantissas: &[f64]) -> f64 {
-    let span = (hi - lo).min(f64::MAX);
+    let span = hi - lo;
     if span.is_nan() || span <= 0.0 {
         return 1.0;
     }
+    let span = span.min(f64::MAX);
     let first = (span / (most as f64 * 10.0)).log10().floor() as i32;
     let steps: Vec<f64> = (first..=first.saturating_add(4))
         .flat_map(|e| mantissas.iter().map(move |&m| m * 10f64.powi(e)))
