@@ -368,20 +368,15 @@ fn encode_sources(
                 ))
             })
             .collect::<Result<_>>()?;
-        let mut warnings = Vec::new();
-        let mut files = Vec::new();
-        for (encoded, found, detail) in encoded {
-            files.push(encoded);
-            warnings.extend(found);
+        for (files, found, detail) in encoded {
+            stats.warnings.extend(found);
             if points == Points::Drawn {
                 stats.figures.push(detail);
             }
-        }
-        let encoded = files;
-        stats.warnings.extend(warnings);
-        for (format, name, bytes) in encoded.into_iter().flatten() {
-            *stats.produced.entry(format).or_default() += 1;
-            outputs.push((name, bytes));
+            for (format, name, bytes) in files {
+                *stats.produced.entry(format).or_default() += 1;
+                outputs.push((name, bytes));
+            }
         }
         *(match points {
             Points::Drawn => &mut stats.drawing,

@@ -1274,8 +1274,13 @@ pub fn published(
     path: &str,
     extra_keys: &[&str],
 ) -> Result<Vec<PublishedChoice>, Vec<Problem>> {
-    let (members, mut problems) =
-        keyed_object(node, path, PUBLISHED_KEYS, extra_keys, "a published fit")?;
+    let (members, mut problems) = keyed_object(
+        node,
+        path,
+        [PUBLISHED_KEYS, extra_keys],
+        &[],
+        "a published fit",
+    )?;
     let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, n)| n);
     let source_names: Vec<&str> = Source::ALL.iter().map(|s| s.name()).collect();
     let source = names_at(
@@ -1495,20 +1500,14 @@ pub fn metal_keys<'a>(
     extra_keys: &[&str],
     lists: bool,
 ) -> Result<MetalKeys<'a>, Vec<Problem>> {
-    let Value::Object(members) = &node.value else {
-        return Err(vec![Problem::new(
-            path,
-            format!("expected a curve object (got {node})"),
-        )]);
-    };
     // The index keys pass the key check unlisted, to be refused by name below.
-    let listed: Vec<&str> = METAL_KEYS.iter().chain(extra_keys).copied().collect();
-    let accepted = Accepted {
-        object: Some("a metal's Fresnel curve"),
-        listed: &listed,
-        unlisted: INDEX_KEYS,
-    };
-    let mut problems = keys::validate(members, path, Some(&accepted));
+    let (members, mut problems) = keyed_object(
+        node,
+        path,
+        [METAL_KEYS, extra_keys],
+        INDEX_KEYS,
+        "a metal's Fresnel curve",
+    )?;
     let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, n)| n);
     let given: Vec<&str> = INDEX_KEYS
         .iter()
@@ -1678,17 +1677,18 @@ pub const DIFFERENCE_KEY: &str = "difference";
 /// Keys of a difference object besides the caller's extra keys.
 pub const DIFFERENCE_KEYS: &[&str] = &[DIFFERENCE_KEY, "a", "b"];
 
-/// The members of the curve object `node` at `path` that accepts `keys` and `extra_keys` (which the
-/// caller handles), with the problems of its keys ([`keys::validate`]; `object` names it in them); a
-/// value that is not an object is the one problem.
 /// An object's members with the problems of its keys, as [`keyed_object`] returns them.
 type KeyedMembers<'a> = (&'a [(String, Node)], Vec<Problem>);
 
+/// The members of the curve object `node` at `path` that accepts the keys of `listed` (its own
+/// and the extra keys the caller handles) and, without listing them in messages, `unlisted`, with
+/// the problems of its keys ([`keys::validate`]; `object` names it in them); a value that is not
+/// an object is the one problem.
 fn keyed_object<'a>(
     node: &'a Node,
     path: &str,
-    keys: &[&str],
-    extra_keys: &[&str],
+    listed: [&[&str]; 2],
+    unlisted: &[&str],
     object: &str,
 ) -> Result<KeyedMembers<'a>, Vec<Problem>> {
     let Value::Object(members) = &node.value else {
@@ -1697,11 +1697,11 @@ fn keyed_object<'a>(
             format!("expected a curve object (got {node})"),
         )]);
     };
-    let allowed: Vec<&str> = keys.iter().chain(extra_keys).copied().collect();
+    let allowed: Vec<&str> = listed.concat();
     let accepted = Accepted {
         object: Some(object),
         listed: &allowed,
-        unlisted: &[],
+        unlisted,
     };
     let problems = keys::validate(members, path, Some(&accepted));
     Ok((members, problems))
@@ -1720,8 +1720,13 @@ pub fn difference_parts<'a>(
     path: &str,
     extra_keys: &[&str],
 ) -> Result<(DiffOp, &'a Node, &'a Node), Vec<Problem>> {
-    let (members, mut problems) =
-        keyed_object(node, path, DIFFERENCE_KEYS, extra_keys, "a difference")?;
+    let (members, mut problems) = keyed_object(
+        node,
+        path,
+        [DIFFERENCE_KEYS, extra_keys],
+        &[],
+        "a difference",
+    )?;
     let get = |key: &str| members.iter().find(|(k, _)| k == key).map(|(_, n)| n);
     let names: Vec<&str> = DiffOp::ALL.iter().map(|op| op.name()).collect();
     let op_node = get(DIFFERENCE_KEY).expect("is_difference() was checked");

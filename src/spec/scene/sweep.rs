@@ -427,14 +427,26 @@ pub fn metal_entry(reader: &mut Reader, node: &Node, path: &str, out: &mut Vec<S
                 .replace("{wavelength_nm}", &crate::spec::numbers::pretty(wavelength)),
             None => label,
         };
-        out.push(SceneCurve {
-            curve,
-            label: Label::Template {
-                template: text,
-                values: vec![],
-            },
-            style: super::sweep_style(style, k, count),
-        });
+        out.push(labelled_member(curve, text, style, k, count));
+    }
+}
+
+/// Member `k` of `count` curves an entry expands into, labelled with the finished `text` (no
+/// placeholder left to fill) and styled as the sweep's member `k`.
+fn labelled_member(
+    curve: curve::CurveSpec,
+    text: String,
+    style: crate::spec::look::Style,
+    k: usize,
+    count: usize,
+) -> SceneCurve<Spec> {
+    SceneCurve {
+        curve,
+        label: Label::Template {
+            template: text,
+            values: vec![],
+        },
+        style: super::sweep_style(style, k, count),
     }
 }
 
@@ -480,14 +492,7 @@ pub fn published_entry(
         let Some(curve) = reader.accept(curve::published_showing(node, path, preset)) else {
             return;
         };
-        out.push(SceneCurve {
-            curve,
-            label: Label::Template {
-                template: text,
-                values: vec![],
-            },
-            style: super::sweep_style(style, k, count),
-        });
+        out.push(labelled_member(curve, text, style, k, count));
     }
 }
 
