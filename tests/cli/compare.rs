@@ -613,3 +613,37 @@ fn pairs_read_a_file_gate_on_bounds_and_refuse_a_and_b() {
         "--pairs: no pair given",
     );
 }
+
+/// GGX and Beckmann of the same α as narrow as the families allow (down to α = 1e-150, where D(0) ≈ 3e299)
+/// compare like any other pair: every metric finite, `l2_projected` on its slope-space limit. For α → 0 both
+/// lobes are D = f(tan θ/α)/α² near the normal (f_tr(u) = 1/(π(1 + u²)²), f_b(u) = e^{−u²}/π), so
+/// l2_projected · α → √(2π ∫₀^∞ (f_tr − f_b)² u du) = 0.0910219104013437498 (mpmath, 30 digits,
+/// quad over [0, 1, 3, 10, ∞]); the corrections are O(α²).
+#[test]
+fn lobes_down_to_the_narrowest_alpha_compare_on_their_slope_space_limit() {
+    const LIMIT: f64 = 0.091_021_910_401_343_75;
+    for alpha in ["1e-5", "1e-10", "1e-40", "1e-100", "1e-150"] {
+        let json: serde_json::Value = serde_json::from_str(&ok(&ndfplot(&[
+            "compare",
+            "--a",
+            &format!(r#"{{"ndf":"ggx","alpha_tr":{alpha}}}"#),
+            "--b",
+            &format!(r#"{{"ndf":"beckmann","alpha_b":{alpha}}}"#),
+            "--format",
+            "json",
+        ])))
+        .unwrap();
+        let a: f64 = alpha.parse().unwrap();
+        let l2 = json["l2_projected"].as_f64().unwrap();
+        assert!(
+            (l2 * a / LIMIT - 1.0).abs() < 1e-9,
+            "alpha {alpha}: l2_projected {l2}"
+        );
+        for metric in ["max_abs", "max_rel", "max_log_ratio", "l2_grid", "a_peak"] {
+            assert!(
+                json[metric].as_f64().is_some_and(f64::is_finite),
+                "alpha {alpha}: {metric} in {json}"
+            );
+        }
+    }
+}

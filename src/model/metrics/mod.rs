@@ -42,10 +42,13 @@ const GRAZING_BREAK_MIN: f64 = 3.552713678800501e-15;
 /// the value there is exact to rounding.
 const ARGMAX_TOL: f64 = 1e-12;
 
-/// Shift of the l2_projected integrand, as a fraction of the larger peak P: (a − b)² carries an absolute
-/// rounding error of ~2|a − b|·ε·P, which no relative tolerance beats once |a − b| ≪ P. Integrating
-/// (a − b)² + (1e-3 P)² keeps that error below `QUAD_REL_TOL` of the integrand everywhere (its worst case,
-/// |a − b| = 1e-3 P, gives 2.2e-13), and leaves l2_projected exact to ~1e-9 P even for nearly equal curves.
+/// Shift of the l2_projected integrand on a quadrature piece, as a fraction of the larger of |a| and |b|
+/// seen at the piece's ends and middle, m: (a − b)² carries an absolute rounding error of ~2|a − b|·ε·m,
+/// which no relative tolerance beats once |a − b| ≪ m. Integrating (a − b)² + (1e-3 m)² on the piece keeps
+/// that error below `QUAD_REL_TOL` of the integrand (its worst case, |a − b| = 1e-3 m, gives 2.2e-13), and
+/// leaves l2_projected exact to ~1e-9 of the curves' size where its mass lies, even for nearly equal
+/// curves. The shift is local because a lobe of width w holds its mass on an area ~w²: one shift for the
+/// whole hemisphere, sized by the peak, would swamp the integral of any lobe narrower than ~1e-9.
 const L2_SHIFT: f64 = 1e-3;
 
 /// Both curves must exceed this for `max_log_ratio` to count a θ (docs/contracts.md): ln of anything above it
@@ -180,7 +183,8 @@ fn breakpoints(width: f64, range: ThetaRange) -> Vec<f64> {
 ///
 /// `shift` ≥ 0 is added to f on every piece and its exact integral (π · shift over [0, π/2]) subtracted
 /// again: it turns the relative tolerance into an absolute one of ~`QUAD_REL_TOL` · π · shift where f is
-/// small against it (0 for a purely relative accuracy).
+/// small against it (0 for a purely relative accuracy). [`projected_integral_over`] takes a shift per
+/// piece.
 ///
 /// Pieces next to π/2 may hold ~1e-30 of the total, sampled by θ only a few ulps apart, where relative
 /// convergence is out of reach: such a piece is accepted when the errors of all unconverged pieces together
@@ -190,22 +194,23 @@ pub fn projected_integral(
     width: f64,
     shift: f64,
 ) -> Result<Estimate, MetricError> {
-    projected_integral_over(f, ThetaRange::FULL, width, shift, QUAD_REL_TOL)
+    projected_integral_over(f, ThetaRange::FULL, width, |_, _| shift, QUAD_REL_TOL)
 }
 
 /// [`projected_integral`] over `range` only, to relative accuracy `tol`: 2π ∫ f(θ) sin θ cos θ dθ from lo
-/// to hi, the pieces those of [0, π/2] cut at lo and hi.
+/// to hi, the pieces those of [0, π/2] cut at lo and hi; the shift on a piece [a, b] is `shift(a, b)`.
 pub fn projected_integral_over(
     f: impl Fn(f64) -> f64,
     range: ThetaRange,
     width: f64,
-    shift: f64,
+    shift: impl Fn(f64, f64) -> f64,
     tol: f64,
 ) -> Result<Estimate, MetricError> {
-    let integrand = |theta: f64| (f(theta) + shift) * theta.sin() * theta.cos();
     let (mut total, mut converged_error, mut loose_error) = (0.0, 0.0, 0.0);
     for piece in breakpoints(width, range).windows(2) {
         let (a, b) = (piece[0], piece[1]);
+        let shift = shift(a, b);
+        let integrand = |theta: f64| (f(theta) + shift) * theta.sin() * theta.cos();
         // ∫ₐᵇ shift · sin θ cos θ dθ = shift · (sin²b − sin²a)/2.
         let shifted = 0.5 * shift * (b.sin().powi(2) - a.sin().powi(2));
         match integrate(integrand, a, b, tol) {
@@ -366,7 +371,9 @@ pub fn l2_projected_with(
     l2_projected_over(a, b, ThetaRange::FULL, peak_a, peak_b)
 }
 
-/// [`l2_projected_with`] over `range` only: sqrt(2π ∫ (a − b)² sin θ cos θ dθ) from lo to hi.
+/// [`l2_projected_with`] over `range` only: sqrt(2π ∫ (a − b)² sin θ cos θ dθ) from lo to hi, integrated
+/// as P² ∫ ((a − b)/P)² with P the larger peak, so that no square overflows (lobes as narrow as the
+/// families allow peak near 1e300), under the local shift of [`L2_SHIFT`].
 pub fn l2_projected_over(
     a: &Curve,
     b: &Curve,
@@ -378,7 +385,19 @@ pub fn l2_projected_over(
         return Ok(0.0);
     }
     let width = lobe_width(peak_a).min(lobe_width(peak_b));
-    let shift = (L2_SHIFT * peak_a.abs().max(peak_b.abs())).powi(2);
+    let scale = match peak_a.abs().max(peak_b.abs()) {
+        p if p > 0.0 && p.is_finite() => p,
+        _ => 1.0,
+    };
+    let size = |t: f64| a.eval(t).abs().max(b.eval(t).abs()) / scale;
+    let shift = |lo: f64, hi: f64| {
+        let m = size(lo).max(size(0.5 * (lo + hi))).max(size(hi));
+        if m.is_finite() {
+            (L2_SHIFT * m).powi(2)
+        } else {
+            0.0
+        }
+    };
     // A renderer's curve steps at its float32 (or half) rounding: its square integrates only to
     // the accuracy of its values.
     let tol = if a.emulated() || b.emulated() {
@@ -387,13 +406,13 @@ pub fn l2_projected_over(
         QUAD_REL_TOL
     };
     let squared = projected_integral_over(
-        |t| (a.eval(t) - b.eval(t)).powi(2),
+        |t| ((a.eval(t) - b.eval(t)) / scale).powi(2),
         range,
         width,
         shift,
         tol,
     )?;
-    Ok(squared.value.max(0.0).sqrt())
+    Ok(scale * squared.value.max(0.0).sqrt())
 }
 
 /// `l2_projected` of two curves (see [`l2_projected_with`]), their peaks taken as their values at the
@@ -412,15 +431,25 @@ pub fn l2_grid_nodes(range: ThetaRange) -> impl Iterator<Item = f64> {
 
 /// `l2_grid` = ‖a − b‖₂ over the nodes of [`l2_grid_nodes`] inside `range`.
 pub fn l2_grid(a: &Curve, b: &Curve, range: ThetaRange) -> Result<f64, MetricError> {
-    let mut sum = 0.0;
-    for theta in l2_grid_nodes(range) {
-        let d = a.eval(theta) - b.eval(theta);
-        if !d.is_finite() {
-            return Err(MetricError::NonFinite { theta });
-        }
-        sum += d * d;
-    }
-    Ok(sum.sqrt())
+    let differences = l2_grid_nodes(range)
+        .map(|theta| match a.eval(theta) - b.eval(theta) {
+            d if d.is_finite() => Ok(d),
+            _ => Err(MetricError::NonFinite { theta }),
+        })
+        .collect::<Result<Vec<f64>, _>>()?;
+    Ok(scaled_norm(&differences, |d, _| d * d))
+}
+
+/// √(Σᵢ g(dᵢ/s, i)) · s with s = max |dᵢ| (or 1 when every dᵢ is 0): a 2-norm of finite values, or a
+/// weighted one when g weighs the squares, whose squares neither overflow (|d| up to the largest double)
+/// nor underflow.
+pub fn scaled_norm(d: &[f64], g: impl Fn(f64, usize) -> f64) -> f64 {
+    let s = match d.iter().fold(0.0f64, |m, v| m.max(v.abs())) {
+        0.0 => 1.0,
+        s => s,
+    };
+    let sum: f64 = d.iter().enumerate().map(|(i, v)| g(v / s, i)).sum();
+    s * sum.max(0.0).sqrt()
 }
 
 /// The pointwise difference behind `max_rel`: |a − b| / max(|a|, |b|), 0 where both are 0.

@@ -7,7 +7,7 @@
 
 use super::{
     Comparison, Extremum, MetricError, ThetaRange, l2_grid_nodes, log_ratio, peak_over,
-    relative_difference,
+    relative_difference, scaled_norm,
 };
 use crate::model::curve::Curve;
 use std::f64::consts::PI;
@@ -204,20 +204,18 @@ pub fn compare_operands(
                 value: v,
             }),
         });
-    let weighted = |i: usize| {
-        let t = nodes[i];
-        let d = values[i].0 - values[i].1;
-        d * d * t.sin() * t.cos()
-    };
-    let integral: f64 = (1..nodes.len())
-        .map(|i| 0.5 * (nodes[i] - nodes[i - 1]) * (weighted(i) + weighted(i - 1)))
-        .sum();
-    let (lo, hi) = (nodes[0], nodes[nodes.len() - 1]);
-    let mut grid_sum = 0.0;
-    for theta in l2_grid_nodes(range).filter(|t| (lo..=hi).contains(t)) {
-        let (va, vb) = difference(theta)?;
-        grid_sum += (va - vb) * (va - vb);
-    }
+    // The trapezoidal rule over the nodes: node i weighs (θ_{i+1} − θ_{i−1})/2 · sin θ cos θ.
+    let differences: Vec<f64> = values.iter().map(|(p, q)| p - q).collect();
+    let last = nodes.len() - 1;
+    let l2_projected = scaled_norm(&differences, |d, i| {
+        let span = nodes[(i + 1).min(last)] - nodes[i.saturating_sub(1)];
+        2.0 * PI * 0.5 * span * d * d * nodes[i].sin() * nodes[i].cos()
+    });
+    let (lo, hi) = (nodes[0], nodes[last]);
+    let grid = l2_grid_nodes(range)
+        .filter(|t| (lo..=hi).contains(t))
+        .map(|theta| difference(theta).map(|(va, vb)| va - vb))
+        .collect::<Result<Vec<f64>, _>>()?;
     Ok(Comparison {
         range,
         max_abs: abs.value,
@@ -225,8 +223,8 @@ pub fn compare_operands(
         max_rel: rel.value,
         max_rel_theta: rel.theta,
         max_log_ratio,
-        l2_projected: (2.0 * PI * integral).sqrt(),
-        l2_grid: grid_sum.sqrt(),
+        l2_projected,
+        l2_grid: scaled_norm(&grid, |d, _| d * d),
         a_peak: a.peak(range)?,
         b_peak: b.peak(range)?,
     })
