@@ -139,7 +139,7 @@ pub fn check_target(flag: &str, target: &Path) -> Result<()> {
                 "{flag}: {}: not a regular file, left as it is (got {}, expected a regular file to \
              replace or a name not yet taken)",
                 target.display(),
-                crate::spec::datafile::file_kind(meta.file_type())
+                crate::spec::datafile::file_kind(std::os::unix::fs::MetadataExt::mode(&meta))
             )))
         }
         _ => Ok(()),
@@ -268,9 +268,9 @@ fn ensure_dir(flag: &str, dir: &Path) -> Result<()> {
     };
     match (fs::symlink_metadata(dir), fs::metadata(dir)) {
         (Ok(link), Err(_)) if link.file_type().is_symlink() => taken("a symbolic link to nothing"),
-        (Ok(_), Ok(meta)) if !meta.is_dir() => {
-            taken(crate::spec::datafile::file_kind(meta.file_type()))
-        }
+        (Ok(_), Ok(meta)) if !meta.is_dir() => taken(crate::spec::datafile::file_kind(
+            std::os::unix::fs::MetadataExt::mode(&meta),
+        )),
         _ => Err(Error::io(dir.display().to_string(), error).for_option(flag)),
     }
 }

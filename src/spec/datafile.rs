@@ -4,9 +4,11 @@
 //! A path resolves against the folder of the document that names it (a spec's folder; the working
 //! directory for an inline `compare` side) and may not leave it — neither by an absolute path or
 //! `..`, nor through a symbolic link — unless it lies inside a folder allowed with `--allow-read`.
-//! Only regular files are read, up to [`MAX_DATA_FILE_BYTES`], by [`read_regular`]: the one reader
-//! of untrusted files (also `render --check`'s of the stored outputs), which checks what a path
-//! names before opening it and opens it without following a link or blocking. Messages never quote
+//! Only regular files are read, up to [`MAX_DATA_FILE_BYTES`], by [`read_beneath`] (and
+//! [`read_regular`] for a path the user named): the one reader of untrusted files (also `render
+//! --check`'s of the stored outputs and `albedo --against`'s), which walks from the readable folder to
+//! the file without following a link, checks what it names before opening it and opens it without
+//! following a link or blocking. Messages never quote
 //! a file's contents; [`crate::problem::excerpt`] bounds and sanitizes what they quote of its
 //! header.
 
@@ -56,14 +58,17 @@ impl DataScope {
             return Err(leaves(""));
         }
         let real = std::fs::canonicalize(&written).map_err(|e| io_message(&e))?;
-        let inside = roots
+        let beneath = roots
             .iter()
             .filter_map(|root| std::fs::canonicalize(root).ok())
-            .any(|root| real.starts_with(root));
-        if !inside {
+            .find_map(|root| {
+                let relative = real.strip_prefix(&root).ok()?.to_path_buf();
+                Some((root, relative))
+            });
+        let Some((root, relative)) = beneath else {
             return Err(leaves(" through a symbolic link"));
-        }
-        match read_regular(&real, MAX_DATA_FILE_BYTES) {
+        };
+        match read_beneath(&root, &relative, MAX_DATA_FILE_BYTES) {
             Ok(bytes) => Ok(bytes),
             Err(Refused::TooLarge(len)) => Err(too_large(len)),
             Err(Refused::Io(e)) => Err(io_message(&e)),
@@ -101,63 +106,84 @@ impl std::fmt::Display for Refused {
     }
 }
 
-/// What a file that is not regular is, for messages: `a folder`, `a FIFO`, …
-pub fn file_kind(file_type: std::fs::FileType) -> &'static str {
-    use std::os::unix::fs::FileTypeExt;
-    if file_type.is_dir() {
-        "a folder"
-    } else if file_type.is_symlink() {
-        "a symbolic link"
-    } else if file_type.is_fifo() {
-        "a FIFO"
-    } else if file_type.is_socket() {
-        "a socket"
-    } else if file_type.is_char_device() {
-        "a character device"
-    } else if file_type.is_block_device() {
-        "a block device"
-    } else if file_type.is_file() {
-        "a regular file"
-    } else {
-        "a special file"
+/// What a file of mode `mode` (its `st_mode`, or `MetadataExt::mode`) is, for messages: `a folder`,
+/// `a FIFO`, …
+pub fn file_kind(mode: u32) -> &'static str {
+    match mode & libc::S_IFMT {
+        libc::S_IFDIR => "a folder",
+        libc::S_IFLNK => "a symbolic link",
+        libc::S_IFIFO => "a FIFO",
+        libc::S_IFSOCK => "a socket",
+        libc::S_IFCHR => "a character device",
+        libc::S_IFBLK => "a block device",
+        libc::S_IFREG => "a regular file",
+        _ => "a special file",
     }
 }
 
 /// The bytes of the file at `path`, read as untrusted input: only when `path` itself (not a link
-/// it names) is a regular file of at most `limit` bytes. What the path names is checked before
-/// it is opened (opening a FIFO blocks, opening a device may act on it); the file is then opened
-/// without following a link (`O_NOFOLLOW`) or blocking (`O_NONBLOCK`), and the opened file must be
-/// the one checked (same device and inode, still regular), so a swap between the check and the
-/// open is refused too. At most `limit + 1` bytes are ever read.
+/// it names) is a regular file of at most `limit` bytes. The folder holding it is the one the path
+/// names (links on the way followed: it is the folder the user named); the file is then read by
+/// [`read_beneath`] from that folder.
 pub fn read_regular(path: &Path, limit: u64) -> Result<Vec<u8>, Refused> {
-    use std::os::unix::fs::{MetadataExt, OpenOptionsExt};
-    let checked = std::fs::symlink_metadata(path).map_err(Refused::Io)?;
-    let regular = |meta: &std::fs::Metadata| {
-        if meta.file_type().is_symlink() {
-            Err(Refused::Link)
-        } else if !meta.is_file() {
-            Err(Refused::NotRegular(file_kind(meta.file_type())))
-        } else if meta.len() > limit {
-            Err(Refused::TooLarge(meta.len()))
-        } else {
-            Ok(())
-        }
+    let name = path.file_name().ok_or(Refused::NotRegular("a folder"))?;
+    let folder = match path.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent,
+        _ => Path::new("."),
     };
-    regular(&checked)?;
-    let file = std::fs::File::options()
+    read_beneath(folder, Path::new(name), limit)
+}
+
+/// The bytes of the regular file `relative` (a plain relative path: names only, no `..`) below the
+/// folder `root`, read as untrusted input. Every folder on the way is opened from the one before it
+/// (`openat`) without following a link, so the file read is one reached from `root` through real
+/// folders at the moment it is opened — a folder swapped for a link after any earlier check is
+/// refused, not followed. What the last name is is looked at before it is opened (opening a FIFO
+/// blocks, opening a device may act on it); it is then opened without following a link
+/// (`O_NOFOLLOW`) or blocking (`O_NONBLOCK`), and the opened file must be the one looked at (same
+/// device and inode, still regular), so a swap between the two is refused too. At most `limit + 1`
+/// bytes are ever read.
+pub fn read_beneath(root: &Path, relative: &Path, limit: u64) -> Result<Vec<u8>, Refused> {
+    use std::os::unix::fs::{MetadataExt, OpenOptionsExt};
+    let names: Vec<&std::ffi::OsStr> = relative
+        .components()
+        .map(|component| match component {
+            Component::Normal(name) => Ok(name),
+            _ => Err(Refused::Io(std::io::Error::other(
+                "not a plain relative path",
+            ))),
+        })
+        .collect::<Result<_, _>>()?;
+    let (last, folders) = names.split_last().ok_or(Refused::NotRegular("a folder"))?;
+    let mut folder: std::os::fd::OwnedFd = std::fs::File::options()
         .read(true)
-        .custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK)
-        .open(path)
-        .map_err(|e| match e.raw_os_error() {
-            Some(libc::ELOOP) => Refused::Link,
-            _ => Refused::Io(e),
-        })?;
+        .custom_flags(libc::O_DIRECTORY)
+        .open(root)
+        .map_err(Refused::Io)?
+        .into();
+    for name in folders {
+        let (kind, ..) = stat_at(&folder, name)?;
+        if kind != libc::S_IFDIR {
+            return Err(Refused::NotRegular(file_kind(kind)));
+        }
+        folder = open_at(&folder, name, libc::O_DIRECTORY)?;
+    }
+    let (kind, size, identity) = stat_at(&folder, last)?;
+    if kind != libc::S_IFREG {
+        return Err(Refused::NotRegular(file_kind(kind)));
+    }
+    if size > limit {
+        return Err(Refused::TooLarge(size));
+    }
+    let file = std::fs::File::from(open_at(&folder, last, libc::O_NONBLOCK)?);
     let opened = file.metadata().map_err(Refused::Io)?;
-    regular(&opened)?;
-    if (opened.dev(), opened.ino()) != (checked.dev(), checked.ino()) {
+    if !opened.is_file() || (opened.dev(), opened.ino()) != identity {
         return Err(Refused::Io(std::io::Error::other(
             "replaced while being opened",
         )));
+    }
+    if opened.len() > limit {
+        return Err(Refused::TooLarge(opened.len()));
     }
     let mut bytes = Vec::new();
     file.take(limit + 1)
@@ -167,6 +193,75 @@ pub fn read_regular(path: &Path, limit: u64) -> Result<Vec<u8>, Refused> {
         return Err(Refused::TooLarge(bytes.len() as u64));
     }
     Ok(bytes)
+}
+
+/// What `name` inside `folder` is, without following a link: its file type bits (`S_IFMT` of its
+/// mode), its size and its (device, inode). A link is [`Refused::Link`].
+fn stat_at(
+    folder: &std::os::fd::OwnedFd,
+    name: &std::ffi::OsStr,
+) -> Result<(libc::mode_t, u64, (u64, u64)), Refused> {
+    use std::os::fd::AsRawFd;
+    let name = c_name(name)?;
+    let mut stat = std::mem::MaybeUninit::<libc::stat>::uninit();
+    // SAFETY: `folder` is an open descriptor, `name` a NUL-terminated string, and `stat` points to
+    // writable memory of the size fstatat fills; it is read only when the call succeeds.
+    let status = unsafe {
+        libc::fstatat(
+            folder.as_raw_fd(),
+            name.as_ptr(),
+            stat.as_mut_ptr(),
+            libc::AT_SYMLINK_NOFOLLOW,
+        )
+    };
+    if status != 0 {
+        return Err(Refused::Io(std::io::Error::last_os_error()));
+    }
+    // SAFETY: fstatat succeeded, so it filled `stat`.
+    let stat = unsafe { stat.assume_init() };
+    match stat.st_mode & libc::S_IFMT {
+        libc::S_IFLNK => Err(Refused::Link),
+        kind => Ok((
+            kind,
+            stat.st_size as u64,
+            (stat.st_dev as u64, stat.st_ino as u64),
+        )),
+    }
+}
+
+/// `name` inside `folder` opened read-only with `flags`, never through a link (`O_NOFOLLOW`; a link
+/// swapped in since it was looked at is [`Refused::Link`]).
+fn open_at(
+    folder: &std::os::fd::OwnedFd,
+    name: &std::ffi::OsStr,
+    flags: libc::c_int,
+) -> Result<std::os::fd::OwnedFd, Refused> {
+    use std::os::fd::{AsRawFd, FromRawFd};
+    let name = c_name(name)?;
+    // SAFETY: `folder` is an open descriptor and `name` a NUL-terminated string.
+    let fd = unsafe {
+        libc::openat(
+            folder.as_raw_fd(),
+            name.as_ptr(),
+            libc::O_RDONLY | libc::O_NOFOLLOW | libc::O_CLOEXEC | flags,
+        )
+    };
+    if fd < 0 {
+        let error = std::io::Error::last_os_error();
+        return Err(match error.raw_os_error() {
+            Some(libc::ELOOP) => Refused::Link,
+            _ => Refused::Io(error),
+        });
+    }
+    // SAFETY: openat returned a new descriptor that nothing else owns.
+    Ok(unsafe { std::os::fd::OwnedFd::from_raw_fd(fd) })
+}
+
+/// A file name as the C string the system calls take (a name holding NUL names no file).
+fn c_name(name: &std::ffi::OsStr) -> Result<std::ffi::CString, Refused> {
+    use std::os::unix::ffi::OsStrExt;
+    std::ffi::CString::new(name.as_bytes())
+        .map_err(|_| Refused::Io(std::io::Error::other("a name holding a NUL byte")))
 }
 
 fn too_large(bytes: u64) -> String {
@@ -229,5 +324,54 @@ mod tests {
         assert!(scope.read("overlay.csv").is_ok());
         let widened = DataScope::new("tests/data/malformed", Arc::from([PathBuf::from(".")]));
         assert!(widened.read("../../../Cargo.toml").is_ok());
+    }
+
+    /// What a scope checked is read through real folders only: a folder on the way swapped for a link
+    /// after the check (here: before the read) is refused, not followed, as is a link or a FIFO at the
+    /// end; the file itself is read when nothing was swapped.
+    #[test]
+    fn the_walk_to_a_data_file_follows_no_link_met_on_the_way() {
+        let root = tempfile::tempdir().unwrap();
+        let outside = tempfile::tempdir().unwrap();
+        std::fs::create_dir(root.path().join("sub")).unwrap();
+        std::fs::write(root.path().join("sub/data.csv"), "theta,y\n0,1\n").unwrap();
+        std::fs::write(outside.path().join("data.csv"), "secret\n").unwrap();
+        let relative = Path::new("sub/data.csv");
+        assert_eq!(
+            read_beneath(root.path(), relative, 1 << 20).unwrap(),
+            b"theta,y\n0,1\n"
+        );
+        std::fs::rename(root.path().join("sub"), root.path().join("old")).unwrap();
+        std::os::unix::fs::symlink(outside.path(), root.path().join("sub")).unwrap();
+        assert!(matches!(
+            read_beneath(root.path(), relative, 1 << 20),
+            Err(Refused::Link)
+        ));
+        std::os::unix::fs::symlink(
+            outside.path().join("data.csv"),
+            root.path().join("last.csv"),
+        )
+        .unwrap();
+        assert!(matches!(
+            read_beneath(root.path(), Path::new("last.csv"), 1 << 20),
+            Err(Refused::Link)
+        ));
+        let fifo = std::ffi::CString::new(
+            root.path()
+                .join("fifo")
+                .into_os_string()
+                .into_encoded_bytes(),
+        )
+        .unwrap();
+        // SAFETY: a NUL-terminated path.
+        assert_eq!(unsafe { libc::mkfifo(fifo.as_ptr(), 0o600) }, 0);
+        assert!(matches!(
+            read_beneath(root.path(), Path::new("fifo"), 1 << 20),
+            Err(Refused::NotRegular("a FIFO"))
+        ));
+        assert!(matches!(
+            read_beneath(root.path(), Path::new("old/data.csv"), 4),
+            Err(Refused::TooLarge(12))
+        ));
     }
 }
