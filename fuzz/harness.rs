@@ -341,9 +341,13 @@ fn unescaped(line: &str) -> Vec<char> {
 /// The invariants of one batch's records: each either read or carrying at least one problem,
 /// printed without raw control characters, under its source `stdin:<line>`, the lines increasing
 /// and within the input's `lines`.
-fn check_records<T>(records: &[Record<T>], lines: usize) {
+fn check_records<T>(
+    records: impl Iterator<Item = ndfplot::error::Result<Record<T>>>,
+    lines: usize,
+) {
     let mut last = 0;
     for record in records {
+        let record = record.expect("an input within the cap is read to its end");
         assert!(
             record.line > last && record.line <= lines,
             "line {} after {last} of {lines}",
@@ -373,12 +377,16 @@ fn batch(bytes: &[u8]) {
     let lines = bytes.split(|&b| b == b'\n').count();
     let content = bytes.strip_prefix("\u{feff}".as_bytes()).unwrap_or(bytes);
     let blank = content.trim_ascii().is_empty();
-    match read_pairs("-", &[], || Ok(bytes.to_vec())) {
-        Ok(pairs) => check_records(&pairs, lines),
+    match read_pairs("-", &[], std::io::Cursor::new(bytes.to_vec())) {
+        Ok(pairs) => check_records(pairs, lines),
         Err(error) => assert!(blank, "{error}"),
     }
-    match read_curves(&["-".into()], "--target", || Ok(bytes.to_vec())) {
-        Ok(curves) => check_records(&curves, lines),
+    match read_curves(
+        &["-".into()],
+        "--target",
+        std::io::Cursor::new(bytes.to_vec()),
+    ) {
+        Ok(curves) => check_records(curves, lines),
         Err(error) => assert!(blank, "{error}"),
     }
 }

@@ -15,7 +15,6 @@ use crate::output::report::{Cell, Report};
 use crate::problem::{Problem, Problems, join_key, suggestion};
 use crate::spec::angle::AngleUnit;
 use crate::spec::input::Record;
-use rayon::prelude::*;
 
 /// A `--max-error <metric>=<x>` bound.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -529,13 +528,11 @@ pub struct ReadySide {
 /// read.
 pub type LoadedPair = Record<[ReadySide; 2]>;
 
-/// What a `--pairs` run writes: the text for stdout, the `compare: <source>: …` line of every exceeded
-/// bound (the run exits 1 when there are any), and the problems of the pairs that could not be
-/// compared (it exits 2 when there are any, unless `--keep-going`).
+/// What a `--pairs` run leaves after writing its output: the `compare: <source>: …` line of every
+/// exceeded bound (the run exits 1 when there are any), and the problems of the pairs that could not
+/// be compared (it exits 2 when there are any, unless `--keep-going`).
 #[derive(Debug)]
 pub struct BatchReport {
-    /// Standard output.
-    pub stdout: String,
     /// The exceeded bounds, in input order.
     pub exceeded: Vec<String>,
     /// One entry per failed pair, in input order.
@@ -552,129 +549,147 @@ struct Outcome {
     result: std::result::Result<Compared, Problems>,
 }
 
-/// Compares every readable pair over `span` (in parallel) and writes the results in input order in
-/// `output`; a pair whose sides are of different kinds, whose numerics fail or whose `--metric` is
-/// undefined becomes a problem of its source, and the others are still written. In JSON and CSV a
-/// failed pair is a row with status `error` ([`batch_report`]); with `--metric`, an empty line.
+/// Compares every readable pair of `pairs` over `span` as they are read (in parallel, a chunk at a
+/// time, [`crate::pipeline::batch::in_order`]) and hands the output to `write` in input order: JSON,
+/// CSV (its header first) and `--metric` lines as each chunk is done, the readable table (which
+/// aligns every row) at the end. A pair whose sides are of different kinds, whose numerics fail or
+/// whose `--metric` is undefined becomes a problem of its source, and the others are still written;
+/// in JSON and CSV a failed pair is a row with status `error` ([`batch_row`]), with `--metric` an
+/// empty line. An error reading `pairs` or writing ends the run after the pairs before it; `write`
+/// returning `Ok(false)` (the reader went away) ends it quietly.
 pub fn run_pairs(
-    pairs: Vec<LoadedPair>,
+    pairs: impl Iterator<Item = Result<LoadedPair>>,
     span: &Span,
     output: Output,
     bounds: &[Bound],
-) -> BatchReport {
-    let outcomes: Vec<Outcome> = pairs
-        .into_par_iter()
-        .map(|pair| {
-            let source = pair.source;
-            let problem = |p: Problem| Problems {
-                source: source.clone(),
-                list: vec![p],
-            };
-            let [a, b] = match pair.value {
-                Ok(sides) => sides,
-                Err(p) => {
-                    return Outcome {
-                        line: pair.line,
-                        sides: None,
-                        result: Err(p),
-                    };
-                }
-            };
-            let result = (|| {
-                let metrics = compare_sides(&a.operand, &b.operand, b.key, span.range)
-                    .map_err(problem)?
-                    .map_err(|e| problem(Problem::new("", format!("compare: {e}"))))?;
-                if let Output::Metric(field) = output {
-                    one_number(field, &metrics, span).map_err(|m| problem(Problem::new("", m)))?;
-                }
-                Ok(Compared {
-                    source: source.clone(),
-                    a: a.json.clone(),
-                    b: b.json.clone(),
-                    metrics,
-                })
-            })();
-            Outcome {
-                line: pair.line,
-                sides: Some([a.json, b.json]),
-                result,
-            }
-        })
-        .collect();
-    let compared: Vec<&Compared> = outcomes
-        .iter()
-        .filter_map(|o| o.result.as_ref().ok())
-        .collect();
-    let stdout = match output {
-        Output::Table => batch_table(&compared, span),
-        Output::Json => batch_report(&outcomes, span).json_lines(),
-        Output::Csv => batch_report(&outcomes, span).csv(),
-        Output::Metric(field) => outcomes
-            .iter()
-            .map(|o| match &o.result {
-                Ok(pair) => one_number(field, &pair.metrics, span).unwrap_or_default(),
-                Err(_) => "\n".into(),
-            })
-            .collect(),
+    mut write: impl FnMut(&str) -> Result<bool>,
+) -> Result<BatchReport> {
+    let columns = batch_columns(span);
+    let mut report = BatchReport {
+        exceeded: Vec::new(),
+        problems: Vec::new(),
+        compared: 0,
     };
-    let exceeded = compared
-        .iter()
-        .flat_map(|pair| {
-            exceeded(&pair.metrics, bounds, span)
-                .into_iter()
-                .map(|line| format!("compare: {}: {line}", pair.source))
+    let mut table = Vec::new();
+    if output == Output::Csv {
+        write(&Report::new(columns.clone()).csv())?;
+    }
+    crate::pipeline::batch::in_order(
+        pairs,
+        |pair| outcome(pair, span, output),
+        |outcome| {
+            let row = || {
+                let mut one = Report::new(columns.clone());
+                one.push(batch_row(&outcome, span));
+                one
+            };
+            let text = match output {
+                Output::Table => String::new(),
+                Output::Json => row().json_lines(),
+                Output::Csv => row().csv_rows(),
+                Output::Metric(field) => match &outcome.result {
+                    Ok(pair) => one_number(field, &pair.metrics, span).unwrap_or_default(),
+                    Err(_) => "\n".into(),
+                },
+            };
+            match outcome.result {
+                Ok(pair) => {
+                    report.compared += 1;
+                    report.exceeded.extend(
+                        exceeded(&pair.metrics, bounds, span)
+                            .into_iter()
+                            .map(|line| format!("compare: {}: {line}", pair.source)),
+                    );
+                    if output == Output::Table {
+                        table.push(pair);
+                    }
+                }
+                Err(problems) => report.problems.push(problems),
+            }
+            write(&text)
+        },
+    )?;
+    if output == Output::Table {
+        write(&batch_table(&table.iter().collect::<Vec<_>>(), span))?;
+    }
+    Ok(report)
+}
+
+/// One pair compared: its sides read, its metrics taken (and its `--metric` checked for being
+/// defined), or the problem that kept it from being compared, charged to its source.
+fn outcome(pair: LoadedPair, span: &Span, output: Output) -> Outcome {
+    let source = pair.source;
+    let problem = |p: Problem| Problems {
+        source: source.clone(),
+        list: vec![p],
+    };
+    let [a, b] = match pair.value {
+        Ok(sides) => sides,
+        Err(p) => {
+            return Outcome {
+                line: pair.line,
+                sides: None,
+                result: Err(p),
+            };
+        }
+    };
+    let result = (|| {
+        let metrics = compare_sides(&a.operand, &b.operand, b.key, span.range)
+            .map_err(problem)?
+            .map_err(|e| problem(Problem::new("", format!("compare: {e}"))))?;
+        if let Output::Metric(field) = output {
+            one_number(field, &metrics, span).map_err(|m| problem(Problem::new("", m)))?;
+        }
+        Ok(Compared {
+            source: source.clone(),
+            a: a.json.clone(),
+            b: b.json.clone(),
+            metrics,
         })
-        .collect();
-    let count = compared.len();
-    BatchReport {
-        stdout,
-        exceeded,
-        problems: outcomes
-            .into_iter()
-            .filter_map(|o| o.result.err())
-            .collect(),
-        compared: count,
+    })();
+    Outcome {
+        line: pair.line,
+        sides: Some([a.json, b.json]),
+        result,
     }
 }
 
-/// The report of `--pairs --format json|csv`: `line` (the pair's line), the columns of [`report`],
-/// then `status` (`ok` or `error`) and `error` (the problems on one line, empty when ok); a failed
-/// pair's numbers are empty, and its sides too when they could not be read.
-fn batch_report(outcomes: &[Outcome], span: &Span) -> Report {
-    let mut report = Report::new(
-        ["line".to_string(), "a".to_string(), "b".to_string()]
-            .into_iter()
-            .chain(Field::ALL.iter().map(|f| f.name(span.unit)))
-            .chain(["status".to_string(), "error".to_string()]),
-    );
-    for outcome in outcomes {
-        let sides = match &outcome.sides {
-            Some([a, b]) => [Cell::Json(a.clone()), Cell::Json(b.clone())],
-            None => [Cell::Missing, Cell::Missing],
-        };
-        let (numbers, status, error): (Vec<Cell>, _, _) = match &outcome.result {
-            Ok(pair) => (
-                Field::ALL
-                    .iter()
-                    .map(|f| {
-                        f.of(&pair.metrics, span)
-                            .map_or(Cell::Missing, Cell::Number)
-                    })
-                    .collect(),
-                "ok",
-                String::new(),
-            ),
-            Err(p) => (vec![Cell::Missing; Field::ALL.len()], "error", p.field()),
-        };
-        report.push(
-            std::iter::once(Cell::Count(outcome.line))
-                .chain(sides)
-                .chain(numbers)
-                .chain([Cell::Text(status.into()), Cell::Text(error)])
+/// The columns of `--pairs --format json|csv`: `line` (the pair's line), the columns of [`report`],
+/// then `status` (`ok` or `error`) and `error` (the problems on one line, empty when ok).
+fn batch_columns(span: &Span) -> Vec<String> {
+    ["line".to_string(), "a".to_string(), "b".to_string()]
+        .into_iter()
+        .chain(Field::ALL.iter().map(|f| f.name(span.unit)))
+        .chain(["status".to_string(), "error".to_string()])
+        .collect()
+}
+
+/// The row of one pair under [`batch_columns`]: a failed pair's numbers are empty, and its sides too
+/// when they could not be read.
+fn batch_row(outcome: &Outcome, span: &Span) -> Vec<Cell> {
+    let sides = match &outcome.sides {
+        Some([a, b]) => [Cell::Json(a.clone()), Cell::Json(b.clone())],
+        None => [Cell::Missing, Cell::Missing],
+    };
+    let (numbers, status, error): (Vec<Cell>, _, _) = match &outcome.result {
+        Ok(pair) => (
+            Field::ALL
+                .iter()
+                .map(|f| {
+                    f.of(&pair.metrics, span)
+                        .map_or(Cell::Missing, Cell::Number)
+                })
                 .collect(),
-        );
-    }
-    report
+            "ok",
+            String::new(),
+        ),
+        Err(p) => (vec![Cell::Missing; Field::ALL.len()], "error", p.field()),
+    };
+    std::iter::once(Cell::Count(outcome.line))
+        .chain(sides)
+        .chain(numbers)
+        .chain([Cell::Text(status.into()), Cell::Text(error)])
+        .collect()
 }
 
 #[cfg(test)]

@@ -128,14 +128,10 @@ impl Format {
 /// from being read.
 pub type Target = Record<Curve>;
 
-/// What a fit run writes: the text for stdout and for stderr, and the problems of the targets that
-/// could not be fitted (the run exits 2 when there are any, unless `--keep-going`).
+/// What a fit run leaves after writing its output: the problems of the targets that could not be
+/// fitted (the run exits 2 when there are any, unless `--keep-going`) and the counts.
 #[derive(Debug)]
 pub struct Report {
-    /// Standard output.
-    pub stdout: String,
-    /// Standard error before the problems: the residual lines of [`Format::Curves`].
-    pub stderr: String,
     /// One entry per failed target, in input order.
     pub problems: Vec<Problems>,
     /// How many targets were fitted.
@@ -149,55 +145,67 @@ struct Outcome {
     fit: std::result::Result<Fit, Problems>,
 }
 
-/// Fits every readable target (in parallel, [`FitSpec::fit_all`]) and writes the results in input order
-/// in `format`: the record formats hold one row per target, failed ones included.
-pub fn run(spec: &FitSpec, targets: Vec<Target>, format: Format) -> Report {
-    let curves: Vec<Curve> = targets
-        .iter()
-        .filter_map(|t| t.value.as_ref().ok().cloned())
-        .collect();
-    let mut fits = spec.fit_all(&curves).into_iter();
-    let outcomes: Vec<Outcome> = targets
-        .into_iter()
-        .map(|t| match t.value {
-            Ok(curve) => {
-                let fit = fits.next().expect("one fit per readable target");
-                Outcome {
-                    line: t.line,
-                    fit: fit.map_err(|e| fit_problems(e, &t.source)),
-                    target: Some(curve),
-                }
-            }
+/// Fits every readable target of `targets` as they are read (in parallel, a chunk at a time,
+/// [`crate::pipeline::batch::in_order`]; each fit is [`FitSpec::fit`]'s) and hands the output to
+/// `write` in input order as each chunk is done: in the record formats one row per target, failed
+/// ones included (CSV's header first); without `--format` the fitted curve's line, with its residual
+/// line handed to `note` (stderr). An error reading `targets` or writing ends the run after the
+/// targets before it; `write` returning `Ok(false)` (the reader went away) ends it quietly.
+pub fn run(
+    spec: &FitSpec,
+    targets: impl Iterator<Item = Result<Target>>,
+    format: Format,
+    mut write: impl FnMut(&str) -> Result<bool>,
+    mut note: impl FnMut(&str),
+) -> Result<Report> {
+    let mut report = Report {
+        problems: Vec::new(),
+        fitted: 0,
+    };
+    let columns = record_columns(spec);
+    if format == Format::Csv {
+        write(&crate::output::report::Report::new(columns.iter().copied()).csv())?;
+    }
+    crate::pipeline::batch::in_order(
+        targets,
+        |t| match t.value {
+            Ok(curve) => Outcome {
+                line: t.line,
+                fit: spec.fit(&curve).map_err(|e| fit_problems(e, &t.source)),
+                target: Some(curve),
+            },
             Err(p) => Outcome {
                 line: t.line,
                 target: None,
                 fit: Err(p),
             },
-        })
-        .collect();
-    let by = spec.by();
-    let fitted = outcomes.iter().filter(|o| o.fit.is_ok()).count();
-    let (stdout, stderr) = match format {
-        Format::Curves => {
-            let fits = || outcomes.iter().filter_map(|o| o.fit.as_ref().ok());
-            (
-                fits()
-                    .map(|fit| format!("{}\n", fit.curve.canonical_json()))
-                    .collect(),
-                fits()
-                    .map(|fit| format!("{}\n", residual_line(fit, by)))
-                    .collect(),
-            )
-        }
-        Format::Jsonl => (records(spec, &outcomes).json_lines(), String::new()),
-        Format::Csv => (records(spec, &outcomes).csv(), String::new()),
-    };
-    Report {
-        stdout,
-        stderr,
-        problems: outcomes.into_iter().filter_map(|o| o.fit.err()).collect(),
-        fitted,
-    }
+        },
+        |outcome| {
+            let row = || {
+                let mut one = crate::output::report::Report::new(columns.iter().copied());
+                one.push(record(spec, &outcome));
+                one
+            };
+            let text = match (format, &outcome.fit) {
+                (Format::Curves, Ok(fit)) => format!("{}\n", fit.curve.canonical_json()),
+                (Format::Curves, Err(_)) => String::new(),
+                (Format::Jsonl, _) => row().json_lines(),
+                (Format::Csv, _) => row().csv_rows(),
+            };
+            let more = write(&text)?;
+            match outcome.fit {
+                Ok(fit) => {
+                    report.fitted += 1;
+                    if format == Format::Curves {
+                        note(&format!("{}\n", residual_line(&fit, spec.by())));
+                    }
+                }
+                Err(problems) => report.problems.push(problems),
+            }
+            Ok(more)
+        },
+    )?;
+    Ok(report)
 }
 
 /// `residual=<x> (<metric>)`.
@@ -205,54 +213,55 @@ fn residual_line(fit: &Fit, by: By) -> String {
     format!("residual={:?} ({})", fit.residual, by.residual_name())
 }
 
-/// One record per target, in input order, with the columns `line` (the target's line, or its
-/// position among `--target` arguments), `family`, one column per parameter of the family by its
-/// registry name (fixed ones included), `residual`, `metric`, `status` (`ok` or `error`), then the
-/// JSON text: `target` and `fit` (canonical curve JSON; the target empty when it could not be read),
-/// and `error` (the problems on one line, empty when ok). The plain columns come first so that a
-/// field splitter reaches them before any quoted JSON. A failed target's parameters, residual and
-/// fit are empty.
-fn records(spec: &FitSpec, outcomes: &[Outcome]) -> crate::output::report::Report {
-    let family = spec.family();
-    let names = family.param_names();
-    let columns = ["line", "family"]
+/// The columns of the record formats: `line` (the target's line, or its position among `--target`
+/// arguments), `family`, one column per parameter of the family by its registry name (fixed ones
+/// included), `residual`, `metric`, `status` (`ok` or `error`), then the JSON text: `target` and
+/// `fit` (canonical curve JSON) and `error` (the problems on one line, empty when ok). The plain
+/// columns come first so that a field splitter reaches them before any quoted JSON.
+fn record_columns(spec: &FitSpec) -> Vec<&'static str> {
+    ["line", "family"]
         .into_iter()
-        .chain(names.iter().copied())
-        .chain(["residual", "metric", "status", "target", "fit", "error"]);
-    let mut report = crate::output::report::Report::new(columns);
-    for outcome in outcomes {
-        let target = outcome
-            .target
-            .as_ref()
-            .map_or(Cell::Missing, |c| Cell::Json(c.canonical_json()));
-        let head = [Cell::Count(outcome.line), Cell::Text(family.name().into())];
-        let metric = Cell::Text(spec.by().residual_name().into());
-        let row: Vec<Cell> = match &outcome.fit {
-            Ok(fit) => head
-                .into_iter()
-                .chain(fit.params().into_iter().map(|(_, v)| Cell::Number(v)))
-                .chain([
-                    Cell::Number(fit.residual),
-                    metric,
-                    Cell::Text("ok".into()),
-                    target,
-                    Cell::Json(fit.curve.canonical_json()),
-                    Cell::Text(String::new()),
-                ])
-                .collect(),
-            Err(problems) => head
-                .into_iter()
-                .chain(std::iter::repeat_n(Cell::Missing, names.len() + 1))
-                .chain([
-                    metric,
-                    Cell::Text("error".into()),
-                    target,
-                    Cell::Missing,
-                    Cell::Text(problems.field()),
-                ])
-                .collect(),
-        };
-        report.push(row);
+        .chain(spec.family().param_names())
+        .chain(["residual", "metric", "status", "target", "fit", "error"])
+        .collect()
+}
+
+/// The record of one target under [`record_columns`]: a failed target's parameters, residual and fit
+/// are empty, and its target too when it could not be read.
+fn record(spec: &FitSpec, outcome: &Outcome) -> Vec<Cell> {
+    let family = spec.family();
+    let target = outcome
+        .target
+        .as_ref()
+        .map_or(Cell::Missing, |c| Cell::Json(c.canonical_json()));
+    let head = [Cell::Count(outcome.line), Cell::Text(family.name().into())];
+    let metric = Cell::Text(spec.by().residual_name().into());
+    match &outcome.fit {
+        Ok(fit) => head
+            .into_iter()
+            .chain(fit.params().into_iter().map(|(_, v)| Cell::Number(v)))
+            .chain([
+                Cell::Number(fit.residual),
+                metric,
+                Cell::Text("ok".into()),
+                target,
+                Cell::Json(fit.curve.canonical_json()),
+                Cell::Text(String::new()),
+            ])
+            .collect(),
+        Err(problems) => head
+            .into_iter()
+            .chain(std::iter::repeat_n(
+                Cell::Missing,
+                family.param_names().len() + 1,
+            ))
+            .chain([
+                metric,
+                Cell::Text("error".into()),
+                target,
+                Cell::Missing,
+                Cell::Text(problems.field()),
+            ])
+            .collect(),
     }
-    report
 }

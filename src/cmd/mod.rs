@@ -107,7 +107,7 @@ fn run_coeffs(args: CoeffsArgs) -> Result<()> {
 
 /// The curves of a curve argument ([`input::load_curves`]), resolved.
 fn load_curves(args: &[String], flag: &str) -> Result<Vec<Curve>> {
-    input::load_curves(args, flag, input::read_stdin_bytes)?
+    input::load_curves(args, flag, std::io::stdin().lock())?
         .iter()
         .map(|spec| resolve::curve(spec).map_err(|p| input_error(flag, p)))
         .collect()
@@ -157,12 +157,15 @@ fn load_operand(arg: &str, flag: &str, allow_read: &[PathBuf]) -> Result<(Operan
     resolve_side(&source, "", side).map_err(Error::input)
 }
 
-/// The pairs of `compare --pairs` ([`input::read_pairs`]), each side resolved on its own: one bad
-/// line does not keep the others from being compared.
-fn load_pairs(arg: &str, allow_read: &[PathBuf]) -> Result<Vec<compare::LoadedPair>> {
-    let pairs = input::read_pairs(arg, allow_read, input::read_stdin_bytes)?
-        .into_iter()
-        .map(|record| {
+/// The pairs of `compare --pairs` ([`input::read_pairs`]) as they are read, each side resolved on
+/// its own: one bad line does not keep the others from being compared.
+fn load_pairs(
+    arg: &str,
+    allow_read: &[PathBuf],
+) -> Result<impl Iterator<Item = Result<compare::LoadedPair>>> {
+    Ok(
+        input::read_pairs(arg, allow_read, std::io::stdin().lock())?.map(|record| {
+            let record = record?;
             let value = record.value.and_then(|pair| {
                 let ready = |(key, side)| {
                     resolve_side(&record.source, key, side)
@@ -170,14 +173,13 @@ fn load_pairs(arg: &str, allow_read: &[PathBuf]) -> Result<Vec<compare::LoadedPa
                 };
                 Ok([ready(pair.a)?, ready(pair.b)?])
             });
-            input::Record {
+            Ok(input::Record {
                 source: record.source,
                 line: record.line,
                 value,
-            }
-        })
-        .collect();
-    Ok(pairs)
+            })
+        }),
+    )
 }
 
 fn run_compare(args: CompareArgs, quiet: bool) -> Result<()> {
@@ -245,8 +247,9 @@ fn run_compare_pairs(
         &batch.span,
         batch.output,
         &batch.bounds,
-    );
-    stdout::print(&report.stdout)?;
+        |text| stdout::stream(text.as_bytes()),
+    )?;
+    stdout::flush()?;
     let done = counted(report.compared, report.problems.len(), "pairs compared");
     stderr::summary(
         quiet,
@@ -277,16 +280,21 @@ fn run_fit(args: FitArgs, quiet: bool) -> Result<()> {
     let fixed = fit::parse_fixed(&args.fix)?;
     let format = fit::Format::of(args.format);
     let spec = crate::model::fit::FitSpec::new(family, &fixed, by).map_err(fit::fit_error)?;
-    let targets = load_targets(&args.target, "--target")?;
-    let count = targets.len();
-    let report = fit::run(&spec, targets, format);
-    stdout::print(&report.stdout)?;
-    // stderr is informative only: a closed or full stderr does not fail the fit.
-    if !quiet {
-        let _ = write!(std::io::stderr(), "{}", report.stderr);
-    }
+    let report = fit::run(
+        &spec,
+        load_targets(&args.target, "--target")?,
+        format,
+        |text| stdout::stream(text.as_bytes()),
+        // stderr is informative only: a closed or full stderr does not fail the fit.
+        |line| {
+            if !quiet {
+                let _ = write!(std::io::stderr(), "{line}");
+            }
+        },
+    )?;
+    stdout::flush()?;
     if format != fit::Format::Curves {
-        let done = counted(report.fitted, count - report.fitted, "targets fitted");
+        let done = counted(report.fitted, report.problems.len(), "targets fitted");
         stderr::summary(quiet, &format!("fit: {done}, written to stdout"), started);
     }
     batch_verdict(
@@ -325,24 +333,23 @@ fn batch_verdict(problems: Vec<Problems>, keep_going: bool, in_rows: bool) -> Re
 
 /// The curves of a curve argument ([`input::read_curves`]), each resolved on its own, with its source
 /// name: one bad curve does not keep the others from being used.
-fn load_targets(args: &[String], flag: &str) -> Result<Vec<fit::Target>> {
-    let targets = input::read_curves(args, flag, input::read_stdin_bytes)?
-        .into_iter()
-        .map(|record| {
+fn load_targets(args: &[String], flag: &str) -> Result<impl Iterator<Item = Result<fit::Target>>> {
+    Ok(
+        input::read_curves(args, flag, std::io::stdin().lock())?.map(|record| {
+            let record = record?;
             let value = record.value.and_then(|spec| {
                 resolve::curve(&spec).map_err(|p| Problems {
                     source: record.source.clone(),
                     list: vec![p],
                 })
             });
-            input::Record {
+            Ok(input::Record {
                 source: record.source,
                 line: record.line,
                 value,
-            }
-        })
-        .collect();
-    Ok(targets)
+            })
+        }),
+    )
 }
 
 fn run_check(args: CheckArgs) -> Result<()> {

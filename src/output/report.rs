@@ -148,10 +148,20 @@ impl Report {
 
     /// CSV: the column names, then one line per row.
     pub fn csv(&self) -> String {
-        let mut table = Table::new(
-            &self.columns,
-            64 * (self.rows.len() + 1) * self.columns.len(),
-        );
+        let mut table = Table::new(&self.columns, 64 * self.columns.len());
+        self.csv_into(&mut table);
+        table.into_string()
+    }
+
+    /// CSV of the rows only, one line each: what follows [`Report::csv`]'s header when a command
+    /// writes rows as it computes them.
+    pub fn csv_rows(&self) -> String {
+        let mut table = Table::rows(0);
+        self.csv_into(&mut table);
+        table.into_string()
+    }
+
+    fn csv_into(&self, table: &mut Table) {
         for row in &self.rows {
             for cell in row {
                 match cell {
@@ -163,7 +173,6 @@ impl Report {
             }
             table.end_row();
         }
-        table.into_string()
     }
 }
 
@@ -195,6 +204,10 @@ mod tests {
         assert_eq!(
             report.csv(),
             "curve,value,theta\n\"{\"\"ndf\"\":\"\"phong\"\",\"\"alpha_p\"\":1.0}\",0.1,\n\"x, y\",1e-300,7\n"
+        );
+        assert_eq!(
+            Report::new(report.columns()).csv() + &report.csv_rows(),
+            report.csv()
         );
     }
 }

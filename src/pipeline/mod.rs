@@ -3,6 +3,7 @@
 
 pub mod adaptive;
 pub mod audit;
+pub mod batch;
 pub mod figure;
 pub mod layout;
 pub mod plan;

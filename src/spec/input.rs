@@ -52,10 +52,10 @@ fn utf8(bytes: Vec<u8>) -> std::result::Result<String, (usize, usize)> {
         .map_err(|e| line_column(&e.as_bytes()[..e.utf8_error().valid_up_to()]))
 }
 
-/// Standard input as text (a leading byte order mark skipped), at most [`MAX_INPUT_BYTES`] of it; more, or bytes that are not UTF-8,
-/// is an `InvalidData` error saying so.
+/// Standard input as text (a leading byte order mark skipped), at most [`MAX_INPUT_BYTES`] of it;
+/// more, or bytes that are not UTF-8, is an `InvalidData` error saying so.
 pub fn read_stdin() -> std::io::Result<String> {
-    utf8(read_stdin_bytes()?).map_err(|(line, column)| {
+    utf8(read_capped(std::io::stdin().lock())?).map_err(|(line, column)| {
         std::io::Error::new(
             std::io::ErrorKind::InvalidData,
             format!(
@@ -63,12 +63,6 @@ pub fn read_stdin() -> std::io::Result<String> {
             ),
         )
     })
-}
-
-/// Standard input's bytes, at most [`MAX_INPUT_BYTES`] of them (more is an `InvalidData` error),
-/// for JSON Lines, whose lines are decoded one by one ([`json_lines`]).
-pub fn read_stdin_bytes() -> std::io::Result<Vec<u8>> {
-    read_capped(std::io::stdin().lock())
 }
 
 /// `text` without a leading UTF-8 byte order mark, which some editors write at the start of a
@@ -292,33 +286,42 @@ fn parse_pair(line: &str, source: &str, scope: &DataScope) -> std::result::Resul
     }
 }
 
-/// Reads the pairs of `compare --pairs`: `arg` a file path or `-` for `stdin`, holding one pair per
-/// non-blank line (JSON Lines, [`parse_pair`]), each named `<file>:<line>` or `stdin:<line>`. CSV
-/// paths resolve against the file's folder (the working directory for `-`) or lie inside one of
-/// `allow_read`. Each line is validated on its own; only reading the input, or finding no pair at
-/// all, fails the whole call.
+/// A batch input read as it arrives: its records in order, or the error that ended the reading (a
+/// failed read, or more than [`MAX_INPUT_BYTES`] in all).
+pub type Records<T> = Box<dyn Iterator<Item = Result<Record<T>>>>;
+
+/// Reads the pairs of `compare --pairs`: `arg` a file path or `-` for standard input, holding one
+/// pair per non-blank line (JSON Lines, [`parse_pair`]), each named `<file>:<line>` or
+/// `stdin:<line>`. CSV paths resolve against the file's folder (the working directory for `-`) or
+/// lie inside one of `allow_read`. Each line is validated on its own as it is read; only reading the
+/// input, or finding no pair at all, fails the whole call. `stdin` is standard input (locked).
 pub fn read_pairs(
     arg: &str,
     allow_read: &[std::path::PathBuf],
-    stdin: impl FnOnce() -> std::io::Result<Vec<u8>>,
-) -> Result<Vec<Record<Pair>>> {
-    let (text, name, folder) = if arg == "-" {
-        let text = stdin().map_err(|e| Error::io("stdin", e))?;
-        (text, "stdin", std::path::Path::new("."))
-    } else {
-        let folder = std::path::Path::new(arg)
+    stdin: impl std::io::BufRead + 'static,
+) -> Result<Records<Pair>> {
+    let folder = match arg {
+        "-" => std::path::Path::new("."),
+        path => std::path::Path::new(path)
             .parent()
-            .unwrap_or(std::path::Path::new("."));
-        (read_file_bytes(arg)?, arg, folder)
+            .unwrap_or(std::path::Path::new(".")),
     };
     let scope = DataScope::new(folder, std::sync::Arc::from(allow_read));
-    let pairs = json_lines(&text, name, |line, source| parse_pair(line, source, &scope));
-    if pairs.is_empty() {
+    let parse = move |line: &str, source: &str| parse_pair(line, source, &scope);
+    let mut pairs = if arg == "-" {
+        json_lines(stdin, "stdin", parse)
+    } else {
+        let bytes = read_file_bytes(arg)?;
+        json_lines(std::io::Cursor::new(bytes), arg, parse)
+    }
+    .peekable();
+    if pairs.peek().is_none() {
+        let name = if arg == "-" { "stdin" } else { arg };
         return Err(Error::Usage(format!(
             "--pairs: no pair given (got no line in {name}, expected one JSON object per line)"
         )));
     }
-    Ok(pairs)
+    Ok(Box::new(pairs))
 }
 
 /// One record of a batch input: where it was read and what was read there.
@@ -334,25 +337,49 @@ pub struct Record<T> {
     pub value: std::result::Result<T, Problems>,
 }
 
-/// The non-blank lines of the JSON Lines `bytes` read from `name` (`stdin` or a file path), in
-/// order, each with its source name `<name>:<line>` (1-based) and what `parse` makes of it. The
-/// one reader of every batch input: lines are split on `\n` (a `\r` before it dropped) and decoded
-/// one by one, so a line that is not UTF-8 is that line's problem, not the batch's; a byte order
-/// mark before the first line is skipped.
-fn json_lines<T>(
-    bytes: &[u8],
+/// The non-blank lines of the JSON Lines input `reader` (named `name`: `stdin` or a file path), in
+/// order and as they are read, each with its source name `<name>:<line>` (1-based) and what `parse`
+/// makes of it. The one reader of every batch input: lines are split on `\n` (a `\r` before it
+/// dropped) and decoded one by one, so a line that is not UTF-8 is that line's problem, not the
+/// batch's; a byte order mark before the first line is skipped; more than [`MAX_INPUT_BYTES`] in
+/// all ends the input with an error once the records before are out.
+fn json_lines<T: 'static>(
+    reader: impl std::io::BufRead + 'static,
     name: &str,
-    parse: impl Fn(&str, &str) -> std::result::Result<T, Problems>,
-) -> Vec<Record<T>> {
-    let bytes = bytes.strip_prefix("\u{feff}".as_bytes()).unwrap_or(bytes);
-    bytes
-        .split(|&b| b == b'\n')
-        .enumerate()
-        .map(|(i, line)| (i, line.strip_suffix(b"\r").unwrap_or(line)))
-        .filter(|(_, line)| !line.trim_ascii().is_empty())
-        .map(|(i, line)| {
-            let source = format!("{name}:{}", i + 1);
-            let parsed = match std::str::from_utf8(line) {
+    parse: impl Fn(&str, &str) -> std::result::Result<T, Problems> + 'static,
+) -> Records<T> {
+    let name = name.to_string();
+    let mut reader = reader.take(MAX_INPUT_BYTES + 1);
+    let (mut number, mut failed) = (0, false);
+    let mut buffer = Vec::new();
+    Box::new(std::iter::from_fn(move || {
+        while !failed {
+            buffer.clear();
+            match std::io::BufRead::read_until(&mut reader, b'\n', &mut buffer) {
+                Ok(0) => return None,
+                Ok(_) if reader.limit() == 0 => {
+                    failed = true;
+                    let kind = std::io::ErrorKind::InvalidData;
+                    let message = too_large(&format!("more than {MAX_INPUT_BYTES}"));
+                    return Some(Err(Error::io(&name, std::io::Error::new(kind, message))));
+                }
+                Ok(_) => {}
+                Err(e) => {
+                    failed = true;
+                    return Some(Err(Error::io(&name, e)));
+                }
+            }
+            number += 1;
+            let mut line = buffer.strip_suffix(b"\n").unwrap_or(&buffer);
+            line = line.strip_suffix(b"\r").unwrap_or(line);
+            if number == 1 {
+                line = line.strip_prefix("\u{feff}".as_bytes()).unwrap_or(line);
+            }
+            if line.trim_ascii().is_empty() {
+                continue;
+            }
+            let source = format!("{name}:{number}");
+            let value = match std::str::from_utf8(line) {
                 Ok(text) => parse(text, &source),
                 Err(e) => Err(Problems {
                     source: source.clone(),
@@ -365,13 +392,14 @@ fn json_lines<T>(
                     )],
                 }),
             };
-            Record {
+            return Some(Ok(Record {
                 source,
-                line: i + 1,
-                value: parsed,
-            }
-        })
-        .collect()
+                line: number,
+                value,
+            }));
+        }
+        None
+    }))
 }
 
 fn parse_curve(text: &str, source: &str) -> std::result::Result<CurveSpec, Problems> {
@@ -384,47 +412,53 @@ fn parse_curve(text: &str, source: &str) -> std::result::Result<CurveSpec, Probl
 
 /// Reads the curves named by curve arguments, in order, each with the source name its problems carry:
 /// `{…}` inline JSON (`flag`, or `flag[i]` among several arguments), `@path` a file holding one curve
-/// (the path), `-` one curve per non-blank line of `stdin` (JSON Lines, `stdin:<line>`). Each curve is
-/// validated on its own, not resolved; only reading a file or stdin, or finding no curve at all, fails
-/// the whole call.
+/// (the path), `-` one curve per non-blank line of standard input (JSON Lines, `stdin:<line>`, read as
+/// it arrives). Each curve is validated on its own, not resolved; only reading a file or standard
+/// input, giving `-` twice, or finding no curve at all, fails the whole call. `stdin` is standard
+/// input (locked).
 pub fn read_curves(
     args: &[String],
     flag: &str,
-    stdin: impl FnOnce() -> std::io::Result<Vec<u8>>,
-) -> Result<Vec<Record<CurveSpec>>> {
-    let mut curves = Vec::new();
+    stdin: impl std::io::BufRead + 'static,
+) -> Result<Records<CurveSpec>> {
+    if args.iter().filter(|arg| *arg == "-").count() > 1 {
+        return Err(Error::Usage(format!("{flag} - may be given only once")));
+    }
     let mut stdin = Some(stdin);
+    let single = args.len() == 1;
+    let mut readers: Vec<Records<CurveSpec>> = Vec::new();
     for (i, arg) in args.iter().enumerate() {
-        if arg == "-" {
-            let read = stdin
-                .take()
-                .ok_or_else(|| Error::Usage(format!("{flag} - may be given only once")))?;
-            let text = read().map_err(|e| Error::io("stdin", e))?;
-            curves.extend(json_lines(&text, "stdin", parse_curve));
+        let record = if arg == "-" {
+            if let Some(stdin) = stdin.take() {
+                readers.push(json_lines(stdin, "stdin", parse_curve));
+            }
+            continue;
         } else if let Some(path) = arg.strip_prefix('@') {
             let text = read_file(path).map_err(|e| e.for_option(flag))?;
-            curves.push(Record {
+            Record {
                 source: path.to_string(),
                 line: i + 1,
                 value: parse_curve(&text, path),
-            });
+            }
         } else {
-            let source = if args.len() == 1 {
+            let source = if single {
                 flag.to_string()
             } else {
                 format!("{flag}[{i}]")
             };
-            curves.push(Record {
+            Record {
                 value: parse_curve(arg, &source),
                 source,
                 line: i + 1,
-            });
-        }
+            }
+        };
+        readers.push(Box::new(std::iter::once(Ok(record))));
     }
-    if curves.is_empty() {
+    let mut curves = readers.into_iter().flatten().peekable();
+    if curves.peek().is_none() {
         return Err(Error::Usage(format!("{flag}: no curve given")));
     }
-    Ok(curves)
+    Ok(Box::new(curves))
 }
 
 /// Loads the curves named by `--curve` arguments ([`read_curves`]), in order, validated, not resolved;
@@ -433,12 +467,12 @@ pub fn read_curves(
 pub fn load_curves(
     args: &[String],
     flag: &str,
-    stdin: impl FnOnce() -> std::io::Result<Vec<u8>>,
+    stdin: impl std::io::BufRead + 'static,
 ) -> Result<Vec<CurveSpec>> {
     let mut curves = Vec::new();
     let mut problems = Vec::new();
     for record in read_curves(args, flag, stdin)? {
-        match record.value {
+        match record?.value {
             Ok(curve) => curves.push(curve),
             Err(p) => problems.push(p),
         }

@@ -2,7 +2,7 @@
 //! that fall to 0, `--metric NAME`, many pairs at once (`--pairs`), and the machine-readable
 //! `--format json|csv` of `compare`, `check` and `coeffs`.
 
-use crate::common::{ndfplot, ndfplot_stdin, scratch, text};
+use crate::common::{ndfplot, ndfplot_stdin, scratch, streamed, text};
 use std::process::Output;
 
 /// GGX α = 0.3 and its peak-matched Beckmann (`fit --family beckmann --by peak` gives α_b = 0.3 too):
@@ -645,5 +645,44 @@ fn lobes_down_to_the_narrowest_alpha_compare_on_their_slope_space_limit() {
                 "alpha {alpha}: {metric} in {json}"
             );
         }
+    }
+}
+
+/// `--pairs -` streams: the first pair's row is written while the input is still open, and every
+/// row equals that pair compared on its own.
+#[test]
+fn pairs_write_the_first_row_before_the_rest_of_their_input_arrives() {
+    let input = pairs_input();
+    let (head, tail) = input.split_once('\n').unwrap();
+    let root = crate::common::root().to_str().unwrap().to_string();
+    let (first, output) = streamed(
+        &[
+            "compare",
+            "-q",
+            "--pairs",
+            "-",
+            "--format",
+            "json",
+            "--allow-read",
+            &root,
+        ],
+        &format!("{head}\n"),
+        tail,
+    );
+    assert_eq!(output.status.code(), Some(0), "{}", text(&output.stderr));
+    let rows: Vec<serde_json::Value> = text(&output.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(rows.len(), pairs().len());
+    assert_eq!(
+        rows[0],
+        serde_json::from_str::<serde_json::Value>(&first).unwrap()
+    );
+    for (row, (a, b)) in rows.iter().zip(pairs()) {
+        let alone: serde_json::Value =
+            serde_json::from_str(&single(&a, &b, &["--format", "json"])).unwrap();
+        assert_eq!(row["l2_projected"], alone["l2_projected"], "{a} {b}");
+        assert_eq!(row["max_rel"], alone["max_rel"], "{a} {b}");
     }
 }

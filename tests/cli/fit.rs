@@ -3,7 +3,7 @@
 //! `--keep-going`), repeated `--target`, the single-target output, the multi-parameter L2 acceptance
 //! case against `compare`, and identical bytes on 1 and 2 threads.
 
-use crate::common::{ndfplot, ndfplot_stdin, ndfplot_stdin_env, text};
+use crate::common::{ndfplot, ndfplot_stdin, ndfplot_stdin_env, streamed, text};
 
 const GGX_03: &str = r#"{"ndf":"trowbridge_reitz","alpha_tr":0.3}"#;
 
@@ -361,5 +361,34 @@ fn fit_batch_gives_the_same_bytes_on_one_and_two_threads() {
             (one.status.code(), &one.stdout, &one.stderr),
             (two.status.code(), &two.stdout, &two.stderr)
         );
+    }
+}
+
+/// A batch on standard input streams: the first target's record is written while the input is still
+/// open (the command has not read the rest), and the records of the whole batch are those of each
+/// target fitted on its own, in input order.
+#[test]
+fn fit_writes_the_first_record_before_the_rest_of_its_input_arrives() {
+    let targets: Vec<String> = [0.1, 0.2, 0.3, 0.4, 0.5].map(ggx).to_vec();
+    let args = [
+        "fit", "-q", "--target", "-", "--family", "beckmann", "--by", "peak", "--format", "jsonl",
+    ];
+    let (first, output) = streamed(
+        &args,
+        &format!("{}\n", targets[0]),
+        &(targets[1..].join("\n") + "\n"),
+    );
+    assert_eq!(output.status.code(), Some(0), "{}", text(&output.stderr));
+    let lines: Vec<String> = text(&output.stdout).lines().map(str::to_string).collect();
+    assert_eq!(lines.len(), targets.len());
+    assert_eq!(lines[0], first.trim_end());
+    for (i, (line, target)) in lines.iter().zip(&targets).enumerate() {
+        let alone = ndfplot(&[
+            "fit", "-q", "--target", target, "--family", "beckmann", "--by", "peak", "--format",
+            "jsonl",
+        ]);
+        let mut expected = json(text(&alone.stdout).trim());
+        expected["line"] = serde_json::json!(i + 1);
+        assert_eq!(json(line), expected);
     }
 }

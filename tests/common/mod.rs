@@ -48,6 +48,42 @@ pub fn ndfplot_stdin_env(args: &[&str], stdin: &str, env: &[(&str, &str)]) -> Ou
     child.wait_with_output().unwrap()
 }
 
+/// Runs the real binary with `args`, writes `first` to its standard input and waits, standard input
+/// still open, for the first line of its standard output (panicking after a minute without one: the
+/// command waited for the end of its input); then writes `rest`, closes standard input, and returns
+/// that first line and the whole output.
+pub fn streamed(args: &[&str], first: &str, rest: &str) -> (String, Output) {
+    use std::io::BufRead;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    let mut stdin = child.stdin.take().unwrap();
+    stdin.write_all(first.as_bytes()).unwrap();
+    stdin.flush().unwrap();
+    let (sender, receiver) = std::sync::mpsc::channel();
+    let mut stdout = std::io::BufReader::new(child.stdout.take().unwrap());
+    let reader = std::thread::spawn(move || {
+        let mut line = String::new();
+        stdout.read_line(&mut line).unwrap();
+        sender.send(line.clone()).unwrap();
+        std::io::Read::read_to_string(&mut stdout, &mut line).unwrap();
+        line
+    });
+    let Ok(first_line) = receiver.recv_timeout(std::time::Duration::from_secs(60)) else {
+        child.kill().unwrap();
+        panic!("{args:?}: no output while the input was still open");
+    };
+    stdin.write_all(rest.as_bytes()).unwrap();
+    drop(stdin);
+    let mut output = child.wait_with_output().unwrap();
+    output.stdout = reader.join().unwrap().into_bytes();
+    (first_line, output)
+}
+
 /// `bytes` as UTF-8 text; the binary writes nothing else.
 pub fn text(bytes: &[u8]) -> String {
     String::from_utf8(bytes.to_vec()).unwrap()
