@@ -224,7 +224,7 @@ fn stat_at(
         kind => Ok((
             kind,
             stat.st_size as u64,
-            (stat.st_dev as u64, stat.st_ino as u64),
+            (stat.st_dev, stat.st_ino),
         )),
     }
 }
