@@ -221,11 +221,7 @@ fn stat_at(
     let stat = unsafe { stat.assume_init() };
     match stat.st_mode & libc::S_IFMT {
         libc::S_IFLNK => Err(Refused::Link),
-        kind => Ok((
-            kind,
-            stat.st_size as u64,
-            (stat.st_dev, stat.st_ino),
-        )),
+        kind => Ok((kind, stat.st_size as u64, (stat.st_dev, stat.st_ino))),
     }
 }
 
