@@ -161,6 +161,41 @@ fn filament_caps_the_ggx_peak_at_its_minimum_roughness() {
     assert_eq!(floored[0], values[0]);
 }
 
+/// Filament on mobile compiles at `FILAMENT_QUALITY_LOW` by default (`CodeGenerator.cpp`,
+/// `generateQualityDefine`), where `surface_brdf.fs` l.31-34 picks `V_SmithGGXCorrelated_Fast`
+/// (l.115-120): V = 0.5/mix(2 NoL NoV, NoL + NoV, α), and `fresnel()` Schlick with f90 = 1
+/// (`F_Schlick(f0, VoH)`, l.150-153). At α = 0.5, θo = θi = 60° (cosines 0.5, exact in half
+/// floats) V = 0.5/0.75 = 2/3, so G2 = 4 · 0.5 · 0.5 · V = 2/3, which half floats round to
+/// 1365/2048; the exact height-correlated G2 is 1/(1 + 2Λ) with Λ = (√(1 + 0.75) − 1)/2, 0.7560.
+/// Schlick at 60° with F₀ = 0.04 is 0.5⁵ + 0.04 (1 − 0.5⁵) = 0.07; at 90° it reaches f90 = 1,
+/// where the desktop's f90 = saturate(49.5 F₀) is 0.495 for F₀ = 0.01.
+#[test]
+fn filament_mobile_shades_at_low_quality_in_half_floats() {
+    let g2 = eval_deg(
+        r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2","engine":"filament-mobile"}"#,
+        &[60.0],
+    )[0];
+    // G2 = 4 cos θo cos θi V with the f64 cosines, 0.5000000000000001 at 60°.
+    close(g2, 1365.0 / 2048.0, 1e-12);
+    let exact = eval_deg(r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2"}"#, &[60.0])[0];
+    close(exact, 1.0 / (1.0 + (1.75_f64.sqrt() - 1.0)), 1e-12);
+    let desktop = eval_deg(
+        r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2","engine":"filament"}"#,
+        &[60.0],
+    )[0];
+    close(desktop, exact, 1e-5);
+    let schlick = eval_deg(
+        r#"{"fresnel":"schlick","f0":0.04,"engine":"filament-mobile"}"#,
+        &[60.0],
+    )[0];
+    close(schlick, 0.03125 + 0.04 * (1.0 - 0.03125), 1e-3);
+    let grazing = eval_deg(
+        r#"{"fresnel":"schlick","f0":0.01,"engine":"filament-mobile"}"#,
+        &[90.0],
+    )[0];
+    assert_eq!(grazing, 1.0);
+}
+
 /// three.js `bsdfs.glsl.js` `F_Schlick`: w = exp2((−5.55473 v − 6.98316) v), the spherical-Gaussian
 /// form of Karis 2013, is +6.9 % above the pow-5 form at F₀ = 0.04, cos θ = 0.633; Unreal's pow-5
 /// form with f90 = saturate(50 F₀) = 1 is the pow-5 Schlick itself.
