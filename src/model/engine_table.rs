@@ -20,6 +20,7 @@ use crate::model::masking::G2Model;
 use crate::model::math::quad::QuadError;
 use crate::model::metrics::table::Cell;
 use crate::model::names::named;
+use crate::model::ndf::Family;
 
 named! {
     /// A table axis: μ = cos θo or the roughness coordinate r.
@@ -101,7 +102,7 @@ impl EngineGrid {
     }
 
     /// The (μ index, r index) of the k-th number in file order.
-    fn cell(&self, k: usize) -> (usize, usize) {
+    pub fn cell(&self, k: usize) -> (usize, usize) {
         match (self.n_mu, self.rows) {
             (None, _) => (0, k),
             (Some(_), LutAxis::Mu) => (k / self.n_r, k % self.n_r),
@@ -215,6 +216,26 @@ impl PublishedTable {
                 G2Model::HeightCorrelated,
             ),
         }
+    }
+
+    /// Its cells in file order against the exact table it tabulates ([`compare`]), computed in
+    /// parallel.
+    pub fn audit(self) -> Result<Vec<Cell>, QuadError> {
+        let (table, value, map, g2) = self.meaning();
+        let lobe = |alpha: f64| {
+            albedo::lobe(Family::TrowbridgeReitz, &[alpha])
+                .expect("GGX has a lobe at every alpha of [0, 1]")
+                .map(|ndf| albedo::surface_of(ndf, g2))
+        };
+        compare(
+            self.values(),
+            &self.grid(),
+            (table, value),
+            map,
+            lobe,
+            None,
+            None,
+        )
     }
 
     /// Its numbers in file order, read from the embedded CSV on first use (a row that cannot be

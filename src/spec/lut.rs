@@ -292,6 +292,9 @@ pub fn parse_layout(text: &str, path: &str, g2: G2Model) -> Result<Layout, Probl
     Ok(layout)
 }
 
+/// (rows, numbers per row) of a table file.
+type Shape = (usize, usize);
+
 /// Why `channel=` names no channel of `channels=`, if it does not.
 fn missing_channel(layout: &Layout) -> Option<String> {
     (layout.channel >= layout.channels).then(|| {
@@ -311,7 +314,7 @@ pub struct Decoded {
     pub values: Vec<f64>,
     /// (rows, numbers per row) when a CSV file has several lines of equal length, or an image's
     /// (height, width).
-    pub shape: Option<(usize, usize)>,
+    pub shape: Option<Shape>,
     /// The layout with what the file itself says: an image's kind, encoding and channel count.
     pub layout: Layout,
 }
@@ -507,10 +510,7 @@ fn text_number(token: &str, encoding: Encoding) -> Result<f64, String> {
 
 /// A CSV matrix: numbers separated by commas or white space, one table row per line, `#` lines
 /// and blank lines skipped.
-fn decode_csv(
-    text: &str,
-    encoding: Encoding,
-) -> Result<(Vec<f64>, Option<(usize, usize)>), String> {
+fn decode_csv(text: &str, encoding: Encoding) -> Result<(Vec<f64>, Option<Shape>), String> {
     let mut values = Vec::new();
     let mut widths = Vec::new();
     for (number, line) in text.lines().enumerate() {

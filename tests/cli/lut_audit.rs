@@ -442,3 +442,51 @@ fn bad_images_and_contradicting_layouts_exit_2_naming_them() {
         assert!(!stderr.contains("panicked"), "{stderr}");
     }
 }
+
+/// The catalogue's `lut-audit-cycles` heat map shows the numbers `albedo --against` reports for
+/// the same table: each cell's z is |engine − exact| of `audit.csv`, bit for bit, and the panel
+/// title states the report's max_abs.
+#[test]
+fn the_catalogue_heat_map_shows_what_albedo_against_reports() {
+    let dir = scratch("lut_audit_catalogue");
+    let figure = dir.join("figure");
+    let out = ndfplot(&[
+        "render",
+        "lut-audit-cycles",
+        "-o",
+        figure.to_str().unwrap(),
+        "--format",
+        "csv,svg",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let path = dir.join("ggx_E.csv");
+    std::fs::write(&path, csv_matrix(&cycles())).unwrap();
+    let cells = dir.join("cells");
+    let (code, report, stderr) = audit(&path, "clamp=1e-4", &["-o", cells.to_str().unwrap()]);
+    assert_eq!(code, Some(0), "{stderr}");
+    let audited: Vec<(f64, f64, f64)> = csv_records(cells.join("audit.csv").to_str().unwrap())
+        .iter()
+        .map(|r| {
+            let n = |i: usize| r[i].parse::<f64>().unwrap();
+            (n(0), n(1), n(5).abs())
+        })
+        .collect();
+    let drawn: Vec<(f64, f64, f64)> =
+        csv_records(figure.join("lut-audit-cycles.csv").to_str().unwrap())
+            .iter()
+            .map(|r| {
+                let n = |i: usize| r[i].parse::<f64>().unwrap();
+                (n(3), n(4), n(5))
+            })
+            .collect();
+    assert_eq!(drawn.len(), 1024);
+    assert_eq!(drawn, audited);
+    let max_abs = field(&report, "max_abs");
+    let mantissa = format!("{max_abs:.3e}");
+    let mantissa = mantissa.split('e').next().unwrap();
+    let svg = std::fs::read_to_string(figure.join("lut-audit-cycles.svg")).unwrap();
+    assert!(
+        svg.contains(&format!("max |error| = {mantissa}×10")),
+        "{mantissa}"
+    );
+}
