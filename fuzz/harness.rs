@@ -386,8 +386,11 @@ fn batch(bytes: &[u8]) {
     }
 }
 
-/// The table file names whose extensions pick each kind of file.
-const TABLE_PATHS: [&str; 6] = ["e.csv", "e.txt", "e.h", "e.cpp", "e.bin", "e"];
+/// The table file names whose extensions pick each kind of file (an image is one by its first
+/// bytes under any name too).
+const TABLE_PATHS: [&str; 8] = [
+    "e.csv", "e.txt", "e.h", "e.cpp", "e.bin", "e", "e.png", "e.exr",
+];
 
 /// An albedo engine table: the first byte picks the file name (its kind) and the G2 model, the text
 /// up to the first line break is both a `--table` list and a `--layout`, the rest the table file.
@@ -430,7 +433,9 @@ fn engine_table(bytes: &[u8]) {
             return;
         }
     };
-    assert!(layout.rows != layout.cols && layout.channel < layout.channels);
+    // Without `channels=` the channel is checked against the file's own count (an image's).
+    assert!(layout.rows != layout.cols);
+    assert!(layout.channel < layout.channels || !layout.given.contains(&"channels"));
     assert!((0.0..1.0).contains(&layout.clamp));
     assert!(!(layout.file == LutFile::Raw && layout.encoding == Encoding::Text));
     match decode(file, &layout, MAX_AXIS) {
