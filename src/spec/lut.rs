@@ -13,6 +13,7 @@ pub use crate::model::engine_table::{LutAxis, LutGrid, LutValue};
 use crate::model::masking::G2Model;
 use crate::model::names::named;
 use crate::problem::{Problem, Problems};
+use crate::spec::lut_image::Samples;
 
 named! {
     /// How each number is stored.
@@ -399,16 +400,22 @@ pub fn decode(bytes: &[u8], layout: &Layout, max_side: usize) -> Result<Decoded,
             });
         }
         LutFile::Png => super::lut_image::png(bytes, max_side).map_err(file)?,
-        LutFile::Exr => super::lut_image::exr(bytes, max_side).map_err(file)?,
+        LutFile::Exr => super::lut_image::exr(bytes, max_side, MAX_CHANNELS).map_err(file)?,
     };
-    if given("encoding") && layout.encoding != image.encoding {
+    let encoding = match image.samples {
+        Samples::Unorm8 => Encoding::Unorm8,
+        Samples::Unorm16 => Encoding::Unorm16,
+        Samples::F16 => Encoding::F16,
+        Samples::F32 => Encoding::F32,
+    };
+    if given("encoding") && layout.encoding != encoding {
         return Err(DecodeError::Layout(
             "encoding",
             format!(
                 "the image stores {} (got encoding={}, expected encoding={} or no encoding key)",
-                image.encoding.name(),
+                encoding.name(),
                 layout.encoding.name(),
-                image.encoding.name()
+                encoding.name()
             ),
         ));
     }
@@ -432,7 +439,7 @@ pub fn decode(bytes: &[u8], layout: &Layout, max_side: usize) -> Result<Decoded,
             ),
         ));
     }
-    layout.encoding = image.encoding;
+    layout.encoding = encoding;
     layout.channels = image.channels;
     Ok(Decoded {
         values: image.values,

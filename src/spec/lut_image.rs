@@ -9,7 +9,18 @@
 
 use std::io::Cursor;
 
-use super::lut::Encoding;
+/// How an image stores its samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Samples {
+    /// 8-bit integers k, the value k/255.
+    Unorm8,
+    /// 16-bit integers k, the value k/65535.
+    Unorm16,
+    /// IEEE binary16.
+    F16,
+    /// IEEE binary32.
+    F32,
+}
 
 /// An image's samples and what it says about them.
 #[derive(Debug, Clone, PartialEq)]
@@ -21,7 +32,7 @@ pub struct Image {
     /// Rows.
     pub height: usize,
     /// How the samples are stored.
-    pub encoding: Encoding,
+    pub samples: Samples,
     /// Samples per pixel.
     pub channels: usize,
     /// The channels' names in their order (`Y`, `R, G, B, A`), for messages.
@@ -67,9 +78,9 @@ pub fn png(bytes: &[u8], max_side: usize) -> Result<Image, String> {
             );
         }
     };
-    let encoding = match depth {
-        png::BitDepth::Eight => Encoding::Unorm8,
-        png::BitDepth::Sixteen => Encoding::Unorm16,
+    let samples = match depth {
+        png::BitDepth::Eight => Samples::Unorm8,
+        png::BitDepth::Sixteen => Samples::Unorm16,
         other => {
             return Err(format!(
                 "{} bits per sample (expected 8 or 16)",
@@ -80,8 +91,8 @@ pub fn png(bytes: &[u8], max_side: usize) -> Result<Image, String> {
     let mut buffer = vec![0; reader.output_buffer_size()];
     let frame = reader.next_frame(&mut buffer).map_err(failed)?;
     let data = &buffer[..frame.buffer_size()];
-    let values = match encoding {
-        Encoding::Unorm8 => data.iter().map(|&k| f64::from(k) / 255.0).collect(),
+    let values = match samples {
+        Samples::Unorm8 => data.iter().map(|&k| f64::from(k) / 255.0).collect(),
         // PNG stores 16-bit samples big-endian.
         _ => data
             .chunks_exact(2)
@@ -92,7 +103,7 @@ pub fn png(bytes: &[u8], max_side: usize) -> Result<Image, String> {
         values,
         width,
         height,
-        encoding,
+        samples,
         channels,
         names: names.into(),
     })
@@ -100,8 +111,8 @@ pub fn png(bytes: &[u8], max_side: usize) -> Result<Image, String> {
 
 /// The first layer of an OpenEXR image at full resolution, of half or float channels (all of
 /// one type): one channel as it is, several in the order R, G, B, A when those are their names,
-/// else in the file's (alphabetical) order.
-pub fn exr(bytes: &[u8], max_side: usize) -> Result<Image, String> {
+/// else in the file's (alphabetical) order; at most `max_channels` of them.
+pub fn exr(bytes: &[u8], max_side: usize, max_channels: usize) -> Result<Image, String> {
     use exr::prelude::{ReadChannels, ReadLayers, read};
     let failed = |e: exr::error::Error| format!("not a readable OpenEXR image ({e})");
     // The header first: its size is checked before any pixel is decoded.
@@ -113,11 +124,10 @@ pub fn exr(bytes: &[u8], max_side: usize) -> Result<Image, String> {
         .ok_or("an OpenEXR file without a layer")?;
     let size = header.layer_size;
     check_size(size.0, size.1, max_side)?;
-    if header.channels.list.len() > super::lut::MAX_CHANNELS {
+    if header.channels.list.len() > max_channels {
         return Err(format!(
-            "{} channels (expected 1 to {})",
-            header.channels.list.len(),
-            super::lut::MAX_CHANNELS
+            "{} channels (expected 1 to {max_channels})",
+            header.channels.list.len()
         ));
     }
     let image = read()
@@ -141,15 +151,15 @@ pub fn exr(bytes: &[u8], max_side: usize) -> Result<Image, String> {
     // Channel names come from the file: messages quote an excerpt of each.
     let name = |k: usize| crate::problem::excerpt(&list[k].name.to_string());
     let names: Vec<String> = order.iter().map(|&k| name(k)).collect();
-    let mut encoding = None;
+    let mut kind = None;
     let mut columns: Vec<Vec<f64>> = Vec::with_capacity(order.len());
     for &k in &order {
-        let (this, samples): (Encoding, Vec<f64>) = match &list[k].sample_data {
+        let (this, values): (Samples, Vec<f64>) = match &list[k].sample_data {
             exr::image::FlatSamples::F16(v) => {
-                (Encoding::F16, v.iter().map(|h| h.to_f64()).collect())
+                (Samples::F16, v.iter().map(|h| h.to_f64()).collect())
             }
             exr::image::FlatSamples::F32(v) => {
-                (Encoding::F32, v.iter().map(|&f| f64::from(f)).collect())
+                (Samples::F32, v.iter().map(|&f| f64::from(f)).collect())
             }
             exr::image::FlatSamples::U32(_) => {
                 return Err(format!(
@@ -158,19 +168,19 @@ pub fn exr(bytes: &[u8], max_side: usize) -> Result<Image, String> {
                 ));
             }
         };
-        if *encoding.get_or_insert(this) != this {
+        if *kind.get_or_insert(this) != this {
             return Err("channels of mixed half and float samples (expected one type)".into());
         }
-        if samples.len() != width * height {
+        if values.len() != width * height {
             return Err(format!(
                 "channel {} is subsampled (got {} samples, expected {width} x {height})",
                 name(k),
-                samples.len()
+                values.len()
             ));
         }
-        columns.push(samples);
+        columns.push(values);
     }
-    let encoding = encoding.ok_or("an OpenEXR layer without channels")?;
+    let samples = kind.ok_or("an OpenEXR layer without channels")?;
     let values = (0..width * height)
         .flat_map(|p| columns.iter().map(move |c| c[p]))
         .collect();
@@ -178,7 +188,7 @@ pub fn exr(bytes: &[u8], max_side: usize) -> Result<Image, String> {
         values,
         width,
         height,
-        encoding,
+        samples,
         channels: order.len(),
         names: names.join(", "),
     })
