@@ -14,7 +14,7 @@
 //! describes (see [`engine_table`]). 15 mod 16: `render --check` against hostile stored files
 //! (see [`stored`]).
 
-use ndfplot::cmd::albedo::parse_tables;
+use ndfplot::cmd::albedo::{MAX_AXIS, parse_tables};
 use ndfplot::cmd::eval::{parse_theta_list, write_table};
 use ndfplot::model::curve::Curve;
 use ndfplot::model::fresnel::FresnelModel;
@@ -30,7 +30,7 @@ use ndfplot::problem::{MAX_EXCERPT_CHARS, Problems};
 use ndfplot::spec::angle::AngleUnit;
 use ndfplot::spec::curve::{Model, ParamKind};
 use ndfplot::spec::input::{Record, read_curves, read_pairs};
-use ndfplot::spec::lut::{Encoding, LutFile, decode, parse_layout};
+use ndfplot::spec::lut::{DecodeError, Encoding, LutFile, decode, parse_layout};
 use ndfplot::spec::scene::{Sampling, Scene};
 use ndfplot::spec::source::{self, CanvasOverride};
 use std::f64::consts::FRAC_PI_2;
@@ -293,6 +293,9 @@ const STORED_SOURCE: &str = include_str!("../src/output/stored.rs");
 /// The source of the engine-table decoder, whose message wording a table file may repeat.
 const LUT_SOURCE: &str = include_str!("../src/spec/lut.rs");
 
+/// The source of the image-table decoder, likewise.
+const LUT_IMAGE_SOURCE: &str = include_str!("../src/spec/lut_image.rs");
+
 /// Panics when a line of `report` quotes more than [`MAX_EXCERPT_CHARS`] consecutive characters
 /// of the untrusted `quoted` that none of the `trusted` texts (what the run itself produced, and
 /// the wording of the messages) holds. An excerpt ends at its `…`, and the quote before it may
@@ -391,8 +394,11 @@ fn batch(bytes: &[u8]) {
     }
 }
 
-/// The table file names whose extensions pick each kind of file.
-const TABLE_PATHS: [&str; 6] = ["e.csv", "e.txt", "e.h", "e.cpp", "e.bin", "e"];
+/// The table file names whose extensions pick each kind of file (an image is one by its first
+/// bytes under any name too).
+const TABLE_PATHS: [&str; 8] = [
+    "e.csv", "e.txt", "e.h", "e.cpp", "e.bin", "e", "e.png", "e.exr",
+];
 
 /// An albedo engine table: the first byte picks the file name (its kind) and the G2 model, the text
 /// up to the first line break is both a `--table` list and a `--layout`, the rest the table file.
@@ -435,25 +441,36 @@ fn engine_table(bytes: &[u8]) {
             return;
         }
     };
-    assert!(layout.rows != layout.cols && layout.channel < layout.channels);
+    // Without `channels=` the channel is checked against the file's own count (an image's).
+    assert!(layout.rows != layout.cols);
+    assert!(layout.channel < layout.channels || !layout.given.contains(&"channels"));
     assert!((0.0..1.0).contains(&layout.clamp));
     assert!(!(layout.file == LutFile::Raw && layout.encoding == Encoding::Text));
-    match decode(file, &layout) {
+    match decode(file, &layout, MAX_AXIS) {
         Ok(decoded) => {
+            let image = matches!(decoded.layout.file, LutFile::Png | LutFile::Exr);
             if let Some((rows, width)) = decoded.shape {
+                let per_cell = if image { decoded.layout.channels } else { 1 };
                 assert_eq!(
-                    rows * width,
+                    rows * width * per_cell,
                     decoded.values.len(),
                     "the shape holds every value"
                 );
+                if image {
+                    assert!(rows.max(width) <= MAX_AXIS, "an image within the axis cap");
+                }
             }
         }
-        Err(message) => {
+        Err(DecodeError::File(message) | DecodeError::Layout(_, message)) => {
             assert!(
                 !message.is_empty() && !has_raw_control(&message),
                 "{message:?}"
             );
-            assert_excerpts_only(&message, &String::from_utf8_lossy(file), &[LUT_SOURCE]);
+            assert_excerpts_only(
+                &message,
+                &String::from_utf8_lossy(file),
+                &[LUT_SOURCE, LUT_IMAGE_SOURCE],
+            );
         }
     }
 }

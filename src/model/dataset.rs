@@ -1,15 +1,18 @@
 //! Series that are not functions of θ: the Belcour–Bati–Barla singular-value spectrum,
 //! coefficient paths and manifolds over Gulbrandsen's (r, g), the directional albedo of an NDF
-//! family over (μ, r) on Cycles' grid, literal tables, and differences with a sampled side.
+//! family over (μ, r) on Cycles' grid, an engine's published table against the exact one,
+//! literal tables, and differences with a sampled side.
 //!
 //! A dataset is validated data (like a curve) and evaluates to points; it never draws or writes.
 
 use crate::model::albedo::{RoughnessMap, albedo_table, lobe, surface_of};
 use crate::model::curve::{Curve, DiffOp};
+use crate::model::engine_table::PublishedTable;
 use crate::model::fresnel::{basis, gulbrandsen};
 use crate::model::masking::G2Model;
 use crate::model::metrics::ThetaRange;
 use crate::model::metrics::sampled::{Operand, Samples, nodes};
+use crate::model::metrics::table::Cell;
 use crate::model::names::named;
 use crate::model::ndf::Family;
 use serde::ser::{Serialize, SerializeMap, Serializer};
@@ -123,6 +126,14 @@ pub enum Dataset {
         /// Points on the r axis, at least 2.
         r: usize,
     },
+    /// An engine's published table against the exact one: |engine − exact| over (μ, r) on the
+    /// engine's grid, the cells computed once by [`PublishedTable::audit`].
+    Audit {
+        /// The table.
+        table: PublishedTable,
+        /// Its cells in file order.
+        cells: Vec<Cell>,
+    },
     /// Literal points.
     Table {
         /// x values.
@@ -205,14 +216,16 @@ impl Dataset {
     pub fn has_z(&self) -> bool {
         matches!(
             self,
-            Dataset::Gulbrandsen { z: Some(_), .. } | Dataset::Albedo { .. }
+            Dataset::Gulbrandsen { z: Some(_), .. }
+                | Dataset::Albedo { .. }
+                | Dataset::Audit { .. }
         )
     }
 
     /// Whether the dataset is z over a rectilinear grid, x varying along its rows and y along its
     /// columns (what a heat-map panel draws).
     pub fn is_map(&self) -> bool {
-        matches!(self, Dataset::Albedo { .. })
+        matches!(self, Dataset::Albedo { .. } | Dataset::Audit { .. })
     }
 
     /// How many points the dataset has, known without computing them (but for a CSV file's,
@@ -222,6 +235,7 @@ impl Dataset {
             Dataset::Spectrum { count, .. } => *count,
             Dataset::Gulbrandsen { r, g, .. } => r.len() * g.len(),
             Dataset::Albedo { mu, r, .. } => mu * r,
+            Dataset::Audit { cells, .. } => cells.len(),
             Dataset::Table { x, .. } | Dataset::Csv { x, .. } => x.len(),
             Dataset::Difference { a, b, .. } => a.len().max(b.len()),
         }
@@ -319,6 +333,21 @@ impl Dataset {
                     },
                 }
             }
+            Dataset::Audit { table, cells } => {
+                // μ-major, as a heat map's grid runs: cell (i, j) at i · n_r + j.
+                let grid = table.grid();
+                let n_r = grid.n_r;
+                let mut ordered = vec![cells[0]; cells.len()];
+                for (k, cell) in cells.iter().enumerate() {
+                    let (i, j) = grid.cell(k);
+                    ordered[i * n_r + j] = *cell;
+                }
+                DataPoints {
+                    points: ordered.iter().map(|c| (c.mu, c.r)).collect(),
+                    z: Some(ordered.iter().map(|c| c.error().abs()).collect()),
+                    grid: Some((cells.len() / n_r, n_r)),
+                }
+            }
             Dataset::Table { x, y } | Dataset::Csv { x, y, .. } => DataPoints {
                 points: x.iter().copied().zip(y.iter().copied()).collect(),
                 z: None,
@@ -385,6 +414,10 @@ impl Serialize for Dataset {
                 map.serialize_entry("value", value.name())?;
                 map.serialize_entry("mu", mu)?;
                 map.serialize_entry("r", r)?;
+            }
+            Dataset::Audit { table, .. } => {
+                map.serialize_entry("data", "audit")?;
+                map.serialize_entry("table", table.name())?;
             }
             Dataset::Table { x, y } => {
                 map.serialize_entry("data", "table")?;

@@ -5,6 +5,7 @@ pub mod albedo;
 pub mod curve;
 pub mod dataset;
 pub mod domain;
+pub mod engine_table;
 pub mod fit;
 pub mod fresnel;
 pub mod grid;

@@ -75,14 +75,21 @@ pub fn scene(spec: Scene<Spec>) -> std::result::Result<Scene, Vec<Problem>> {
     let panels: Vec<ScenePanel> = spec
         .panels
         .into_iter()
-        .map(|panel| ScenePanel {
-            axes: panel.axes,
-            curves: at_slider_starts(resolve_curves(&panel.curves, &mut problems), sliders),
-            data: panel
+        .map(|panel| {
+            let data: Vec<SceneData> = panel
                 .data
                 .into_iter()
                 .filter_map(|d| scene_data(d).map_err(|p| push_once(&mut problems, p)).ok())
-                .collect(),
+                .collect();
+            let mut axes = panel.axes;
+            if axes.title.is_empty() {
+                axes.title = data.iter().find_map(audit_title).unwrap_or_default();
+            }
+            ScenePanel {
+                axes,
+                curves: at_slider_starts(resolve_curves(&panel.curves, &mut problems), sliders),
+                data,
+            }
         })
         .collect();
     if !problems.is_empty() {
@@ -218,10 +225,40 @@ fn scene_curve(spec: &SceneCurve<Spec>) -> std::result::Result<SceneCurve, Probl
     })
 }
 
+/// The default title of a panel showing an engine table's audit: its largest |engine − exact| and
+/// where, the numbers `albedo --against` reports (`max |error| = 9.917×10^{−7} at μ =
+/// 0.645, r = 0.161`).
+fn audit_title(data: &SceneData) -> Option<String> {
+    let Dataset::Audit { cells, .. } = &data.dataset else {
+        return None;
+    };
+    let audit = crate::model::metrics::table::TableAudit::of(cells);
+    let worst = cells[audit.worst];
+    let sci = format!("{:.3e}", audit.max_abs);
+    let (mantissa, exponent) = sci.split_once('e').unwrap_or((&sci, "0"));
+    let value = match exponent {
+        "0" => mantissa.to_string(),
+        e => format!("{mantissa}×10^{{{}}}", e.replace('-', "−")),
+    };
+    Some(format!(
+        "max |error| = {value} at μ = {:.3}, r = {:.3}",
+        worst.mu, worst.r
+    ))
+}
+
 fn scene_data(spec: SceneData<Spec>) -> std::result::Result<SceneData, Problem> {
     let (dataset, label) = match spec.dataset {
         DataSpec::Ready(dataset) => (dataset, spec.label),
         DataSpec::Csv(file) => (csv(&file)?, spec.label),
+        DataSpec::Audit(table) => {
+            let cells = table.audit().map_err(|e| {
+                Problem::new(
+                    "",
+                    format!("{}: {e} (expected a convergent integral)", table.name()),
+                )
+            })?;
+            (Dataset::Audit { table, cells }, spec.label)
+        }
         DataSpec::Difference {
             op,
             a,
@@ -266,7 +303,9 @@ fn side(spec: SideSpec) -> std::result::Result<(Side, String), Problem> {
             let dataset = match data {
                 DataSpec::Csv(file) => csv(&file)?,
                 DataSpec::Ready(dataset) => dataset,
-                DataSpec::Difference { .. } => unreachable!("a side is a series of θ"),
+                DataSpec::Difference { .. } | DataSpec::Audit(_) => {
+                    unreachable!("a side is a series of θ")
+                }
             };
             Ok((Side::Sampled(dataset), label))
         }

@@ -9,43 +9,11 @@
 //! table and the comparison are the model's.
 
 use crate::model::albedo::RoughnessMap;
+pub use crate::model::engine_table::{LutAxis, LutGrid, LutValue};
 use crate::model::masking::G2Model;
 use crate::model::names::named;
 use crate::problem::{Problem, Problems};
-
-named! {
-    /// A table axis: μ = cos θo or the roughness coordinate r.
-    pub enum LutAxis {
-        /// μ = cos θo.
-        Mu = "mu",
-        /// The roughness coordinate r, α = map(r).
-        R = "r",
-    }
-}
-
-named! {
-    /// Where the n points of an axis sit in [0, 1].
-    pub enum LutGrid {
-        /// i/(n − 1): both ends on the grid (Cycles, Adobe).
-        Endpoints = "endpoints",
-        /// (i + ½)/n: texel centres (a texture sampled at its pixel centres: Filament, Unreal).
-        Centers = "centers",
-    }
-}
-
-named! {
-    /// What each number of the table is.
-    pub enum LutValue {
-        /// E (E_avg for `--table average`).
-        E = "e",
-        /// 1 − E: the energy single scattering loses (Adobe's tables).
-        OneMinusE = "1-e",
-        /// DFG1 = E_F with F = 1 − (1 − cos θd)⁵ (`--table dfg`).
-        Dfg1 = "dfg1",
-        /// DFG2 = E_F with F = (1 − cos θd)⁵ (`--table dfg`).
-        Dfg2 = "dfg2",
-    }
-}
+use crate::spec::lut_image::Samples;
 
 named! {
     /// How each number is stored.
@@ -73,6 +41,28 @@ named! {
         Header = "header",
         /// Raw little-endian binary, row-major, no header.
         Raw = "raw",
+        /// A grayscale, grey–alpha, RGB or RGBA PNG image of 8 or 16 bits per sample (unorm8,
+        /// unorm16); image rows are table rows.
+        Png = "png",
+        /// An OpenEXR image (its first layer, at full resolution) of half or float channels (f16,
+        /// f32); image rows are table rows.
+        Exr = "exr",
+    }
+}
+
+/// The first bytes of a PNG file.
+const PNG_MAGIC: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
+/// The first bytes of an OpenEXR file (its magic number 20000630, little-endian).
+const EXR_MAGIC: [u8; 4] = [0x76, 0x2f, 0x31, 0x01];
+
+/// The kind of image the bytes start with, if any.
+fn image_kind(bytes: &[u8]) -> Option<LutFile> {
+    if bytes.starts_with(&PNG_MAGIC) {
+        Some(LutFile::Png)
+    } else if bytes.starts_with(&EXR_MAGIC) {
+        Some(LutFile::Exr)
+    } else {
+        None
     }
 }
 
@@ -94,6 +84,9 @@ pub const LAYOUT_KEYS: [&str; 12] = [
 
 /// Most channels per cell (`channels=`): RGBA.
 pub const MAX_CHANNELS: usize = 4;
+/// The names `channel=` takes besides an index: R, G, B, A are 0 to 3 (an image's channel
+/// order), Y (a grey image's one channel) is 0.
+pub const CHANNEL_NAMES: [(&str, usize); 5] = [("R", 0), ("G", 1), ("B", 2), ("A", 3), ("Y", 0)];
 
 /// What an engine's table holds and how (`--layout`); every key has a default.
 #[derive(Debug, Clone, PartialEq)]
@@ -123,6 +116,8 @@ pub struct Layout {
     pub channels: usize,
     /// Which of them is audited, from 0.
     pub channel: usize,
+    /// The keys `--layout` gave (the others hold their defaults).
+    pub given: Vec<&'static str>,
 }
 
 /// The layout of `text` (`KEY=VALUE,…`, empty for all defaults) for the file `path` under the
@@ -141,6 +136,8 @@ pub fn parse_layout(text: &str, path: &str, g2: G2Model) -> Result<Layout, Probl
     let file = match extension.as_str() {
         "csv" | "txt" => LutFile::Csv,
         "h" | "hh" | "hpp" | "c" | "cc" | "cpp" | "inc" => LutFile::Header,
+        "png" => LutFile::Png,
+        "exr" => LutFile::Exr,
         _ => LutFile::Raw,
     };
     let mut layout = Layout {
@@ -156,6 +153,7 @@ pub fn parse_layout(text: &str, path: &str, g2: G2Model) -> Result<Layout, Probl
         clamp: 0.0,
         channels: 1,
         channel: 0,
+        given: Vec::new(),
     };
     let mut seen: Vec<&str> = Vec::new();
     let mut encoding = None;
@@ -251,19 +249,21 @@ pub fn parse_layout(text: &str, path: &str, g2: G2Model) -> Result<Layout, Probl
                     })?
             }
             "channels" => layout.channels = count(1, MAX_CHANNELS)?,
-            _ => layout.channel = count(0, MAX_CHANNELS - 1)?,
+            _ => {
+                layout.channel = match CHANNEL_NAMES
+                    .iter()
+                    .find(|(name, _)| name.eq_ignore_ascii_case(value))
+                {
+                    Some(&(_, index)) => index,
+                    None => count(0, MAX_CHANNELS - 1)?,
+                }
+            }
         }
     }
-    if layout.channel >= layout.channels {
-        return Err(problem(
-            "channel",
-            format!(
-                "no such channel (got {}, expected 0 to {} with channels={})",
-                layout.channel,
-                layout.channels - 1,
-                layout.channels
-            ),
-        ));
+    layout.given = seen.clone();
+    // Without `channels=` the count may come from an image: decode checks the channel then.
+    if let Some(message) = missing_channel(&layout).filter(|_| seen.contains(&"channels")) {
+        return Err(problem("channel", message));
     }
     if layout.rows == layout.cols {
         return Err(problem(
@@ -276,12 +276,16 @@ pub fn parse_layout(text: &str, path: &str, g2: G2Model) -> Result<Layout, Probl
         ));
     }
     layout.encoding = match (encoding, layout.file) {
-        (None, LutFile::Raw) => Encoding::F32,
+        (None, LutFile::Raw | LutFile::Exr) => Encoding::F32,
+        (None, LutFile::Png) => Encoding::Unorm16,
         (None, _) => Encoding::Text,
-        (Some(Encoding::Text), LutFile::Raw) => {
+        (Some(Encoding::Text), LutFile::Raw | LutFile::Png | LutFile::Exr) => {
             return Err(problem(
                 "encoding",
-                "text in a raw file (got encoding=text with file=raw, expected f32, f16, unorm8 or unorm16)".into(),
+                format!(
+                    "text in a binary file (got encoding=text with file={}, expected f32, f16, unorm8 or unorm16)",
+                    layout.file.name()
+                ),
             ));
         }
         (Some(encoding), _) => encoding,
@@ -289,41 +293,159 @@ pub fn parse_layout(text: &str, path: &str, g2: G2Model) -> Result<Layout, Probl
     Ok(layout)
 }
 
+/// (rows, numbers per row) of a table file.
+type Shape = (usize, usize);
+
+/// Why `channel=` names no channel of `channels=`, if it does not.
+fn missing_channel(layout: &Layout) -> Option<String> {
+    (layout.channel >= layout.channels).then(|| {
+        format!(
+            "no such channel (got {}, expected 0 to {} with channels={})",
+            layout.channel,
+            layout.channels - 1,
+            layout.channels
+        )
+    })
+}
+
 /// The numbers of a table file with the shape its text gives, before any channel is picked.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Decoded {
     /// The values, row-major, decoded by the encoding (unorm k/255, k/65535).
     pub values: Vec<f64>,
-    /// (rows, numbers per row) when a CSV file has several lines of equal length.
-    pub shape: Option<(usize, usize)>,
+    /// (rows, numbers per row) when a CSV file has several lines of equal length, or an image's
+    /// (height, width).
+    pub shape: Option<Shape>,
+    /// The layout with what the file itself says: an image's kind, encoding and channel count.
+    pub layout: Layout,
 }
 
-/// Decodes the bytes of a table file by `layout` (its file kind and encoding); errs with a message
-/// that quotes no more than an excerpt of the file.
-pub fn decode(bytes: &[u8], layout: &Layout) -> Result<Decoded, String> {
-    match layout.file {
-        LutFile::Raw => decode_raw(bytes, layout.encoding).map(|values| Decoded {
-            values,
-            shape: None,
-        }),
-        LutFile::Csv | LutFile::Header => {
-            let text = std::str::from_utf8(bytes).map_err(|e| {
+/// Why a table file could not be decoded.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DecodeError {
+    /// The file's bytes (the message names no file; the caller does).
+    File(String),
+    /// A `--layout` key that contradicts the file: the key and the message.
+    Layout(&'static str, String),
+}
+
+/// Decodes the bytes of a table file by `layout` (its file kind and encoding): a PNG or OpenEXR
+/// file is recognised by its first bytes whatever its name, its encoding and channel count come
+/// from the image (an explicit `file=`, `encoding=` or `channels=` that says otherwise is a
+/// [`DecodeError::Layout`]), and an image wider or taller than `max_side` is refused before its
+/// pixels are read. Messages quote no more than an excerpt of the file.
+pub fn decode(bytes: &[u8], layout: &Layout, max_side: usize) -> Result<Decoded, DecodeError> {
+    let file = DecodeError::File;
+    let mut layout = layout.clone();
+    let given = |key: &str| layout.given.contains(&key);
+    if let Some(kind) = image_kind(bytes) {
+        if given("file") && layout.file != kind {
+            return Err(DecodeError::Layout(
+                "file",
                 format!(
+                    "the file is {} image (got file={}, expected file={} or no file key)",
+                    if kind == LutFile::Png {
+                        "a PNG"
+                    } else {
+                        "an OpenEXR"
+                    },
+                    layout.file.name(),
+                    kind.name()
+                ),
+            ));
+        }
+        layout.file = kind;
+    } else if matches!(layout.file, LutFile::Png | LutFile::Exr) {
+        return Err(file(format!(
+            "not {} file (its first bytes are not the format's signature; give file=… for another kind)",
+            if layout.file == LutFile::Png {
+                "a PNG"
+            } else {
+                "an OpenEXR"
+            }
+        )));
+    }
+    let fixed_channels = |layout: &Layout| match missing_channel(layout) {
+        Some(message) => Err(DecodeError::Layout("channel", message)),
+        None => Ok(()),
+    };
+    let image = match layout.file {
+        LutFile::Raw => {
+            fixed_channels(&layout)?;
+            let values = decode_raw(bytes, layout.encoding).map_err(file)?;
+            return Ok(Decoded {
+                values,
+                shape: None,
+                layout,
+            });
+        }
+        LutFile::Csv | LutFile::Header => {
+            fixed_channels(&layout)?;
+            let text = std::str::from_utf8(bytes).map_err(|e| {
+                file(format!(
                     "not UTF-8 text at byte {} (expected a {} file; a binary table takes file=raw)",
                     e.valid_up_to(),
                     layout.file.name()
-                )
+                ))
             })?;
-            if layout.file == LutFile::Csv {
-                decode_csv(text, layout.encoding)
+            let (values, shape) = if layout.file == LutFile::Csv {
+                decode_csv(text, layout.encoding).map_err(file)?
             } else {
-                decode_header(text, layout.encoding).map(|values| Decoded {
-                    values,
-                    shape: None,
-                })
-            }
+                (decode_header(text, layout.encoding).map_err(file)?, None)
+            };
+            return Ok(Decoded {
+                values,
+                shape,
+                layout,
+            });
         }
+        LutFile::Png => super::lut_image::png(bytes, max_side).map_err(file)?,
+        LutFile::Exr => super::lut_image::exr(bytes, max_side, MAX_CHANNELS).map_err(file)?,
+    };
+    let encoding = match image.samples {
+        Samples::Unorm8 => Encoding::Unorm8,
+        Samples::Unorm16 => Encoding::Unorm16,
+        Samples::F16 => Encoding::F16,
+        Samples::F32 => Encoding::F32,
+    };
+    if given("encoding") && layout.encoding != encoding {
+        return Err(DecodeError::Layout(
+            "encoding",
+            format!(
+                "the image stores {} (got encoding={}, expected encoding={} or no encoding key)",
+                encoding.name(),
+                layout.encoding.name(),
+                encoding.name()
+            ),
+        ));
     }
+    if given("channels") && layout.channels != image.channels {
+        return Err(DecodeError::Layout(
+            "channels",
+            format!(
+                "the image has {} channels (got channels={}, expected channels={} or no channels key)",
+                image.channels, layout.channels, image.channels
+            ),
+        ));
+    }
+    if layout.channel >= image.channels {
+        return Err(DecodeError::Layout(
+            "channel",
+            format!(
+                "no such channel in the image (got channel={}, expected 0 to {}: the image has {})",
+                layout.channel,
+                image.channels - 1,
+                image.names
+            ),
+        ));
+    }
+    layout.encoding = encoding;
+    layout.channels = image.channels;
+    Ok(Decoded {
+        values: image.values,
+        shape: Some((image.height, image.width)),
+        layout,
+    })
 }
 
 /// Raw little-endian numbers of `encoding`.
@@ -332,7 +454,7 @@ fn decode_raw(bytes: &[u8], encoding: Encoding) -> Result<Vec<f64>, String> {
         Encoding::F32 => 4,
         Encoding::F16 | Encoding::Unorm16 => 2,
         Encoding::Unorm8 => 1,
-        Encoding::Text => unreachable!("parse_layout refuses text in raw files"),
+        Encoding::Text => unreachable!("parse_layout refuses text in binary files"),
     };
     if bytes.len() % width != 0 {
         return Err(format!(
@@ -395,7 +517,7 @@ fn text_number(token: &str, encoding: Encoding) -> Result<f64, String> {
 
 /// A CSV matrix: numbers separated by commas or white space, one table row per line, `#` lines
 /// and blank lines skipped.
-fn decode_csv(text: &str, encoding: Encoding) -> Result<Decoded, String> {
+fn decode_csv(text: &str, encoding: Encoding) -> Result<(Vec<f64>, Option<Shape>), String> {
     let mut values = Vec::new();
     let mut widths = Vec::new();
     for (number, line) in text.lines().enumerate() {
@@ -416,7 +538,7 @@ fn decode_csv(text: &str, encoding: Encoding) -> Result<Decoded, String> {
     }
     let shape = (widths.len() > 1 && widths.iter().all(|&w| w == widths[0]))
         .then(|| (widths.len(), widths[0]));
-    Ok(Decoded { values, shape })
+    Ok((values, shape))
 }
 
 /// The numbers of the one array of a C/C++ source: the text between its first `{` and last `}`,
@@ -469,11 +591,11 @@ mod tests {
         let layout = parse_layout("", "t.h", G2Model::HeightCorrelated).unwrap();
         assert_eq!(layout.file, LutFile::Header);
         assert_eq!(
-            decode(header.as_bytes(), &layout).unwrap().values,
+            decode(header.as_bytes(), &layout, 1024).unwrap().values,
             [0.5, 1.0, 0.0, 0.2]
         );
         let layout = parse_layout("encoding=unorm8", "t.csv", G2Model::Separable).unwrap();
-        let decoded = decode(b"# c\n0,255\n51 102\n", &layout).unwrap();
+        let decoded = decode(b"# c\n0,255\n51 102\n", &layout, 1024).unwrap();
         assert_eq!(decoded.values, [0.0, 1.0, 0.2, 0.4]);
         assert_eq!(decoded.shape, Some((2, 2)));
     }
@@ -487,7 +609,7 @@ mod tests {
             "colour=red",
             "map=r3",
             "encoding=text",
-            "channel=2",
+            "channels=2,channel=2",
             "clamp=1",
         ] {
             assert!(parse_layout(bad, "t.bin", g2).is_err(), "{bad}");

@@ -11,6 +11,7 @@ pub mod json;
 pub mod keys;
 pub mod look;
 pub mod lut;
+pub mod lut_image;
 pub mod numbers;
 pub mod quantity;
 pub mod scene;

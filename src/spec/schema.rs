@@ -596,6 +596,7 @@ fn data_key(kind: &str, key: &str) -> Value {
             "spectrum" => "the singular values of the Fresnel basis' training curves",
             "gulbrandsen" => "decomposition coefficients over Gulbrandsen's (r, g)",
             "albedo" => "the directional albedo E (F = 1) of an NDF family over μ = cos θo × roughness r, on Cycles' grid",
+            "audit" => "|engine − exact| over μ = cos θo × roughness r of an engine's albedo table shipped with ndfplot, on the engine's grid, against the exact table",
             "table" => "literal points",
             "csv" => "θ and values read from a CSV file",
             other => panic!("no description for the data kind {other:?}"),
@@ -652,6 +653,10 @@ fn data_key(kind: &str, key: &str) -> Value {
                 data::DEFAULT_ALBEDO_POINTS
             ),
         }),
+        ("audit", "table") => described(
+            strings(&names(&crate::model::engine_table::PublishedTable::NAMES)),
+            "the published engine table: cycles-ggx-e, Cycles' table_ggx_E (32 × 32 E of GGX, height-correlated G2, F = 1, α = r²)",
+        ),
         ("table", "x") => described(reference("plain_sweep"), "the points' x: a list or a sweep"),
         ("table", "y") => described(reference("plain_sweep"), "the points' y, as many as x"),
         ("csv", "path") => text_field(
@@ -671,6 +676,7 @@ fn data_required(kind: &str) -> &'static [&'static str] {
         "gulbrandsen" => &["data", "x", "y", "r", "g"],
         "table" => &["data", "x", "y"],
         "csv" => &["data", "path"],
+        "audit" => &["data", "table"],
         _ => &["data"],
     }
 }

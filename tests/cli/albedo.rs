@@ -170,7 +170,7 @@ fn the_average_table_is_cycles_and_the_research_values() {
         assert!((value - expected).abs() <= 1e-6, "{value} vs {expected}");
     }
     // Cycles' table_ggx_Eavg at x = 0 (r clamped to 1e-4) and x = 31 (r = 1).
-    let cycles = std::fs::read_to_string(root().join("tests/data/cycles_ggx_E.csv")).unwrap();
+    let cycles = std::fs::read_to_string(root().join("data/published/cycles/ggx_E.csv")).unwrap();
     let entry = |x: &str| -> f64 {
         let line = cycles
             .lines()
@@ -534,7 +534,7 @@ fn several_tables_share_one_long_csv_under_a_table_column() {
     }
     // The average at its stated accuracy against Cycles' table_ggx_Eavg (Monte Carlo, 6 decimals:
     // its rounding plus noise, 2.5e-6), the same r = x/31 (Cycles clamps r = 0 to 1e-4).
-    let cycles = std::fs::read_to_string(root().join("tests/data/cycles_ggx_E.csv")).unwrap();
+    let cycles = std::fs::read_to_string(root().join("data/published/cycles/ggx_E.csv")).unwrap();
     let reference: Vec<f64> = cycles
         .lines()
         .filter(|l| l.starts_with("ggx_Eavg,"))

@@ -1,8 +1,10 @@
-//! `ndfplot albedo --against FILE --layout …`: Cycles' `table_ggx_E` (tests/data/cycles_ggx_E.csv,
+//! `ndfplot albedo --against FILE --layout …`: Cycles' `table_ggx_E` (data/published/cycles/ggx_E.csv,
 //! Apache-2.0, Blender Foundation; Monte Carlo values printed to 6 decimals) audited against the exact
 //! table within 2e-6, a copy perturbed at one cell found at that cell in either orientation, every
 //! encoding decoded to the numbers written (each encoded here by its IEEE or unorm definition), the
-//! `-o` files, `--max-error`'s exit status and bad files refused naming the file.
+//! `-o` files, `--max-error`'s exit status and bad files refused naming the file. The PNG and
+//! OpenEXR files are written here by the `png` and `exr` crates' encoders from the CSV's numbers,
+//! so what they hold is known independently of ndfplot's decoder.
 
 use crate::common::{csv_records, ndfplot, scratch, text};
 use std::path::Path;
@@ -10,7 +12,7 @@ use std::path::Path;
 /// Cycles' 32 × 32 `table_ggx_E`, rows y (μ = y/31), columns x (r = x/31).
 fn cycles() -> Vec<Vec<f64>> {
     let mut table = vec![vec![f64::NAN; 32]; 32];
-    for record in csv_records("tests/data/cycles_ggx_E.csv") {
+    for record in csv_records("data/published/cycles/ggx_E.csv") {
         if &record[0] == "ggx_E" {
             let (y, x): (usize, usize) = (record[1].parse().unwrap(), record[2].parse().unwrap());
             table[y][x] = record[3].parse().unwrap();
@@ -260,4 +262,231 @@ fn bad_tables_and_layouts_exit_2_naming_them() {
         assert!(stderr.contains(says), "{layout}: {stderr}");
         assert!(!stderr.contains("panicked"), "{stderr}");
     }
+}
+
+/// `table` (rows μ, columns r) as a grey PNG of `depth` bits: k = round(v (2^depth − 1)).
+fn png_table(table: &[Vec<f64>], depth: png::BitDepth) -> Vec<u8> {
+    let (rows, cols) = (table.len() as u32, table[0].len() as u32);
+    let mut out = Vec::new();
+    let mut encoder = png::Encoder::new(&mut out, cols, rows);
+    encoder.set_color(png::ColorType::Grayscale);
+    encoder.set_depth(depth);
+    let mut writer = encoder.write_header().unwrap();
+    let data: Vec<u8> = table
+        .concat()
+        .iter()
+        .flat_map(|&v| match depth {
+            png::BitDepth::Sixteen => ((v * 65535.0).round() as u16).to_be_bytes().to_vec(),
+            _ => vec![(v * 255.0).round() as u8],
+        })
+        .collect();
+    writer.write_image_data(&data).unwrap();
+    writer.finish().unwrap();
+    out
+}
+
+/// `table` (rows μ, columns r) as a one-channel (`Y`) OpenEXR image of halves or floats.
+fn exr_table(table: &[Vec<f64>], half: bool) -> Vec<u8> {
+    use exr::prelude::{AnyChannel, AnyChannels, FlatSamples, Image, SmallVec, WritableImage, f16};
+    let values = table.concat();
+    let samples = if half {
+        FlatSamples::F16(values.iter().map(|&v| f16::from_f64(v)).collect())
+    } else {
+        FlatSamples::F32(values.iter().map(|&v| v as f32).collect())
+    };
+    let channels = AnyChannels::sort(SmallVec::from_vec(vec![AnyChannel::new("Y", samples)]));
+    let image = Image::from_channels((table[0].len(), table.len()), channels);
+    let mut out = std::io::Cursor::new(Vec::new());
+    image.write().to_buffered(&mut out).unwrap();
+    out.into_inner()
+}
+
+/// Cycles' table as a 16-bit and an 8-bit PNG and as half and float OpenEXR: each audited within
+/// the table's own 2e-6 plus its encoding's rounding (half a unorm step; half a half-float ulp,
+/// 2⁻¹² of values below 1), its encoding read from the file.
+#[test]
+fn png_and_exr_tables_are_audited_within_their_quantization() {
+    let dir = scratch("lut_audit_images");
+    let table = cycles();
+    let cases = [
+        (
+            "e16.png",
+            png_table(&table, png::BitDepth::Sixteen),
+            0.5 / 65535.0,
+            "encoding=unorm16",
+        ),
+        (
+            "e8.png",
+            png_table(&table, png::BitDepth::Eight),
+            0.5 / 255.0,
+            "encoding=unorm8",
+        ),
+        (
+            "half.exr",
+            exr_table(&table, true),
+            2f64.powi(-12),
+            "encoding=f16",
+        ),
+        (
+            "float.exr",
+            exr_table(&table, false),
+            2f64.powi(-25),
+            "encoding=f32",
+        ),
+    ];
+    for (name, bytes, rounding, encoding) in cases {
+        // Named .bin: the kind comes from the first bytes, not the name.
+        let path = dir.join(format!("{name}.bin"));
+        std::fs::write(&path, bytes).unwrap();
+        let (code, report, stderr) = audit(&path, "clamp=1e-4", &[]);
+        assert_eq!(code, Some(0), "{name}: {stderr}");
+        assert!(report.contains(encoding), "{name}: {report}");
+        assert!(report.contains("cells: 32 x 32 (32 mu x 32 r)"), "{report}");
+        assert!(
+            field(&report, "max_abs") <= 2e-6 + rounding,
+            "{name}: {report}"
+        );
+    }
+    let mut perturbed = table.clone();
+    perturbed[7][19] += 0.01;
+    let at = format!("at mu = {:.6}, r = {:.6}", 7.0 / 31.0, 19.0 / 31.0);
+    for (name, bytes) in [
+        (
+            "perturbed.png",
+            png_table(&perturbed, png::BitDepth::Sixteen),
+        ),
+        ("perturbed.exr", exr_table(&perturbed, false)),
+    ] {
+        let path = dir.join(name);
+        std::fs::write(&path, bytes).unwrap();
+        let (_, report, stderr) = audit(&path, "clamp=1e-4", &[]);
+        assert!(
+            report.contains(&format!("max_abs: 1.000e-2 {at}")),
+            "{name}: {stderr}{report}"
+        );
+    }
+}
+
+#[test]
+fn bad_images_and_contradicting_layouts_exit_2_naming_them() {
+    let dir = scratch("lut_audit_bad_images");
+    let small = small();
+    let good_png = png_table(&small, png::BitDepth::Sixteen);
+    let good_exr = exr_table(&small, true);
+    let mut nan = small.clone();
+    nan[2][3] = f64::NAN;
+    let wide: Vec<Vec<f64>> = vec![vec![0.5; 2000]; 2];
+    let files: [(&str, Vec<u8>); 6] = [
+        ("good.png", good_png.clone()),
+        ("good.exr", good_exr.clone()),
+        ("truncated.png", good_png[..good_png.len() / 2].to_vec()),
+        ("truncated.exr", good_exr[..good_exr.len() / 2].to_vec()),
+        ("nan.exr", exr_table(&nan, false)),
+        ("wide.png", png_table(&wide, png::BitDepth::Eight)),
+    ];
+    for (name, bytes) in &files {
+        std::fs::write(dir.join(name), bytes).unwrap();
+    }
+    std::fs::write(dir.join("fake.png"), "0.5,0.5\n0.5,0.5\n").unwrap();
+    let cases = [
+        (
+            "truncated.png",
+            "",
+            "truncated.png: not a readable PNG image",
+        ),
+        (
+            "truncated.exr",
+            "",
+            "truncated.exr: not a readable OpenEXR image",
+        ),
+        ("nan.exr", "", "nan.exr: cell 19 is not finite"),
+        (
+            "wide.png",
+            "",
+            "image size out of range (got 2000 x 2 pixels",
+        ),
+        ("fake.png", "", "not a PNG file"),
+        (
+            "good.png",
+            "encoding=f32",
+            "--layout: encoding: the image stores unorm16",
+        ),
+        (
+            "good.exr",
+            "channels=3",
+            "--layout: channels: the image has 1 channels",
+        ),
+        (
+            "good.png",
+            "channel=G",
+            "--layout: channel: no such channel in the image (got channel=1",
+        ),
+        (
+            "good.exr",
+            "file=csv",
+            "--layout: file: the file is an OpenEXR image",
+        ),
+        (
+            "good.exr",
+            "encoding=text",
+            "--layout: encoding: text in a binary file",
+        ),
+    ];
+    for (name, layout, says) in cases {
+        let (code, stdout, stderr) = audit(&dir.join(name), layout, &[]);
+        assert_eq!(code, Some(2), "{name} {layout}: {stdout}");
+        assert!(
+            stderr.contains(says),
+            "{name} {layout}: {says:?} in {stderr}"
+        );
+        assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+}
+
+/// The catalogue's `lut-audit-cycles` heat map shows the numbers `albedo --against` reports for
+/// the same table: each cell's z is |engine − exact| of `audit.csv`, bit for bit, and the panel
+/// title states the report's max_abs.
+#[test]
+fn the_catalogue_heat_map_shows_what_albedo_against_reports() {
+    let dir = scratch("lut_audit_catalogue");
+    let figure = dir.join("figure");
+    let out = ndfplot(&[
+        "render",
+        "lut-audit-cycles",
+        "-o",
+        figure.to_str().unwrap(),
+        "--format",
+        "csv,svg",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let path = dir.join("ggx_E.csv");
+    std::fs::write(&path, csv_matrix(&cycles())).unwrap();
+    let cells = dir.join("cells");
+    let (code, report, stderr) = audit(&path, "clamp=1e-4", &["-o", cells.to_str().unwrap()]);
+    assert_eq!(code, Some(0), "{stderr}");
+    let audited: Vec<(f64, f64, f64)> = csv_records(cells.join("audit.csv").to_str().unwrap())
+        .iter()
+        .map(|r| {
+            let n = |i: usize| r[i].parse::<f64>().unwrap();
+            (n(0), n(1), n(5).abs())
+        })
+        .collect();
+    let drawn: Vec<(f64, f64, f64)> =
+        csv_records(figure.join("lut-audit-cycles.csv").to_str().unwrap())
+            .iter()
+            .map(|r| {
+                let n = |i: usize| r[i].parse::<f64>().unwrap();
+                (n(3), n(4), n(5))
+            })
+            .collect();
+    assert_eq!(drawn.len(), 1024);
+    assert_eq!(drawn, audited);
+    let max_abs = field(&report, "max_abs");
+    let mantissa = format!("{max_abs:.3e}");
+    let mantissa = mantissa.split('e').next().unwrap();
+    let svg = std::fs::read_to_string(figure.join("lut-audit-cycles.svg")).unwrap();
+    assert!(
+        svg.contains(&format!("max |error| = {mantissa}×10")),
+        "{mantissa}"
+    );
 }

@@ -3,7 +3,7 @@
 //! precomputed tables, and its invariants (bounds, split-sum linearity).
 //!
 //! - `tests/data/albedo_reference.csv`: E(μ = 1) at 40-digit mpmath (`albedo_reference_gen.py`).
-//! - `tests/data/cycles_ggx_E.csv`: Cycles' `table_ggx_E` (32 × 32) and `table_ggx_Eavg` (32),
+//! - `data/published/cycles/ggx_E.csv`: Cycles' `table_ggx_E` (32 × 32) and `table_ggx_Eavg` (32),
 //!   Monte Carlo estimates printed as float32 to 6 decimals.
 
 use crate::common::{number, root};
@@ -192,7 +192,7 @@ fn albedo_reproduces_cycles_tables() {
     // A Monte Carlo table printed to 6 decimals: allow its print rounding (5e-7) plus its noise.
     const CYCLES_TOL: f64 = 2.5e-6;
     let (mut worst_e, mut worst_avg): (f64, f64) = (0.0, 0.0);
-    for record in commented_csv("tests/data/cycles_ggx_E.csv") {
+    for record in commented_csv("data/published/cycles/ggx_E.csv") {
         let r = cycles_coordinate(&record[2]);
         let alpha = f64::from((r as f32) * (r as f32));
         let want = number(&record, 3);

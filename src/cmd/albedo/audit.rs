@@ -12,8 +12,9 @@ use std::sync::Arc;
 
 use super::Surface;
 use crate::error::{Error, Result};
-use crate::model::albedo::{self, Table, albedo_table_at, average_albedo_table_at, dfg_tables};
+use crate::model::albedo::{self, Table};
 use crate::model::curve::Curve;
+use crate::model::engine_table::{EngineGrid, compare};
 use crate::model::math::quad::QuadError;
 use crate::model::metrics::table::{Cell, RELATIVE_FLOOR, TableAudit};
 use crate::output::plot;
@@ -26,7 +27,7 @@ use crate::spec::datafile::{MAX_DATA_FILE_BYTES, read_regular};
 use crate::spec::look::{
     Axes, Canvas, Dash, Face, Mark, PanelKind, Rgb, Scale, Style, Theme, XUnit,
 };
-use crate::spec::lut::{Layout, LutAxis, LutFresnel, LutGrid, LutValue, decode};
+use crate::spec::lut::{DecodeError, Layout, LutAxis, LutFresnel, LutValue, decode};
 
 /// The files `-o DIR` receives (the heat map only for tables with a μ axis).
 const OUTPUTS: [&str; 3] = ["audit.csv", "audit.svg", "audit.png"];
@@ -101,7 +102,14 @@ pub fn read(
     }
     let bytes = read_regular(path, MAX_DATA_FILE_BYTES)
         .map_err(|refused| file_problem(&name, refused.to_string()))?;
-    let decoded = decode(&bytes, &layout).map_err(|e| file_problem(&name, e))?;
+    let decoded = decode(&bytes, &layout, super::MAX_AXIS).map_err(|e| match e {
+        DecodeError::File(message) => file_problem(&name, message),
+        DecodeError::Layout(key, message) => Error::input(Problems {
+            source: "--layout".into(),
+            list: vec![Problem::new(key, format!("{message} in {name}"))],
+        }),
+    })?;
+    let layout = decoded.layout.clone();
     if decoded.values.len() % layout.channels != 0 {
         return Err(file_problem(
             &name,
@@ -185,14 +193,6 @@ pub fn read(
     })
 }
 
-/// The n coordinates of an axis on `grid`, as the engine places them.
-fn axis(grid: LutGrid, n: usize) -> Vec<f64> {
-    match grid {
-        LutGrid::Endpoints => albedo::unit_grid(n),
-        LutGrid::Centers => (0..n).map(|i| (i as f64 + 0.5) / n as f64).collect(),
-    }
-}
-
 /// The audit: the cells in file order with the exact values, and their statistics.
 #[derive(Debug, Clone)]
 pub struct Audit {
@@ -209,18 +209,15 @@ pub struct Audit {
 }
 
 impl Against {
-    /// The coordinates (μ, r) the engine places its grid at (μ empty for the average table).
-    fn coordinates(&self) -> (Vec<f64>, Vec<f64>) {
-        let grid = self.layout.grid;
-        (
-            self.n_mu.map_or_else(Vec::new, |n| axis(grid, n)),
-            axis(grid, self.n_r),
-        )
-    }
-
-    /// The evaluated coordinate: max(c, clamp).
-    fn clamped(&self, values: &[f64]) -> Vec<f64> {
-        values.iter().map(|&c| c.max(self.layout.clamp)).collect()
+    /// The engine's grid: its counts and the layout's order, placement and clamp.
+    pub fn grid(&self) -> EngineGrid {
+        EngineGrid {
+            n_mu: self.n_mu,
+            n_r: self.n_r,
+            rows: self.layout.rows,
+            grid: self.layout.grid,
+            clamp: self.layout.clamp,
+        }
     }
 
     /// Compares the table with the exact one of `surface` (whose map is the layout's) under the
@@ -251,9 +248,8 @@ impl Against {
                 }));
             }
         };
-        let (mu, r) = self.coordinates();
-        let (mu_eval, r_eval) = (self.clamped(&mu), self.clamped(&r));
-        surface.check_at(&r_eval)?;
+        let grid = self.grid();
+        surface.check_at(&grid.evaluated().1)?;
         let tick = |_: usize, _: usize| progress.advance(1);
         let lobe = |alpha: f64| {
             surface
@@ -264,60 +260,23 @@ impl Against {
         let evaluate = fresnel.map(|curve| move |theta: f64| curve.eval(theta));
         let fresnel_fn: albedo::Fresnel =
             evaluate.as_ref().map(|f| f as &(dyn Fn(f64) -> f64 + Sync));
-        let failed = |e: QuadError| {
+        let cells = compare(
+            &self.values,
+            &grid,
+            (table, layout.value),
+            surface.map,
+            lobe,
+            fresnel_fn,
+            Some(&tick),
+        )
+        .map_err(|e: QuadError| {
             Error::Numerics(format!(
                 "albedo --against: {e} (expected a convergent integral)"
             ))
-        };
+        })?;
         let map = surface.map;
-        // Exact values, μ-major (index i * n_r + j), or by r alone for the average table.
-        let exact: Vec<f64> = match table {
-            Table::Average => average_albedo_table_at(&r_eval, map, lobe, fresnel_fn, Some(&tick))
-                .map_err(failed)?,
-            Table::Dfg => {
-                let [dfg1, dfg2] =
-                    dfg_tables(mu_eval, r_eval, map, lobe, Some(&tick)).map_err(failed)?;
-                match layout.value {
-                    LutValue::Dfg1 => dfg1.values,
-                    _ => dfg2.values,
-                }
-            }
-            _ => {
-                albedo_table_at(mu_eval, r_eval, map, lobe, fresnel_fn, Some(&tick))
-                    .map_err(failed)?
-                    .values
-            }
-        };
-        let complement = layout.value == LutValue::OneMinusE;
-        let n_r = self.n_r;
-        let cells: Vec<Cell> = self
-            .values
-            .iter()
-            .enumerate()
-            .map(|(k, &engine)| {
-                let (i, j) = match (self.n_mu, layout.rows) {
-                    (None, _) => (0, k),
-                    (Some(_), LutAxis::Mu) => (k / n_r, k % n_r),
-                    (Some(n_mu), LutAxis::R) => (k % n_mu, k / n_mu),
-                };
-                let value = exact[if self.n_mu.is_some() { i * n_r + j } else { j }];
-                Cell {
-                    mu: mu.get(i).copied().unwrap_or(f64::NAN),
-                    r: r[j],
-                    engine,
-                    exact: if complement { 1.0 - value } else { value },
-                }
-            })
-            .collect();
         let audit = TableAudit::of(&cells);
-        let what = match (table, layout.value) {
-            (Table::Average, LutValue::OneMinusE) => "1 - E_avg",
-            (Table::Average, _) => "E_avg",
-            (_, LutValue::OneMinusE) => "1 - E",
-            (_, LutValue::Dfg1) => "DFG1",
-            (_, LutValue::Dfg2) => "DFG2",
-            _ => "E",
-        };
+        let what = layout.value.symbol(table);
         let exact = format!(
             "{what} of {}, {} G2, {}, {}",
             surface.description(),
@@ -466,7 +425,7 @@ impl Audit {
             };
             n_mu * n_r
         ];
-        let (mu, r) = self.against.coordinates();
+        let (mu, r) = self.against.grid().coordinates();
         for cell in &self.cells {
             let i = mu.iter().position(|&m| m == cell.mu).expect("a grid μ");
             let j = r.iter().position(|&x| x == cell.r).expect("a grid r");

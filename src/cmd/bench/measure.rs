@@ -581,9 +581,9 @@ pub fn lambda_routes(clock: &dyn Clock, settings: &Settings, cases: &[LambdaCase
     rows
 }
 
-/// Cycles' GGX albedo table `table_ggx_E` (`tests/data/cycles_ggx_E.csv`: Monte Carlo, F = 1,
+/// Cycles' GGX albedo table `table_ggx_E` (`data/published/cycles/ggx_E.csv`: Monte Carlo, F = 1,
 /// height-correlated G2, α = r², printed to 6 decimals), rows `table,y,x,value` (μ row y, r column x).
-const CYCLES_GGX_E: &str = include_str!("../../../tests/data/cycles_ggx_E.csv");
+const CYCLES_GGX_E: &str = include_str!("../../../data/published/cycles/ggx_E.csv");
 
 /// Rows and columns of Cycles' `table_ggx_E`.
 pub const CYCLES_TABLE_SIZE: usize = 32;

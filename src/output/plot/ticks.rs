@@ -121,7 +121,8 @@ pub(super) fn linear(lo: f64, hi: f64, room: f64, mantissas: &[f64], suffix: &st
 /// `major` labelled with the fewest decimals that write each exactly (multiples of `step`).
 pub(super) fn labelled(major: Vec<f64>, step: f64, suffix: &str) -> Ticks {
     let d = decimals(&major, step);
-    let huge = major.iter().any(|v| v.abs() >= SCIENTIFIC_FROM);
+    let largest = major.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let huge = largest >= SCIENTIFIC_FROM || (largest > 0.0 && largest < SCIENTIFIC_BELOW);
     // A value within rounding of 0 (a multiple computed as −1e-17) is written 0.
     let labels = major
         .iter()
@@ -141,6 +142,10 @@ pub(super) fn labelled(major: Vec<f64>, step: f64, suffix: &str) -> Ticks {
 /// Linear ticks from this magnitude on are written `m×10ᵏ` (all of an axis's labels, so they
 /// compare at a glance): a plain decimal of 10⁸ has nine digits, of 10³⁰⁸ three hundred.
 const SCIENTIFIC_FROM: f64 = 1e7;
+
+/// Linear ticks all below this magnitude are written `m×10ᵏ` too: a plain decimal of 2×10⁻⁷ has
+/// six zeros to count.
+const SCIENTIFIC_BELOW: f64 = 1e-4;
 
 /// `v` as `m×10ᵏ` with m to at most four significant digits (`1.5×10³⁰⁸`, `10⁸`, `−2×10⁷`, `0`).
 fn scientific_linear(v: f64, suffix: &str) -> String {

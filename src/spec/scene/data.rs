@@ -6,6 +6,9 @@
 //! `{"data": "albedo", "ndf": "ggx", "map": "r2", "g2": "height-correlated", "value": "loss", "mu": 33, "r": 33}`
 //! — the directional albedo E (or 1 − E) with F = 1 over (μ, r) on Cycles' grid, for heat-map and
 //! surface panels;
+//! `{"data": "audit", "table": "cycles-ggx-e"}` — |engine − exact| over (μ, r) of an engine's
+//! table shipped with ndfplot, on the engine's own grid, for heat-map and surface panels (the
+//! comparison is computed by [`crate::pipeline::resolve`]);
 //! `{"data": "table", "x": [...], "y": [...]}` — literal points;
 //! `{"data": "csv", "path": "renderer.csv", "x": "theta", "y": "value", "degrees": false}` — θ and
 //! values of a CSV file next to the spec, to overlay on analytic curves; the file is named here
@@ -20,6 +23,7 @@ use super::sweep;
 use super::{Pending, SceneCurve, SceneData, Spec, read_curve_entry, read_style};
 use crate::model::curve::DiffOp;
 use crate::model::dataset::{AlbedoValue, Coefficient, Dataset, SpectrumQuantity};
+use crate::model::engine_table::PublishedTable;
 use crate::model::fresnel::{EDGE_TINT, REFLECTIVITY};
 use crate::spec::curve::ParamKind;
 use crate::spec::datafile::DataScope;
@@ -35,7 +39,7 @@ pub const MAX_DATA_POINTS: usize = 250_000;
 /// Keys every data entry accepts besides its own.
 pub const COMMON_KEYS: [&str; 6] = ["data", "label", "style", "colour", "color", "mark"];
 /// The kinds of data entry (`"data": <kind>`).
-pub const KINDS: &[&str] = &["spectrum", "gulbrandsen", "albedo", "table", "csv"];
+pub const KINDS: &[&str] = &["spectrum", "gulbrandsen", "albedo", "audit", "table", "csv"];
 /// NDF families an albedo series takes (`"ndf"`): those whose one parameter is the width α, whose
 /// domain holds every α = map(r), r ∈ (0, 1]; the default first.
 pub const ALBEDO_FAMILIES: &[&str] = &["ggx", "trowbridge_reitz", "beckmann"];
@@ -55,6 +59,9 @@ pub enum DataSpec {
     Ready(Dataset),
     /// θ and values of a CSV file, read by resolve into a [`Dataset::Csv`].
     Csv(CsvFile),
+    /// A published engine table, compared with the exact one by resolve into a
+    /// [`Dataset::Audit`].
+    Audit(PublishedTable),
     /// A difference with a sampled side, made a [`Dataset::Difference`] by resolve, which also
     /// writes its label (`<a> <sign> <b>`, or `template` with `{a}` and `{b}` filled in).
     Difference {
@@ -91,18 +98,24 @@ impl DataSpec {
         match self {
             DataSpec::Ready(dataset) => dataset.is_theta(),
             DataSpec::Csv(_) | DataSpec::Difference { .. } => true,
+            DataSpec::Audit(_) => false,
         }
     }
 
     /// Whether the series is z over a rectilinear grid (see [`Dataset::is_map`]).
     pub fn is_map(&self) -> bool {
-        matches!(self, DataSpec::Ready(dataset) if dataset.is_map())
+        match self {
+            DataSpec::Ready(dataset) => dataset.is_map(),
+            DataSpec::Audit(_) => true,
+            DataSpec::Csv(_) | DataSpec::Difference { .. } => false,
+        }
     }
 
     /// Whether the series has a z coordinate (see [`Dataset::has_z`]).
     pub fn has_z(&self) -> bool {
         match self {
             DataSpec::Ready(dataset) => dataset.has_z(),
+            DataSpec::Audit(_) => true,
             DataSpec::Csv(_) | DataSpec::Difference { .. } => false,
         }
     }
@@ -136,6 +149,7 @@ pub fn own_keys(kind: &str) -> &'static [&'static str] {
         "spectrum" => &["quantity", "count"],
         "gulbrandsen" => &["x", "y", "z", "r", "g", "g_remap"],
         "albedo" => &["ndf", "map", "g2", "value", "mu", "r"],
+        "audit" => &["table"],
         "csv" => &["path", "x", "y", "degrees"],
         _ => &["x", "y"],
     }
@@ -158,6 +172,7 @@ pub fn read_entry(reader: &mut Reader, node: &Node, path: &str) -> Option<SceneD
         "spectrum" => read_spectrum(reader, &entry).map(DataSpec::Ready),
         "gulbrandsen" => read_gulbrandsen(reader, &entry).map(DataSpec::Ready),
         "albedo" => read_albedo(reader, &entry).map(DataSpec::Ready),
+        "audit" => read_audit(reader, &entry),
         "csv" => read_csv(reader, &entry).map(DataSpec::Csv),
         _ => read_table(reader, &entry).map(DataSpec::Ready),
     };
@@ -289,6 +304,16 @@ fn read_side(reader: &mut Reader, node: &Node, path: &str) -> Vec<SideSpec> {
             return Vec::new();
         }
         DataSpec::Difference { .. } => unreachable!("read_entry reads no difference"),
+        DataSpec::Audit(table) => {
+            reader.report(
+                crate::problem::join_key(path, "data"),
+                format!(
+                    "not a series of θ (got {{\"data\": \"audit\", \"table\": \"{}\"}}, expected {{\"data\": \"csv\", …}} or {{\"data\": \"table\", …}})",
+                    table.name()
+                ),
+            );
+            return Vec::new();
+        }
     }
     vec![SideSpec::Sampled {
         data: entry.dataset,
@@ -443,6 +468,21 @@ fn read_albedo(reader: &mut Reader, entry: &Object) -> Option<Dataset> {
     })
 }
 
+/// Reads `{"data": "audit", "table": <name>}`: which published engine table (required).
+fn read_audit(reader: &mut Reader, entry: &Object) -> Option<DataSpec> {
+    if entry.get("table").is_none() {
+        reader.report(
+            entry.path_of("table"),
+            format!(
+                "missing the table to audit (expected one of: {})",
+                PublishedTable::NAMES.map(|(n, _)| n).join(", ")
+            ),
+        );
+        return None;
+    }
+    named(reader, entry, "table", &PublishedTable::NAMES).map(DataSpec::Audit)
+}
+
 /// The value of `key` among `names` (JSON name, value), the first when the key is absent.
 fn named<T: Copy>(
     reader: &mut Reader,
@@ -527,6 +567,7 @@ fn default_label(dataset: &DataSpec) -> String {
     let dataset = match dataset {
         DataSpec::Ready(dataset) => dataset,
         DataSpec::Csv(csv) => return csv.path.clone(),
+        DataSpec::Audit(table) => return format!("{} − exact", table.title()),
         // Written by resolve, from its operands' labels.
         DataSpec::Difference { .. } => return String::new(),
     };
@@ -544,7 +585,10 @@ fn default_label(dataset: &DataSpec) -> String {
             }
         }
         Dataset::Albedo { value, .. } => albedo_symbol(*value).into(),
-        Dataset::Table { .. } | Dataset::Csv { .. } | Dataset::Difference { .. } => "data".into(),
+        Dataset::Table { .. }
+        | Dataset::Csv { .. }
+        | Dataset::Difference { .. }
+        | Dataset::Audit { .. } => "data".into(),
     }
 }
 
@@ -561,6 +605,7 @@ pub fn default_labels(dataset: &DataSpec) -> (String, String) {
     let dataset = match dataset {
         DataSpec::Ready(dataset) => dataset,
         DataSpec::Csv(csv) => return (csv.x_column.clone(), csv.y_column.clone()),
+        DataSpec::Audit(_) => return ("μ = cos θ_o".into(), "r".into()),
         DataSpec::Difference { op, a, b, .. } => {
             let symbol = [a, b].iter().find_map(|side| match side.as_ref() {
                 SideSpec::Curve(c) => Some(c.curve.kind().symbol()),
@@ -572,7 +617,7 @@ pub fn default_labels(dataset: &DataSpec) -> (String, String) {
     match dataset {
         Dataset::Spectrum { .. } => ("index k".into(), "singular values".into()),
         Dataset::Gulbrandsen { x, y, .. } => (symbol(*x).into(), symbol(*y).into()),
-        Dataset::Albedo { .. } => ("μ = cos θ_o".into(), "r".into()),
+        Dataset::Albedo { .. } | Dataset::Audit { .. } => ("μ = cos θ_o".into(), "r".into()),
         Dataset::Table { .. } | Dataset::Csv { .. } | Dataset::Difference { .. } => {
             ("x".into(), "y".into())
         }
@@ -584,6 +629,7 @@ pub fn z_label(dataset: &DataSpec) -> String {
     match dataset {
         DataSpec::Ready(Dataset::Gulbrandsen { z: Some(z), .. }) => symbol(*z).into(),
         DataSpec::Ready(Dataset::Albedo { value, .. }) => albedo_symbol(*value).into(),
+        DataSpec::Audit(_) => "|engine − exact|".into(),
         _ => "z".into(),
     }
 }
