@@ -70,7 +70,8 @@ const SLOPE_STEP: f64 = 1e-3;
 const U_TOL: f64 = 4.0 * f64::EPSILON;
 
 /// The starting point of every search: u = 0, that is x = 1 for a log parameter (inside every family's
-/// natural range) and x = 0 for a linear one (SGD's a₂).
+/// natural range; the bound + 1 above an open positive bound, STD's γ = 2.5) and x = 0 for a linear one
+/// (SGD's a₂).
 const U_START: f64 = 0.0;
 
 /// Growth of the steps of the downhill walk that brackets an L2 minimum: the golden ratio φ, the classic
@@ -160,31 +161,41 @@ impl Fit {
 }
 
 /// The search interval of a free parameter: [lo, hi] within its family's stated domain, searched in
-/// u = ln x (`log`) or u = x.
+/// u = ln(x − offset) (`log`) or u = x. The offset is the lower bound of a domain open at a positive
+/// value (STD's γ > 1.5: u = ln(γ − 1.5)), so that every u is inside the domain; 0 otherwise.
 #[derive(Debug, Clone, Copy)]
 struct SearchDomain {
     param: &'static Param,
     lo: f64,
     hi: f64,
     log: bool,
+    offset: f64,
 }
 
 impl SearchDomain {
     /// The domain of parameter `index` of `family`. A log search starts at the smallest normal double
-    /// when the domain reaches down to 0 (Phong's α_p ≥ 0, whose 0 is checked exactly; ABC's a > 0).
+    /// when the domain reaches down to 0 (Phong's α_p ≥ 0, whose 0 is checked exactly; ABC's a > 0),
+    /// and just above an open positive lower bound.
     fn of(family: Family, index: usize) -> SearchDomain {
         let param = &family.params()[index];
-        let log = param.min.value >= 0.0;
-        let lo = if log {
-            param.min.value.max(f64::MIN_POSITIVE)
+        let min = param.min.value;
+        let log = min >= 0.0;
+        let offset = if log && !param.min.inclusive {
+            min
         } else {
-            param.min.value
+            0.0
+        };
+        let lo = match (log, param.min.inclusive) {
+            (false, _) => min,
+            (true, true) => min.max(f64::MIN_POSITIVE),
+            (true, false) => min.next_up().max(f64::MIN_POSITIVE),
         };
         SearchDomain {
             param,
             lo,
             hi: param.max.value,
             log,
+            offset,
         }
     }
 
@@ -195,17 +206,13 @@ impl SearchDomain {
 
     /// The searched u interval.
     fn u_bounds(self) -> (f64, f64) {
-        if self.log {
-            (self.lo.ln(), self.hi.ln())
-        } else {
-            (self.lo, self.hi)
-        }
+        (self.u(self.lo), self.u(self.hi))
     }
 
     /// x of u, clamped into the searched interval.
     fn x(self, u: f64) -> f64 {
         if self.log {
-            u.exp().clamp(self.lo, self.hi)
+            (self.offset + u.exp()).clamp(self.lo, self.hi)
         } else {
             u.clamp(self.lo, self.hi)
         }
@@ -213,7 +220,7 @@ impl SearchDomain {
 
     /// u of x.
     fn u(self, x: f64) -> f64 {
-        if self.log { x.ln() } else { x }
+        if self.log { (x - self.offset).ln() } else { x }
     }
 
     /// The parameter and its domain: `alpha_ts in [1e-150, 1e150]`.

@@ -392,3 +392,30 @@ fn fit_writes_the_first_record_before_the_rest_of_its_input_arrives() {
         assert_eq!(json(line), expected);
     }
 }
+
+/// A family whose shape parameter is bounded away from 0 (STD's γ > 1.5) is searched inside its
+/// domain: with both parameters free, the l2 fit of GGX α = 0.3 is STD α = 0.3, γ = 2, where the
+/// two families coincide (docs/maths.md "Student-t slope distribution").
+#[test]
+fn a_student_t_fit_searches_its_open_domain_and_finds_ggx_at_gamma_2() {
+    let out = ndfplot(&[
+        "fit",
+        "-q",
+        "--target",
+        &ggx(0.3),
+        "--family",
+        "student_t",
+        "--by",
+        "l2",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let fit = json(text(&out.stdout).trim());
+    let (alpha, gamma) = (
+        fit["alpha_std"].as_f64().unwrap(),
+        fit["gamma_std"].as_f64().unwrap(),
+    );
+    assert!(
+        (alpha - 0.3).abs() < 1e-6 && (gamma - 2.0).abs() < 1e-6,
+        "{fit}"
+    );
+}
