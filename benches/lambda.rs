@@ -1,14 +1,13 @@
 //! Smith's Λ per family, as `ndfplot bench`'s section (d) measures it on the reference angles: each
 //! family at its example parameters (`Family::example`, the ones `cargo bench --bench eval` times)
 //! over 90 θo, the midpoints of 1° steps from 0.5° to 89.5°, by its own route (`Ndf::lambda`) and,
-//! for the closed-form families, also by the generic quadrature (`masking::lambda_by_integral`);
-//! and one directional albedo E(μ = 0.5) of GGX α = 0.25 (height-correlated, F = 1). Criterion
-//! reports the time per 90 values (and values per second) and per albedo.
+//! for the closed-form families, also by the generic quadrature (`masking::lambda_by_integral`).
+//! Criterion reports the time per 90 values (and values per second); the albedo, which evaluates
+//! Λ at every node, has its own bench (`cargo bench --bench albedo`).
 //!
 //! Run: `cargo bench --bench lambda`.
 
 use criterion::{BenchmarkId, Criterion, Throughput, black_box, criterion_group, criterion_main};
-use ndfplot::cmd::bench::measure::ggx_surface;
 use ndfplot::model::masking::lambda_by_integral;
 use ndfplot::model::ndf::{Family, Ndf};
 
@@ -49,12 +48,5 @@ fn lambda(c: &mut Criterion) {
     group.finish();
 }
 
-fn albedo(c: &mut Criterion) {
-    let surface = ggx_surface(0.25);
-    c.bench_function("albedo/ggx_0.25_mu_0.5", |b| {
-        b.iter(|| surface.albedo(black_box(0.5), None).expect("converges"))
-    });
-}
-
-criterion_group!(benches, lambda, albedo);
+criterion_group!(benches, lambda);
 criterion_main!(benches);

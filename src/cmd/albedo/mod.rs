@@ -18,7 +18,7 @@ use crate::model::albedo::{
     self, NoLobe, RoughnessMap, Table, average_albedo_table, average_fresnel, dfg_tables,
     kulla_conty_fresnel, kulla_conty_lobe, split_sum_tables, turquin_factor, unit_grid,
 };
-use crate::model::albedo::{AVERAGE_E_TOL, AVERAGE_TOL};
+use crate::model::albedo::{AVERAGE_E_TOL, AVERAGE_TOL, SMOOTHED_CELLS};
 use crate::model::curve::{Curve, Kind};
 use crate::model::masking::G2Model;
 use crate::model::math::quad::QuadError;
@@ -518,13 +518,13 @@ impl Request {
         };
         let accuracy = match table {
             Table::SplitSum => format!(
-                "each nested integral to {ALBEDO_TABULATED_TOL:e} absolute (the basis is tabulated, linear between 1000 nodes in cos(theta_d))"
+                "within {ALBEDO_TOL:e} of the exact integrals (the basis, linear between 1000 nodes in cos(theta_d), through a smooth surrogate with its integral over every cell; at mu = 1 split at the nodes; lobes narrower than {SMOOTHED_CELLS} cells in cos(theta_d): the interpolant, adaptive to {ALBEDO_TABULATED_TOL:e} per level, within ~5e-8)"
             ),
             Table::Average => format!(
                 "within {AVERAGE_TOL:e} of the exact integral (fixed Gauss-Legendre rules in mu on panels graded from the lobe width, each E to {AVERAGE_E_TOL:e}; F_avg adaptive to {ALBEDO_QUAD_REL_TOL:e})"
             ),
             _ => format!(
-                "within {ALBEDO_TOL:e} of the exact integrals for smooth F (nested adaptive Gauss-Kronrod, each level to {ALBEDO_QUAD_REL_TOL:e})"
+                "within {ALBEDO_TOL:e} of the exact integrals for smooth F (fixed Gauss-Legendre rules graded at the horizon, nested adaptive Gauss-Kronrod to {ALBEDO_QUAD_REL_TOL:e} per level where two levels disagree)"
             ),
         };
         let mut metadata = vec![

@@ -114,7 +114,10 @@ impl Quantity<Curve> {
             Quantity::Albedo { model, fresnel } => {
                 let surface = albedo::surface_of(ndf.clone(), *model);
                 let mu_o = theta_o.cos().clamp(0.0, 1.0);
-                let result = match fresnel {
+                let result = match fresnel.as_deref() {
+                    Some(Curve::Fresnel(model)) if let Some(table) = albedo::tabulated(model) => {
+                        surface.albedo_tabulated(mu_o, &table)
+                    }
                     Some(f) => surface.albedo(mu_o, Some(&|t| f.eval(t))),
                     None => surface.albedo(mu_o, None),
                 };

@@ -86,9 +86,10 @@ pub const SMITH_FURNACE_TOL: f64 = 1e-9;
 /// series, recurrences and continued fractions each lose a few ulps, ~1e-15 in practice.
 pub const REL_TOL_SPECIAL: f64 = 1e-14;
 
-/// Relative accuracy asked of each nested adaptive integral of the directional albedo
-/// (`albedo`): the Gauss–Kronrod error estimate overstates the error of smooth integrands by orders
-/// of magnitude, so 1e-12 per level lands E, E_avg and the split-sum tables well inside
+/// The tolerance of the directional albedo (`albedo`), in units of E: its fixed rules' value is
+/// taken where it is within 30 times this of the level before, and each nested adaptive integral of
+/// the fallback is held to it. The Gauss–Kronrod error estimate overstates the error of smooth
+/// integrands by orders of magnitude, so 1e-12 lands E, E_avg and the split-sum tables well inside
 /// [`ALBEDO_TOL`], while staying above the ~1e-15 round-off floor that would stall the bisection.
 pub const ALBEDO_QUAD_REL_TOL: f64 = 1e-12;
 
@@ -98,9 +99,10 @@ pub const ALBEDO_QUAD_REL_TOL: f64 = 1e-12;
 pub const ALBEDO_TOL: f64 = 1e-10;
 
 /// Absolute accuracy (in units of E) asked of each nested albedo integral whose Fresnel weight is
-/// a tabulated basis function or reconstruction: linear between 1000 nodes in cos θd, its kinks
+/// a tabulated basis function or reconstruction taken as it is, linear between 1000 nodes in
+/// cos θd (for lobes too narrow for its smooth surrogate, `albedo::SMOOTHED_CELLS`): its kinks
 /// make Gauss–Kronrod converge only algebraically, and a tighter target costs orders of magnitude
-/// more subdivisions for no gain over the tabulation's own error.
+/// more subdivisions.
 pub const ALBEDO_TABULATED_TOL: f64 = 1e-8;
 
 #[cfg(test)]
