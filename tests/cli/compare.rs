@@ -704,3 +704,20 @@ fn l2_projected_of_a_wide_lobe_matches_a_dense_simpson_sum() {
     ])));
     assert!((l2 / 0.153_246_840_215_575 - 1.0).abs() < 1e-9, "{l2}");
 }
+
+/// A problem inside a pair's side is named by the side's key and the path inside it, once
+/// (`a.alpha_tr`), with the pair's line as its source.
+#[test]
+fn a_pairs_problem_names_its_side_and_key_once() {
+    let out = ndfplot_stdin(
+        &["compare", "--pairs", "-", "--format", "csv"],
+        "{\"a\":{\"ndf\":\"ggx\",\"alpha_tr\":-1},\"b\":{\"ndf\":\"ggx\",\"alpha_tr\":0.3}}\n",
+    );
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("error: stdin:1: a.alpha_tr: out of domain"),
+        "{err}"
+    );
+    assert!(!err.contains("a.a."), "{err}");
+}

@@ -497,6 +497,17 @@ fn an_output_folder_that_cannot_be_made_names_its_option() {
         err.starts_with(&format!("error: -o: {}: ", inside.display())),
         "{err}"
     );
+    // A link to nothing is named as such, not "File exists".
+    let dangling = dir.join("dangling");
+    let _ = std::fs::remove_file(&dangling);
+    std::os::unix::fs::symlink(dir.join("nowhere"), &dangling).unwrap();
+    let out = ndfplot(&["render", "tr-vs-phong", "-o", dangling.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = text(&out.stderr);
+    assert!(
+        err.contains("not a folder (got a symbolic link to nothing"),
+        "{err}"
+    );
 }
 
 /// `-v` says one line per figure before the closing line; `--color always` paints the labels of

@@ -143,6 +143,22 @@ fn gulbrandsen_round_trip() {
     }
 }
 
+/// Reflectivities far below the round trip's grid, where n − 1 ≈ −2r/(1 + r) would lose its digits if
+/// formed after the conversion: the exact Fresnel of Gulbrandsen's index still reflects r at normal
+/// incidence to a few ulps of r (relative), for every edge tint.
+#[test]
+fn gulbrandsen_reflectivity_holds_to_ulps_down_to_tiny_r() {
+    for r in [1e-12, 1e-9, 1e-6, 1e-4] {
+        for g in [0.0, 0.3, 0.7, 1.0] {
+            let f0 = Fresnel::Exact(Ior::gulbrandsen(r, g, false).unwrap()).eval(0.0);
+            assert!(
+                (f0 / r - 1.0).abs() <= 8.0 * f64::EPSILON,
+                "(r, g) = ({r}, {g}): F(0) = {f0}"
+            );
+        }
+    }
+}
+
 #[test]
 fn remapped_edge_tint_is_one_minus_the_cube() {
     for g in (0..=20).map(|j| j as f64 / 20.0) {
