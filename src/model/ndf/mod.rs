@@ -375,6 +375,45 @@ mod tests {
         }
     }
 
+    /// `eval_many` gives `eval`'s bits for every family, at its example and at each end of each
+    /// parameter's domain, from θ = 0 through tiny angles to the double nearest π/2.
+    #[test]
+    fn blocks_equal_point_by_point_evaluation() {
+        let half_pi = std::f64::consts::FRAC_PI_2;
+        let thetas: Vec<f64> = (0..=1000)
+            .map(|i| half_pi * f64::from(i) / 1000.0)
+            .chain((1..=300).map(|e| 10f64.powi(-e)))
+            .chain((1..=16).map(|e| half_pi - 10f64.powi(-e)))
+            .chain([half_pi, f64::from_bits(half_pi.to_bits() - 1)])
+            .collect();
+        for family in Family::ALL {
+            let example = family.example();
+            let mut sets = vec![example.to_vec()];
+            for (i, param) in family.params().iter().enumerate() {
+                for end in [param.min.value, param.max.value] {
+                    let mut set = example.to_vec();
+                    set[i] = end;
+                    sets.push(set);
+                }
+            }
+            for set in sets {
+                let Ok(ndf) = family.build(&set) else {
+                    continue;
+                };
+                let mut block = vec![0.0; thetas.len()];
+                ndf.eval_many(&thetas, &mut block);
+                for (&theta, &value) in thetas.iter().zip(&block) {
+                    assert_eq!(
+                        value.to_bits(),
+                        ndf.eval(theta).to_bits(),
+                        "{} {set:?} at θ = {theta:e}",
+                        family.name()
+                    );
+                }
+            }
+        }
+    }
+
     /// The table of curves in docs/reference.md states each family's domain as the registry does.
     #[test]
     fn reference_rows_state_the_registry_domains() {
