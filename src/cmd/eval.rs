@@ -301,18 +301,28 @@ pub fn write_table(
     Ok(())
 }
 
-/// The CSV rows (no header) of the angles `range` of `thetas`.
+/// The CSV rows (no header) of the angles `range` of `thetas`: each curve evaluated over the range in
+/// one block ([`Curve::eval_many`], the bits of `Curve::eval`), then the rows written in order.
 fn rows(curves: &[Curve], thetas: &ThetaList, range: std::ops::Range<usize>) -> Result<Vec<u8>> {
-    let mut table = Table::rows(range.len() * 24 * (curves.len() + 1));
-    for i in range {
-        let Angle { given, radians } = thetas.get(i);
-        table.number(given);
-        for curve in curves {
-            let value = curve.eval(radians);
+    let angles: Vec<Angle> = range.map(|i| thetas.get(i)).collect();
+    let radians: Vec<f64> = angles.iter().map(|a| a.radians).collect();
+    let mut values = vec![0.0; radians.len() * curves.len()];
+    for (curve, column) in curves
+        .iter()
+        .zip(values.chunks_exact_mut(radians.len().max(1)))
+    {
+        curve.eval_many(&radians, column);
+    }
+    let mut table = Table::rows(angles.len() * 24 * (curves.len() + 1));
+    for (row, angle) in angles.iter().enumerate() {
+        table.number(angle.given);
+        for (c, curve) in curves.iter().enumerate() {
+            let value = values[c * angles.len() + row];
             if !value.is_finite() {
                 return Err(Error::Numerics(format!(
-                    "{} gave a non-finite value at theta = {radians:?}",
-                    curve.canonical_json()
+                    "{} gave a non-finite value at theta = {:?}",
+                    curve.canonical_json(),
+                    angle.radians
                 )));
             }
             table.number(value);

@@ -102,8 +102,8 @@ pub struct Row {
     /// `albedo_table`).
     pub seconds: f64,
     /// Drawing: the polyline's largest deviation from the curve in pixels. Normalization: relative
-    /// error against the reference. Throughput: largest relative difference from the one-thread
-    /// values (0: every thread count computes the same `eval`). Λ: largest floored relative error
+    /// error against the reference. Throughput: largest relative difference from `eval` point by
+    /// point (0: the block path on every thread count computes the same bits). Λ: largest floored relative error
     /// against the references. Albedo table: largest absolute difference from Cycles' table.
     pub error: f64,
 }
@@ -431,24 +431,19 @@ pub fn throughput_cases() -> Vec<Ndf> {
         .collect()
 }
 
-/// D(θ_i) at θ_i = iΔθ into `out[i - first]`: the `eval` every output uses, point by point.
-fn eval_into(ndf: &Ndf, first: usize, dtheta: f64, out: &mut [f64]) {
-    for (i, o) in (first..).zip(out.iter_mut()) {
-        *o = ndf.eval(i as f64 * dtheta);
-    }
-}
-
-/// Section (c): D values written per second on a uniform grid over [0, π/2] by `eval`, on one
-/// thread and on all rayon threads (tasks of [`TASK_POINTS`]).
+/// Section (c): D values written per second on a uniform grid over [0, π/2] (θ_i = iΔθ, computed
+/// before timing, as the numpy peer's) by `eval_many`, the block path of uniform samplings and
+/// `ndfplot eval`, on one thread and on all rayon threads (tasks of [`TASK_POINTS`]); the error
+/// column compares every value with `eval`'s, point by point (0: the same bits).
 pub fn throughput(clock: &dyn Clock, settings: &Settings, cases: &[Ndf]) -> Vec<Row> {
     let n = settings.throughput_points.max(2);
     let dtheta = FRAC_PI_2 / (n - 1) as f64;
+    let thetas: Vec<f64> = (0..n).map(|i| i as f64 * dtheta).collect();
     let threads = rayon::current_num_threads();
     let mut out = vec![0.0; n];
     let mut rows = Vec::new();
     for ndf in cases {
-        let mut reference = vec![0.0; n];
-        eval_into(ndf, 0, dtheta, &mut reference);
+        let reference: Vec<f64> = thetas.iter().map(|&theta| ndf.eval(theta)).collect();
         let name = ndf.family().name().to_string();
         let mut row =
             |method: &str, setting: usize, out: &mut Vec<f64>, run: &dyn Fn(&mut [f64])| {
@@ -469,12 +464,12 @@ pub fn throughput(clock: &dyn Clock, settings: &Settings, cases: &[Ndf]) -> Vec<
                 });
             };
         row("eval_1_thread", 1, &mut out, &|out| {
-            eval_into(ndf, 0, dtheta, out)
+            ndf.eval_many(&thetas, out)
         });
         row("eval_all_threads", threads, &mut out, &|out| {
             out.par_chunks_mut(TASK_POINTS)
-                .enumerate()
-                .for_each(|(task, chunk)| eval_into(ndf, task * TASK_POINTS, dtheta, chunk));
+                .zip(thetas.par_chunks(TASK_POINTS))
+                .for_each(|(chunk, thetas)| ndf.eval_many(thetas, chunk));
         });
     }
     rows

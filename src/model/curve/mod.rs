@@ -99,6 +99,20 @@ impl Curve {
         }
     }
 
+    /// `out[i]` = the curve at `thetas[i]` for every i (equal lengths): the bits of [`Curve::eval`], an
+    /// NDF's a block at a time in vector lanes ([`Ndf::eval_many`]).
+    pub fn eval_many(&self, thetas: &[f64], out: &mut [f64]) {
+        match self {
+            Curve::Ndf(d) => d.eval_many(thetas, out),
+            _ => {
+                assert_eq!(thetas.len(), out.len(), "one output per angle");
+                for (o, &theta) in out.iter_mut().zip(thetas) {
+                    *o = self.eval(theta);
+                }
+            }
+        }
+    }
+
     /// Whether a renderer's emulation ([`Curve::Emulated`]) computes any part of the curve: its values
     /// then carry that engine's float32 or half-float rounding.
     pub fn emulated(&self) -> bool {

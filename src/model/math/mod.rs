@@ -1,5 +1,7 @@
 //! Special functions, quadrature, root finding and SVDs: pure f64 code, no I/O.
 //!
+//! - [`elementary`]: branch-free exp, log1p and sin/cos within 1 ulp, the same bits one at a time or in
+//!   vector lanes, and the loop that runs them in the widest instruction set the processor has.
 //! - [`special`]: exprel, the φ_k functions of exponential integrators and the scaled upper incomplete
 //!   gamma function e^x Γ(s, x) for every real s, which no available crate computes for s ≤ 0.
 //! - [`quad`]: adaptive Gauss–Kronrod (7, 15) quadrature that resolves narrow lobes.
@@ -10,6 +12,7 @@
 //!   leading right singular vectors of large matrices by subspace iteration.
 //! - [`tolerance`]: every accuracy target of the crate's numerical tests, with its reason.
 
+pub mod elementary;
 pub mod gauss_legendre;
 pub mod quad;
 pub mod roots;

@@ -20,6 +20,7 @@
 
 use super::Distribution;
 use crate::model::domain::{Bound, DomainError, Param};
+use crate::model::math::elementary::{self, Lanewise, at_one, map_lanes};
 use crate::model::math::special::{exprel, phi};
 use std::f64::consts::PI;
 
@@ -98,6 +99,20 @@ impl Abc {
     }
 }
 
+impl Lanewise for Abc {
+    /// D(θ) = (1 + a₁ (1 − cos θ))^{−a₂}/N for θ ∈ [0, π/2], normalized over projected area, in the stable
+    /// form of the module header.
+    #[inline(always)]
+    fn at(&self, theta: f64) -> f64 {
+        let sin_half_theta = elementary::sin_cos(0.5 * theta).0;
+        let one_minus_cos_theta = 2.0 * (sin_half_theta * sin_half_theta);
+        elementary::exp(
+            self.ln_peak
+                - self.alpha_abc2 * elementary::ln_1p(self.alpha_abc1 * one_minus_cos_theta),
+        )
+    }
+}
+
 impl Distribution for Abc {
     const NAME: &'static str = "abc";
     const TITLE: &'static str = "ABC";
@@ -117,11 +132,16 @@ impl Distribution for Abc {
         super::ZeroLimit::Uniform
     }
 
-    /// D(θ) = (1 + a₁ (1 − cos θ))^{−a₂}/N for θ ∈ [0, π/2], normalized over projected area.
+
+    /// D(θ) by [`Lanewise::at`] ([`at_one`]), the one kernel of [`eval_many`](Distribution::eval_many).
     #[inline]
     fn eval(&self, theta: f64) -> f64 {
-        let one_minus_cos_theta = 2.0 * (0.5 * theta).sin().powi(2);
-        (self.ln_peak - self.alpha_abc2 * (self.alpha_abc1 * one_minus_cos_theta).ln_1p()).exp()
+        at_one(self, theta)
+    }
+
+    /// D at every θ, a block at a time in vector lanes ([`map_lanes`]).
+    fn eval_many(&self, thetas: &[f64], out: &mut [f64]) {
+        map_lanes(self, thetas, out)
     }
 
     /// Λ(θo) by docs/maths.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.

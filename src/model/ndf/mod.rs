@@ -4,13 +4,16 @@
 //!
 //! Every NDF is normalized over projected area: 2π ∫₀^{π/2} D(θ) sin θ cos θ dθ = 1.
 //! Constructors validate their parameters against the domains their family states ([`Param`]) and
-//! compute normalization constants once; `eval` is pure f64 code with no allocation, the one
-//! evaluation path of every output. Adding a family: one file implementing [`Distribution`], one
+//! compute normalization constants once; `eval` (one θ) and `eval_many` (a block of θ, in vector lanes
+//! where the family's D is branch-free, [`crate::model::math::elementary`]) are pure f64 code with no
+//! allocation that give the same bits: the one evaluation path of every output. Adding a family: one file implementing [`Distribution`], one
 //! registry line below, one reference-data file, one row in docs/reference.md's table of curves.
 
 pub mod lambda_integral;
 
 use crate::model::domain::{DomainError, Param};
+#[cfg(doc)]
+use crate::model::math::elementary::{Lanewise, map_lanes};
 use std::fmt;
 
 /// An NDF family, as one file implements it: its names, its parameters with their domains, its
@@ -44,6 +47,16 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
 
     /// D(θ) for θ ∈ [0, π/2], normalized over projected area.
     fn eval(&self, theta: f64) -> f64;
+
+    /// `out[i]` = D(`thetas[i]`) for every i (equal lengths): the bits of [`eval`](Self::eval) at each θ. A
+    /// family whose D is branch-free ([`Lanewise`]) computes a block at a time in vector lanes
+    /// ([`map_lanes`]); the others point by point.
+    fn eval_many(&self, thetas: &[f64], out: &mut [f64]) {
+        assert_eq!(thetas.len(), out.len(), "one output per angle");
+        for (o, &theta) in out.iter_mut().zip(thetas) {
+            *o = self.eval(theta);
+        }
+    }
 
     /// Smith's Λ(θo) for θo ∈ [0, π/2] (docs/maths.md "Masking–shadowing and albedo"), with G1 = 1/(1 + Λ): Λ(0) = 0,
     /// non-decreasing in θo, finite and ≥ 0 (or +∞ where θo reaches π/2 if the family's Λ diverges there),
@@ -232,6 +245,14 @@ macro_rules! families {
                 }
             }
 
+            /// D at every θ of `thetas` into `out` (see [`Distribution::eval_many`]): the bits of
+            /// [`Ndf::eval`], a block at a time.
+            pub fn eval_many(&self, thetas: &[f64], out: &mut [f64]) {
+                match self {
+                    $(Ndf::$variant(d) => d.eval_many(thetas, out),)+
+                }
+            }
+
             /// Smith's Λ(θo) for θo ∈ [0, π/2] (see [`Distribution::lambda`]).
             #[inline]
             pub fn lambda(&self, theta_o: f64) -> f64 {
@@ -351,6 +372,45 @@ mod tests {
                 family.build(family.example()).unwrap().params(),
                 family.example()
             );
+        }
+    }
+
+    /// `eval_many` gives `eval`'s bits for every family, at its example and at each end of each
+    /// parameter's domain, from θ = 0 through tiny angles to the double nearest π/2.
+    #[test]
+    fn blocks_equal_point_by_point_evaluation() {
+        let half_pi = std::f64::consts::FRAC_PI_2;
+        let thetas: Vec<f64> = (0..=1000)
+            .map(|i| half_pi * f64::from(i) / 1000.0)
+            .chain((1..=300).map(|e| 10f64.powi(-e)))
+            .chain((1..=16).map(|e| half_pi - 10f64.powi(-e)))
+            .chain([half_pi, f64::from_bits(half_pi.to_bits() - 1)])
+            .collect();
+        for family in Family::ALL {
+            let example = family.example();
+            let mut sets = vec![example.to_vec()];
+            for (i, param) in family.params().iter().enumerate() {
+                for end in [param.min.value, param.max.value] {
+                    let mut set = example.to_vec();
+                    set[i] = end;
+                    sets.push(set);
+                }
+            }
+            for set in sets {
+                let Ok(ndf) = family.build(&set) else {
+                    continue;
+                };
+                let mut block = vec![0.0; thetas.len()];
+                ndf.eval_many(&thetas, &mut block);
+                for (&theta, &value) in thetas.iter().zip(&block) {
+                    assert_eq!(
+                        value.to_bits(),
+                        ndf.eval(theta).to_bits(),
+                        "{} {set:?} at θ = {theta:e}",
+                        family.name()
+                    );
+                }
+            }
         }
     }
 

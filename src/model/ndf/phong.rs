@@ -31,6 +31,7 @@
 
 use super::Distribution;
 use crate::model::domain::{Bound, DomainError, Param};
+use crate::model::math::elementary::{self, Lanewise, at_one, map_lanes};
 use crate::model::math::gauss_legendre;
 use crate::model::math::special::gamma_half_ratio;
 use std::f64::consts::{FRAC_PI_4, PI};
@@ -85,6 +86,19 @@ impl Phong {
     }
 }
 
+impl Lanewise for Phong {
+    /// D(θ) = (α_p + 2)/(2π) · cos^{α_p} θ for θ ∈ [0, π/2], normalized over projected area, in the stable
+    /// form of the module header with tan θ = sin θ/cos θ.
+    #[inline(always)]
+    fn at(&self, theta: f64) -> f64 {
+        let tan_theta = elementary::tan(theta);
+        let tan2_theta = tan_theta * tan_theta;
+        elementary::exp(
+            self.ln_inv_normalization - 0.5 * self.alpha_p * elementary::ln_1p(tan2_theta),
+        )
+    }
+}
+
 impl Distribution for Phong {
     const NAME: &'static str = "phong";
     const TITLE: &'static str = "Phong";
@@ -104,11 +118,16 @@ impl Distribution for Phong {
         super::ZeroLimit::Uniform
     }
 
-    /// D(θ) = (α_p + 2)/(2π) · cos^{α_p} θ for θ ∈ [0, π/2], normalized over projected area.
+
+    /// D(θ) by [`Lanewise::at`] ([`at_one`]), the one kernel of [`eval_many`](Distribution::eval_many).
     #[inline]
     fn eval(&self, theta: f64) -> f64 {
-        let tan2_theta = theta.tan().powi(2);
-        (self.ln_inv_normalization - 0.5 * self.alpha_p * tan2_theta.ln_1p()).exp()
+        at_one(self, theta)
+    }
+
+    /// D at every θ, a block at a time in vector lanes ([`map_lanes`]).
+    fn eval_many(&self, thetas: &[f64], out: &mut [f64]) {
+        map_lanes(self, thetas, out)
     }
 
     /// Λ(θo) by the Student-t identity (module header).

@@ -20,6 +20,7 @@
 
 use super::Distribution;
 use crate::model::domain::{Bound, DomainError, Param};
+use crate::model::math::elementary::{self, Lanewise, at_one, map_lanes};
 use crate::model::math::special::upper_gamma_scaled;
 use std::f64::consts::PI;
 
@@ -86,6 +87,23 @@ impl Sgd {
     }
 }
 
+impl Lanewise for Sgd {
+    /// D(θ) = p₂₂(tan²θ)/(π cos⁴θ) for θ ∈ [0, π/2], normalized over projected area, in the log form of the
+    /// module header.
+    #[inline(always)]
+    fn at(&self, theta: f64) -> f64 {
+        let tan_theta = elementary::tan(theta);
+        let tan2_theta = tan_theta * tan_theta;
+        let slope = tan_theta / self.alpha_sgd1;
+        elementary::exp(
+            self.ln_peak
+                - tan2_theta / self.alpha_sgd1
+                - self.alpha_sgd2 * elementary::ln_1p(slope * slope)
+                + 2.0 * elementary::ln_1p(tan2_theta),
+        )
+    }
+}
+
 impl Distribution for Sgd {
     const NAME: &'static str = "sgd";
     const TITLE: &'static str = "SGD";
@@ -100,15 +118,16 @@ impl Distribution for Sgd {
         Sgd::new(params[0], params[1])
     }
 
-    /// D(θ) = p₂₂(tan²θ)/(π cos⁴θ) for θ ∈ [0, π/2], normalized over projected area.
+
+    /// D(θ) by [`Lanewise::at`] ([`at_one`]), the one kernel of [`eval_many`](Distribution::eval_many).
     #[inline]
     fn eval(&self, theta: f64) -> f64 {
-        let tan_theta = theta.tan();
-        let tan2_theta = tan_theta * tan_theta;
-        let x_over_a1_squared = (tan_theta / self.alpha_sgd1).powi(2);
-        (self.ln_peak - tan2_theta / self.alpha_sgd1 - self.alpha_sgd2 * x_over_a1_squared.ln_1p()
-            + 2.0 * tan2_theta.ln_1p())
-        .exp()
+        at_one(self, theta)
+    }
+
+    /// D at every θ, a block at a time in vector lanes ([`map_lanes`]).
+    fn eval_many(&self, thetas: &[f64], out: &mut [f64]) {
+        map_lanes(self, thetas, out)
     }
 
     /// Λ(θo) by docs/maths.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.

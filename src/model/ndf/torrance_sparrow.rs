@@ -19,6 +19,7 @@
 
 use super::Distribution;
 use crate::model::domain::{Bound, DomainError, Param};
+use crate::model::math::elementary::{self, Lanewise, at_one, map_lanes};
 use errorfunctions::{ComplexErrorFunctions, RealErrorFunctions};
 use num_complex::Complex;
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -68,6 +69,15 @@ impl TorranceSparrow {
     }
 }
 
+impl Lanewise for TorranceSparrow {
+    /// D(θ) = exp(−(θ/α_ts)²)/N(α_ts) for θ ∈ [0, π/2], normalized over projected area, in one exponential.
+    #[inline(always)]
+    fn at(&self, theta: f64) -> f64 {
+        let ratio = theta / self.alpha_ts;
+        elementary::exp(self.ln_peak - ratio * ratio)
+    }
+}
+
 impl Distribution for TorranceSparrow {
     const NAME: &'static str = "torrance_sparrow";
     const TITLE: &'static str = "Torrance–Sparrow";
@@ -81,10 +91,16 @@ impl Distribution for TorranceSparrow {
         TorranceSparrow::new(params[0])
     }
 
-    /// D(θ) = exp(−(θ/α_ts)²)/N(α_ts) for θ ∈ [0, π/2], normalized over projected area.
+
+    /// D(θ) by [`Lanewise::at`] ([`at_one`]), the one kernel of [`eval_many`](Distribution::eval_many).
     #[inline]
     fn eval(&self, theta: f64) -> f64 {
-        (self.ln_peak - (theta / self.alpha_ts).powi(2)).exp()
+        at_one(self, theta)
+    }
+
+    /// D at every θ, a block at a time in vector lanes ([`map_lanes`]).
+    fn eval_many(&self, thetas: &[f64], out: &mut [f64]) {
+        map_lanes(self, thetas, out)
     }
 
     /// Λ(θo) by docs/maths.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.

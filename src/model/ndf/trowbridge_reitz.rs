@@ -17,6 +17,7 @@
 
 use super::Distribution;
 use crate::model::domain::{Bound, DomainError, Param};
+use crate::model::math::elementary::{self, Lanewise, at_one, map_lanes};
 use std::f64::consts::FRAC_1_PI;
 use std::f64::consts::PI;
 
@@ -59,6 +60,17 @@ impl TrowbridgeReitz {
     }
 }
 
+impl Lanewise for TrowbridgeReitz {
+    /// D(θ) = α²/(π (sin²θ + α² cos²θ)²) for θ ∈ [0, π/2], normalized over projected area, as (α/q)²/π.
+    #[inline(always)]
+    fn at(&self, theta: f64) -> f64 {
+        let (sin_theta, cos_theta) = elementary::sin_cos(theta);
+        let q = sin_theta * sin_theta + self.alpha2 * cos_theta * cos_theta;
+        let ratio = self.alpha_tr / q;
+        ratio * ratio * FRAC_1_PI
+    }
+}
+
 impl Distribution for TrowbridgeReitz {
     const NAME: &'static str = "trowbridge_reitz";
     const TITLE: &'static str = "Trowbridge–Reitz";
@@ -73,12 +85,16 @@ impl Distribution for TrowbridgeReitz {
         TrowbridgeReitz::new(params[0])
     }
 
-    /// D(θ) = α²/(π (sin²θ + α² cos²θ)²) for θ ∈ [0, π/2], normalized over projected area.
+
+    /// D(θ) by [`Lanewise::at`] ([`at_one`]), the one kernel of [`eval_many`](Distribution::eval_many).
     #[inline]
     fn eval(&self, theta: f64) -> f64 {
-        let (sin_theta, cos_theta) = theta.sin_cos();
-        let q = sin_theta * sin_theta + self.alpha2 * cos_theta * cos_theta;
-        (self.alpha_tr / q).powi(2) * FRAC_1_PI
+        at_one(self, theta)
+    }
+
+    /// D at every θ, a block at a time in vector lanes ([`map_lanes`]).
+    fn eval_many(&self, thetas: &[f64], out: &mut [f64]) {
+        map_lanes(self, thetas, out)
     }
 
     /// Λ(θo) = x/(2(√(1 + x) + 1)), x = (α_tr tan θo)² (module header).
