@@ -5,7 +5,8 @@
 //!
 //! Also holds the published tables shipped with the binary ([`PublishedTable`]): Cycles'
 //! `table_ggx_E`, embedded from `data/published/cycles/ggx_E.csv` (Apache-2.0, Blender
-//! Foundation; provenance in the file's header).
+//! Foundation; provenance in the file's header), and Adobe openpbr-bsdf's ideal-metal energy
+//! table, embedded from `data/published/openpbr/` (Apache-2.0, Adobe; provenance in its `LICENSE`).
 //!
 //! How a file spells a table (its layout keys, its bytes) is [`crate::spec::lut`]'s; the integrals
 //! are [`crate::model::albedo`]'s, the statistics [`crate::model::metrics::table`]'s.
@@ -179,17 +180,28 @@ named! {
         /// height-correlated G2 and F = 1, rows μ = max(y/31, 1e-4), columns r = max(x/31, 1e-4),
         /// α = r², float32 printed to 6 decimals.
         CyclesGgxE = "cycles-ggx-e",
+        /// Adobe openpbr-bsdf's `openpbr_ideal_metal_energy_complement_data.h`: 32 × 32 Monte
+        /// Carlo 1 − E of GGX with separable G2 (`impl/openpbr_lobe_utils.h` l.136-139) and F = 1,
+        /// unorm16, one line per r = √α = i/31 running over μ = j/31; its μ = 0 column holds E at
+        /// μ ≈ 1e-3 (at α = 1 the exact separable 1 − E is 0.386294 in the limit μ → 0⁺, 0.386907
+        /// at μ = 1e-3, the table 0.386893), so it is audited at max(μ, 1e-3), max(r, 1e-3).
+        OpenpbrMetal1MinusE = "openpbr-metal-1-e",
     }
 }
 
 /// `data/published/cycles/ggx_E.csv`: `table,y,x,value` rows after `#` comment lines.
 const CYCLES_CSV: &str = include_str!("../../data/published/cycles/ggx_E.csv");
 
+/// Adobe's table as published: 1024 comma-separated unorm16 integers between two `//` lines.
+const OPENPBR_METAL: &str =
+    include_str!("../../data/published/openpbr/openpbr_ideal_metal_energy_complement_data.h");
+
 impl PublishedTable {
     /// The engine's name and the table's, for titles (`Cycles' table_ggx_E`).
     pub fn title(self) -> &'static str {
         match self {
             PublishedTable::CyclesGgxE => "Cycles' table_ggx_E",
+            PublishedTable::OpenpbrMetal1MinusE => "Adobe openpbr-bsdf's ideal-metal 1 − E",
         }
     }
 
@@ -203,6 +215,13 @@ impl PublishedTable {
                 grid: LutGrid::Endpoints,
                 clamp: 1e-4,
             },
+            PublishedTable::OpenpbrMetal1MinusE => EngineGrid {
+                n_mu: Some(32),
+                n_r: 32,
+                rows: LutAxis::R,
+                grid: LutGrid::Endpoints,
+                clamp: 1e-3,
+            },
         }
     }
 
@@ -214,6 +233,12 @@ impl PublishedTable {
                 LutValue::E,
                 RoughnessMap::Squared,
                 G2Model::HeightCorrelated,
+            ),
+            PublishedTable::OpenpbrMetal1MinusE => (
+                Table::E,
+                LutValue::OneMinusE,
+                RoughnessMap::Squared,
+                G2Model::Separable,
             ),
         }
     }
@@ -238,10 +263,11 @@ impl PublishedTable {
         )
     }
 
-    /// Its numbers in file order, read from the embedded CSV on first use (a row that cannot be
-    /// read is a broken build, caught by the tests).
+    /// Its numbers in file order, read from the embedded file on first use (a number that cannot
+    /// be read is a broken build, caught by the tests).
     pub fn values(self) -> &'static [f64] {
         static CYCLES: OnceLock<Vec<f64>> = OnceLock::new();
+        static OPENPBR: OnceLock<Vec<f64>> = OnceLock::new();
         match self {
             PublishedTable::CyclesGgxE => CYCLES.get_or_init(|| {
                 let mut values = vec![f64::NAN; 32 * 32];
@@ -254,6 +280,19 @@ impl PublishedTable {
                     values[index(y) * 32 + index(x)] = value.parse().expect("a number");
                 }
                 assert!(values.iter().all(|v| v.is_finite()), "every cell given");
+                values
+            }),
+            PublishedTable::OpenpbrMetal1MinusE => OPENPBR.get_or_init(|| {
+                let values: Vec<f64> = OPENPBR_METAL
+                    .lines()
+                    .filter(|l| !l.trim_start().starts_with("//"))
+                    .flat_map(|l| l.split(','))
+                    .filter(|k| !k.trim().is_empty())
+                    .map(|k| {
+                        f64::from(k.trim().parse::<u16>().expect("a unorm16 integer")) / 65535.0
+                    })
+                    .collect();
+                assert_eq!(values.len(), 32 * 32, "every cell given");
                 values
             }),
         }
@@ -271,6 +310,12 @@ mod tests {
         assert_eq!(values[0], 1.0);
         assert_eq!(values[1], 0.980405);
         assert_eq!(values.len(), 1024);
+        // openpbr_ideal_metal_energy_complement_data.h: its first number 0 (r = 0, μ = 0), the
+        // 33rd 7765 (r = 1/31, μ = 0), its last 45425 (r = 1, μ = 1).
+        let values = PublishedTable::OpenpbrMetal1MinusE.values();
+        assert_eq!(values[0], 0.0);
+        assert_eq!(values[32], 7765.0 / 65535.0);
+        assert_eq!(values[1023], 45425.0 / 65535.0);
     }
 
     #[test]

@@ -40,6 +40,7 @@ impl Curve {
                     Model::Ndf(lobe.family())
                 }
                 Target::Schlick(_) => Model::Fresnel(FresnelModel::Schlick),
+                Target::Dielectric(_) => Model::Fresnel(FresnelModel::Exact),
             },
         }
     }
@@ -62,9 +63,12 @@ impl Curve {
                 let target = emulation.target();
                 let param = match (target, target.width()) {
                     (Target::Schlick(f0), _) => (fresnel::F0.name, f0),
+                    (Target::Dielectric(eta), _) => {
+                        return ior_params(&Ior::EtaKappa { eta, kappa: 0.0 });
+                    }
                     (_, Some(Width::Roughness(r))) => (renderer::ROUGHNESS.name, r),
                     (_, Some(Width::Alpha(alpha))) => (self.model_family_param(), alpha),
-                    (_, None) => unreachable!("only Schlick has no width"),
+                    (_, None) => unreachable!("only the Fresnel targets have no width"),
                 };
                 vec![(param.0, ParamValue::Number(param.1))]
             }
@@ -131,7 +135,7 @@ fn emulated_quantity(emulation: &Emulation) -> Option<Quantity<Curve>> {
             model: emulation.engine().g2_model(),
             theta_i: theta_i.map_or(ThetaI::Same, ThetaI::Fixed),
         }),
-        Target::D(..) | Target::Schlick(_) => None,
+        Target::D(..) | Target::Schlick(_) | Target::Dielectric(_) => None,
     }
 }
 
@@ -625,19 +629,27 @@ impl Model {
     }
 
     /// Whether a renderer can compute curves of this model (`"engine"`): the GGX and Beckmann
-    /// lobes, and Schlick's Fresnel.
+    /// lobes, Schlick's Fresnel and the exact (dielectric) Fresnel.
     pub fn emulable(self) -> bool {
         match self {
             Model::Ndf(family) => Lobe::of(family).is_some(),
-            Model::Fresnel(model) => model == FresnelModel::Schlick,
+            Model::Fresnel(model) => matches!(model, FresnelModel::Schlick | FresnelModel::Exact),
         }
     }
 
     /// Whether the parameters `params` (one of [`Model::signatures`]) take `"engine"`: an
-    /// emulable NDF's width (α or roughness) or Schlick's F₀.
+    /// emulable NDF's width (α or roughness), Schlick's F₀, or the exact Fresnel's η (and κ,
+    /// which must be 0).
     pub fn takes_engine(self, params: &[ParamSpec]) -> bool {
-        self.emulable()
-            && matches!(params, [p] if p.name != fresnel::ETA.name && p.name != fresnel::REFLECTIVITY.name)
+        match self {
+            Model::Fresnel(FresnelModel::Exact) => {
+                params.first().is_some_and(|p| p.name == fresnel::ETA.name)
+            }
+            _ => {
+                self.emulable()
+                    && matches!(params, [p] if p.name != fresnel::ETA.name && p.name != fresnel::REFLECTIVITY.name)
+            }
+        }
     }
 
     /// Whether the parameters `params` need `"engine"`: the roughness, which only an engine maps to α.
@@ -697,7 +709,7 @@ impl Keyed<'_> {
     /// at the path of the offending key.
     pub fn build(&self, values: &[ParamValue], path: &str) -> Result<CurveSpec, Problem> {
         if let Some(engine) = self.engine {
-            return self.emulated(engine, values[0].number(), path);
+            return self.emulated(engine, values[0].number(), values, path);
         }
         let curve = self
             .model
@@ -731,9 +743,16 @@ impl Keyed<'_> {
 }
 
 impl Keyed<'_> {
-    /// The curve `engine` computes for this entry's model, quantity and one parameter `value` (α,
-    /// roughness or F₀); a refusal is reported at the key it concerns.
-    fn emulated(&self, engine: Engine, value: f64, path: &str) -> Result<CurveSpec, Problem> {
+    /// The curve `engine` computes for this entry's model, quantity and first parameter `value`
+    /// (α, roughness, F₀ or η, whose κ in `values` must be 0); a refusal is reported at the key it
+    /// concerns.
+    fn emulated(
+        &self,
+        engine: Engine,
+        value: f64,
+        values: &[ParamValue],
+        path: &str,
+    ) -> Result<CurveSpec, Problem> {
         let key = self.params[0].name;
         let width = if key == renderer::ROUGHNESS.name {
             Width::Roughness(value)
@@ -741,6 +760,18 @@ impl Keyed<'_> {
             Width::Alpha(value)
         };
         let target = match (self.model, &self.quantity) {
+            (Model::Fresnel(FresnelModel::Exact), _) => {
+                let kappa = values[1].number();
+                if kappa != 0.0 {
+                    return Err(Problem::new(
+                        join_key(path, fresnel::KAPPA.name),
+                        format!(
+                            "an engine's exact Fresnel is a dielectric's (got kappa {kappa:?} with engine \"{engine}\", expected 0 or no kappa)"
+                        ),
+                    ));
+                }
+                Target::Dielectric(value)
+            }
             (Model::Fresnel(_), _) => Target::Schlick(value),
             (Model::Ndf(family), quantity) => {
                 let lobe = Lobe::of(family).expect("read_keys() checked the family");
@@ -825,14 +856,15 @@ fn read_engine(
         let what = match model {
             Model::Ndf(family) => format!("ndf \"{}\"", family.name()),
             Model::Fresnel(m) if model.emulable() => {
-                format!("fresnel \"{}\" given by its index", m.name())
+                let keys: Vec<&str> = params.iter().map(|p| p.name).collect();
+                format!("fresnel \"{}\" given by {}", m.name(), keys.join(", "))
             }
             Model::Fresnel(m) => format!("fresnel \"{}\"", m.name()),
         };
         problems.push(Problem::new(
             &at,
             format!(
-                "an engine computes GGX and Beckmann lobes (from their α or a roughness) and Schlick's Fresnel from f0 (got {what})"
+                "an engine computes GGX and Beckmann lobes (from their α or a roughness), Schlick's Fresnel from f0 and the exact Fresnel from eta (got {what})"
             ),
         ));
     }

@@ -542,7 +542,9 @@ fn decode_csv(text: &str, encoding: Encoding) -> Result<(Vec<f64>, Option<Shape>
 }
 
 /// The numbers of the one array of a C/C++ source: the text between its first `{` and last `}`,
-/// comments removed, split at commas, braces and white space.
+/// comments removed, split at commas, braces and white space; a source with no brace at all is an
+/// initializer list `#include`d between an array's braces elsewhere (Adobe's openpbr-bsdf tables),
+/// all of whose text is the numbers.
 fn decode_header(text: &str, encoding: Encoding) -> Result<Vec<f64>, String> {
     let mut code = String::with_capacity(text.len());
     let mut rest = text;
@@ -558,13 +560,16 @@ fn decode_header(text: &str, encoding: Encoding) -> Result<Vec<f64>, String> {
             rest = &rest[c.len_utf8()..];
         }
     }
-    let (Some(open), Some(close)) = (code.find('{'), code.rfind('}')) else {
-        return Err("no array (expected one { … } holding the numbers)".into());
+    let numbers = match (code.find('{'), code.rfind('}')) {
+        (None, None) => &code[..],
+        (Some(open), Some(close)) if open < close => &code[open + 1..close],
+        _ => {
+            return Err(
+                "no array (expected one { … } holding the numbers, or numbers and no brace)".into(),
+            );
+        }
     };
-    if close < open {
-        return Err("no array (expected one { … } holding the numbers)".into());
-    }
-    code[open + 1..close]
+    numbers
         .split(|c: char| c == ',' || c == '{' || c == '}' || c.is_whitespace())
         .filter(|t| !t.is_empty())
         .map(|t| text_number(t, encoding))
@@ -594,6 +599,14 @@ mod tests {
             decode(header.as_bytes(), &layout, 1024).unwrap().values,
             [0.5, 1.0, 0.0, 0.2]
         );
+        // An initializer list meant to be #included between braces; one brace alone is no array.
+        let included = "// clang-format off\n0, 65535, 0x8000\n    // clang-format on\n";
+        let layout = parse_layout("encoding=unorm16", "t.h", G2Model::Separable).unwrap();
+        assert_eq!(
+            decode(included.as_bytes(), &layout, 1024).unwrap().values,
+            [0.0, 1.0, 32768.0 / 65535.0]
+        );
+        assert!(decode(b"0, 1 }", &layout, 1024).is_err());
         let layout = parse_layout("encoding=unorm8", "t.csv", G2Model::Separable).unwrap();
         let decoded = decode(b"# c\n0,255\n51 102\n", &layout, 1024).unwrap();
         assert_eq!(decoded.values, [0.0, 1.0, 0.2, 0.4]);

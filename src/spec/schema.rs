@@ -655,7 +655,7 @@ fn data_key(kind: &str, key: &str) -> Value {
         }),
         ("audit", "table") => described(
             strings(&names(&crate::model::engine_table::PublishedTable::NAMES)),
-            "the published engine table: cycles-ggx-e, Cycles' table_ggx_E (32 × 32 E of GGX, height-correlated G2, F = 1, α = r²)",
+            "the published engine table: cycles-ggx-e, Cycles' table_ggx_E (32 × 32 E of GGX, height-correlated G2, F = 1, α = r²); openpbr-metal-1-e, Adobe openpbr-bsdf's ideal-metal table (32 × 32 1 − E of GGX, separable G2, F = 1, α = r²)",
         ),
         ("table", "x") => described(reference("plain_sweep"), "the points' x: a list or a sweep"),
         ("table", "y") => described(reference("plain_sweep"), "the points' y, as many as x"),

@@ -1,10 +1,11 @@
 //! Renderer emulation through the command line (docs/contracts.md "Renderer emulation"): each measured
-//! fact about what an engine computes, reproduced by `eval` or `compare`, against values stated by the
-//! engines' sources and recomputed in closed form here; the roughness conventions; the refusals with
-//! their messages; canonical JSON.
+//! fact about what an engine computes, reproduced by `eval`, `compare` or `albedo`, against values
+//! stated by the engines' sources and recomputed in closed form here; the roughness conventions; the
+//! refusals with their messages; canonical JSON.
 //!
-//! Provenance of the reference numbers: the engines' source lines cited at each test, and closed forms
-//! (α²/π, 453.5²/π, 1/(π α²)) evaluated here in f64.
+//! Provenance of the reference numbers: the engines' source lines cited at each test, closed forms
+//! (α²/π, 453.5²/π, 1/(π α²), Walter's rational, Hammon's V) evaluated here in f64, and the Fresnel
+//! average integrated here by Simpson's rule.
 
 use crate::common::{csv_records, ndfplot, number, render_into, scratch, text};
 use std::f64::consts::PI;
@@ -543,4 +544,243 @@ fn emulated_ndfs_hold_their_mass_but_where_their_arithmetic_bites() {
             "{curve}: {mass}, expected {expected} ± {tolerance}"
         );
     }
+}
+
+/// The exact Fresnel reflectance of unpolarized light from outside a dielectric of relative index
+/// η > 1 (Snell's law and the s and p amplitudes), at cos θ = c.
+fn dielectric_fresnel(eta: f64, c: f64) -> f64 {
+    let cos_t = (1.0 - (1.0 - c * c) / (eta * eta)).sqrt();
+    let rs = (c - eta * cos_t) / (c + eta * cos_t);
+    let rp = (eta * c - cos_t) / (eta * c + cos_t);
+    0.5 * (rs * rs + rp * rp)
+}
+
+/// F_avg = 2 ∫₀¹ F(μ) μ dμ of [`dielectric_fresnel`] by Simpson's rule on 20 000 panels (its
+/// values move by less than 1e-12 from 10 000).
+fn dielectric_average(eta: f64) -> f64 {
+    let n = 20_000;
+    let h = 1.0 / n as f64;
+    let f = |mu: f64| 2.0 * dielectric_fresnel(eta, mu) * mu;
+    let inner: f64 = (1..n)
+        .map(|i| f(i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 })
+        .sum();
+    (f(0.0) + inner + f(1.0)) * h / 3.0
+}
+
+/// The F_avg column of `albedo --table average --fresnel CURVE` (the same at every r).
+fn f_avg(curve: &str) -> f64 {
+    let out = ndfplot(&[
+        "albedo",
+        "-q",
+        "--table",
+        "average",
+        "--size",
+        "2",
+        "--no-comments",
+        "--fresnel",
+        curve,
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    let header: Vec<&str> = stdout.lines().next().unwrap().split(',').collect();
+    let column = header.iter().position(|&c| c == "F_avg").unwrap();
+    stdout
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .nth(column)
+        .unwrap()
+        .parse()
+        .unwrap()
+}
+
+/// Cycles never integrates its Fresnel: `fresnel_dielectric_Fss` (blender/cycles @97dbe6f,
+/// `src/kernel/closure/bsdf_util.h` l.126-137) fits F_avg = 2 ∫₀¹ F μ dμ after Kulla and Conty 2017,
+/// (η − 1)/(4.08567 + 1.00071 η) for η ≥ 1. Against the exact average it is 7.6 % low at η = 1.33
+/// (0.060924 against 0.065931), 2.5 % at 1.5 (0.089498, 0.091778), 17 % (0.0065) at 1.17, 38 % at
+/// 1.01 and 41 % as η → 1, and 5.84e-3 high at 2.5. A dielectric Fresnel curve with
+/// `"engine": "cycles"` is Cycles' `fresnel_dielectric_cos` (l.111-124) in float32, and the average
+/// table's F_avg for it is the fit.
+#[test]
+fn cycles_fits_the_dielectric_fresnel_average_below_the_exact_one() {
+    let fit = |eta: f64| {
+        let eta = eta as f32;
+        f64::from((eta - 1.0) / (4.08567 + 1.00071 * eta))
+    };
+    // (η, the fit, the exact average, both to the digits given, the relative difference).
+    for (eta, fitted, exact, digits, relative) in [
+        (1.33, 0.060924, 0.065931, 1e-6, -0.076),
+        (1.5, 0.089498, 0.091778, 1e-6, -0.025),
+        (1.17, 0.032341, 0.038864, 1e-6, -0.168),
+        (2.5, 0.227706, 0.221867, 1e-6, 0.0263),
+        (1.01, 0.001962, 0.003146, 1e-6, -0.376),
+        (1.0001, 1.96632e-5, 3.32917e-5, 1e-10, -0.409),
+    ] {
+        let cycles = f_avg(&format!(
+            r#"{{"fresnel":"exact","eta":{eta},"engine":"cycles"}}"#
+        ));
+        let integral = f_avg(&format!(r#"{{"fresnel":"exact","eta":{eta}}}"#));
+        assert_eq!(cycles, fit(eta), "η = {eta}");
+        close(integral, dielectric_average(eta), 1e-9);
+        assert!((cycles - fitted).abs() <= digits, "η = {eta}: {cycles}");
+        assert!((integral - exact).abs() <= digits, "η = {eta}: {integral}");
+        assert!(
+            (cycles / integral - 1.0 - relative).abs() <= 1e-3,
+            "η = {eta}"
+        );
+    }
+    close(
+        f_avg(r#"{"fresnel":"exact","eta":2.5,"engine":"cycles"}"#) - 0.221867,
+        5.84e-3,
+        2e-3,
+    );
+    // Its F(θ) is the exact one in float32: F(0) = ((η − 1)/(η + 1))², 1 at grazing.
+    let degrees = [0.0, 30.0, 60.0, 80.0, 89.0];
+    let cycles = eval_deg(
+        r#"{"fresnel":"exact","eta":1.5,"engine":"cycles"}"#,
+        &degrees,
+    );
+    for (f, theta) in cycles.iter().zip(degrees) {
+        close(*f, dielectric_fresnel(1.5, theta.to_radians().cos()), 1e-5);
+    }
+    assert_eq!(
+        eval_deg(
+            r#"{"fresnel":"exact","eta":1.5,"engine":"cycles"}"#,
+            &[90.0]
+        ),
+        [1.0]
+    );
+    refused(
+        &ndfplot(&[
+            "eval",
+            "--curve",
+            r#"{"fresnel":"exact","eta":0.2,"kappa":3,"engine":"cycles"}"#,
+            "--theta",
+            "0",
+        ]),
+        "--curve: kappa: an engine's exact Fresnel is a dielectric's",
+    );
+    refused(
+        &ndfplot(&[
+            "eval",
+            "--curve",
+            r#"{"fresnel":"exact","eta":1.5,"engine":"unreal"}"#,
+            "--theta",
+            "0",
+        ]),
+        "unreal has no dielectric F",
+    );
+}
+
+/// three.js `V_GGX_SmithCorrelated` (`lights_physical_pars_fragment.glsl.js`) divides 0.5 by
+/// max(gv + gl, EPSILON = 1e-6) (`common.glsl.js`). At α = 1, θo = θi, gv + gl = 2 cos θ, so below
+/// cos θ = 5e-7 V is 0.5/1e-6 and G2 = 4 cos²θ V = 2e6 cos²θ, where the exact height-correlated
+/// G2 is cos θ: a fifth of it at cos θ = 1e-7, and equal at 1e-6.
+#[test]
+fn threejs_floors_the_visibility_denominator_at_1e_6() {
+    let curve = r#"{"ndf":"ggx","alpha_tr":1,"quantity":"g2","engine":"threejs"}"#;
+    let exact = r#"{"ndf":"ggx","alpha_tr":1,"quantity":"g2"}"#;
+    let degrees: Vec<f64> = [1e-7_f64, 1e-6]
+        .iter()
+        .map(|c| c.acos().to_degrees())
+        .collect();
+    let threejs = eval_deg(curve, &degrees);
+    let exact = eval_deg(exact, &degrees);
+    close(exact[0], 1e-7, 1e-6);
+    close(threejs[0], 2e6 * 1e-14, 1e-5);
+    close(threejs[1], exact[1], 1e-5);
+}
+
+/// Mitsuba 3 `smith_g1` (`include/mitsuba/render/microfacet.h` l.341-361 @b45b0a9): Beckmann's G1
+/// is Walter et al. 2007's rational (3.535 a + 2.181 a²)/(1 + 2.276 a + 2.577 a²), a = 1/(α tan θ),
+/// and 1 from a = 1.6; the exact Smith G1 is 2/(1 + erf(a) + e^{−a²}/(a√π)).
+#[test]
+fn mitsuba_takes_beckmann_g1_from_walters_rational() {
+    let curve = r#"{"ndf":"beckmann","alpha_b":0.3,"quantity":"g1","engine":"mitsuba3"}"#;
+    let exact = r#"{"ndf":"beckmann","alpha_b":0.3,"quantity":"g1"}"#;
+    let degrees = [50.0, 75.0, 80.0, 85.0];
+    let rational = |theta: f64| {
+        let a = 1.0 / (0.3 * theta.to_radians().tan());
+        if a >= 1.6 {
+            1.0
+        } else {
+            (3.535 * a + 2.181 * a * a) / (1.0 + 2.276 * a + 2.577 * a * a)
+        }
+    };
+    let mitsuba = eval_deg(curve, &degrees);
+    let smith = eval_deg(exact, &degrees);
+    for ((m, s), theta) in mitsuba.iter().zip(&smith).zip(degrees) {
+        close(*m, rational(theta), 1e-5);
+        // The rational is within 0.35 % of the exact G1 (Walter et al.), not equal to it.
+        assert!((m / s - 1.0).abs() <= 4e-3, "{theta}: {m} {s}");
+    }
+    assert_eq!(mitsuba[0], 1.0);
+    assert!((mitsuba[2] / smith[2] - 1.0).abs() > 1e-4);
+}
+
+/// Unreal's `Vis_SmithJointApprox` (Hammon 2017): V = 0.5/(NoL (NoV (1 − a) + a) + NoV (NoL (1 − a)
+/// + a)), a = α; at α = 0.5, θo = θi = 70° it gives G2 = 4 cos²θ V = 0.5097, 13.4 % below the exact
+/// height-correlated G2 (0.5885).
+#[test]
+fn unreal_uses_hammons_joint_smith_approximation() {
+    let c = 70_f64.to_radians().cos();
+    let v = 0.5 / (2.0 * c * (c * 0.5 + 0.5));
+    let unreal = eval_deg(
+        r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2","engine":"unreal"}"#,
+        &[70.0],
+    )[0];
+    close(unreal, 4.0 * c * c * v, F32_TOL);
+    let exact = eval_deg(r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2"}"#, &[70.0])[0];
+    let lambda = ((1.0 + 0.25 * 70_f64.to_radians().tan().powi(2)).sqrt() - 1.0) / 2.0;
+    close(exact, 1.0 / (1.0 + 2.0 * lambda), 1e-12);
+    assert!((unreal / exact - 0.866).abs() < 1e-3, "{unreal} {exact}");
+}
+
+/// Cycles `bsdf_microfacet.h` (@97dbe6f): D clamps cos² to 1 (l.645-655) — a no-op for a float
+/// cos θ ≤ 1, so D(0) is α²/(π α⁴); Λ from max(1/cos² − 1, 0) (l.617-620), so G1(0) is exactly 1,
+/// and Beckmann's Λ is 0 below α² tan²θ = 0.39 (a ≥ 1.6, l.605-608); G2 is height-correlated,
+/// 1/(1 + Λ(θo) + Λ(θi)) (l.772), not the separable product.
+#[test]
+fn cycles_shades_with_height_correlated_g2_and_clamped_cosines() {
+    let at = |curve: &str, theta_deg: f64| eval_deg(curve, &[theta_deg])[0];
+    close(
+        at(r#"{"ndf":"ggx","alpha_tr":0.3,"engine":"cycles"}"#, 0.0),
+        1.0 / (PI * 0.09),
+        F32_TOL,
+    );
+    assert_eq!(
+        at(
+            r#"{"ndf":"ggx","alpha_tr":0.3,"quantity":"g1","engine":"cycles"}"#,
+            0.0
+        ),
+        1.0
+    );
+    assert_eq!(
+        at(
+            r#"{"ndf":"beckmann","alpha_b":0.3,"quantity":"g1","engine":"cycles"}"#,
+            60.0
+        ),
+        1.0
+    );
+    let cycles = at(
+        r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2","theta_i":1.2,"engine":"cycles"}"#,
+        60.0,
+    );
+    let correlated = at(
+        r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2","theta_i":1.2}"#,
+        60.0,
+    );
+    let separable = at(
+        r#"{"ndf":"ggx","alpha_tr":0.5,"quantity":"g2","g2":"separable","theta_i":1.2}"#,
+        60.0,
+    );
+    let lambda = |theta: f64| ((1.0 + 0.25 * theta.tan().powi(2)).sqrt() - 1.0) / 2.0;
+    close(
+        correlated,
+        1.0 / (1.0 + lambda(60_f64.to_radians()) + lambda(1.2)),
+        1e-12,
+    );
+    close(cycles, correlated, 1e-5);
+    assert!(separable / correlated < 0.97, "{separable} {correlated}");
 }

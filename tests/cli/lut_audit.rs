@@ -443,50 +443,192 @@ fn bad_images_and_contradicting_layouts_exit_2_naming_them() {
     }
 }
 
-/// The catalogue's `lut-audit-cycles` heat map shows the numbers `albedo --against` reports for
-/// the same table: each cell's z is |engine − exact| of `audit.csv`, bit for bit, and the panel
-/// title states the report's max_abs.
+/// Adobe openpbr-bsdf's ideal-metal table as shipped (data/published/openpbr/, Apache-2.0, Adobe):
+/// the header itself, `#include`d text without braces.
+const OPENPBR: &str = "data/published/openpbr/openpbr_ideal_metal_energy_complement_data.h";
+
+/// Adobe's layout: one line per r = √α = i/31 over μ = j/31, unorm16 of 1 − E, separable G2
+/// (`impl/openpbr_lobe_utils.h` l.136-139, `impl/openpbr_microfacet_multiple_scattering_data.h`
+/// l.52-58 at adobe/openpbr-bsdf a29da96).
+const OPENPBR_LAYOUT: &str = "rows=r,cols=mu,value=1-e,encoding=unorm16,g2=separable";
+
+/// Adobe's 32 × 32 numbers k/65535, [r index][μ index], read here from the header's text.
+fn openpbr() -> Vec<Vec<f64>> {
+    let text = std::fs::read_to_string(crate::common::root().join(OPENPBR)).unwrap();
+    let numbers: Vec<f64> = text
+        .lines()
+        .filter(|l| !l.trim().starts_with("//"))
+        .flat_map(|l| l.split(','))
+        .map(|k| k.trim().parse::<u16>().unwrap() as f64 / 65535.0)
+        .collect();
+    assert_eq!(numbers.len(), 1024);
+    numbers.chunks(32).map(<[f64]>::to_vec).collect()
+}
+
+/// `audit.csv`'s cells as (μ, r, engine, exact, error).
+fn audit_cells(dir: &Path) -> Vec<[f64; 5]> {
+    csv_records(dir.join("audit.csv").to_str().unwrap())
+        .iter()
+        .map(|r| {
+            let n = |i: usize| r[i].parse::<f64>().unwrap();
+            [n(0), n(1), n(3), n(4), n(5)]
+        })
+        .collect()
+}
+
+/// Adobe's table against the exact separable 1 − E. References: at α = 1 the GGX D is 1/π and
+/// G1(μ) = 2μ/(1 + μ), so E(μ) = ∫ D G1(μ) G1(μi)/(4μ) dωi = G1(μ)/(4πμ) · 2π ∫₀¹ G1(t) dt
+/// = 2(1 − ln 2)/(1 + μ): 1 − E(1) = ln 2, 1 − E(0⁺) = 2 ln 2 − 1; the small-α cells are float64 quadratures of the
+/// exact separable E done apart from ndfplot (α = (5/31)², μ = 1: 7.04e-4; μ = 20/31:
+/// 1.228e-3; α = (8/31)², μ = 1: 4.928e-3).
 #[test]
-fn the_catalogue_heat_map_shows_what_albedo_against_reports() {
+fn adobe_openpbr_metal_table_is_separable_1_minus_e_low_at_small_alpha() {
+    let dir = scratch("lut_audit_openpbr");
+    let path = crate::common::root().join(OPENPBR);
+    let table = openpbr();
+    let out = dir.join("clamped");
+    let (code, report, stderr) = audit(
+        &path,
+        &format!("{OPENPBR_LAYOUT},clamp=1e-3"),
+        &["-o", out.to_str().unwrap()],
+    );
+    assert_eq!(code, Some(0), "{stderr}{report}");
+    assert!(report.contains("cells: 32 x 32 (32 mu x 32 r)"), "{report}");
+    assert!(!report.contains("note:"), "{report}");
+    let cells = audit_cells(&out);
+    let ln2 = std::f64::consts::LN_2;
+    // File order: one line per r; the α = 1 line against 1 − 2(1 − ln 2)/(1 + μ), μ = 0 taken at
+    // the clamp 1e-3, within two unorm16 steps (Monte Carlo noise).
+    for (j, cell) in cells[31 * 32..].iter().enumerate() {
+        let mu = (j as f64 / 31.0).max(1e-3);
+        let exact = 1.0 - 2.0 * (1.0 - ln2) / (1.0 + mu);
+        assert_eq!(cell[2], table[31][j]);
+        assert!((cell[3] - exact).abs() <= 1e-9, "{cell:?} {exact}");
+        assert!((cell[2] - exact).abs() <= 2.0 / 65535.0, "{cell:?} {exact}");
+    }
+    // (α = 1, μ = 1): the table's 45425/65535 = 0.693141 against ln 2 = 0.693147.
+    assert_eq!(table[31][31], 45425.0 / 65535.0);
+    assert!((cells[1023][3] - ln2).abs() <= 1e-12);
+    // Its μ = 0 column holds E at μ ≈ 1e-3, not the limit μ → 0⁺: solving the table's
+    // 1 − E = 0.386893 for μ gives 9.8e-4 (the limit would be 2 ln 2 − 1 = 0.386294).
+    let mu = 2.0 * (1.0 - ln2) / (1.0 - table[31][0]) - 1.0;
+    assert!((0.0009..0.0011).contains(&mu), "{mu}");
+    // α ≥ 0.27 (r ≥ 17/31), μ > 0: within 1.8e-5 (1.2 unorm16 steps), 5e-6 root mean square.
+    let rough: Vec<f64> = cells
+        .iter()
+        .filter(|c| c[1] * c[1] >= 0.27 && c[0] > 0.0)
+        .map(|c| c[4])
+        .collect();
+    assert_eq!(rough.len(), 15 * 31);
+    let rms = (rough.iter().map(|e| e * e).sum::<f64>() / rough.len() as f64).sqrt();
+    assert!(rough.iter().all(|e| e.abs() <= 1.8e-5), "{rough:?}");
+    assert!(rms <= 6e-6, "{rms}");
+    // Small α: Monte Carlo values far below the exact ones, up to 96 % (all of it at α = (5/31)²,
+    // μ = 1, where the table holds 0); the worst absolute error 1.45e-3 is still small.
+    let at = |i: usize, j: usize| cells[i * 32 + j];
+    for (i, j, engine, exact) in [
+        (5, 31, 0.0, 7.04e-4),
+        (5, 20, 3.20e-4, 1.228e-3),
+        (8, 31, 0.004211, 0.004928),
+    ] {
+        let cell = at(i, j);
+        assert!((cell[2] - engine).abs() <= 1e-6, "{cell:?}");
+        assert!((cell[3] - exact).abs() <= 1e-6, "{cell:?} {exact}");
+    }
+    assert!(
+        (0.0014..0.0015).contains(&field(&report, "max_abs")),
+        "{report}"
+    );
+    assert!(
+        report.contains("max_abs: 1.449e-3 at mu = 0.967742, r = 0.193548"),
+        "{report}"
+    );
+    // Without the clamp the μ = 0 column is compared with the limit μ → 0⁺, and the report says
+    // the engine may have tabulated it elsewhere.
+    let (_, report, _) = audit(&path, OPENPBR_LAYOUT, &[]);
+    assert!(
+        report.contains("max_abs: 5.462e-2 at mu = 0.000000"),
+        "{report}"
+    );
+    assert!(
+        report.contains("note: the worst cell is at mu = 0"),
+        "{report}"
+    );
+    // Height-correlated G2 at grazing is another function: with Cycles' clamp 1e-4 the α = 1,
+    // μ = 0 cell differs by 0.386 = 0.386893 (Adobe) − 0.000921 (Cycles' table_ggx_E there,
+    // 1 − 0.999079).
+    let (_, report, _) = audit(
+        &path,
+        "rows=r,cols=mu,value=1-e,encoding=unorm16,g2=height-correlated,clamp=1e-4",
+        &[],
+    );
+    let cycles_loss = 1.0 - cycles()[0][31];
+    let worst = field(&report, "max_abs");
+    assert!(
+        report.contains("at mu = 0.000000, r = 1.000000"),
+        "{report}"
+    );
+    assert!(
+        (worst - (table[31][0] - cycles_loss)).abs() <= 1e-4,
+        "{report}"
+    );
+}
+
+/// The catalogue's `lut-audit-cycles` and `lut-audit-openpbr` heat maps show the numbers
+/// `albedo --against` reports for the same tables: each cell's z is |engine − exact| of
+/// `audit.csv`, bit for bit, and the panel title states the report's max_abs.
+#[test]
+fn the_catalogue_heat_maps_show_what_albedo_against_reports() {
     let dir = scratch("lut_audit_catalogue");
     let figure = dir.join("figure");
     let out = ndfplot(&[
         "render",
         "lut-audit-cycles",
+        "lut-audit-openpbr",
         "-o",
         figure.to_str().unwrap(),
         "--format",
         "csv,svg",
     ]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
-    let path = dir.join("ggx_E.csv");
-    std::fs::write(&path, csv_matrix(&cycles())).unwrap();
-    let cells = dir.join("cells");
-    let (code, report, stderr) = audit(&path, "clamp=1e-4", &["-o", cells.to_str().unwrap()]);
-    assert_eq!(code, Some(0), "{stderr}");
-    let audited: Vec<(f64, f64, f64)> = csv_records(cells.join("audit.csv").to_str().unwrap())
-        .iter()
-        .map(|r| {
-            let n = |i: usize| r[i].parse::<f64>().unwrap();
-            (n(0), n(1), n(5).abs())
-        })
-        .collect();
-    let drawn: Vec<(f64, f64, f64)> =
-        csv_records(figure.join("lut-audit-cycles.csv").to_str().unwrap())
+    let cycles_path = dir.join("ggx_E.csv");
+    std::fs::write(&cycles_path, csv_matrix(&cycles())).unwrap();
+    let openpbr_layout = format!("{OPENPBR_LAYOUT},clamp=1e-3");
+    for (id, path, layout) in [
+        ("lut-audit-cycles", cycles_path, "clamp=1e-4"),
+        (
+            "lut-audit-openpbr",
+            crate::common::root().join(OPENPBR),
+            openpbr_layout.as_str(),
+        ),
+    ] {
+        let cells = dir.join(id);
+        let (code, report, stderr) = audit(&path, layout, &["-o", cells.to_str().unwrap()]);
+        assert_eq!(code, Some(0), "{stderr}");
+        let order = |v: &mut Vec<(f64, f64, f64)>| v.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        let mut audited: Vec<(f64, f64, f64)> = audit_cells(&cells)
             .iter()
-            .map(|r| {
-                let n = |i: usize| r[i].parse::<f64>().unwrap();
-                (n(3), n(4), n(5))
-            })
+            .map(|c| (c[0], c[1], c[4].abs()))
             .collect();
-    assert_eq!(drawn.len(), 1024);
-    assert_eq!(drawn, audited);
-    let max_abs = field(&report, "max_abs");
-    let mantissa = format!("{max_abs:.3e}");
-    let mantissa = mantissa.split('e').next().unwrap();
-    let svg = std::fs::read_to_string(figure.join("lut-audit-cycles.svg")).unwrap();
-    assert!(
-        svg.contains(&format!("max |error| = {mantissa}×10")),
-        "{mantissa}"
-    );
+        let mut drawn: Vec<(f64, f64, f64)> =
+            csv_records(figure.join(format!("{id}.csv")).to_str().unwrap())
+                .iter()
+                .map(|r| {
+                    let n = |i: usize| r[i].parse::<f64>().unwrap();
+                    (n(3), n(4), n(5))
+                })
+                .collect();
+        assert_eq!(drawn.len(), 1024);
+        order(&mut audited);
+        order(&mut drawn);
+        assert_eq!(drawn, audited, "{id}");
+        let max_abs = field(&report, "max_abs");
+        let mantissa = format!("{max_abs:.3e}");
+        let mantissa = mantissa.split('e').next().unwrap();
+        let svg = std::fs::read_to_string(figure.join(format!("{id}.svg"))).unwrap();
+        assert!(
+            svg.contains(&format!("max |error| = {mantissa}×10")),
+            "{id} {mantissa}"
+        );
+    }
 }

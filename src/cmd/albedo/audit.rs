@@ -318,7 +318,8 @@ impl Audit {
     }
 
     /// The report on standard output: what was compared, then `cells`, `max_abs`, `rms` and
-    /// `max_rel` lines.
+    /// `max_rel` lines, and a `note` when the worst cell is on the μ = 0 line compared with the
+    /// limit μ → 0⁺ (no `clamp`): engines tabulate that line at a small μ of their own.
     pub fn report(&self) -> String {
         let against = &self.against;
         let layout = &against.layout;
@@ -376,6 +377,11 @@ impl Audit {
             ),
             _ => format!("max_rel: none (no cell with |exact| >= {RELATIVE_FLOOR:e})\n"),
         });
+        if layout.clamp == 0.0 && self.cells[audit.worst].mu == 0.0 {
+            text.push_str(
+                "note: the worst cell is at mu = 0, compared with the limit mu -> 0+; an engine that tabulated that line at a small mu says where with clamp= (Cycles 1e-4, Adobe's openpbr-bsdf 1e-3)\n",
+            );
+        }
         text
     }
 

@@ -437,7 +437,13 @@ impl Request {
             _ => {
                 let e_avg = average_albedo_table(self.n_r, map, surface, None, Some(&tick))
                     .map_err(failed)?;
-                let f_avg = fresnel.map(average_fresnel).transpose().map_err(failed)?;
+                let f_avg = match (&self.fresnel, fresnel) {
+                    (Some(curve), Some(f)) => Some(match engine_fresnel_average(curve) {
+                        Some(f_avg) => f_avg,
+                        None => average_fresnel(f).map_err(failed)?,
+                    }),
+                    _ => None,
+                };
                 let columns: &[&str] = match f_avg {
                     Some(_) => &["r", "alpha", "E_avg", "kulla_conty_norm", "F_avg", "F_ms"],
                     None => &["r", "alpha", "E_avg", "kulla_conty_norm"],
@@ -545,6 +551,15 @@ impl Request {
             ("accuracy", Meta::Text(accuracy)),
         ]);
         metadata
+    }
+}
+
+/// The F_avg an engine's Fresnel curve uses in place of the integral, when its engine has a
+/// formula of its own (Cycles' fit for a dielectric, [`crate::model::renderer`]).
+fn engine_fresnel_average(curve: &Curve) -> Option<f64> {
+    match curve {
+        Curve::Emulated(emulation) => emulation.fresnel_average(),
+        _ => None,
     }
 }
 

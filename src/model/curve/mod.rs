@@ -150,7 +150,7 @@ impl Curve {
                 Target::D(..) => Kind::Ndf("d"),
                 Target::G1(..) => Kind::Ndf("g1"),
                 Target::G2 { .. } => Kind::Ndf("g2"),
-                Target::Schlick(_) => Kind::Fresnel,
+                Target::Schlick(_) | Target::Dielectric(_) => Kind::Fresnel,
             },
         }
     }

@@ -10,7 +10,13 @@
 //!   a = 1/√t.
 //! - G1 = 1/(1 + Λ) (l.631-634); the BSDF divides by 1 + Λ(θo) + Λ(θi) (l.772): G2 height-correlated.
 //! - Schlick: the metallic F82-tint model `fresnel_f82` (`src/kernel/closure/bsdf_util.h` l.186-192)
-//!   with a white tint (B = 0): s = saturate(1 − cos θ), F = clamp(mix(F₀, 1, s⁴ s), 0, 1).
+//!   with a white tint (B = 0): s = saturate(1 − cos θ), F = clamp(mix(F₀, 1, s⁴ s), 0, 1); its
+//!   F_avg `fresnel_f82_Fss` (l.140-143) mix(F₀, 1, 1/21) − B/126, with B = 0.
+//! - Dielectric: `fresnel_dielectric_cos` (`bsdf_util.h` l.111-124): c = |cos θ|,
+//!   g² = η² − 1 + c²; F = ½ A² (1 + B²) with A = (g − c)/(g + c), B = (c(g + c) − 1)/(c(g − c) + 1)
+//!   where g² > 0, else 1 (total internal reflection). Its F_avg is not integrated but fitted,
+//!   `fresnel_dielectric_Fss` (l.126-137, after Kulla and Conty 2017): (η − 1)/(4.08567 + 1.00071 η)
+//!   for η ≥ 1, 0.997118 + η (0.1014 − η (0.965241 + 0.130607 η)) below.
 
 use super::precision::cos_sin;
 use super::{Function, Lobe, Recipe, Refusal, Width};
@@ -67,6 +73,28 @@ fn schlick(f0: f32, cos_i: f32) -> f32 {
     f_schlick.clamp(0.0, 1.0)
 }
 
+/// `fresnel_dielectric_cos`.
+fn dielectric(cos_i: f32, eta: f32) -> f32 {
+    let c = cos_i.abs();
+    let g2 = eta * eta - 1.0 + c * c;
+    if g2 <= 0.0 {
+        return 1.0;
+    }
+    let g = g2.sqrt();
+    let a = (g - c) / (g + c);
+    let b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+    0.5 * a * a * (1.0 + b * b)
+}
+
+/// `fresnel_dielectric_Fss`: the fitted F_avg of a dielectric.
+fn dielectric_average(eta: f32) -> f32 {
+    if eta < 1.0 {
+        0.997118 + eta * (0.1014 - eta * (0.965241 + eta * 0.130607))
+    } else {
+        (eta - 1.0) / (4.08567 + 1.00071 * eta)
+    }
+}
+
 impl Recipe for Cycles {
     const FUNCTIONS: &'static [Function] = &[
         Function::D(Lobe::Ggx),
@@ -76,6 +104,7 @@ impl Recipe for Cycles {
         Function::G2(Lobe::Ggx),
         Function::G2(Lobe::Beckmann),
         Function::Schlick,
+        Function::Dielectric,
     ];
     const ROUGHNESS_MAP: &'static str = "α = r²";
 
@@ -105,6 +134,17 @@ impl Recipe for Cycles {
                 1.0 / (1.0 + lambda(lobe, alpha2, cos_o) + lambda(lobe, alpha2, cos_i))
             }
             Function::Schlick => schlick(f0 as f32, cos_o),
+            Function::Dielectric => dielectric(cos_o, f0 as f32),
         })
+    }
+
+    fn fresnel_average(function: Function, f0: f64) -> Option<f64> {
+        let f0 = f0 as f32;
+        match function {
+            // mix(F₀, 1, 1/21) − B/126 with B = 0.
+            Function::Schlick => Some(f64::from(f0 + (1.0 / 21.0) * (1.0 - f0))),
+            Function::Dielectric => Some(f64::from(dielectric_average(f0))),
+            _ => None,
+        }
     }
 }

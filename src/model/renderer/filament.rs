@@ -136,6 +136,7 @@ impl<T: Target> Recipe for Filament<T> {
             }
             Function::Schlick => schlick(T::of(f0), theta_o).widen(),
             Function::G1(_) => unreachable!("{} has no G1", T::NAME),
+            Function::Dielectric => unreachable!("{} has no dielectric Fresnel", T::NAME),
         }
     }
 }

@@ -107,7 +107,9 @@ impl Recipe for Mitsuba3 {
             Function::D(lobe) => d(lobe, alpha, theta_o),
             Function::G1(lobe) => smith_g1(lobe, alpha, theta_o),
             Function::G2(lobe) => smith_g1(lobe, alpha, theta_i) * smith_g1(lobe, alpha, theta_o),
-            Function::Schlick => unreachable!("mitsuba3's Schlick is not emulated"),
+            Function::Schlick | Function::Dielectric => {
+                unreachable!("mitsuba3's Fresnel is not emulated")
+            }
         })
     }
 }

@@ -1,5 +1,6 @@
-//! What a renderer computes: the microfacet D, G1, G2 and Schlick Fresnel of seven engines, each as
-//! its source writes it, in its own precision (docs/maths.md "Renderer emulation").
+//! What a renderer computes: the microfacet D, G1, G2 and Schlick Fresnel of seven engines (and
+//! Cycles' dielectric Fresnel with its average F_avg), each as its source writes it, in its own
+//! precision (docs/maths.md "Renderer emulation").
 //!
 //! ndfplot's families evaluate the exact functions in f64. An engine evaluates an expression of its
 //! own (a vector form, a visibility term V = G2 / (4 cos θo cos θi), a spherical-Gaussian Fresnel),
@@ -104,6 +105,8 @@ pub enum Function {
     G2(Lobe),
     /// Schlick's Fresnel F(θ) with a given F₀.
     Schlick,
+    /// The exact Fresnel reflectance F(θ) of a dielectric of relative index η.
+    Dielectric,
 }
 
 impl fmt::Display for Function {
@@ -113,6 +116,7 @@ impl fmt::Display for Function {
             Function::G1(lobe) => write!(f, "{} G1", lobe.title()),
             Function::G2(lobe) => write!(f, "{} G2", lobe.title()),
             Function::Schlick => f.write_str("Schlick F"),
+            Function::Dielectric => f.write_str("dielectric F"),
         }
     }
 }
@@ -152,6 +156,15 @@ pub const F0: Param = Param {
     max: Bound::inclusive(1.0, "a reflectance is at most 1"),
 };
 
+/// The relative index η an engine's dielectric Fresnel takes: the user's domain, up to where η² in
+/// float32 stays finite (3.4e38).
+pub const ETA: Param = Param {
+    name: "eta",
+    symbol: "η",
+    min: crate::model::fresnel::ETA.min,
+    max: Bound::inclusive(1e18, "η² overflows float32"),
+};
+
 /// What an emulated curve shows.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Target {
@@ -170,6 +183,8 @@ pub enum Target {
     },
     /// Schlick's Fresnel with this F₀.
     Schlick(f64),
+    /// The dielectric Fresnel with this relative index η.
+    Dielectric(f64),
 }
 
 impl Target {
@@ -180,14 +195,23 @@ impl Target {
             Target::G1(lobe, _) => Function::G1(lobe),
             Target::G2 { lobe, .. } => Function::G2(lobe),
             Target::Schlick(_) => Function::Schlick,
+            Target::Dielectric(_) => Function::Dielectric,
         }
     }
 
-    /// The lobe's width, for every target but Schlick.
+    /// The lobe's width, for every target but the Fresnel ones.
     pub fn width(&self) -> Option<Width> {
         match *self {
             Target::D(_, width) | Target::G1(_, width) | Target::G2 { width, .. } => Some(width),
-            Target::Schlick(_) => None,
+            Target::Schlick(_) | Target::Dielectric(_) => None,
+        }
+    }
+
+    /// The Fresnel parameter the engine takes: F₀ for Schlick, η for the dielectric (0 for a lobe).
+    fn fresnel(&self) -> f64 {
+        match *self {
+            Target::Schlick(value) | Target::Dielectric(value) => value,
+            _ => 0.0,
         }
     }
 }
@@ -231,8 +255,14 @@ trait Recipe {
     /// The α the engine shades with for this width — rounded to its precision, after its clamps,
     /// widened exactly to f64 — or the reason it shades none.
     fn alpha(width: Width) -> Result<f64, Refusal>;
-    /// `function` at θo (θi for G2), with the engine's α (from [`Recipe::alpha`]) or F₀.
+    /// `function` at θo (θi for G2), with the engine's α (from [`Recipe::alpha`]) or its Fresnel
+    /// parameter `f0` (F₀ for Schlick, η for the dielectric Fresnel).
     fn eval(function: Function, alpha: f64, f0: f64, theta_o: f64, theta_i: f64) -> f64;
+    /// The average F_avg = 2 ∫₀¹ F(μ) μ dμ the engine itself uses for the Fresnel `function` with
+    /// parameter `f0` (a fit of its own), or `None` when it uses none.
+    fn fresnel_average(_function: Function, _f0: f64) -> Option<f64> {
+        None
+    }
 }
 
 /// Calls `$body` with `$r` the recipe type of `$engine`.
@@ -319,6 +349,10 @@ impl Emulation {
                 F0.check(f0).map_err(Refusal::Domain)?;
                 0.0
             }
+            Target::Dielectric(eta) => {
+                ETA.check(eta).map_err(Refusal::Domain)?;
+                0.0
+            }
             Target::G2 {
                 theta_i: Some(theta_i),
                 ..
@@ -329,7 +363,11 @@ impl Emulation {
                     "radians in [0, π/2]",
                 )));
             }
-            _ => engine.alpha(target.width().expect("only Schlick has no width"))?,
+            _ => engine.alpha(
+                target
+                    .width()
+                    .expect("only the Fresnel targets have no width"),
+            )?,
         };
         Ok(Emulation {
             engine,
@@ -348,7 +386,7 @@ impl Emulation {
         self.target
     }
 
-    /// The α the engine shades with, widened to f64 (0 for Schlick).
+    /// The α the engine shades with, widened to f64 (0 for a Fresnel target).
     pub fn alpha(&self) -> f64 {
         self.alpha
     }
@@ -356,12 +394,21 @@ impl Emulation {
     /// The engine's value at θ ∈ [0, π/2] (θo for G1 and G2, the angle of incidence for Fresnel),
     /// widened to f64.
     pub fn eval(&self, theta: f64) -> f64 {
-        let (f0, theta_i) = match self.target {
-            Target::Schlick(f0) => (f0, theta),
-            Target::G2 { theta_i, .. } => (0.0, theta_i.unwrap_or(theta)),
-            _ => (0.0, theta),
+        let theta_i = match self.target {
+            Target::G2 { theta_i, .. } => theta_i.unwrap_or(theta),
+            _ => theta,
         };
+        let f0 = self.target.fresnel();
         with_recipe!(self.engine, R => R::eval(self.target.function(), self.alpha, f0, theta, theta_i))
+    }
+
+    /// The average F_avg = 2 ∫₀¹ F(μ) μ dμ of a Fresnel target as the engine computes it when
+    /// it has a formula of its own (Cycles' Kulla–Conty fit for a dielectric), widened to f64;
+    /// `None` for a lobe, or when the engine would integrate its F.
+    pub fn fresnel_average(&self) -> Option<f64> {
+        let function = self.target.function();
+        let f0 = self.target.fresnel();
+        with_recipe!(self.engine, R => R::fresnel_average(function, f0))
     }
 }
 

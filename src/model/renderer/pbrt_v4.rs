@@ -126,7 +126,9 @@ impl Recipe for PbrtV4 {
                 let wi = Vector::at(theta_i);
                 1.0 / (1.0 + lambda(alpha, &wo) + lambda(alpha, &wi))
             }
-            Function::Schlick => unreachable!("pbrt-v4 has no Schlick"),
+            Function::Schlick | Function::Dielectric => {
+                unreachable!("pbrt-v4's Fresnel is not emulated")
+            }
         })
     }
 }

@@ -73,6 +73,7 @@ impl Recipe for Threejs {
             }
             Function::Schlick => f64::from(schlick(f0 as f32, cos_o)),
             Function::G1(_) => unreachable!("threejs has no G1"),
+            Function::Dielectric => unreachable!("threejs has no dielectric Fresnel"),
         }
     }
 }

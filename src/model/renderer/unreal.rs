@@ -71,6 +71,7 @@ impl Recipe for Unreal {
             }
             Function::Schlick => f64::from(schlick(f0 as f32, cos_o)),
             Function::G1(_) => unreachable!("unreal has no G1"),
+            Function::Dielectric => unreachable!("unreal has no dielectric Fresnel"),
         }
     }
 }
