@@ -674,6 +674,36 @@ fn cycles_fits_the_dielectric_fresnel_average_below_the_exact_one() {
         ]),
         "unreal has no dielectric F",
     );
+    // Its Schlick (F82 with a white tint) takes `fresnel_f82_Fss` (l.140-143): F₀ + (1 − F₀)/21,
+    // Schlick's exact average.
+    close(
+        f_avg(r#"{"fresnel":"schlick","f0":0.04,"engine":"cycles"}"#),
+        0.04 + 0.96 / 21.0,
+        F32_TOL,
+    );
+    // Where the albedo would integrate an engine's float32 F (an E table, an engine without an
+    // F_avg of its own), it refuses before integrating.
+    for (table, curve) in [
+        ("e", r#"{"fresnel":"exact","eta":1.5,"engine":"cycles"}"#),
+        (
+            "average",
+            r#"{"fresnel":"schlick","f0":0.04,"engine":"unreal"}"#,
+        ),
+    ] {
+        refused(
+            &ndfplot(&[
+                "albedo",
+                "-q",
+                "--table",
+                table,
+                "--size",
+                "2",
+                "--fresnel",
+                curve,
+            ]),
+            "--fresnel: an engine's Fresnel carries its float32 rounding",
+        );
+    }
 }
 
 /// three.js `V_GGX_SmithCorrelated` (`lights_physical_pars_fragment.glsl.js`) divides 0.5 by
