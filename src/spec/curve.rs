@@ -709,7 +709,7 @@ impl Keyed<'_> {
     /// at the path of the offending key.
     pub fn build(&self, values: &[ParamValue], path: &str) -> Result<CurveSpec, Problem> {
         if let Some(engine) = self.engine {
-            return self.emulated(engine, values[0].number(), values, path);
+            return self.emulated(engine, values, path);
         }
         let curve = self
             .model
@@ -743,17 +743,16 @@ impl Keyed<'_> {
 }
 
 impl Keyed<'_> {
-    /// The curve `engine` computes for this entry's model, quantity and first parameter `value`
-    /// (α, roughness, F₀ or η, whose κ in `values` must be 0); a refusal is reported at the key it
-    /// concerns.
+    /// The curve `engine` computes for this entry's model, quantity and first parameter (α,
+    /// roughness, F₀ or η, whose κ must then be 0); a refusal is reported at the key it concerns.
     fn emulated(
         &self,
         engine: Engine,
-        value: f64,
         values: &[ParamValue],
         path: &str,
     ) -> Result<CurveSpec, Problem> {
         let key = self.params[0].name;
+        let value = values[0].number();
         let width = if key == renderer::ROUGHNESS.name {
             Width::Roughness(value)
         } else {

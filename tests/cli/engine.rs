@@ -85,7 +85,9 @@ fn pbrt_zeroes_ggx_d_past_89_9943_degrees() {
 
 /// pbrt-v4 scattering.h l.126, vecmath.h l.1693-1705: tan²θ = max(0, 1 − cos²θ)/cos²θ in float
 /// cancels near the normal; at α = 0.001 the lobe's own width (0.057°) is a few float32 steps of
-/// cos θ, and D is off by ~12 % (the measured 10.9 % at 0.014°), while the peak is right.
+/// cos θ, and D is off by ~12 % (the measured 10.9 % at 0.014°), while the peak is right. The
+/// constructor's α ≥ 1e-4 (l.120-121) never bites an isotropic lobe: below α = 0.001 it is
+/// `EffectivelySmooth` (l.137), a mirror, so α = 0.001 is the narrowest lobe pbrt-v4 shades.
 #[test]
 fn pbrt_float32_ggx_is_off_by_about_a_tenth_at_alpha_one_thousandth() {
     let exact = r#"{"ndf":"ggx","alpha_tr":0.001}"#;
@@ -277,8 +279,9 @@ fn each_engine_maps_roughness_by_its_own_convention() {
     close(mobile[0], peak(0.25), 1e-3);
 }
 
-/// Where an engine's expression is the exact one, it agrees to float32: Cycles' and pbrt's G1 and
-/// height-correlated G2, Filament's V_SmithGGXCorrelated as G2, Mitsuba's separable G2.
+/// Where an engine's expression is the exact one, it agrees to float32: Cycles' G1 (`bsdf_microfacet.h`
+/// l.631-634) and pbrt's (scattering.h l.140), Filament's `V_SmithGGXCorrelated` as G2
+/// (`surface_brdf.fs` l.102-113), Mitsuba's separable G2 (`microfacet.h` l.329-331).
 #[test]
 fn exact_smith_forms_agree_to_float32() {
     let degrees = [0.0, 20.0, 45.0, 70.0, 85.0];
@@ -671,6 +674,36 @@ fn cycles_fits_the_dielectric_fresnel_average_below_the_exact_one() {
         ]),
         "unreal has no dielectric F",
     );
+    // Its Schlick (F82 with a white tint) takes `fresnel_f82_Fss` (l.140-143): F₀ + (1 − F₀)/21,
+    // Schlick's exact average.
+    close(
+        f_avg(r#"{"fresnel":"schlick","f0":0.04,"engine":"cycles"}"#),
+        0.04 + 0.96 / 21.0,
+        F32_TOL,
+    );
+    // Where the albedo would integrate an engine's float32 F (an E table, an engine without an
+    // F_avg of its own), it refuses before integrating.
+    for (table, curve) in [
+        ("e", r#"{"fresnel":"exact","eta":1.5,"engine":"cycles"}"#),
+        (
+            "average",
+            r#"{"fresnel":"schlick","f0":0.04,"engine":"unreal"}"#,
+        ),
+    ] {
+        refused(
+            &ndfplot(&[
+                "albedo",
+                "-q",
+                "--table",
+                table,
+                "--size",
+                "2",
+                "--fresnel",
+                curve,
+            ]),
+            "--fresnel: an engine's Fresnel carries its float32 rounding",
+        );
+    }
 }
 
 /// three.js `V_GGX_SmithCorrelated` (`lights_physical_pars_fragment.glsl.js`) divides 0.5 by
@@ -719,9 +752,9 @@ fn mitsuba_takes_beckmann_g1_from_walters_rational() {
     assert!((mitsuba[2] / smith[2] - 1.0).abs() > 1e-4);
 }
 
-/// Unreal's `Vis_SmithJointApprox` (Hammon 2017): V = 0.5/(NoL (NoV (1 − a) + a) + NoV (NoL (1 − a)
-/// + a)), a = α; at α = 0.5, θo = θi = 70° it gives G2 = 4 cos²θ V = 0.5097, 13.4 % below the exact
-/// height-correlated G2 (0.5885).
+/// Unreal's `Vis_SmithJointApprox` (Hammon 2017), with a = α:
+/// V = 0.5/(NoL (NoV (1 − a) + a) + NoV (NoL (1 − a) + a)); at α = 0.5, θo = θi = 70° it gives
+/// G2 = 4 cos²θ V = 0.5097, 13.4 % below the exact height-correlated G2 (0.5885).
 #[test]
 fn unreal_uses_hammons_joint_smith_approximation() {
     let c = 70_f64.to_radians().cos();

@@ -248,6 +248,9 @@ impl Against {
                 }));
             }
         };
+        if let Some(curve) = fresnel.filter(|curve| curve.emulated()) {
+            return Err(super::engine_fresnel_refused(curve));
+        }
         let grid = self.grid();
         surface.check_at(&grid.evaluated().1)?;
         let tick = |_: usize, _: usize| progress.advance(1);

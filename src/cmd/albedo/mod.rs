@@ -313,8 +313,9 @@ pub struct Request {
 }
 
 impl Request {
-    /// The request, checked: no Fresnel factor with the split-sum tables, every NDF of the grid in
-    /// its domain.
+    /// The request, checked: no Fresnel factor with the split-sum tables, no engine's Fresnel
+    /// where it would be integrated (an engine's own F_avg is taken, not integrated), every NDF of
+    /// the grid in its domain.
     pub fn new(
         tables: Vec<Table>,
         surface: Surface,
@@ -339,6 +340,15 @@ impl Request {
                     ),
                 )],
             }));
+        }
+        if let Some(curve) = &fresnel
+            && curve.emulated()
+        {
+            let integrated = tables.contains(&Table::E)
+                || (tables.contains(&Table::Average) && engine_fresnel_average(curve).is_none());
+            if integrated {
+                return Err(engine_fresnel_refused(curve));
+            }
         }
         surface.check(n_r)?;
         Ok(Request {
@@ -552,6 +562,21 @@ impl Request {
         ]);
         metadata
     }
+}
+
+/// Why an engine's Fresnel curve cannot be a factor inside the albedo integrals: its float32
+/// rounding is far above their tolerance.
+fn engine_fresnel_refused(curve: &Curve) -> Error {
+    Error::input(Problems {
+        source: "--fresnel".into(),
+        list: vec![Problem::new(
+            "",
+            format!(
+                "an engine's Fresnel carries its float32 rounding, which the albedo integrals (held to {ALBEDO_QUAD_REL_TOL:e}) cannot integrate (got {}, expected a curve without \"engine\"; --table average takes an engine's own F_avg where it has one, as cycles has)",
+                crate::problem::excerpt(&curve.canonical_json())
+            ),
+        )],
+    })
 }
 
 /// The F_avg an engine's Fresnel curve uses in place of the integral, when its engine has a
