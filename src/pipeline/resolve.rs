@@ -9,6 +9,7 @@
 
 use crate::error::{Error, Result};
 use crate::model::curve::Curve;
+use crate::model::curve::quantity::Prepared;
 use crate::model::dataset::{Dataset, Side};
 use crate::model::fit;
 use crate::model::fresnel::Fresnel;
@@ -138,6 +139,7 @@ pub fn curve(spec: &CurveSpec) -> std::result::Result<Curve, Problem> {
         CurveSpec::Quantity { quantity, ndf } => Curve::Quantity {
             quantity: quantity.map_fresnel(curve)?,
             ndf: ndf_of(curve(ndf)?),
+            prepared: Prepared::default(),
         },
     })
 }
@@ -429,7 +431,14 @@ fn labelled(spec: &CurveSpec, label: &Label) -> std::result::Result<(Curve, Stri
                 }
                 _ => {}
             }
-            Ok((Curve::Quantity { quantity, ndf }, text))
+            Ok((
+                Curve::Quantity {
+                    quantity,
+                    ndf,
+                    prepared: Prepared::default(),
+                },
+                text,
+            ))
         }
         (CurveSpec::Fitted(fitted), _) => {
             let (curve, outcome) = self::fitted(fitted)?;

@@ -9,7 +9,7 @@
 use crate::common::{number, root};
 use ndfplot::model::albedo::{
     AVERAGE_TOL, Microfacet, RoughnessMap, albedo_table, average_albedo, average_albedo_table,
-    dfg_tables, split_sum_tables, turquin_factor,
+    dfg_tables, split_sum_tables, surface_of, turquin_factor,
 };
 use ndfplot::model::fresnel::basis::coeffs;
 use ndfplot::model::fresnel::exact::{Incidence, Index, reflectance};
@@ -313,7 +313,9 @@ fn albedo_stays_within_zero_and_one() {
 /// Every family, through its own D and Smith Λ, narrow and rough (super-rough and heavy-tailed included): E
 /// within [0, 1] at a grazing, an oblique and the normal view, and not above the F = 1 value with a
 /// dielectric's Fresnel factor. The bound E ≤ 1 holds for single scattering with exact Smith masking whatever
-/// the lobe. (A few points per curve: a family whose Λ is a quadrature costs ~50 ms per oblique E.)
+/// the lobe. The surface every command builds (`albedo::surface_of`, Λ from its Chebyshev table of G1) gives each E
+/// within ALBEDO_TOL of the one through the family's own Λ. (A few points per curve: without the table, a family
+/// whose Λ is a quadrature costs ~50 ms per oblique E.)
 #[test]
 fn albedo_of_every_family_stays_within_zero_and_one() {
     let curves: [(Family, &[f64]); 12] = [
@@ -335,11 +337,17 @@ fn albedo_of_every_family_stays_within_zero_and_one() {
         let ndf = family.build(params).unwrap();
         for g2 in [G2Model::HeightCorrelated, G2Model::Separable] {
             let surface = Microfacet::new(|t| ndf.eval(t), |t| ndf.lambda(t), g2);
+            let tabulated = surface_of(ndf.clone(), g2);
             for mu in [0.02, 0.5, 1.0] {
                 let e = surface.albedo(mu, None).unwrap();
                 assert!(
                     (-ALBEDO_TOL..=1.0 + ALBEDO_TOL).contains(&e),
                     "{family:?} {params:?} {g2} E({mu}) = {e}"
+                );
+                let with_table = tabulated.albedo(mu, None).unwrap();
+                assert!(
+                    (with_table - e).abs() <= ALBEDO_TOL,
+                    "{family:?} {params:?} {g2} E({mu}) = {with_table} with the Λ table, {e} without"
                 );
                 if g2 == G2Model::HeightCorrelated && mu != 0.02 {
                     let e_glass = surface.albedo(mu, Some(&glass)).unwrap();

@@ -11,7 +11,7 @@ use crate::model::names::named;
 use crate::model::ndf::Ndf;
 use crate::model::renderer::{Emulation, Target};
 use crate::model::transform::Transform;
-use quantity::Quantity;
+use quantity::{Prepared, Quantity};
 
 /// A validated curve: an NDF D(θ) or a Fresnel reflectance F(θ).
 #[derive(Debug, Clone, PartialEq)]
@@ -43,6 +43,8 @@ pub enum Curve {
         quantity: Quantity<Curve>,
         /// The NDF.
         ndf: Ndf,
+        /// What the quantity's values share, found on first use.
+        prepared: Prepared,
     },
     /// D, G1, G2 or Schlick's F as a renderer computes it ([`crate::model::renderer`]).
     Emulated(Emulation),
@@ -94,7 +96,11 @@ impl Curve {
             Curve::Fresnel(f) => f.eval(theta),
             Curve::Difference { op, a, b } => op.apply(a.eval(theta), b.eval(theta)),
             Curve::Transformed { transform, curve } => transform.apply(theta, curve.eval(theta)),
-            Curve::Quantity { quantity, ndf } => quantity.eval(ndf, theta),
+            Curve::Quantity {
+                quantity,
+                ndf,
+                prepared,
+            } => quantity.eval(ndf, prepared, theta),
             Curve::Emulated(emulation) => emulation.eval(theta),
         }
     }

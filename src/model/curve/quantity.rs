@@ -8,6 +8,7 @@ use super::Curve;
 use crate::model::albedo;
 use crate::model::masking::{self, G1Model, G2Model};
 use crate::model::ndf::Ndf;
+use std::sync::OnceLock;
 
 /// The quantity names in curve JSON, the default first.
 pub const NAMES: [&str; 6] = ["d", "lambda", "g1", "g2", "albedo", "furnace"];
@@ -96,9 +97,22 @@ impl<F> Quantity<F> {
     }
 }
 
+/// What a quantity's values share, found on first use and kept (a curve's): an albedo's
+/// [`albedo::SurfaceParts`] and the smooth surrogate of a tabulated Fresnel weight. Equality
+/// ignores it (it follows from the curve).
+#[derive(Debug, Clone, Default)]
+pub struct Prepared(OnceLock<(albedo::SurfaceParts, Option<albedo::Smoothed>)>);
+
+impl PartialEq for Prepared {
+    fn eq(&self, _: &Prepared) -> bool {
+        true
+    }
+}
+
 impl Quantity<Curve> {
-    /// The quantity of `ndf` at the view angle θo ∈ [0, π/2].
-    pub fn eval(&self, ndf: &Ndf, theta_o: f64) -> f64 {
+    /// The quantity of `ndf` at the view angle θo ∈ [0, π/2], with what its values share in
+    /// `prepared` (filled on first use: the same bits as a fresh one).
+    pub fn eval(&self, ndf: &Ndf, prepared: &Prepared, theta_o: f64) -> f64 {
         match self {
             Quantity::Lambda => ndf.lambda(theta_o),
             Quantity::G1 => masking::g1(ndf.lambda(theta_o)),
@@ -112,14 +126,19 @@ impl Quantity<Curve> {
             // A quadrature that fails, or a G1 the family lacks (refused when the spec is read),
             // gives NaN, which evaluation reports as a non-finite value of the curve.
             Quantity::Albedo { model, fresnel } => {
-                let surface = albedo::surface_of(ndf.clone(), *model);
+                let (parts, table) = prepared.0.get_or_init(|| {
+                    let table = match fresnel.as_deref() {
+                        Some(Curve::Fresnel(model)) => albedo::tabulated(model),
+                        _ => None,
+                    };
+                    (albedo::SurfaceParts::of(ndf), table)
+                });
+                let surface = albedo::surface_with(ndf, parts, *model);
                 let mu_o = theta_o.cos().clamp(0.0, 1.0);
-                let result = match fresnel.as_deref() {
-                    Some(Curve::Fresnel(model)) if let Some(table) = albedo::tabulated(model) => {
-                        surface.albedo_tabulated(mu_o, &table)
-                    }
-                    Some(f) => surface.albedo(mu_o, Some(&|t| f.eval(t))),
-                    None => surface.albedo(mu_o, None),
+                let result = match (table, fresnel.as_deref()) {
+                    (Some(table), _) => surface.albedo_tabulated(mu_o, table),
+                    (None, Some(f)) => surface.albedo(mu_o, Some(&|t| f.eval(t))),
+                    (None, None) => surface.albedo(mu_o, None),
                 };
                 result.unwrap_or(f64::NAN)
             }

@@ -9,13 +9,16 @@
 //!   families that take it as their route).
 //! - [`engine`]: the G1 renderers use ([`G1Model`]: exact Smith, Walter's rational, the Beckmann-equivalent
 //!   Smith) and the weak white furnace value of each.
+//! - [`table`]: Λ of one surface tabulated once (a Chebyshev table of G1), for the albedo's integrals.
 //! - [`projected_area`]: the front-facing projected area, computed apart from Λ, to audit Λ against.
 
 pub mod engine;
 pub mod projected_area;
+pub mod table;
 
 pub use engine::{G1Model, NoBeckmannEquivalent, walter_rational_g1};
 pub use projected_area::{front_projected_area, smith_furnace};
+pub use table::LambdaTable;
 
 use crate::model::names::named;
 use crate::model::ndf::Ndf;

@@ -77,6 +77,12 @@ pub const REL_TOL_LAMBDA_CLOSED_FORM: f64 = 1e-12;
 /// would show at once.
 pub const REL_TOL_LAMBDA_INTEGRAL: f64 = 1e-11;
 
+/// Absolute error allowed for G1 = 1/(1 + Λ) from the albedo's tabulated Λ (`masking::LambdaTable`, built to
+/// `masking::table::TABLE_TOLERANCE` = 1e-12) against each family's own Λ, over every domain grid: worst measured
+/// 2.8e-12 (Phong α_p = 0.001 next to the normal), 1.2e-13 for the other families; every G2 and so every albedo
+/// moves by at most this much.
+pub const LAMBDA_TABLE_TOL: f64 = 5e-12;
+
 /// Allowed deviation from 1 of the weak white furnace G1 · A/cos θo (`masking::smith_furnace`), where Λ
 /// itself is at least this large: A is an adaptive quadrature to QUAD_REL_TOL and D's normalization holds to
 /// NORMALIZATION_TOL, so 1e-9 leaves room for both; below it the check cannot see Λ at all.
