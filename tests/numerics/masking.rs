@@ -396,7 +396,7 @@ fn the_weak_white_furnace_holds_for_exact_smith() {
 /// whose Λ is set by slopes beyond any double θ) it builds for every lobe of median slope 1e-2 … 1e2 (SGD lobes
 /// narrower than that with α_sgd2 < 0 carry their quadrature's noise above the table's tolerance), and wherever it
 /// builds its G1 is within LAMBDA_TABLE_TOL of the family's own at 400 angles across [0, π/2) and at 1e-9 … 1e-3
-/// from both ends.
+/// from both ends, by the angle and by its cosine.
 #[test]
 fn the_lambda_table_holds_g1_over_every_domain() {
     let mut thetas: Vec<f64> = (0..400)
@@ -425,7 +425,13 @@ fn the_lambda_table_holds_g1_over_every_domain() {
             };
             for &theta in &thetas {
                 let (tabulated, own) = (table.lambda(theta), ndf.lambda(theta));
-                let err = (g1(tabulated) - g1(own)).abs();
+                // By the cosine: the same direction when θ is the arccos of a double.
+                let mu = theta.cos();
+                let by_cos = table.lambda_at_cos(mu);
+                let own_at_cos = ndf.lambda(mu.acos());
+                let err = (g1(tabulated) - g1(own))
+                    .abs()
+                    .max((g1(by_cos) - g1(own_at_cos)).abs());
                 let entry = worst.entry(family.name()).or_insert(0.0_f64);
                 *entry = entry.max(err);
                 assert!(
@@ -436,4 +442,39 @@ fn the_lambda_table_holds_g1_over_every_domain() {
         }
     }
     println!("tabulated G1 against the own route, worst: {worst:?}");
+}
+
+/// `Ndf::lambda_at_cos` (the albedo's route, from μ = cos θo) against `Ndf::lambda` at arccos μ, the same direction:
+/// within REL_TOL_LAMBDA_CLOSED_FORM relative for the families that compute it from μ (Trowbridge–Reitz, Beckmann)
+/// over their domain grids, at μ = 1e-3 … 1 − 1e-15 (below, arccos μ rounds to a θ whose cosine is not μ: θ's double
+/// spacing near π/2 is 2.2e-16) and 1; from 0 through 1e-300 to 1e-3 it is +∞ at 0, finite, positive and
+/// non-increasing in μ. The other families take arccos μ themselves.
+#[test]
+fn lambda_by_the_cosine_is_lambda_by_the_angle() {
+    let mut mus = vec![1e-3, 1.0 - 1e-15, 1.0 - 1e-9, 1.0 - 1e-6, 1.0];
+    mus.extend((1..64).map(|i| f64::from(i) / 64.0));
+    let grazing = [0.0, 1e-300, 1e-150, 1e-12, 1e-6, 1e-3];
+    for family in [Family::TrowbridgeReitz, Family::Beckmann] {
+        for ndf in domain_grid(family) {
+            for &mu in &mus {
+                let (by_cos, by_angle) = (ndf.lambda_at_cos(mu), ndf.lambda(mu.acos()));
+                assert!(
+                    by_cos == by_angle
+                        || floored_relative_difference(by_cos, by_angle)
+                            <= REL_TOL_LAMBDA_CLOSED_FORM,
+                    "{ndf:?} μ = {mu:e}: {by_cos:e} by the cosine, {by_angle:e} by the angle"
+                );
+            }
+            assert_eq!(ndf.lambda_at_cos(0.0), f64::INFINITY, "{ndf:?}");
+            for pair in grazing[1..].windows(2) {
+                let (steeper, lower) = (ndf.lambda_at_cos(pair[1]), ndf.lambda_at_cos(pair[0]));
+                assert!(
+                    steeper.is_finite() && steeper >= 0.0 && lower >= steeper,
+                    "{ndf:?} μ = {:e}, {:e}: {lower:e}, {steeper:e}",
+                    pair[0],
+                    pair[1]
+                );
+            }
+        }
+    }
 }

@@ -124,7 +124,8 @@ pub fn tabulated(fresnel: &crate::model::fresnel::Fresnel) -> Option<Smoothed> {
 pub const SMOOTHED_CELLS: f64 = 8.0;
 
 /// An isotropic microfacet surface as the albedo integrals see it: D(θm), normalized over projected
-/// area; Smith's Λ(θ) (Λ(0) = 0, growing like 1/cos θ towards grazing); the G2 model; and the lobe
+/// area; Smith's Λ as a function of μ = cos θ (Λ = 0 at μ = 1, growing like 1/μ towards grazing:
+/// the integrals have the cosine of the light's angle, not the angle); the G2 model; and the lobe
 /// width w that scales the radial quadrature variable (module docs).
 #[derive(Debug, Clone)]
 pub struct Microfacet<D, L> {
@@ -143,7 +144,8 @@ where
     D: Fn(f64) -> f64,
     L: Fn(f64) -> f64,
 {
-    /// The surface with D = `ndf`, Λ = `lambda` and the lobe width w = [`median_slope`]`(ndf)`.
+    /// The surface with D(θ) = `ndf`(θ), Λ = `lambda`(cos θ) and the lobe width w =
+    /// [`median_slope`]`(ndf)`.
     pub fn new(ndf: D, lambda: L, g2: G2Model) -> Self {
         let width = median_slope(&ndf);
         Self::with_width(ndf, lambda, g2, width)
@@ -222,7 +224,7 @@ where
     /// each piece between successive nodes θh = arccos c_j over [0, π/4], where L is linear in
     /// cos θh, each piece held to the surface's tolerance in its share of E.
     fn normal_tabulated(&self, weight: &Smoothed) -> Result<f64, QuadError> {
-        let lambda_o = (self.lambda)(0.0);
+        let lambda_o = (self.lambda)(1.0);
         let corner = FRAC_PI_4.cos();
         let mut edges = vec![0.0];
         edges.extend(
@@ -236,8 +238,8 @@ where
         edges.push(FRAC_PI_4);
         let share = 1.0 / (2.0 * PI * (edges.len() - 1) as f64);
         let integrand = |theta_h: f64| {
-            let g2 = self.g2.g2(lambda_o, (self.lambda)(2.0 * theta_h));
             let (sin, cos) = theta_h.sin_cos();
+            let g2 = self.g2.g2(lambda_o, (self.lambda)(cos_double(sin, cos)));
             Ok((self.ndf)(theta_h) * g2 * weight.linear_at_cos(cos) * cos * sin)
         };
         let mut sum = 0.0;
@@ -302,14 +304,15 @@ where
     /// The integrand of E(1) in β: D(θh) G2(Λ(0), Λ(2θh)) F(θh) cos θh sin θh dθh/dβ.
     fn normal_integrand(&self, beta: f64, lambda_o: f64, fresnel: Fresnel) -> f64 {
         let (theta_h, jacobian) = self.radial(beta);
-        let g2 = self.g2.g2(lambda_o, (self.lambda)(2.0 * theta_h));
+        let (sin, cos) = theta_h.sin_cos();
+        let g2 = self.g2.g2(lambda_o, (self.lambda)(cos_double(sin, cos)));
         let f = fresnel.map_or(1.0, |f| f(theta_h));
-        (self.ndf)(theta_h) * g2 * f * theta_h.cos() * theta_h.sin() * jacobian
+        (self.ndf)(theta_h) * g2 * f * cos * sin * jacobian
     }
 
     /// E(1) = 2π ∫₀^{π/4} D(θh) G2(Λ(0), Λ(2θh)) F(θh) cos θh sin θh dθh by `rule` in β.
     fn normal_fixed(&self, fresnel: Fresnel, rule: &Rule) -> f64 {
-        let lambda_o = (self.lambda)(0.0);
+        let lambda_o = (self.lambda)(1.0);
         let end = self.normal_end();
         let layer = 0.5 * self.width.min(1.0);
         let delta = layer / (2.0 * self.radial(end).1);
@@ -325,7 +328,7 @@ where
 
     /// E(1) by adaptive Gauss–Kronrod in β, held to `tolerance`.
     fn normal_albedo(&self, fresnel: Fresnel, tolerance: f64) -> Result<f64, QuadError> {
-        let lambda_o = (self.lambda)(0.0);
+        let lambda_o = (self.lambda)(1.0);
         let integrand = |beta: f64| Ok(self.normal_integrand(beta, lambda_o, fresnel));
         Ok(2.0
             * PI
@@ -368,7 +371,7 @@ where
         } else {
             FRAC_PI_2
         };
-        let lambda_o = (mu_o > 0.0).then(|| (surface.lambda)(mu_o.acos()));
+        let lambda_o = (mu_o > 0.0).then(|| (surface.lambda)(mu_o));
         Oblique {
             surface,
             view,
@@ -418,7 +421,7 @@ where
     fn inner(&self, slice: &Slice, u: f64, fresnel: Fresnel) -> f64 {
         let point = slice.at(u);
         let f = fresnel.map_or(1.0, |f| f(slice.theta_d(&point)));
-        self.weight((self.surface.lambda)(point.cos_i.min(1.0).acos())) * f * point.dot
+        self.weight((self.surface.lambda)(point.cos_i.clamp(0.0, 1.0))) * f * point.dot
     }
 
     /// The scale in cos θi over which the weight G2/μo turns over next to the horizon: Λ(θi)
@@ -619,6 +622,13 @@ const LOBE_SLOPES: [f64; 2] = [2.0, 5.0];
 /// D at slope 5w over D at slope 2w ([`LOBE_SLOPES`]) below which a lobe's tail is light: 4.8e-7
 /// for Beckmann, 0.037 for Trowbridge–Reitz.
 const LIGHT_TAIL: f64 = 1e-3;
+
+/// cos 2θ = (cos θ − sin θ)(cos θ + sin θ) from sin θ and cos θ: the light's cosine at normal
+/// incidence (θi = 2θh), free of the cancellation of 1 − 2 sin²θ next to θ = π/4.
+#[inline]
+fn cos_double(sin: f64, cos: f64) -> f64 {
+    (cos - sin) * (cos + sin)
+}
 
 /// s ∈ [0, 1] with s²(3 − 2s) = y ∈ [0, 1].
 fn inverse_smoothstep(y: f64) -> f64 {
@@ -945,18 +955,19 @@ impl SurfaceParts {
         SurfaceParts { width, table }
     }
 
-    /// Λ(θ) of `ndf`, the NDF these parts are of: by the table where there is one.
+    /// Λ at μ = cos θ of `ndf`, the NDF these parts are of: by the table where there is one.
     #[inline]
-    fn lambda(&self, ndf: &Ndf, theta: f64) -> f64 {
+    fn lambda_at_cos(&self, ndf: &Ndf, mu: f64) -> f64 {
         match &self.table {
-            Some(table) => table.lambda(theta),
-            None => ndf.lambda(theta),
+            Some(table) => table.lambda_at_cos(mu),
+            None => ndf.lambda_at_cos(mu),
         }
     }
 }
 
 /// The microfacet surface of `ndf` under `g2` with its [`SurfaceParts`] `parts` (found for this
-/// `ndf`): D by [`Ndf::eval`], Λ and the width from the parts.
+/// `ndf`): D by [`Ndf::eval`], Λ ([`Ndf::lambda_at_cos`] or the table's) and the width from the
+/// parts.
 pub fn surface_with<'a>(
     ndf: &'a Ndf,
     parts: &'a SurfaceParts,
@@ -964,7 +975,7 @@ pub fn surface_with<'a>(
 ) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send + 'a, impl Fn(f64) -> f64 + Sync + Send + 'a> {
     Microfacet::with_width(
         move |theta| ndf.eval(theta),
-        move |theta| parts.lambda(ndf, theta),
+        move |mu| parts.lambda_at_cos(ndf, mu),
         g2,
         parts.width,
     )
@@ -981,7 +992,7 @@ pub fn surface_of(
     let for_lambda = ndf.clone();
     Microfacet::with_width(
         move |theta| ndf.eval(theta),
-        move |theta| parts.lambda(&for_lambda, theta),
+        move |mu| parts.lambda_at_cos(&for_lambda, mu),
         g2,
         width,
     )
@@ -1541,11 +1552,10 @@ mod tests {
         }
     }
 
-    /// Trowbridge–Reitz Λ(θ) = x/(2(√(1 + x) + 1)), x = α² tan²θ.
+    /// Trowbridge–Reitz Λ = x/(2(√(1 + x) + 1)) at μ = cos θ, x = α² tan²θ = α² (1 − μ²)/μ².
     fn ggx_lambda(alpha: f64) -> impl Fn(f64) -> f64 {
-        move |theta: f64| {
-            let t = alpha * theta.tan();
-            let x = t * t;
+        move |mu: f64| {
+            let x = alpha * alpha * (1.0 - mu * mu) / (mu * mu);
             x / (2.0 * ((1.0 + x).sqrt() + 1.0))
         }
     }

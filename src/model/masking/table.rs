@@ -69,6 +69,18 @@ impl LambdaTable {
         (1.0 / (t * self.g.eval(t)) - 1.0).max(0.0)
     }
 
+    /// Λ at μ = cos θ ∈ [0, 1], with t = μ/(μ + w √((1 − μ)(1 + μ))): the same as
+    /// [`LambdaTable::lambda`] at arccos μ to the rounding of the two routes to t.
+    #[inline]
+    pub fn lambda_at_cos(&self, mu: f64) -> f64 {
+        let mu = mu.clamp(0.0, 1.0);
+        if mu == 1.0 {
+            return 0.0;
+        }
+        let t = mu / (mu + self.width * ((1.0 - mu) * (1.0 + mu)).sqrt());
+        (1.0 / (t * self.g.eval(t)) - 1.0).max(0.0)
+    }
+
     /// The number of Chebyshev pieces (each cost [`crate::model::math::chebyshev::NODES`] + 2
     /// values of Λ to build).
     pub fn pieces(&self) -> usize {

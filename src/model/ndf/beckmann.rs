@@ -118,6 +118,12 @@ impl Distribution for Beckmann {
         smith_lambda(self.alpha_b, theta_o)
     }
 
+    /// Λ at a = μ/(α_b √((1 − μ)(1 + μ))), μ = cos θo.
+    fn lambda_at_cos(&self, mu: f64) -> f64 {
+        let mu = mu.clamp(0.0, 1.0);
+        lambda_of_a(mu / (self.alpha_b * ((1.0 - mu) * (1.0 + mu)).sqrt()))
+    }
+
     /// A super-rough lobe (α_b > 1/√2) peaks off the normal where d ln D/d tan²θ = 2/(1 + tan²θ) − 1/α_b²
     /// vanishes: tan²θ = 2α_b² − 1.
     fn interior_peak(&self) -> Option<f64> {
@@ -144,7 +150,11 @@ impl Distribution for Beckmann {
 /// Λ of the Beckmann-equivalent lobes engines substitute for other families, whose α may lie outside
 /// [`Beckmann::PARAMS`](Distribution::PARAMS) (Phong's √(2/(α_p + 2)) reaches 1e-154).
 pub fn smith_lambda(alpha_b: f64, theta_o: f64) -> f64 {
-    let a = 1.0 / (alpha_b * theta_o.tan());
+    lambda_of_a(1.0 / (alpha_b * theta_o.tan()))
+}
+
+/// Λ = e^{−a²} [1/(2a√π) − erfcx(a)/2] at a = cot θo/α_b ≥ 0 (+∞ at a = 0, grazing).
+fn lambda_of_a(a: f64) -> f64 {
     if a >= LAMBDA_ZERO_MIN_A {
         return 0.0;
     }

@@ -63,6 +63,13 @@ pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {
     /// never NaN. Each family states its route (closed form or [`crate::model::ndf::lambda_integral::lambda_integral`]).
     fn lambda(&self, theta_o: f64) -> f64;
 
+    /// Λ at μ = cos θo ∈ [0, 1], for integrals that have the cosine and not the angle (the albedo's
+    /// inner nodes): by default [`lambda`](Self::lambda) at arccos μ; a family whose closed form
+    /// takes tan²θo = (1 − μ)(1 + μ)/μ² directly overrides it. +∞ or the value at θo = π/2 at μ = 0.
+    fn lambda_at_cos(&self, mu: f64) -> f64 {
+        self.lambda(mu.clamp(0.0, 1.0).acos())
+    }
+
     /// The parameter values in [`PARAMS`](Self::PARAMS) order.
     fn params(&self) -> Vec<f64>;
 
@@ -258,6 +265,14 @@ macro_rules! families {
             pub fn lambda(&self, theta_o: f64) -> f64 {
                 match self {
                     $(Ndf::$variant(d) => d.lambda(theta_o),)+
+                }
+            }
+
+            /// Λ at μ = cos θo ∈ [0, 1] (see [`Distribution::lambda_at_cos`]).
+            #[inline]
+            pub fn lambda_at_cos(&self, mu: f64) -> f64 {
+                match self {
+                    $(Ndf::$variant(d) => d.lambda_at_cos(mu),)+
                 }
             }
 
