@@ -103,16 +103,12 @@ impl Distribution for TrowbridgeReitz {
         x / (2.0 * ((1.0 + x).sqrt() + 1.0))
     }
 
-    /// The same with x = r², r = α_tr √((1 − μ)(1 + μ))/μ, μ = cos θo; r/2 to the last bit
-    /// once r > 1e150 (where r² would overflow), +∞ at μ = 0.
+    /// The same from μ = cos θo: with a = α_tr² (1 − μ)(1 + μ) = α_tr² sin²θo,
+    /// Λ = a/(2μ (√(μ² + a) + μ)), one root and one division, free of cancellation; +∞ at μ = 0.
     fn lambda_at_cos(&self, mu: f64) -> f64 {
         let mu = mu.clamp(0.0, 1.0);
-        let r = self.alpha_tr * ((1.0 - mu) * (1.0 + mu)).sqrt() / mu;
-        if r > 1e150 {
-            return 0.5 * r;
-        }
-        let x = r * r;
-        x / (2.0 * ((1.0 + x).sqrt() + 1.0))
+        let a = self.alpha2 * ((1.0 - mu) * (1.0 + mu));
+        a / (2.0 * mu * ((mu * mu + a).sqrt() + mu))
     }
 
     /// None: D falls monotonically from its peak at θ = 0 (or rises to θ = π/2).
