@@ -401,7 +401,7 @@ where
     /// G2/μo at Λ(θi), or its limit g(θi) at μo = 0 (g = 1 height-correlated, G1 separable).
     fn weight(&self, lambda_i: f64) -> f64 {
         match self.lambda_o {
-            Some(lambda_o) => self.surface.g2.g2(lambda_o, lambda_i) / self.view.mu,
+            Some(lambda_o) => self.surface.g2.g2(lambda_o, lambda_i) * self.view.inverse_mu,
             None => match self.surface.g2 {
                 G2Model::HeightCorrelated => 1.0,
                 G2Model::Separable => g1(lambda_i),
@@ -747,6 +747,8 @@ struct View {
     elevation: f64,
     cos_elevation: f64,
     mu: f64,
+    /// 1/μo, which every inner node's weight G2/μo multiplies by.
+    inverse_mu: f64,
 }
 
 /// The half-vectors at polar angle θh that reflect ωo above the horizon: φ ∈ [0, φ_end] (and its
@@ -783,6 +785,7 @@ impl View {
             elevation: mu.asin(),
             cos_elevation: ((1.0 - mu) * (1.0 + mu)).sqrt(),
             mu,
+            inverse_mu: 1.0 / mu,
         }
     }
 
