@@ -18,7 +18,7 @@
 //! VNDF sample space would lump the heavy tail (where 1 − E lives) into a few cells instead.
 //!
 //! The fast path is a tensor product of fixed Gauss–Legendre rules ([`escalate`]): 16 × 16, then
-//! 20 × 20, 26 × 26 and 36 × 36 points per outer panel (outer × inner), taking the first level within
+//! 20 × 20, 26 × 26, 36 × 36 and 48 × 48 points per outer panel (outer × inner), taking the first level within
 //! 30 × the tolerance (3e-11) of the one before; where none agrees, or a value is not finite, the
 //! nested adaptive Gauss–Kronrod ([`crate::model::math::quad::integrate`]) to the tolerance. The
 //! rules see smooth integrands because every feature sits at a panel end with a known scale, to
@@ -29,7 +29,9 @@
 //!   panels next to β_cut, β_end (and the end of E(1)) are graded on the corresponding scale in β;
 //! - the outer integral is split at θh = ε/4 below the horizon's layer, at the two halves of the
 //!   cut part, and, for a lobe with a light tail (D at slope 5w below 1e-3 of D at slope 2w:
-//!   Beckmann, high Phong exponents), at slopes 2w and 5w, where a Gaussian dies off.
+//!   Beckmann, high Phong exponents), at slopes 2w and 5w, where a Gaussian dies off; and, for a
+//!   lobe whose Λ is flat at the normal (Beckmann's e^{−cot²θ/α²}, not analytic at θi = 0), at
+//!   2θh = θo, the slice whose reflection reaches the normal.
 //!
 //! The inner integrand takes cos θi from sin(u/2) alone (cos θi = cos θi(φ_end) + (spread/2)
 //! (sin φ_end sin u − cos φ_end (1 − cos u))), free of cancellation next to the horizon.
@@ -136,6 +138,10 @@ pub struct Microfacet<D, L> {
     /// Whether the lobe dies off fast beyond a few widths (a Gaussian's tail), where the outer
     /// integral is split at [`LOBE_SLOPES`].
     light_tail: bool,
+    /// Whether Λ is flat at the normal (Λ at slope w/4 below [`FLAT_NORMAL`] × Λ at slope w/2, as
+    /// a Gaussian lobe's e^{−cot²θ/α²}), where the outer integral is split at the slice
+    /// reflecting to the normal ([`Oblique::normal_reflection`]).
+    flat_normal: bool,
     tolerance: f64,
 }
 
@@ -159,8 +165,11 @@ where
             "the lobe width is a positive slope, got {width}"
         );
         let [core, tail] = LOBE_SLOPES.map(|k| ndf((k * width).atan()));
+        let [quarter, half] = [0.25, 0.5].map(|k: f64| lambda(1.0 / (k * width).hypot(1.0)));
+        let flat_normal = quarter <= FLAT_NORMAL * half;
         Microfacet {
             light_tail: tail <= LIGHT_TAIL * core,
+            flat_normal,
             ndf,
             lambda,
             g2,
@@ -466,7 +475,13 @@ where
             let quarter = ((0.25 * self.view.elevation).tan() / self.surface.width).atan();
             let slope = self.surface.radial(self.beta_cut).1;
             let mut edges = self.surface.lobe_edges(0.0, quarter);
+            edges.extend(
+                self.normal_reflection()
+                    .filter(|&beta| beta < self.beta_cut),
+            );
             edges.push(self.beta_cut);
+            edges.sort_by(f64::total_cmp);
+            edges.dedup();
             composite(
                 &rules.outer,
                 &edges,
@@ -491,12 +506,29 @@ where
             .into_iter()
             .map(|beta| inverse_smoothstep((beta - self.beta_cut) / self.span))
             .collect();
+        edges.extend(
+            self.normal_reflection()
+                .filter(|&beta| beta > self.beta_cut && beta < self.beta_cut + self.span)
+                .map(|beta| inverse_smoothstep((beta - self.beta_cut) / self.span)),
+        );
         edges.push(0.5);
         edges.push(1.0);
         edges.sort_by(f64::total_cmp);
         edges.dedup();
         let cut = composite(&rules.outer, &edges, Some(start), Some(end), smooth);
         (uncut + cut) / unit
+    }
+
+    /// For a lobe whose Λ is flat at the normal, β where 2θh = θo: the slice whose reflection
+    /// reaches the normal (θi = 0 at φ = 0). A Gaussian lobe's Λ(θi) ∝ e^{−cot²θi/α²} is flat but
+    /// not analytic at θi = 0, which slows the fixed rules wherever it falls inside a panel; an
+    /// outer panel end there keeps them converging. `None` for other lobes and at μo ∈ {0, 1}.
+    fn normal_reflection(&self) -> Option<f64> {
+        let mu = self.view.mu;
+        (self.surface.flat_normal && mu > 0.0 && mu < 1.0).then(|| {
+            let half_theta_o = 0.5 * (FRAC_PI_2 - self.view.elevation);
+            (half_theta_o.tan() / self.surface.width).atan()
+        })
     }
 
     /// E(μo) by nested adaptive Gauss–Kronrod, each level held to an absolute error of
@@ -623,6 +655,11 @@ const LOBE_SLOPES: [f64; 2] = [2.0, 5.0];
 /// for Beckmann, 0.037 for Trowbridge–Reitz.
 const LIGHT_TAIL: f64 = 1e-3;
 
+/// Λ at slope w/4 over Λ at slope w/2 below which Λ is flat at the normal ([`Microfacet`]'s
+/// `flat_normal`): about e^{−12 cot²} … for Beckmann's e^{−cot²θ/α²} (0 to underflow at ordinary
+/// widths), 1/4 for any Λ that starts like tan²θ (Trowbridge–Reitz at every α).
+const FLAT_NORMAL: f64 = 1e-3;
+
 /// cos 2θ = (cos θ − sin θ)(cos θ + sin θ) from sin θ and cos θ: the light's cosine at normal
 /// incidence (θi = 2θh), free of the cancellation of 1 − 2 sin²θ next to θ = π/4.
 #[inline]
@@ -667,7 +704,7 @@ const MIN_GRADING: f64 = 1e-14;
 /// The points of the outer and the inner Gauss–Legendre rule of each level of the fast path
 /// ([`escalate`]): the second only 1.25 × the first, since most values are accepted there (it
 /// costs 656 nodes per outer panel with the first where 16 and 24 cost 832), then growing.
-const LEVELS: [Order; 4] = [
+const LEVELS: [Order; 5] = [
     Order {
         outer: 16,
         inner: 16,
@@ -683,6 +720,10 @@ const LEVELS: [Order; 4] = [
     Order {
         outer: 36,
         inner: 36,
+    },
+    Order {
+        outer: 48,
+        inner: 48,
     },
 ];
 
@@ -702,8 +743,8 @@ struct Rules {
 }
 
 /// The rules of [`LEVELS`], built once.
-fn level_rules() -> &'static [Rules; 4] {
-    static RULES: OnceLock<[Rules; 4]> = OnceLock::new();
+fn level_rules() -> &'static [Rules; 5] {
+    static RULES: OnceLock<[Rules; 5]> = OnceLock::new();
     RULES.get_or_init(|| {
         LEVELS.map(|order| Rules {
             outer: Rule::new(order.outer),
