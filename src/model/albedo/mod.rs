@@ -27,7 +27,8 @@
 //!   w/2 separable): Λ(θi) ~ C/cos θi against Λ(θo) ≈ C/μo; the inner rule runs in u = φ_end − φ,
 //!   the azimuth from the horizon end, graded over the u in which cos θi rises by λ, and the outer
 //!   panels next to β_cut, β_end (and the end of E(1)) are graded on the corresponding scale in β;
-//! - the outer integral is split at θh = ε/4 below the horizon's layer, at the two halves of the
+//! - the outer integral is split at θh = ε/4 below the horizon's layer (for a lobe narrow beside
+//!   the horizon, tan(ε/4) > 2w), at the two halves of the
 //!   cut part, and, for a lobe with a light tail (D at slope 5w below 1e-3 of D at slope 2w:
 //!   Beckmann, high Phong exponents), at slopes 2w and 5w, where a Gaussian dies off; and, for a
 //!   lobe whose Λ is flat at the normal (Beckmann's e^{−cot²θ/α²}, not analytic at θi = 0), at
@@ -471,10 +472,17 @@ where
             outer * graded.integrate(&rules.inner, |u| self.inner(&slice, u, fresnel))
         };
         let uncut = if self.beta_cut > 0.0 {
-            // The lobe below θh = ε/4, the horizon's layer next to θh = ε/2 above it.
-            let quarter = ((0.25 * self.view.elevation).tan() / self.surface.width).atan();
+            // A lobe narrow beside the horizon's distance lies below θh = ε/4, the horizon's layer
+            // next to θh = ε/2 above it: a panel end at ε/4 keeps the layer's grading off the
+            // lobe. A wider lobe reaches the layer anyway, and one panel serves.
+            let quarter_slope = (0.25 * self.view.elevation).tan();
+            let lobe_end = if quarter_slope > NARROW_BESIDE_HORIZON * self.surface.width {
+                (quarter_slope / self.surface.width).atan()
+            } else {
+                self.beta_cut
+            };
             let slope = self.surface.radial(self.beta_cut).1;
-            let mut edges = self.surface.lobe_edges(0.0, quarter);
+            let mut edges = self.surface.lobe_edges(0.0, lobe_end);
             edges.extend(
                 self.normal_reflection()
                     .filter(|&beta| beta < self.beta_cut),
@@ -650,6 +658,10 @@ impl Graded {
 /// The slopes tan β (in units of the lobe width) at which the outer integral is split: the
 /// lobe's core, its shoulder, and its tail, where a Gaussian lobe dies off.
 const LOBE_SLOPES: [f64; 2] = [2.0, 5.0];
+
+/// tan(ε/4) over the lobe width w above which the oblique albedo's outer integral is split at
+/// θh = ε/4 (the lobe below, the horizon's layer above; ε the view's elevation).
+const NARROW_BESIDE_HORIZON: f64 = 2.0;
 
 /// D at slope 5w over D at slope 2w ([`LOBE_SLOPES`]) below which a lobe's tail is light: 4.8e-7
 /// for Beckmann, 0.037 for Trowbridge–Reitz.
