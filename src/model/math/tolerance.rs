@@ -79,7 +79,7 @@ pub const REL_TOL_LAMBDA_INTEGRAL: f64 = 1e-11;
 
 /// Absolute error allowed for G1 = 1/(1 + Λ) from the albedo's tabulated Λ (`masking::LambdaTable`, built to
 /// `masking::table::TABLE_TOLERANCE` = 1e-12) against each family's own Λ, over every domain grid: worst measured
-/// 2.8e-12 (Phong α_p = 0.001 next to the normal), 1.2e-13 for the other families; every G2 and so every albedo
+/// 5.6e-13 (Phong α_p = 0.001 next to the normal), 1e-13 for the other families; every G2 and so every albedo
 /// moves by at most this much.
 pub const LAMBDA_TABLE_TOL: f64 = 5e-12;
 
