@@ -412,6 +412,7 @@ fn labelled(spec: &CurveSpec, label: &Label) -> std::result::Result<(Curve, Stri
             let (inner, mut text) = labelled(ndf, label)?;
             let quantity = quantity.map_fresnel(curve)?;
             let ndf = ndf_of(inner);
+            let prepared = Prepared::default();
             match label {
                 Label::Auto(_) => {
                     for part in crate::spec::quantity::label_parts(&quantity) {
@@ -422,7 +423,7 @@ fn labelled(spec: &CurveSpec, label: &Label) -> std::result::Result<(Curve, Stri
                     }
                 }
                 _ if text.contains(crate::spec::quantity::E_AVG_PLACEHOLDER) => {
-                    if let Some(average) = quantity.label_average(&ndf) {
+                    if let Some(average) = quantity.label_average(&ndf, &prepared) {
                         text = text.replace(
                             crate::spec::quantity::E_AVG_PLACEHOLDER,
                             &format!("{average:.4}"),
@@ -435,7 +436,7 @@ fn labelled(spec: &CurveSpec, label: &Label) -> std::result::Result<(Curve, Stri
                 Curve::Quantity {
                     quantity,
                     ndf,
-                    prepared: Prepared::default(),
+                    prepared,
                 },
                 text,
             ))

@@ -103,6 +103,24 @@ impl<F> Quantity<F> {
 #[derive(Debug, Clone, Default)]
 pub struct Prepared(OnceLock<(albedo::SurfaceParts, Option<albedo::Smoothed>)>);
 
+impl Prepared {
+    /// The surface parts of `ndf` and the surrogate of `fresnel` where it is a tabulated curve,
+    /// found on the first call (for the albedo of `ndf` with `fresnel`, the same on every call).
+    fn of(
+        &self,
+        ndf: &Ndf,
+        fresnel: Option<&Curve>,
+    ) -> &(albedo::SurfaceParts, Option<albedo::Smoothed>) {
+        self.0.get_or_init(|| {
+            let table = match fresnel {
+                Some(Curve::Fresnel(model)) => albedo::tabulated(model),
+                _ => None,
+            };
+            (albedo::SurfaceParts::of(ndf), table)
+        })
+    }
+}
+
 impl PartialEq for Prepared {
     fn eq(&self, _: &Prepared) -> bool {
         true
@@ -126,13 +144,7 @@ impl Quantity<Curve> {
             // A quadrature that fails, or a G1 the family lacks (refused when the spec is read),
             // gives NaN, which evaluation reports as a non-finite value of the curve.
             Quantity::Albedo { model, fresnel } => {
-                let (parts, table) = prepared.0.get_or_init(|| {
-                    let table = match fresnel.as_deref() {
-                        Some(Curve::Fresnel(model)) => albedo::tabulated(model),
-                        _ => None,
-                    };
-                    (albedo::SurfaceParts::of(ndf), table)
-                });
+                let (parts, table) = prepared.of(ndf, fresnel.as_deref());
                 let surface = albedo::surface_with(ndf, parts, *model);
                 let mu_o = theta_o.cos().clamp(0.0, 1.0);
                 let result = match (table, fresnel.as_deref()) {
@@ -153,12 +165,14 @@ const LABEL_E_AVG_TOL: f64 = 1e-7;
 
 impl Quantity<Curve> {
     /// For an albedo, E_avg = 2 ∫₀¹ E(μ) μ dμ of `ndf` with this albedo's G2 and Fresnel, to
-    /// [`LABEL_E_AVG_TOL`]; `None` for other quantities or when the quadrature fails.
-    pub fn label_average(&self, ndf: &Ndf) -> Option<f64> {
+    /// [`LABEL_E_AVG_TOL`], on the surface parts in `prepared` (the curve's, found here if not yet);
+    /// `None` for other quantities or when the quadrature fails.
+    pub fn label_average(&self, ndf: &Ndf, prepared: &Prepared) -> Option<f64> {
         let Quantity::Albedo { model, fresnel } = self else {
             return None;
         };
-        let surface = albedo::surface_of(ndf.clone(), *model).with_tolerance(LABEL_E_AVG_TOL);
+        let (parts, _) = prepared.of(ndf, fresnel.as_deref());
+        let surface = albedo::surface_with(ndf, parts, *model).with_tolerance(LABEL_E_AVG_TOL);
         let result = match fresnel {
             Some(f) => albedo::average_albedo(&surface, Some(&|t| f.eval(t))),
             None => albedo::average_albedo(&surface, None),

@@ -24,7 +24,7 @@ use crate::model::math::chebyshev::Piecewise;
 /// coefficients), so of G1 = t g, far below the albedo's tolerance of 1e-10.
 pub const TABLE_TOLERANCE: f64 = 1e-12;
 
-/// t = cos θ/(cos θ + w sin θ) at θ ∈ (0, π/2] (0 at π/2).
+/// t = cos θ/(cos θ + w sin θ) at θ ∈ (0, π/2] (0 at π/2), from the angle the build takes Λ at.
 #[inline]
 fn t_of(theta: f64, width: f64) -> f64 {
     let (sin, cos) = theta.sin_cos();
@@ -58,19 +58,8 @@ impl LambdaTable {
         Some(LambdaTable { width, g })
     }
 
-    /// Λ at θ ∈ [0, π/2]: 1/(t g(t)) − 1, never below 0; exactly 0 at θ = 0 (the normal) and +∞
-    /// at θ = π/2 (grazing).
-    #[inline]
-    pub fn lambda(&self, theta: f64) -> f64 {
-        if theta <= 0.0 {
-            return 0.0;
-        }
-        let t = t_of(theta, self.width);
-        (1.0 / (t * self.g.eval(t)) - 1.0).max(0.0)
-    }
-
-    /// Λ at μ = cos θ ∈ [0, 1], with t = μ/(μ + w √((1 − μ)(1 + μ))): the same as
-    /// [`LambdaTable::lambda`] at arccos μ to the rounding of the two routes to t.
+    /// Λ at μ = cos θ ∈ [0, 1]: 1/(t g(t)) − 1 with t = μ/(μ + w √((1 − μ)(1 + μ))), never
+    /// below 0; exactly 0 at μ = 1 (the normal) and +∞ at μ = 0 (grazing).
     #[inline]
     pub fn lambda_at_cos(&self, mu: f64) -> f64 {
         let mu = mu.clamp(0.0, 1.0);
@@ -79,11 +68,5 @@ impl LambdaTable {
         }
         let t = mu / (mu + self.width * ((1.0 - mu) * (1.0 + mu)).sqrt());
         (1.0 / (t * self.g.eval(t)) - 1.0).max(0.0)
-    }
-
-    /// The number of Chebyshev pieces (each cost [`crate::model::math::chebyshev::NODES`] + 2
-    /// values of Λ to build).
-    pub fn pieces(&self) -> usize {
-        self.g.pieces()
     }
 }
