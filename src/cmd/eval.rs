@@ -143,8 +143,9 @@ pub fn parse_theta_list(text: &str, unit: AngleUnit) -> Result<ThetaList> {
 
 /// The angles of `eval --theta @FILE`: `text` (read from `name`) holds one angle per line in the
 /// syntax of a `--theta` item; blank lines and lines starting with `#` are skipped. A bad line is
-/// named by its number.
+/// named by its number, the file by its whole name (control characters escaped).
 pub fn parse_theta_file(text: &str, name: &str, unit: AngleUnit) -> Result<ThetaList> {
+    let shown = crate::problem::one_line(name);
     let mut angles = Vec::new();
     for (i, line) in text.lines().enumerate() {
         let item = line.trim();
@@ -153,13 +154,13 @@ pub fn parse_theta_file(text: &str, name: &str, unit: AngleUnit) -> Result<Theta
         }
         if angles.len() as u64 >= MAX_THETA_COUNT {
             return Err(Error::Usage(format!(
-                "--theta: {name}: more than {MAX_THETA_COUNT} values"
+                "--theta: {shown}: more than {MAX_THETA_COUNT} values"
             )));
         }
         let at = |e: Error| match e {
             Error::Usage(message) => Error::Usage(message.replacen(
                 "--theta:",
-                &format!("--theta: {}:{}:", crate::problem::excerpt(name), i + 1),
+                &format!("--theta: {shown}:{}:", i + 1),
                 1,
             )),
             other => other,
@@ -177,8 +178,7 @@ pub fn parse_theta_file(text: &str, name: &str, unit: AngleUnit) -> Result<Theta
     }
     if angles.is_empty() {
         return Err(Error::Usage(format!(
-            "--theta: {}: no angle (expected one per line)",
-            crate::problem::excerpt(name)
+            "--theta: {shown}: no angle (expected one per line)"
         )));
     }
     Ok(ThetaList::Listed(angles))
@@ -186,14 +186,15 @@ pub fn parse_theta_file(text: &str, name: &str, unit: AngleUnit) -> Result<Theta
 
 /// The angles of `eval --theta @FILE --theta-column NAME`: `text` (read from `name`) is CSV with a
 /// header row, and every cell of the column `column` is an angle in the syntax of a `--theta` item.
-/// A missing column names the columns there are; a bad cell is named by its line.
+/// A missing column names the columns there are; a bad cell is named by its line; the file by its
+/// whole name (control characters escaped).
 pub fn parse_theta_column(
     text: &str,
     name: &str,
     column: &str,
     unit: AngleUnit,
 ) -> Result<ThetaList> {
-    let shown = crate::problem::excerpt(name);
+    let shown = crate::problem::one_line(name);
     let bad = |what: String| Error::Usage(format!("--theta-column: {shown}: {what}"));
     let mut reader = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)

@@ -1211,10 +1211,13 @@ fn the_catalogue_is_listed_shown_and_rendered_by_id() {
 
 /// `eval --theta @FILE --theta-column NAME` takes the angles of a CSV column (a shader's samples),
 /// the same table the angles give inline; a missing column lists the columns, a bad cell names its
-/// line, and the option without a file is refused.
+/// line, and the option without a file is refused. The messages name the file whole, however
+/// long its path (here past 60 characters wherever the tests run).
 #[test]
 fn eval_reads_angles_from_a_csv_column() {
-    let dir = scratch("eval-theta-column");
+    let dir =
+        scratch("eval-theta-column").join("samples-of-a-shader-exported-from-an-engine-frame");
+    std::fs::create_dir_all(&dir).unwrap();
     let samples = dir.join("shader.csv");
     std::fs::write(
         &samples,
