@@ -134,15 +134,19 @@ fn run<E>(
             simplex[n] = (reflected, f_reflected);
             continue;
         }
-        // Contract outside (towards the reflected point) or inside (towards the worst one).
-        let (t, bar) = if f_reflected < worst.1 {
-            (REFLECT * CONTRACT, f_reflected)
+        // Contract outside (towards the reflected point), accepted if no worse than it, or inside
+        // (towards the worst one), accepted only if better than the worst: on a flat stretch a
+        // degenerate simplex whose centroid is its worst vertex would otherwise accept that same point
+        // for ever instead of shrinking.
+        let outside = f_reflected < worst.1;
+        let t = if outside {
+            REFLECT * CONTRACT
         } else {
-            (-CONTRACT, worst.1)
+            -CONTRACT
         };
         let contracted = along(t);
         let f_contracted = value(&contracted)?;
-        if f_contracted <= bar {
+        if (outside && f_contracted <= f_reflected) || f_contracted < worst.1 {
             simplex[n] = (contracted, f_contracted);
             continue;
         }
@@ -199,6 +203,22 @@ mod tests {
         let min = minimize(bowl, &[0.5, 0.5], bounds(&lower, &upper, &step)).unwrap();
         assert_eq!(min.x, [1.0, 0.0]);
         assert_eq!(min.value, 8.0);
+    }
+
+    #[test]
+    fn shrinks_on_a_flat_stretch_instead_of_stalling() {
+        // A constant: every trial ties, so only shrinking converges. Accepting a tied inside
+        // contraction moved one vertex for ever and ran each run to max_evaluations (10 002 calls here).
+        let calls = std::cell::Cell::new(0);
+        let flat = |_: &[f64]| {
+            calls.set(calls.get() + 1);
+            Ok::<_, Infallible>(1.0)
+        };
+        let (lower, upper, step) = ([-5.0, -5.0], [5.0, 5.0], [0.5, 0.5]);
+        let min = minimize(flat, &[0.3, -0.2], bounds(&lower, &upper, &step)).unwrap();
+        assert_eq!(min.x, [0.3, -0.2]);
+        // Three runs (the first and two restarts), each ~33 halvings of 4 calls from 0.5 to x_tol.
+        assert!(calls.get() <= 300, "{} evaluations", calls.get());
     }
 
     #[test]
