@@ -18,9 +18,10 @@
 //! VNDF sample space would lump the heavy tail (where 1 − E lives) into a few cells instead.
 //!
 //! The fast path is a tensor product of fixed Gauss–Legendre rules ([`escalate`]): 16 × 16, then
-//! 20 × 20, 26 × 26, 36 × 36 and 48 × 48 points per outer panel (outer × inner), taking the first level within
-//! 30 × the tolerance (3e-11) of the one before; where none agrees, or a value is not finite, the
-//! nested adaptive Gauss–Kronrod ([`crate::model::math::quad::integrate`]) to the tolerance. The
+//! 20 × 20, 26 × 26, 36 × 36 and 48 × 48 points per outer panel (outer × inner), each panel taking
+//! the first level within 30 × the tolerance (3e-11) of the one before on its own, so a slow panel
+//! does not raise the others' level; where a panel's levels never agree, or a value is not finite,
+//! the nested adaptive Gauss–Kronrod ([`crate::model::math::quad::integrate`]) to the tolerance. The
 //! rules see smooth integrands because every feature sits at a panel end with a known scale, to
 //! which a sinh map x = a + δ sinh(t asinh((b − a)/δ)) grades the nodes ([`Graded`]):
 //! - next to the horizon G2/μo turns over on the scale λ = min(w, μo)/2 in cos θi (height-correlated;
@@ -272,7 +273,7 @@ where
             escalate(tolerance, |rules| self.normal_fixed(fresnel, &rules.outer))
         } else {
             let oblique = Oblique::new(self, mu_o);
-            match escalate(tolerance, |rules| oblique.fixed(fresnel, rules)) {
+            match oblique.fixed(fresnel, tolerance) {
                 Some(value) => return Ok(value),
                 None => return oblique.adaptive(fresnel, tolerance),
             }
@@ -445,12 +446,12 @@ where
         }
     }
 
-    /// E(μo) by the tensor product of `rules`: the outer rule on [0, β_cut] in β and on the two
-    /// halves of [0, 1] in s, the inner rule on [0, φmax] of each slice, each through a sinh map
-    /// that grades its nodes towards the end where the weight's layer ([`Oblique::layer`]) sits.
-    /// NaN if an integrand is not finite.
-    fn fixed(&self, fresnel: Fresnel, rules: &Rules) -> f64 {
-        let layer = self.layer();
+    /// E(μo) by the tensor product of the fixed rules on each outer panel ([`Oblique::panels`]):
+    /// every panel escalates through [`LEVELS`] on its own ([`escalate`], to its share of
+    /// `tolerance`), so one slow panel — a lobe's tail, the slice reflecting to the normal — does
+    /// not take the others to its level. At μo = 0 the unit C is escalated first. `None` if a
+    /// panel's levels never agree or a value is not finite.
+    fn fixed(&self, fresnel: Fresnel, tolerance: f64) -> Option<f64> {
         let unit = match self.lambda_o {
             Some(_) => 1.0,
             None => {
@@ -460,18 +461,30 @@ where
                     .into_iter()
                     .map(|beta| inverse_smoothstep(beta / FRAC_PI_2))
                     .collect();
-                composite(&rules.outer, &edges, None, None, |s| self.visible(s))
+                escalate(tolerance, |rules| {
+                    composite(&rules.outer, &edges, None, None, |s| self.visible(s))
+                })?
             }
         };
-        let radial = |beta: f64, beta_jacobian: f64| {
-            let (outer, slice) = self.slice(beta, beta_jacobian);
-            if outer == 0.0 || slice.phi_end <= 0.0 {
-                return 0.0;
-            }
-            let graded = Graded::towards_start(0.0, slice.phi_end, slice.layer_width(layer));
-            outer * graded.integrate(&rules.inner, |u| self.inner(&slice, u, fresnel))
-        };
-        let uncut = if self.beta_cut > 0.0 {
+        let panels = self.panels();
+        let share = tolerance * unit;
+        let layer = self.layer();
+        let mut sum = 0.0;
+        for panel in &panels {
+            sum += escalate(share, |rules| self.panel(panel, layer, fresnel, rules))?;
+        }
+        Some(sum / unit)
+    }
+
+    /// The outer panels of the fixed rules: on [0, β_cut] in β, split at the lobe's edges
+    /// ([`Microfacet::lobe_edges`]), at θh = ε/4 for a lobe narrow beside the horizon and at the
+    /// slice reflecting to the normal, the last panel graded towards β_cut on the weight's layer
+    /// ([`Oblique::layer`]); and on [0, 1] in s (the cut part), split at the same points, at its
+    /// half and graded towards both ends, where the azimuth range closes like s².
+    fn panels(&self) -> Vec<Panel> {
+        let layer = self.layer();
+        let mut panels = Vec::new();
+        if self.beta_cut > 0.0 {
             // A lobe narrow beside the horizon's distance lies below θh = ε/4, the horizon's layer
             // next to θh = ε/2 above it: a panel end at ε/4 keeps the layer's grading off the
             // lobe. A wider lobe reaches the layer anyway, and one panel serves.
@@ -490,20 +503,11 @@ where
             edges.push(self.beta_cut);
             edges.sort_by(f64::total_cmp);
             edges.dedup();
-            composite(
-                &rules.outer,
-                &edges,
-                None,
-                Some(layer / (2.0 * slope)),
-                |beta| radial(beta, 1.0),
-            )
-        } else {
-            0.0
-        };
-        let smooth = |s: f64| {
-            let (beta, beta_jacobian) = self.smoothstep(s);
-            radial(beta, beta_jacobian)
-        };
+            panels.extend(
+                graded_panels(&edges, None, Some(layer / (2.0 * slope)))
+                    .map(|graded| Panel { graded, cut: false }),
+            );
+        }
         let start_slope = self.surface.radial(self.beta_cut).1;
         let start = (layer / (6.0 * self.span * start_slope)).sqrt();
         let end_slope = self.surface.radial(self.beta_cut + self.span).1;
@@ -523,8 +527,33 @@ where
         edges.push(1.0);
         edges.sort_by(f64::total_cmp);
         edges.dedup();
-        let cut = composite(&rules.outer, &edges, Some(start), Some(end), smooth);
-        (uncut + cut) / unit
+        panels.extend(
+            graded_panels(&edges, Some(start), Some(end)).map(|graded| Panel { graded, cut: true }),
+        );
+        panels
+    }
+
+    /// One outer panel by the tensor product of `rules`: the outer rule over the panel, the inner
+    /// rule on [0, φ_end] of each slice, graded towards the horizon end over the weight's `layer`.
+    fn panel(&self, panel: &Panel, layer: f64, fresnel: Fresnel, rules: &Rules) -> f64 {
+        let radial = |beta: f64, beta_jacobian: f64| {
+            let (outer, slice) = self.slice(beta, beta_jacobian);
+            if outer == 0.0 || slice.phi_end <= 0.0 {
+                return 0.0;
+            }
+            let graded = Graded::towards_start(0.0, slice.phi_end, slice.layer_width(layer));
+            outer * graded.integrate(&rules.inner, |u| self.inner(&slice, u, fresnel))
+        };
+        if panel.cut {
+            panel.graded.integrate(&rules.outer, |s| {
+                let (beta, beta_jacobian) = self.smoothstep(s);
+                radial(beta, beta_jacobian)
+            })
+        } else {
+            panel
+                .graded
+                .integrate(&rules.outer, |beta| radial(beta, 1.0))
+        }
     }
 
     /// For a lobe whose Λ is flat at the normal, β where 2θh = θo: the slice whose reflection
@@ -684,8 +713,7 @@ fn inverse_smoothstep(y: f64) -> f64 {
     0.5 - ((1.0 - 2.0 * y).clamp(-1.0, 1.0).asin() / 3.0).sin()
 }
 
-/// ∫ f over the panels between successive `edges` by `rule`, the first panel graded towards its
-/// start by `start` and the last towards its end by `end` ([`Graded`]), where given.
+/// ∫ f over the panels between successive `edges` by `rule`, graded as [`graded_panels`].
 fn composite(
     rule: &Rule,
     edges: &[f64],
@@ -693,21 +721,34 @@ fn composite(
     end: Option<f64>,
     mut f: impl FnMut(f64) -> f64,
 ) -> f64 {
+    graded_panels(edges, start, end)
+        .map(|graded| graded.integrate(rule, &mut f))
+        .sum()
+}
+
+/// The panels between successive `edges` (empty ones skipped), the first graded towards its start
+/// by `start` and the last towards its end by `end` ([`Graded`]), where given.
+fn graded_panels(
+    edges: &[f64],
+    start: Option<f64>,
+    end: Option<f64>,
+) -> impl Iterator<Item = Graded> + '_ {
     let last = edges.len() - 2;
-    let mut sum = 0.0;
-    for (k, pair) in edges.windows(2).enumerate() {
+    edges.windows(2).enumerate().filter_map(move |(k, pair)| {
         let (a, b) = (pair[0], pair[1]);
-        if b <= a {
-            continue;
-        }
-        let graded = match (k, start, end) {
+        (b > a).then(|| match (k, start, end) {
             (k, _, Some(delta)) if k == last => Graded::towards_end(a, b, delta),
             (0, Some(delta), _) => Graded::towards_start(a, b, delta),
             _ => Graded::towards_end(a, b, f64::INFINITY),
-        };
-        sum += graded.integrate(rule, &mut f);
-    }
-    sum
+        })
+    })
+}
+
+/// One outer panel of the oblique albedo's fixed rules: its graded interval, in β or, for the
+/// cut part, in s ([`Oblique::smoothstep`]).
+struct Panel {
+    graded: Graded,
+    cut: bool,
 }
 
 /// The finest grading of [`Graded`], relative to its interval: far below any layer that matters.
