@@ -388,7 +388,8 @@ pub fn l2_projected_with(
 
 /// [`l2_projected_with`] over `range` only: sqrt(2π ∫ (a − b)² sin θ cos θ dθ) from lo to hi, integrated
 /// as P² ∫ ((a − b)/P)² with P the larger peak, so that no square overflows (lobes as narrow as the
-/// families allow peak near 1e300), under the local shift of [`L2_SHIFT`].
+/// families allow peak near 1e300), under the local shift of [`L2_SHIFT`]. An integral that does not
+/// converge errs with its estimate and error as l2 values (`QuadError::NotConverged`).
 pub fn l2_projected_over(
     a: &Curve,
     b: &Curve,
@@ -465,8 +466,19 @@ pub fn l2_projected_over(
         width,
         shift,
         tol,
-    )?;
-    Ok(scale * squared.value.max(0.0).sqrt())
+    );
+    let l2 = |squared: f64| scale * squared.max(0.0).sqrt();
+    match squared {
+        Ok(squared) => Ok(l2(squared.value)),
+        // Unconverged, the estimate and its error in l2's own units: P √I ± P (√(I + e) − √I).
+        Err(MetricError::Quad(QuadError::NotConverged { estimate, error })) => {
+            Err(MetricError::Quad(QuadError::NotConverged {
+                estimate: l2(estimate),
+                error: l2(estimate + error) - l2(estimate),
+            }))
+        }
+        Err(e) => Err(e),
+    }
 }
 
 /// `l2_projected` of two curves (see [`l2_projected_with`]), their peaks taken as their values at the
