@@ -188,7 +188,8 @@ impl SearchDomain {
         let lo = match (log, param.min.inclusive) {
             (false, _) => min,
             (true, true) => min.max(f64::MIN_POSITIVE),
-            (true, false) => min.next_up().max(f64::MIN_POSITIVE),
+            // The next double above min ≥ 0 (f64::next_up needs Rust 1.86; the crate builds on 1.85).
+            (true, false) => f64::from_bits(min.to_bits() + 1).max(f64::MIN_POSITIVE),
         };
         SearchDomain {
             param,
