@@ -447,10 +447,9 @@ where
     }
 
     /// E(μo) by the tensor product of the fixed rules on each outer panel ([`Oblique::panels`]):
-    /// every panel escalates through [`LEVELS`] on its own ([`escalate`], to its share of
-    /// `tolerance`), so one slow panel — a lobe's tail, the slice reflecting to the normal — does
-    /// not take the others to its level. At μo = 0 the unit C is escalated first. `None` if a
-    /// panel's levels never agree or a value is not finite.
+    /// every panel escalates through [`LEVELS`] on its own ([`escalate`], to `tolerance` in units
+    /// of E), so one slow panel does not take the others to its level. At μo = 0 the unit C is
+    /// escalated first. `None` if a panel's levels never agree or a value is not finite.
     fn fixed(&self, fresnel: Fresnel, tolerance: f64) -> Option<f64> {
         let unit = match self.lambda_o {
             Some(_) => 1.0,
@@ -466,12 +465,12 @@ where
                 })?
             }
         };
-        let panels = self.panels();
-        let share = tolerance * unit;
         let layer = self.layer();
         let mut sum = 0.0;
-        for panel in &panels {
-            sum += escalate(share, |rules| self.panel(panel, layer, fresnel, rules))?;
+        for panel in &self.panels(layer) {
+            sum += escalate(tolerance * unit, |rules| {
+                self.panel(panel, layer, fresnel, rules)
+            })?;
         }
         Some(sum / unit)
     }
@@ -479,10 +478,9 @@ where
     /// The outer panels of the fixed rules: on [0, β_cut] in β, split at the lobe's edges
     /// ([`Microfacet::lobe_edges`]), at θh = ε/4 for a lobe narrow beside the horizon and at the
     /// slice reflecting to the normal, the last panel graded towards β_cut on the weight's layer
-    /// ([`Oblique::layer`]); and on [0, 1] in s (the cut part), split at the same points, at its
-    /// half and graded towards both ends, where the azimuth range closes like s².
-    fn panels(&self) -> Vec<Panel> {
-        let layer = self.layer();
+    /// `layer` ([`Oblique::layer`]); and on [0, 1] in s (the cut part), split at the same points, at
+    /// its half and graded towards both ends, where the azimuth range closes like s².
+    fn panels(&self, layer: f64) -> Vec<Panel> {
         let mut panels = Vec::new();
         if self.beta_cut > 0.0 {
             // A lobe narrow beside the horizon's distance lies below θh = ε/4, the horizon's layer

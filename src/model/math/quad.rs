@@ -152,7 +152,8 @@ pub fn integrate(f: impl Fn(f64) -> f64, a: f64, b: f64, rel_tol: f64) -> Result
             continue;
         }
         let index = worst.pop().expect("every piece is in the heap").index;
-        let Piece { a, b, .. } = pieces[index];
+        let old = pieces[index];
+        let (a, b) = (old.a, old.b);
         let mid = 0.5 * (a + b);
         if pieces.len() >= MAX_SUBINTERVALS || mid <= a || mid >= b {
             if since_sync > 0 {
@@ -163,7 +164,6 @@ pub fn integrate(f: impl Fn(f64) -> f64, a: f64, b: f64, rel_tol: f64) -> Result
                 error,
             });
         }
-        let old = pieces[index];
         let (left, right) = (gauss_kronrod_15(&f, a, mid)?, gauss_kronrod_15(&f, mid, b)?);
         pieces[index] = left;
         pieces.push(right);
