@@ -14,7 +14,7 @@
 use std::sync::OnceLock;
 
 use crate::model::albedo::{
-    self, Fresnel, Microfacet, ProgressFn, RoughnessMap, Table, albedo_table_at,
+    self, Fresnel, Lambda, Microfacet, ProgressFn, RoughnessMap, Table, albedo_table_at,
     average_albedo_table_at, dfg_tables,
 };
 use crate::model::masking::G2Model;
@@ -136,7 +136,7 @@ pub fn compare<D, L>(
 ) -> Result<Vec<Cell>, QuadError>
 where
     D: Fn(f64) -> f64 + Sync + Send,
-    L: Fn(f64) -> f64 + Sync + Send,
+    L: Lambda + Sync + Send,
 {
     let (mu, r) = grid.coordinates();
     let (mu_eval, r_eval) = grid.evaluated();

@@ -92,6 +92,7 @@ mod tabulated;
 
 pub use tabulated::Smoothed;
 
+use std::borrow::Borrow;
 use std::cell::Cell;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 use std::fmt;
@@ -103,6 +104,7 @@ use rayon::prelude::*;
 use crate::model::domain::DomainError;
 use crate::model::fresnel::basis::basis;
 use crate::model::masking::{G2Model, LambdaTable, g1};
+use crate::model::math::elementary::{self, Block};
 use crate::model::math::gauss_legendre::Rule;
 use crate::model::math::quad::{QuadError, integrate};
 use crate::model::math::tolerance::{ALBEDO_QUAD_REL_TOL, ALBEDO_TABULATED_TOL};
@@ -127,6 +129,31 @@ pub fn tabulated(fresnel: &crate::model::fresnel::Fresnel) -> Option<Smoothed> {
 /// tabulated weight to integrate like the interpolant (measured: within 6e-12 of the interpolant's direct integral for GGX α = 0.01 … 0.2 at μo = 0.5, from 9 cells on).
 pub const SMOOTHED_CELLS: f64 = 8.0;
 
+/// Smith's Λ of a surface as the albedo integrals take it, at μ = cos θ ∈ [0, 1] (0 at μ = 1,
+/// growing like 1/μ towards grazing): any `Fn(f64) -> f64` of μ, or an NDF's own with its
+/// [`SurfaceParts`] ([`surface_with`], [`surface_of`]), whose table also runs a block in vector lanes.
+pub trait Lambda {
+    /// Λ at μ = cos θ.
+    fn at_cos(&self, mu: f64) -> f64;
+
+    /// `out[k]` = Λ(`mus[k]`), the values of [`Lambda::at_cos`] (lengths equal, at most 64),
+    /// called inside [`elementary::widest`]; one at a time unless the implementation has a block
+    /// path.
+    #[inline(always)]
+    fn at_cos_many(&self, mus: &[f64], out: &mut [f64]) {
+        for (out, &mu) in out.iter_mut().zip(mus) {
+            *out = self.at_cos(mu);
+        }
+    }
+}
+
+impl<F: Fn(f64) -> f64> Lambda for F {
+    #[inline(always)]
+    fn at_cos(&self, mu: f64) -> f64 {
+        self(mu)
+    }
+}
+
 /// An isotropic microfacet surface as the albedo integrals see it: D(θm), normalized over projected
 /// area; Smith's Λ as a function of μ = cos θ (Λ = 0 at μ = 1, growing like 1/μ towards grazing:
 /// the integrals have the cosine of the light's angle, not the angle); the G2 model; and the lobe
@@ -150,7 +177,7 @@ pub struct Microfacet<D, L> {
 impl<D, L> Microfacet<D, L>
 where
     D: Fn(f64) -> f64,
-    L: Fn(f64) -> f64,
+    L: Lambda,
 {
     /// The surface with D(θ) = `ndf`(θ), Λ = `lambda`(cos θ) and the lobe width w =
     /// [`median_slope`]`(ndf)`.
@@ -167,7 +194,7 @@ where
             "the lobe width is a positive slope, got {width}"
         );
         let [core, tail] = LOBE_SLOPES.map(|k| ndf((k * width).atan()));
-        let [quarter, half] = [0.25, 0.5].map(|k: f64| lambda(1.0 / (k * width).hypot(1.0)));
+        let [quarter, half] = [0.25, 0.5].map(|k: f64| lambda.at_cos(1.0 / (k * width).hypot(1.0)));
         let flat_normal = quarter <= FLAT_NORMAL * half;
         Microfacet {
             light_tail: tail <= LIGHT_TAIL * core,
@@ -235,7 +262,7 @@ where
     /// each piece between successive nodes θh = arccos c_j over [0, π/4], where L is linear in
     /// cos θh, each piece held to the surface's tolerance in its share of E.
     fn normal_tabulated(&self, weight: &Smoothed) -> Result<f64, QuadError> {
-        let lambda_o = (self.lambda)(1.0);
+        let lambda_o = self.lambda.at_cos(1.0);
         let corner = FRAC_PI_4.cos();
         let mut edges = vec![0.0];
         edges.extend(
@@ -250,7 +277,9 @@ where
         let share = 1.0 / (2.0 * PI * (edges.len() - 1) as f64);
         let integrand = |theta_h: f64| {
             let (sin, cos) = theta_h.sin_cos();
-            let g2 = self.g2.g2(lambda_o, (self.lambda)(cos_double(sin, cos)));
+            let g2 = self
+                .g2
+                .g2(lambda_o, self.lambda.at_cos(cos_double(sin, cos)));
             Ok((self.ndf)(theta_h) * g2 * weight.linear_at_cos(cos) * cos * sin)
         };
         let mut sum = 0.0;
@@ -316,14 +345,16 @@ where
     fn normal_integrand(&self, beta: f64, lambda_o: f64, fresnel: Fresnel) -> f64 {
         let (theta_h, jacobian) = self.radial(beta);
         let (sin, cos) = theta_h.sin_cos();
-        let g2 = self.g2.g2(lambda_o, (self.lambda)(cos_double(sin, cos)));
+        let g2 = self
+            .g2
+            .g2(lambda_o, self.lambda.at_cos(cos_double(sin, cos)));
         let f = fresnel.map_or(1.0, |f| f(theta_h));
         (self.ndf)(theta_h) * g2 * f * cos * sin * jacobian
     }
 
     /// E(1) = 2π ∫₀^{π/4} D(θh) G2(Λ(0), Λ(2θh)) F(θh) cos θh sin θh dθh by `rule` in β.
     fn normal_fixed(&self, fresnel: Fresnel, rule: &Rule) -> f64 {
-        let lambda_o = (self.lambda)(1.0);
+        let lambda_o = self.lambda.at_cos(1.0);
         let end = self.normal_end();
         let layer = 0.5 * self.width.min(1.0);
         let delta = layer / (2.0 * self.radial(end).1);
@@ -339,7 +370,7 @@ where
 
     /// E(1) by adaptive Gauss–Kronrod in β, held to `tolerance`.
     fn normal_albedo(&self, fresnel: Fresnel, tolerance: f64) -> Result<f64, QuadError> {
-        let lambda_o = (self.lambda)(1.0);
+        let lambda_o = self.lambda.at_cos(1.0);
         let integrand = |beta: f64| Ok(self.normal_integrand(beta, lambda_o, fresnel));
         Ok(2.0
             * PI
@@ -371,7 +402,7 @@ struct Oblique<'s, D, L> {
 impl<'s, D, L> Oblique<'s, D, L>
 where
     D: Fn(f64) -> f64,
-    L: Fn(f64) -> f64,
+    L: Lambda,
 {
     fn new(surface: &'s Microfacet<D, L>, mu_o: f64) -> Self {
         let view = View::new(mu_o);
@@ -382,7 +413,7 @@ where
         } else {
             FRAC_PI_2
         };
-        let lambda_o = (mu_o > 0.0).then(|| (surface.lambda)(mu_o));
+        let lambda_o = (mu_o > 0.0).then(|| surface.lambda.at_cos(mu_o));
         Oblique {
             surface,
             view,
@@ -431,8 +462,8 @@ where
     /// The inner integrand at u = φ_end − φ of `slice`: weight(Λ(θi)) F(θd) ⟨ωo, h⟩.
     fn inner(&self, slice: &Slice, u: f64, fresnel: Fresnel) -> f64 {
         let point = slice.at(u);
-        let f = fresnel.map_or(1.0, |f| f(point.theta_d()));
-        self.weight((self.surface.lambda)(point.cos_i.clamp(0.0, 1.0))) * f * point.dot
+        let f = fresnel.map_or(1.0, |f| f(theta_d(point.dot)));
+        self.weight(self.surface.lambda.at_cos(point.cos_i.clamp(0.0, 1.0))) * f * point.dot
     }
 
     /// The scale in cos θi over which the weight G2/μo turns over next to the horizon: Λ(θi)
@@ -540,7 +571,7 @@ where
                 return 0.0;
             }
             let graded = Graded::towards_start(0.0, slice.phi_end, slice.layer_width(layer));
-            outer * graded.integrate(&rules.inner, |u| self.inner(&slice, u, fresnel))
+            outer * self.inner_fixed(&slice, &graded, rules, fresnel)
         };
         if panel.cut {
             panel.graded.integrate(&rules.outer, |s| {
@@ -552,6 +583,38 @@ where
                 .graded
                 .integrate(&rules.outer, |beta| radial(beta, 1.0))
         }
+    }
+
+    /// ∫ of [`Oblique::inner`] over `slice` by the inner rule of `rules` in the variable of
+    /// `graded` (u from the horizon end), in stages: the nodes' geometry (the grading's exp, sin/cos
+    /// of u/2) for the whole rule in vector lanes ([`elementary::widest`]), then Λ(θi) and F(θd)
+    /// node by node, then the weighted sum in the rule's order: the value [`Rule::integrate`] gives
+    /// for the same integrand.
+    fn inner_fixed(&self, slice: &Slice, graded: &Graded, rules: &Rules, fresnel: Fresnel) -> f64 {
+        let rule = &rules.inner;
+        let mut nodes = InnerNodes {
+            slice,
+            graded,
+            lambda: &self.surface.lambda,
+            nodes: &rules.inner_nodes,
+            lambda_i: [0.0; MAX_INNER],
+            dot: [0.0; MAX_INNER],
+            jacobian: [0.0; MAX_INNER],
+        };
+        elementary::widest(&mut nodes);
+        let InnerNodes {
+            lambda_i,
+            dot,
+            jacobian,
+            ..
+        } = nodes;
+        let mut sum = 0.0;
+        for (k, &(_, w)) in rule.points.iter().enumerate() {
+            let f = fresnel.map_or(1.0, |f| f(theta_d(dot[k])));
+            let value = self.weight(lambda_i[k]) * f * dot[k];
+            sum += w * (value * jacobian[k]);
+        }
+        sum
     }
 
     /// For a lobe whose Λ is flat at the normal, β where 2θh = θo: the slice whose reflection
@@ -652,13 +715,13 @@ impl Graded {
         }
     }
 
-    /// (x, dx/dt) at t ∈ [0, 1].
+    /// (x, dx/dt) at t ∈ [0, 1], by branch-free code (both maps computed, one selected) so that a
+    /// loop over it vectorizes.
+    #[inline(always)]
     fn point(&self, t: f64) -> (f64, f64) {
-        if self.stretch == 0.0 {
-            return (self.a + (self.b - self.a) * t, self.b - self.a);
-        }
+        let linear = (self.a + (self.b - self.a) * t, self.b - self.a);
         let tau = if self.towards_b { 1.0 - t } else { t };
-        let e = (self.stretch * tau).exp();
+        let e = elementary::exp(self.stretch * tau);
         let (sinh, cosh) = (0.5 * (e - 1.0 / e), 0.5 * (e + 1.0 / e));
         let offset = self.delta * sinh;
         let x = if self.towards_b {
@@ -666,7 +729,12 @@ impl Graded {
         } else {
             self.a + offset
         };
-        (x, self.delta * self.stretch * cosh)
+        let stretched = (x, self.delta * self.stretch * cosh);
+        if self.stretch == 0.0 {
+            linear
+        } else {
+            stretched
+        }
     }
 
     /// ∫ₐᵇ f(x) dx by `rule` in t.
@@ -749,6 +817,40 @@ struct Panel {
     cut: bool,
 }
 
+/// The geometry at every node of an inner rule on one slice ([`Oblique::inner_fixed`]'s first
+/// stage): cos θi (clamped to [0, 1]), ⟨ωo, h⟩ and du/dt at u = `graded`(t) for each t of `nodes`
+/// (at most [`MAX_INNER`], a multiple of [`LANES`]).
+struct InnerNodes<'a, 'v, L> {
+    slice: &'a Slice<'v>,
+    graded: &'a Graded,
+    lambda: &'a L,
+    nodes: &'a [f64],
+    lambda_i: [f64; MAX_INNER],
+    dot: [f64; MAX_INNER],
+    jacobian: [f64; MAX_INNER],
+}
+
+impl<L: Lambda> Block for InnerNodes<'_, '_, L> {
+    #[inline(always)]
+    fn run(&mut self) {
+        let mut cos_i = [0.0; MAX_INNER];
+        let outputs = cos_i.iter_mut().zip(&mut self.dot).zip(&mut self.jacobian);
+        for (&t, ((cos_i, dot), jacobian)) in self.nodes.iter().zip(outputs) {
+            let (u, du) = self.graded.point(t);
+            let point = self.slice.at(u);
+            *cos_i = point.cos_i.clamp(0.0, 1.0);
+            *dot = point.dot;
+            *jacobian = du;
+        }
+        let n = self.nodes.len();
+        self.lambda
+            .at_cos_many(&cos_i[..n], &mut self.lambda_i[..n]);
+    }
+}
+
+/// The most points of an inner rule ([`LEVELS`]): the size of [`Oblique::inner_fixed`]'s stages.
+const MAX_INNER: usize = 48;
+
 /// The finest grading of [`Graded`], relative to its interval: far below any layer that matters.
 const MIN_GRADING: f64 = 1e-14;
 
@@ -791,15 +893,27 @@ struct Order {
 struct Rules {
     outer: Rule,
     inner: Rule,
+    /// The inner rule's points t, then ½ up to a multiple of [`LANES`]: the first stage of
+    /// [`Oblique::inner_fixed`] runs over whole vectors, its padding's values unused.
+    inner_nodes: Vec<f64>,
 }
+
+/// The lanes of the widest vectors [`elementary::widest`] runs in (AVX-512: 8 doubles).
+const LANES: usize = 8;
 
 /// The rules of [`LEVELS`], built once.
 fn level_rules() -> &'static [Rules; 5] {
     static RULES: OnceLock<[Rules; 5]> = OnceLock::new();
     RULES.get_or_init(|| {
-        LEVELS.map(|order| Rules {
-            outer: Rule::new(order.outer),
-            inner: Rule::new(order.inner),
+        LEVELS.map(|order| {
+            let inner = Rule::new(order.inner);
+            let mut inner_nodes: Vec<f64> = inner.points.iter().map(|&(t, _)| t).collect();
+            inner_nodes.resize(order.inner.next_multiple_of(LANES), 0.5);
+            Rules {
+                outer: Rule::new(order.outer),
+                inner,
+                inner_nodes,
+            }
         })
     })
 }
@@ -871,12 +985,10 @@ struct Azimuth {
     cos_i: f64,
 }
 
-impl Azimuth {
-    /// θd, the angle between ωo and h: arccos⟨ωo, h⟩. Next to θd = 0 that angle is off by up to
-    /// ~1e-8, which moves F(θd) — smooth and even in θd there — by ~1e-16.
-    fn theta_d(&self) -> f64 {
-        self.dot.clamp(-1.0, 1.0).acos()
-    }
+/// θd, the angle between ωo and h, from ⟨ωo, h⟩: its arccos. Next to θd = 0 that angle is off by up
+/// to ~1e-8, which moves F(θd) — smooth and even in θd there — by ~1e-16.
+fn theta_d(dot: f64) -> f64 {
+    dot.clamp(-1.0, 1.0).acos()
 }
 
 impl View {
@@ -939,8 +1051,9 @@ impl Slice<'_> {
     /// The azimuth u = φ_end − φ from the horizon end: with σ = sin(u/2), cos u = 1 − 2σ², and
     /// cos θi = cos θi(φ_end) + (spread/2)(sin φ_end sin u − cos φ_end (1 − cos u)), free of
     /// cancellation next to the horizon.
+    #[inline(always)]
     fn at(&self, u: f64) -> Azimuth {
-        let (half_sin, half_cos) = (0.5 * u).sin_cos();
+        let (half_sin, half_cos) = elementary::sin_cos(0.5 * u);
         let sin_u = 2.0 * half_sin * half_cos;
         let versine = 2.0 * half_sin * half_sin;
         let cos_u = 1.0 - versine;
@@ -1021,11 +1134,12 @@ pub fn lobe(family: Family, params: &[f64]) -> Result<Option<Ndf>, NoLobe> {
 }
 
 /// What turning an NDF into a surface costs integrals for, found once: its [`median_slope`] (the
-/// lobe width) and Λ as a [`LambdaTable`] built from [`Ndf::lambda`] (G1 within 1e-12; ~30 ns a
-/// value instead of a quadrature's 10–25 µs for four families, Phong's 1.5 µs and Student-t's
-/// 80 ns), or `None` — Λ is then [`Ndf::lambda`] itself — for Trowbridge–Reitz and Beckmann,
-/// whose few elementary functions cost less than the table, and where the table does not converge
-/// or D is unbounded at grazing (module masking::table).
+/// lobe width) and Λ as a [`LambdaTable`] built from [`Ndf::lambda`] (G1 within 1e-12; a few ns a
+/// value in a block of the albedo's inner nodes, instead of a quadrature's 10–25 µs for four
+/// families, Phong's 1.5 µs, Student-t's 80 ns and Beckmann's ~35 ns), or `None` — Λ is then
+/// [`Ndf::lambda`] itself — for Trowbridge–Reitz, whose root and division cost no more than the
+/// table, and where the table does not converge or D is unbounded at grazing (module
+/// masking::table).
 /// A curve keeps them for all its values ([`surface_with`]); the same NDF gives the same parts.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SurfaceParts {
@@ -1037,7 +1151,7 @@ impl SurfaceParts {
     /// The parts of `ndf`.
     pub fn of(ndf: &Ndf) -> SurfaceParts {
         let width = median_slope(|theta| ndf.eval(theta));
-        let elementary = matches!(ndf, Ndf::TrowbridgeReitz(_) | Ndf::Beckmann(_));
+        let elementary = matches!(ndf, Ndf::TrowbridgeReitz(_));
         let table = if elementary || ndf.unbounded_at_grazing() {
             None
         } else {
@@ -1056,6 +1170,32 @@ impl SurfaceParts {
     }
 }
 
+/// Λ of an NDF by its [`SurfaceParts`] (each held or borrowed): the [`Lambda`] of [`surface_with`]
+/// and [`surface_of`], a table's block in vector lanes ([`LambdaTable::lambda_at_cos_many`]).
+struct SurfaceLambda<N, P> {
+    ndf: N,
+    parts: P,
+}
+
+impl<N: Borrow<Ndf>, P: Borrow<SurfaceParts>> Lambda for SurfaceLambda<N, P> {
+    #[inline(always)]
+    fn at_cos(&self, mu: f64) -> f64 {
+        self.parts.borrow().lambda_at_cos(self.ndf.borrow(), mu)
+    }
+
+    #[inline(always)]
+    fn at_cos_many(&self, mus: &[f64], out: &mut [f64]) {
+        match &self.parts.borrow().table {
+            Some(table) => table.lambda_at_cos_many(mus, out),
+            None => {
+                for (out, &mu) in out.iter_mut().zip(mus) {
+                    *out = self.ndf.borrow().lambda_at_cos(mu);
+                }
+            }
+        }
+    }
+}
+
 /// The microfacet surface of `ndf` under `g2` with its [`SurfaceParts`] `parts` (found for this
 /// `ndf`): D by [`Ndf::eval`], Λ ([`Ndf::lambda_at_cos`] or the table's) and the width from the
 /// parts.
@@ -1063,10 +1203,10 @@ pub fn surface_with<'a>(
     ndf: &'a Ndf,
     parts: &'a SurfaceParts,
     g2: G2Model,
-) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send + 'a, impl Fn(f64) -> f64 + Sync + Send + 'a> {
+) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send + 'a, impl Lambda + Sync + Send + 'a> {
     Microfacet::with_width(
         move |theta| ndf.eval(theta),
-        move |mu| parts.lambda_at_cos(ndf, mu),
+        SurfaceLambda { ndf, parts },
         g2,
         parts.width,
     )
@@ -1077,13 +1217,16 @@ pub fn surface_with<'a>(
 pub fn surface_of(
     ndf: Ndf,
     g2: G2Model,
-) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send, impl Fn(f64) -> f64 + Sync + Send> {
+) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send, impl Lambda + Sync + Send> {
     let parts = SurfaceParts::of(&ndf);
     let width = parts.width;
     let for_lambda = ndf.clone();
     Microfacet::with_width(
         move |theta| ndf.eval(theta),
-        move |mu| parts.lambda_at_cos(&for_lambda, mu),
+        SurfaceLambda {
+            ndf: for_lambda,
+            parts,
+        },
         g2,
         width,
     )
@@ -1149,7 +1292,7 @@ pub fn median_slope(ndf: impl Fn(f64) -> f64) -> f64 {
 pub fn average_albedo<D, L>(surface: &Microfacet<D, L>, fresnel: Fresnel) -> Result<f64, QuadError>
 where
     D: Fn(f64) -> f64,
-    L: Fn(f64) -> f64,
+    L: Lambda,
 {
     let tolerance = surface.tolerance.max(AVERAGE_E_TOL);
     let albedo = |mu: f64| surface.albedo_within(mu, fresnel, tolerance);
@@ -1364,7 +1507,7 @@ pub fn albedo_table<D, L>(
 ) -> Result<AlbedoTable, QuadError>
 where
     D: Fn(f64) -> f64 + Sync + Send,
-    L: Fn(f64) -> f64 + Sync + Send,
+    L: Lambda + Sync + Send,
 {
     albedo_table_at(
         unit_grid(n_mu),
@@ -1389,7 +1532,7 @@ pub fn albedo_table_at<D, L>(
 ) -> Result<AlbedoTable, QuadError>
 where
     D: Fn(f64) -> f64 + Sync + Send,
-    L: Fn(f64) -> f64 + Sync + Send,
+    L: Lambda + Sync + Send,
 {
     let [values] = grid_values(
         &mu,
@@ -1419,7 +1562,7 @@ impl Weight<'_> {
     fn value<D, L>(self, surface: Option<&Microfacet<D, L>>, mu_o: f64) -> Result<f64, QuadError>
     where
         D: Fn(f64) -> f64,
-        L: Fn(f64) -> f64,
+        L: Lambda,
     {
         match (self, surface) {
             (Weight::Curve(fresnel), Some(surface)) => surface.albedo(mu_o, fresnel),
@@ -1441,7 +1584,7 @@ fn grid_values<D, L, const N: usize>(
 ) -> Result<[Vec<f64>; N], QuadError>
 where
     D: Fn(f64) -> f64 + Sync + Send,
-    L: Fn(f64) -> f64 + Sync + Send,
+    L: Lambda + Sync + Send,
 {
     let (n_mu, n_r) = (mu.len(), roughness.len());
     let surfaces: Vec<Option<Microfacet<D, L>>> = roughness
@@ -1482,7 +1625,7 @@ pub fn average_albedo_table<D, L>(
 ) -> Result<Vec<f64>, QuadError>
 where
     D: Fn(f64) -> f64,
-    L: Fn(f64) -> f64,
+    L: Lambda,
 {
     average_albedo_table_at(&unit_grid(n_r), map, surface, fresnel, progress)
 }
@@ -1497,7 +1640,7 @@ pub fn average_albedo_table_at<D, L>(
 ) -> Result<Vec<f64>, QuadError>
 where
     D: Fn(f64) -> f64,
-    L: Fn(f64) -> f64,
+    L: Lambda,
 {
     let done = AtomicUsize::new(0);
     let n_r = roughness.len();
@@ -1537,7 +1680,7 @@ pub fn split_sum_tables<D, L>(
 ) -> Result<[AlbedoTable; 4], QuadError>
 where
     D: Fn(f64) -> f64 + Sync + Send,
-    L: Fn(f64) -> f64 + Sync + Send,
+    L: Lambda + Sync + Send,
 {
     let basis = basis();
     let shifted = |k: usize| Smoothed::new(basis.function(k).iter().map(|b| 1.0 + b).collect());
@@ -1586,7 +1729,7 @@ pub fn dfg_tables<D, L>(
 ) -> Result<[AlbedoTable; 2], QuadError>
 where
     D: Fn(f64) -> f64 + Sync + Send,
-    L: Fn(f64) -> f64 + Sync + Send,
+    L: Lambda + Sync + Send,
 {
     let scale = |theta_d: f64| 1.0 - schlick_weight(theta_d);
     let [dfg1, dfg2] = grid_values(

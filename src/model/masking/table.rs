@@ -1,6 +1,7 @@
 //! Smith's Λ of one surface tabulated once, for integrals that evaluate it at thousands of angles
 //! (the albedo's inner nodes): most families take Λ by a quadrature of its own
-//! ([`crate::model::ndf::lambda_integral`], ~10–25 µs a value), the table in ~30 ns.
+//! ([`crate::model::ndf::lambda_integral`], ~10–25 µs a value), the table in ~30 ns one at a time
+//! and a few ns a value in a block ([`LambdaTable::lambda_at_cos_many`]).
 //!
 //! The table holds g(t) = G1/t, G1 = 1/(1 + Λ), in the variable
 //! t = cos θ / (cos θ + w sin θ) ∈ [0, 1] (t = 1 at the normal, 0 at grazing; cot θ = w t/(1 − t)),
@@ -63,10 +64,84 @@ impl LambdaTable {
     #[inline]
     pub fn lambda_at_cos(&self, mu: f64) -> f64 {
         let mu = mu.clamp(0.0, 1.0);
-        if mu == 1.0 {
-            return 0.0;
+        let t = self.t_of_cos(mu);
+        lambda_of(mu, t, self.g.eval(t))
+    }
+
+    /// `out[k]` = [`LambdaTable::lambda_at_cos`]`(mus[k])`, the same bits, in vector lanes inside
+    /// [`crate::model::math::elementary::widest`] ([`Piecewise::eval_many`]); `mus` at most 64 long.
+    #[inline(always)]
+    pub fn lambda_at_cos_many(&self, mus: &[f64], out: &mut [f64]) {
+        const MOST: usize = 64;
+        assert!(
+            mus.len() <= MOST && mus.len() == out.len(),
+            "one output per μ, at most {MOST}"
+        );
+        let mut ts = [0.0; MOST];
+        let ts = &mut ts[..mus.len()];
+        for (t, &mu) in ts.iter_mut().zip(mus) {
+            *t = self.t_of_cos(mu.clamp(0.0, 1.0));
         }
-        let t = mu / (mu + self.width * ((1.0 - mu) * (1.0 + mu)).sqrt());
-        (1.0 / (t * self.g.eval(t)) - 1.0).max(0.0)
+        self.g.eval_many(ts, out);
+        for ((lambda, &mu), &t) in out.iter_mut().zip(mus).zip(ts.iter()) {
+            *lambda = lambda_of(mu.clamp(0.0, 1.0), t, *lambda);
+        }
+    }
+
+    /// t = μ/(μ + w √((1 − μ)(1 + μ))) at μ ∈ [0, 1].
+    #[inline(always)]
+    fn t_of_cos(&self, mu: f64) -> f64 {
+        mu / (mu + self.width * ((1.0 - mu) * (1.0 + mu)).sqrt())
+    }
+}
+
+/// Λ = 1/(t g) − 1, never below 0, from μ ∈ [0, 1], its t and g(t); exactly 0 at μ = 1.
+#[inline(always)]
+fn lambda_of(mu: f64, t: f64, g: f64) -> f64 {
+    let lambda = (1.0 / (t * g) - 1.0).max(0.0);
+    if mu == 1.0 { 0.0 } else { lambda }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::math::elementary::{Block, widest};
+
+    /// The block path gives the bits of [`LambdaTable::lambda_at_cos`] at every μ, the ends, values
+    /// just outside [0, 1] (clamped) and the last double below 1 included.
+    #[test]
+    fn a_block_gives_the_bits_of_single_values() {
+        struct Many<'a> {
+            table: &'a LambdaTable,
+            mus: &'a [f64],
+            out: [f64; 64],
+        }
+        impl Block for Many<'_> {
+            #[inline(always)]
+            fn run(&mut self) {
+                let n = self.mus.len();
+                self.table.lambda_at_cos_many(self.mus, &mut self.out[..n]);
+            }
+        }
+        // Trowbridge–Reitz at α = 0.3: Λ = (√(1 + α² tan²θ) − 1)/2.
+        let alpha: f64 = 0.3;
+        let lambda =
+            |theta: f64| (0.5 * ((1.0 + (alpha * theta.tan()).powi(2)).sqrt() - 1.0)).max(0.0);
+        let table = LambdaTable::build(lambda, alpha).expect("a smooth G1");
+        let mut mus: Vec<f64> = (0..60).map(|k| f64::from(k) / 59.0).collect();
+        mus.extend([-0.1, 1.1, 1e-12, 1.0 - f64::EPSILON / 2.0]);
+        for chunk in mus.chunks(64) {
+            let mut many = Many {
+                table: &table,
+                mus: chunk,
+                out: [0.0; 64],
+            };
+            widest(&mut many);
+            for (&mu, &got) in chunk.iter().zip(&many.out) {
+                assert_eq!(got.to_bits(), table.lambda_at_cos(mu).to_bits(), "μ = {mu}");
+            }
+        }
+        assert_eq!(table.lambda_at_cos(1.0), 0.0);
+        assert_eq!(table.lambda_at_cos(0.0), f64::INFINITY);
     }
 }

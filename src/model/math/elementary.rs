@@ -254,46 +254,71 @@ fn at_fma<F: Lanewise>(f: &F, x: f64) -> f64 {
     f.at(x)
 }
 
-/// `out[i] = f.at(xs[i])` for every i (the lengths must be equal), compiled for AVX-512F, AVX2 (each with
-/// FMA) and the baseline and run in the widest the processor has. The value of each element is the same
-/// bits on each path and equals [`at_one`]'s (module header): only the speed depends on the processor.
+/// `out[i] = f.at(xs[i])` for every i (the lengths must be equal), run by [`widest`]: the value of each
+/// element is the same bits on each path and equals [`at_one`]'s (module header); only the speed depends
+/// on the processor.
 #[inline(always)]
 pub fn map_lanes<F: Lanewise>(f: &F, xs: &[f64], out: &mut [f64]) {
     assert_eq!(xs.len(), out.len(), "one output per argument");
+    widest(&mut Map { f, xs, out })
+}
+
+/// [`map_lanes`]'s loop.
+struct Map<'a, F> {
+    f: &'a F,
+    xs: &'a [f64],
+    out: &'a mut [f64],
+}
+
+impl<F: Lanewise> Block for Map<'_, F> {
+    #[inline(always)]
+    fn run(&mut self) {
+        for (o, &x) in self.out.iter_mut().zip(self.xs) {
+            *o = self.f.at(x);
+        }
+    }
+}
+
+/// Work over a block of arguments, written with this module's branch-free kernels so that its loops
+/// vectorize: [`widest`] compiles it for each instruction set. Its `run` must be `#[inline(always)]`,
+/// so that it is compiled inside [`widest`]'s instruction set rather than called from it.
+pub trait Block {
+    /// Does the work.
+    fn run(&mut self);
+}
+
+/// `block.run()` compiled for AVX-512F, AVX2 (each with FMA) and the baseline and run in the widest the
+/// processor has, so that its loops over this module's kernels run 8, 4 or 2 lanes at a time. Every
+/// operation rounds once and the fused multiply-adds are explicit, so its values are the same bits on
+/// each path.
+#[inline(always)]
+pub fn widest<B: Block>(block: &mut B) {
     #[cfg(target_arch = "x86_64")]
     if has_fma() {
         if std::arch::is_x86_feature_detected!("avx512f") {
             // SAFETY: the processor has AVX-512F and FMA, checked just above.
-            return unsafe { map_avx512(f, xs, out) };
+            return unsafe { widest_avx512(block) };
         }
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the processor has AVX2 and FMA, checked just above.
-            return unsafe { map_avx2(f, xs, out) };
+            return unsafe { widest_avx2(block) };
         }
     }
-    map_baseline(f, xs, out)
+    block.run()
 }
 
-/// [`map_lanes`]'s loop in the instruction set the binary is built for.
-#[inline(always)]
-fn map_baseline<F: Lanewise>(f: &F, xs: &[f64], out: &mut [f64]) {
-    for (o, &x) in out.iter_mut().zip(xs) {
-        *o = f.at(x);
-    }
-}
-
-/// [`map_lanes`]'s loop with 8 lanes.
+/// [`widest`] with 8 lanes.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,fma")]
-fn map_avx512<F: Lanewise>(f: &F, xs: &[f64], out: &mut [f64]) {
-    map_baseline(f, xs, out)
+fn widest_avx512<B: Block>(block: &mut B) {
+    block.run()
 }
 
-/// [`map_lanes`]'s loop with 4 lanes.
+/// [`widest`] with 4 lanes.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn map_avx2<F: Lanewise>(f: &F, xs: &[f64], out: &mut [f64]) {
-    map_baseline(f, xs, out)
+fn widest_avx2<B: Block>(block: &mut B) {
+    block.run()
 }
 
 #[cfg(test)]
@@ -395,7 +420,9 @@ mod tests {
         let xs = spread(0.0, std::f64::consts::FRAC_PI_2, 10_007);
         let (mut out, mut baseline) = (vec![0.0; xs.len()], vec![0.0; xs.len()]);
         map_lanes(&Chain, &xs, &mut out);
-        map_baseline(&Chain, &xs, &mut baseline);
+        for (b, &x) in baseline.iter_mut().zip(&xs) {
+            *b = Chain.at(x);
+        }
         for ((&x, &o), &b) in xs.iter().zip(&out).zip(&baseline) {
             assert_eq!(o.to_bits(), Chain.at(x).to_bits(), "at {x:e}");
             assert_eq!(o.to_bits(), at_one(&Chain, x).to_bits(), "at {x:e}");
