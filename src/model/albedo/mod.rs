@@ -35,6 +35,12 @@
 //!   lobe whose Λ is flat at the normal (Beckmann's e^{−cot²θ/α²}, not analytic at θi = 0), at
 //!   2θh = θo, the slice whose reflection reaches the normal.
 //!
+//! Each level of a panel runs in stages: the geometry of every outer node's slice (θh, φ_end, the
+//! inner grading), then of every inner node of a slice (cos θi, ⟨ωo, h⟩) and its Λ, each stage
+//! over the whole rule in vector lanes ([`elementary::widest`], the crate's branch-free exp,
+//! sin/cos, atan and asinh, Λ from the surface's table); D and the Fresnel factor, closures of
+//! θ, are taken node by node.
+//!
 //! The inner integrand takes cos θi from sin(u/2) alone (cos θi = cos θi(φ_end) + (spread/2)
 //! (sin φ_end sin u − cos φ_end (1 − cos u))), free of cancellation next to the horizon.
 //!
@@ -329,11 +335,20 @@ where
         edges
     }
 
-    /// θh = atan(w tan β) and dθh/dβ = w / (cos²β + w² sin²β).
-    fn radial(&self, beta: f64) -> (f64, f64) {
+    /// At β ∈ [0, π/2]: θh = atan(w tan β), dθh/dβ = w / (cos²β + w² sin²β), and sin θh, cos θh =
+    /// (w sin β, cos β)/√(cos²β + w² sin²β), by branch-free code ([`elementary`]).
+    #[inline(always)]
+    fn radial(&self, beta: f64) -> Radial {
         let w = self.width;
-        let (s, c) = beta.sin_cos();
-        ((w * s).atan2(c), w / (c * c + w * w * s * s))
+        let (s, c) = elementary::sin_cos(beta);
+        let (ws, square) = (w * s, c * c + w * w * s * s);
+        let norm = square.sqrt();
+        Radial {
+            theta_h: elementary::atan(ws / c),
+            jacobian: w / square,
+            sin_h: ws / norm,
+            cos_h: c / norm,
+        }
     }
 
     /// β at the end of the integral at normal incidence, where 2θh = π/2.
@@ -343,8 +358,12 @@ where
 
     /// The integrand of E(1) in β: D(θh) G2(Λ(0), Λ(2θh)) F(θh) cos θh sin θh dθh/dβ.
     fn normal_integrand(&self, beta: f64, lambda_o: f64, fresnel: Fresnel) -> f64 {
-        let (theta_h, jacobian) = self.radial(beta);
-        let (sin, cos) = theta_h.sin_cos();
+        let Radial {
+            theta_h,
+            jacobian,
+            sin_h: sin,
+            cos_h: cos,
+        } = self.radial(beta);
         let g2 = self
             .g2
             .g2(lambda_o, self.lambda.at_cos(cos_double(sin, cos)));
@@ -357,7 +376,7 @@ where
         let lambda_o = self.lambda.at_cos(1.0);
         let end = self.normal_end();
         let layer = 0.5 * self.width.min(1.0);
-        let delta = layer / (2.0 * self.radial(end).1);
+        let delta = layer / (2.0 * self.radial(end).jacobian);
         2.0 * PI
             * composite(
                 rule,
@@ -435,9 +454,9 @@ where
     /// μo = 0 (∫ cos φ over [0, π/2] is 1).
     fn visible(&self, s: f64) -> f64 {
         let (beta, beta_jacobian) = self.smoothstep(s);
-        let (theta_h, jacobian) = self.surface.radial(beta);
-        let sin = theta_h.sin();
-        2.0 * (self.surface.ndf)(theta_h) * sin * sin * jacobian * beta_jacobian
+        let radial = self.surface.radial(beta);
+        let sin = radial.sin_h;
+        2.0 * (self.surface.ndf)(radial.theta_h) * sin * sin * radial.jacobian * beta_jacobian
     }
 
     /// G2/μo at Λ(θi), or its limit g(θi) at μo = 0 (g = 1 height-correlated, G1 separable).
@@ -454,9 +473,17 @@ where
     /// At β, with dβ/dx of the outer variable x: the outer factor 2 D(θh) sin θh dθh/dβ dβ/dx
     /// (the factor 2 counts φ ∈ [π, 2π) by symmetry) and the slice of azimuths.
     fn slice(&self, beta: f64, beta_jacobian: f64) -> (f64, Slice<'_>) {
-        let (theta_h, jacobian) = self.surface.radial(beta);
-        let outer = 2.0 * (self.surface.ndf)(theta_h) * theta_h.sin() * jacobian * beta_jacobian;
-        (outer, self.view.slice(theta_h))
+        let (theta_h, factor, slice) = self.geometry(beta, beta_jacobian);
+        ((self.surface.ndf)(theta_h) * factor, slice)
+    }
+
+    /// [`Oblique::slice`] without D: θh, the outer factor's geometry 2 sin θh dθh/dβ dβ/dx and the
+    /// slice, by branch-free code.
+    #[inline(always)]
+    fn geometry(&self, beta: f64, beta_jacobian: f64) -> (f64, f64, Slice<'_>) {
+        let radial = self.surface.radial(beta);
+        let factor = 2.0 * radial.sin_h * radial.jacobian * beta_jacobian;
+        (radial.theta_h, factor, self.view.slice(&radial))
     }
 
     /// The inner integrand at u = φ_end − φ of `slice`: weight(Λ(θi)) F(θd) ⟨ωo, h⟩.
@@ -523,7 +550,7 @@ where
             } else {
                 self.beta_cut
             };
-            let slope = self.surface.radial(self.beta_cut).1;
+            let slope = self.surface.radial(self.beta_cut).jacobian;
             let mut edges = self.surface.lobe_edges(0.0, lobe_end);
             edges.extend(
                 self.normal_reflection()
@@ -537,9 +564,9 @@ where
                     .map(|graded| Panel { graded, cut: false }),
             );
         }
-        let start_slope = self.surface.radial(self.beta_cut).1;
+        let start_slope = self.surface.radial(self.beta_cut).jacobian;
         let start = (layer / (6.0 * self.span * start_slope)).sqrt();
-        let end_slope = self.surface.radial(self.beta_cut + self.span).1;
+        let end_slope = self.surface.radial(self.beta_cut + self.span).jacobian;
         let end = (layer / (6.0 * self.span * end_slope)).sqrt();
         let mut edges: Vec<f64> = self
             .surface
@@ -564,25 +591,23 @@ where
 
     /// One outer panel by the tensor product of `rules`: the outer rule over the panel, the inner
     /// rule on [0, φ_end] of each slice, graded towards the horizon end over the weight's `layer`.
+    /// The slices' geometry for the whole outer rule runs in vector lanes ([`OuterNodes`]), then D
+    /// and each slice's inner integral ([`Oblique::inner_fixed`]) slice by slice.
     fn panel(&self, panel: &Panel, layer: f64, fresnel: Fresnel, rules: &Rules) -> f64 {
-        let radial = |beta: f64, beta_jacobian: f64| {
-            let (outer, slice) = self.slice(beta, beta_jacobian);
-            if outer == 0.0 || slice.phi_end <= 0.0 {
-                return 0.0;
-            }
-            let graded = Graded::towards_start(0.0, slice.phi_end, slice.layer_width(layer));
-            outer * self.inner_fixed(&slice, &graded, rules, fresnel)
-        };
-        if panel.cut {
-            panel.graded.integrate(&rules.outer, |s| {
-                let (beta, beta_jacobian) = self.smoothstep(s);
-                radial(beta, beta_jacobian)
-            })
-        } else {
-            panel
-                .graded
-                .integrate(&rules.outer, |beta| radial(beta, 1.0))
+        let mut nodes = OuterNodes::new(self, panel, layer, &rules.outer_nodes);
+        elementary::widest(&mut nodes);
+        let mut sum = 0.0;
+        for (k, &(_, w)) in rules.outer.points.iter().enumerate() {
+            let slice = nodes.slice(k);
+            let outer = (self.surface.ndf)(nodes.theta_h[k]) * nodes.factor[k];
+            let value = if outer == 0.0 || slice.phi_end <= 0.0 {
+                0.0
+            } else {
+                outer * self.inner_fixed(&slice, &nodes.graded(k), rules, fresnel)
+            };
+            sum += w * value;
         }
+        sum
     }
 
     /// ∫ of [`Oblique::inner`] over `slice` by the inner rule of `rules` in the variable of
@@ -597,9 +622,9 @@ where
             graded,
             lambda: &self.surface.lambda,
             nodes: &rules.inner_nodes,
-            lambda_i: [0.0; MAX_INNER],
-            dot: [0.0; MAX_INNER],
-            jacobian: [0.0; MAX_INNER],
+            lambda_i: [0.0; MAX_NODES],
+            dot: [0.0; MAX_NODES],
+            jacobian: [0.0; MAX_NODES],
         };
         elementary::widest(&mut nodes);
         let InnerNodes {
@@ -674,6 +699,16 @@ where
     }
 }
 
+/// The half-vector's polar angle at a value of the radial variable β ([`Microfacet::radial`]).
+#[derive(Debug, Clone, Copy)]
+struct Radial {
+    theta_h: f64,
+    /// dθh/dβ.
+    jacobian: f64,
+    sin_h: f64,
+    cos_h: f64,
+}
+
 /// A sinh map t ∈ [0, 1] → x ∈ [a, b] that grades the nodes of a rule towards one end, for an
 /// integrand analytic except near that end, at distance ~δ beyond it: x = a + δ sinh(A t)
 /// (towards a) or b − δ sinh(A (1 − t)) (towards b), A = asinh((b − a)/δ). Where δ ≥ b − a it
@@ -687,6 +722,7 @@ struct Graded {
 }
 
 impl Graded {
+    #[inline(always)]
     fn towards_start(a: f64, b: f64, delta: f64) -> Graded {
         Graded::new(a, b, delta, false)
     }
@@ -695,22 +731,16 @@ impl Graded {
         Graded::new(a, b, delta, true)
     }
 
+    /// By branch-free code ([`elementary`]); δ = ∞ gives the linear map (stretch 0).
+    #[inline(always)]
     fn new(a: f64, b: f64, delta: f64, towards_b: bool) -> Graded {
         let delta = delta.max(MIN_GRADING * (b - a));
-        if delta.is_infinite() {
-            return Graded {
-                a,
-                b,
-                delta,
-                stretch: 0.0,
-                towards_b,
-            };
-        }
+        let stretch = elementary::asinh((b - a) / delta);
         Graded {
             a,
             b,
             delta,
-            stretch: ((b - a) / delta).asinh(),
+            stretch: if delta.is_infinite() { 0.0 } else { stretch },
             towards_b,
         }
     }
@@ -817,23 +847,130 @@ struct Panel {
     cut: bool,
 }
 
+/// The slices at every node of an outer rule on one panel ([`Oblique::panel`]'s first stage), in
+/// columns: for each t of `nodes` (at most [`MAX_NODES`], a multiple of [`LANES`]), x = the
+/// panel's grading of t, β = x (or the cut part's smoothstep of x), θh, the outer factor without D
+/// (2 sin θh dθh/dβ dβ/dx dx/dt), the slice ([`View::slice`]) and its inner grading
+/// (`Graded::towards_start(0, φ_end, layer_width)`).
+struct OuterNodes<'a, 's, D, L> {
+    oblique: &'a Oblique<'s, D, L>,
+    panel: &'a Panel,
+    layer: f64,
+    nodes: &'a [f64],
+    theta_h: [f64; MAX_NODES],
+    factor: [f64; MAX_NODES],
+    sin_h: [f64; MAX_NODES],
+    cos_h: [f64; MAX_NODES],
+    spread: [f64; MAX_NODES],
+    floor: [f64; MAX_NODES],
+    phi_end: [f64; MAX_NODES],
+    sin_end: [f64; MAX_NODES],
+    cos_end: [f64; MAX_NODES],
+    cos_i_end: [f64; MAX_NODES],
+    delta: [f64; MAX_NODES],
+    stretch: [f64; MAX_NODES],
+}
+
+impl<'a, 's, D, L> OuterNodes<'a, 's, D, L> {
+    fn new(oblique: &'a Oblique<'s, D, L>, panel: &'a Panel, layer: f64, nodes: &'a [f64]) -> Self {
+        let zero = [0.0; MAX_NODES];
+        OuterNodes {
+            oblique,
+            panel,
+            layer,
+            nodes,
+            theta_h: zero,
+            factor: zero,
+            sin_h: zero,
+            cos_h: zero,
+            spread: zero,
+            floor: zero,
+            phi_end: zero,
+            sin_end: zero,
+            cos_end: zero,
+            cos_i_end: zero,
+            delta: zero,
+            stretch: zero,
+        }
+    }
+
+    /// The slice at node k.
+    fn slice(&self, k: usize) -> Slice<'a> {
+        Slice {
+            view: &self.oblique.view,
+            sin_h: self.sin_h[k],
+            cos_h: self.cos_h[k],
+            spread: self.spread[k],
+            floor: self.floor[k],
+            phi_end: self.phi_end[k],
+            sin_end: self.sin_end[k],
+            cos_end: self.cos_end[k],
+            cos_i_end: self.cos_i_end[k],
+        }
+    }
+
+    /// The inner grading at node k.
+    fn graded(&self, k: usize) -> Graded {
+        Graded {
+            a: 0.0,
+            b: self.phi_end[k],
+            delta: self.delta[k],
+            stretch: self.stretch[k],
+            towards_b: false,
+        }
+    }
+}
+
+impl<D, L> Block for OuterNodes<'_, '_, D, L>
+where
+    D: Fn(f64) -> f64,
+    L: Lambda,
+{
+    #[inline(always)]
+    fn run(&mut self) {
+        let n = self.nodes.len().min(MAX_NODES);
+        for k in 0..n {
+            let (x, dx) = self.panel.graded.point(self.nodes[k]);
+            let (beta, beta_jacobian) = if self.panel.cut {
+                self.oblique.smoothstep(x)
+            } else {
+                (x, 1.0)
+            };
+            let (theta_h, factor, slice) = self.oblique.geometry(beta, beta_jacobian * dx);
+            let graded = Graded::towards_start(0.0, slice.phi_end, slice.layer_width(self.layer));
+            self.theta_h[k] = theta_h;
+            self.factor[k] = factor;
+            self.sin_h[k] = slice.sin_h;
+            self.cos_h[k] = slice.cos_h;
+            self.spread[k] = slice.spread;
+            self.floor[k] = slice.floor;
+            self.phi_end[k] = slice.phi_end;
+            self.sin_end[k] = slice.sin_end;
+            self.cos_end[k] = slice.cos_end;
+            self.cos_i_end[k] = slice.cos_i_end;
+            self.delta[k] = graded.delta;
+            self.stretch[k] = graded.stretch;
+        }
+    }
+}
+
 /// The geometry at every node of an inner rule on one slice ([`Oblique::inner_fixed`]'s first
 /// stage): cos θi (clamped to [0, 1]), ⟨ωo, h⟩ and du/dt at u = `graded`(t) for each t of `nodes`
-/// (at most [`MAX_INNER`], a multiple of [`LANES`]).
+/// (at most [`MAX_NODES`], a multiple of [`LANES`]).
 struct InnerNodes<'a, 'v, L> {
     slice: &'a Slice<'v>,
     graded: &'a Graded,
     lambda: &'a L,
     nodes: &'a [f64],
-    lambda_i: [f64; MAX_INNER],
-    dot: [f64; MAX_INNER],
-    jacobian: [f64; MAX_INNER],
+    lambda_i: [f64; MAX_NODES],
+    dot: [f64; MAX_NODES],
+    jacobian: [f64; MAX_NODES],
 }
 
 impl<L: Lambda> Block for InnerNodes<'_, '_, L> {
     #[inline(always)]
     fn run(&mut self) {
-        let mut cos_i = [0.0; MAX_INNER];
+        let mut cos_i = [0.0; MAX_NODES];
         let outputs = cos_i.iter_mut().zip(&mut self.dot).zip(&mut self.jacobian);
         for (&t, ((cos_i, dot), jacobian)) in self.nodes.iter().zip(outputs) {
             let (u, du) = self.graded.point(t);
@@ -848,8 +985,9 @@ impl<L: Lambda> Block for InnerNodes<'_, '_, L> {
     }
 }
 
-/// The most points of an inner rule ([`LEVELS`]): the size of [`Oblique::inner_fixed`]'s stages.
-const MAX_INNER: usize = 48;
+/// The most points of an outer or inner rule ([`LEVELS`]): the size of the fixed rules' stages
+/// ([`OuterNodes`], [`InnerNodes`]).
+const MAX_NODES: usize = 48;
 
 /// The finest grading of [`Graded`], relative to its interval: far below any layer that matters.
 const MIN_GRADING: f64 = 1e-14;
@@ -893,9 +1031,18 @@ struct Order {
 struct Rules {
     outer: Rule,
     inner: Rule,
-    /// The inner rule's points t, then ½ up to a multiple of [`LANES`]: the first stage of
-    /// [`Oblique::inner_fixed`] runs over whole vectors, its padding's values unused.
+    /// The outer rule's points t, then ½ up to a multiple of [`LANES`]: [`OuterNodes`] runs over
+    /// whole vectors, its padding's values unused.
+    outer_nodes: Vec<f64>,
+    /// The same for the inner rule ([`InnerNodes`]).
     inner_nodes: Vec<f64>,
+}
+
+/// The points t of `rule`, then ½ up to a multiple of [`LANES`].
+fn padded_nodes(rule: &Rule) -> Vec<f64> {
+    let mut nodes: Vec<f64> = rule.points.iter().map(|&(t, _)| t).collect();
+    nodes.resize(nodes.len().next_multiple_of(LANES), 0.5);
+    nodes
 }
 
 /// The lanes of the widest vectors [`elementary::widest`] runs in (AVX-512: 8 doubles).
@@ -906,13 +1053,12 @@ fn level_rules() -> &'static [Rules; 5] {
     static RULES: OnceLock<[Rules; 5]> = OnceLock::new();
     RULES.get_or_init(|| {
         LEVELS.map(|order| {
-            let inner = Rule::new(order.inner);
-            let mut inner_nodes: Vec<f64> = inner.points.iter().map(|&(t, _)| t).collect();
-            inner_nodes.resize(order.inner.next_multiple_of(LANES), 0.5);
+            let (outer, inner) = (Rule::new(order.outer), Rule::new(order.inner));
             Rules {
-                outer: Rule::new(order.outer),
+                outer_nodes: padded_nodes(&outer),
+                inner_nodes: padded_nodes(&inner),
+                outer,
                 inner,
-                inner_nodes,
             }
         })
     })
@@ -1001,26 +1147,32 @@ impl View {
         }
     }
 
-    fn slice(&self, theta_h: f64) -> Slice<'_> {
-        let (sin_h, cos_h) = theta_h.sin_cos();
-        let spread = 2.0 * self.cos_elevation * (2.0 * theta_h).sin();
-        let floor = (self.elevation - 2.0 * theta_h).sin();
-        // Cut off: cos²(φmax/2) = q = −floor / spread, so cos φmax = 2q − 1 and
+    /// The slice of half-vectors at `radial`'s θh, by branch-free code ([`elementary`]).
+    #[inline(always)]
+    fn slice(&self, radial: &Radial) -> Slice<'_> {
+        let Radial {
+            theta_h,
+            sin_h,
+            cos_h,
+            ..
+        } = *radial;
+        let spread = 2.0 * self.cos_elevation * (2.0 * sin_h * cos_h);
+        let floor = elementary::sin_cos(self.elevation - 2.0 * theta_h).0;
+        // Cut off: cos²(φmax/2) = q = −floor / spread, so φmax = 2 arccos √q, cos φmax = 2q − 1 and
         // sin φmax = 2 √(q (1 − q)); q ≥ 1 leaves no azimuth.
+        let q = -floor / spread;
+        let cut = (
+            2.0 * arccos_sqrt(q),
+            2.0 * (q * (1.0 - q)).sqrt(),
+            2.0 * q - 1.0,
+            0.0,
+        );
         let (phi_end, sin_end, cos_end, cos_i_end) = if floor >= 0.0 {
             (PI, 0.0, -1.0, floor)
+        } else if q < 1.0 {
+            cut
         } else {
-            let q = -floor / spread;
-            if q < 1.0 {
-                (
-                    2.0 * q.sqrt().acos(),
-                    2.0 * (q * (1.0 - q)).sqrt(),
-                    2.0 * q - 1.0,
-                    0.0,
-                )
-            } else {
-                (0.0, 0.0, 1.0, 0.0)
-            }
+            (0.0, 0.0, 1.0, 0.0)
         };
         Slice {
             view: self,
@@ -1036,16 +1188,20 @@ impl View {
     }
 }
 
+/// arccos √y for y ∈ [0, 1] as arctan √((1 − y)/y) ([`elementary::atan`]; π/2 at y = 0).
+#[inline(always)]
+fn arccos_sqrt(y: f64) -> f64 {
+    elementary::atan(((1.0 - y) / y).sqrt())
+}
+
 impl Slice<'_> {
     /// The distance in u from the slice's horizon end over which cos θi rises by its value
     /// there plus `layer`.
+    #[inline(always)]
     fn layer_width(&self, layer: f64) -> f64 {
         let y = (layer + self.floor.abs()) / self.spread;
-        if y >= 1.0 {
-            self.phi_end
-        } else {
-            self.phi_end - 2.0 * y.sqrt().acos()
-        }
+        let inside = self.phi_end - 2.0 * arccos_sqrt(y);
+        if y >= 1.0 { self.phi_end } else { inside }
     }
 
     /// The azimuth u = φ_end − φ from the horizon end: with σ = sin(u/2), cos u = 1 − 2σ², and
