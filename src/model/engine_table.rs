@@ -14,7 +14,7 @@
 use std::sync::OnceLock;
 
 use crate::model::albedo::{
-    self, Fresnel, Lambda, Microfacet, ProgressFn, RoughnessMap, Table, albedo_table_at,
+    self, Density, Fresnel, Lambda, Microfacet, ProgressFn, RoughnessMap, Table, albedo_table_at,
     average_albedo_table_at, dfg_tables,
 };
 use crate::model::masking::G2Model;
@@ -135,7 +135,7 @@ pub fn compare<D, L>(
     progress: Option<ProgressFn>,
 ) -> Result<Vec<Cell>, QuadError>
 where
-    D: Fn(f64) -> f64 + Sync + Send,
+    D: Density + Sync + Send,
     L: Lambda + Sync + Send,
 {
     let (mu, r) = grid.coordinates();

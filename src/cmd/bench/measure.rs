@@ -7,7 +7,7 @@
 //! [`Row`]s into a CSV and a figure). Timings are never part of the catalogue or of `render --check`.
 
 use crate::model::albedo::{
-    AlbedoTable, Lambda, Microfacet, RoughnessMap, albedo_table, surface_of,
+    AlbedoTable, Density, Lambda, Microfacet, RoughnessMap, albedo_table, surface_of,
 };
 use crate::model::masking::{G2Model, lambda_by_integral};
 use crate::model::math::quad::{QuadError, integrate};
@@ -589,7 +589,7 @@ pub const CYCLES_TABLE_SIZE: usize = 32;
 /// by [`Ndf::eval`] and [`Ndf::lambda`], as the `albedo` quantity builds its surface.
 pub fn ggx_surface(
     alpha: f64,
-) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send, impl Lambda + Sync + Send> {
+) -> Microfacet<impl Density + Sync + Send, impl Lambda + Sync + Send> {
     let ndf = Family::TrowbridgeReitz
         .build(&[alpha])
         .expect("α lies in the domain");

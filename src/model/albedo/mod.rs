@@ -31,9 +31,11 @@
 //! - the outer integral is split at θh = ε/4 below the horizon's layer (for a lobe narrow beside
 //!   the horizon, tan(ε/4) > 2w), at the two halves of the
 //!   cut part, and, for a lobe with a light tail (D at slope 5w below 1e-3 of D at slope 2w:
-//!   Beckmann, high Phong exponents), at slopes 2w and 5w, where a Gaussian dies off; and, for a
-//!   lobe whose Λ is flat at the normal (Beckmann's e^{−cot²θ/α²}, not analytic at θi = 0), at
-//!   2θh = θo, the slice whose reflection reaches the normal.
+//!   Beckmann, high Phong exponents), at slopes 2w and 5w, where a Gaussian dies off; and at
+//!   2θh = θo, the slice whose reflection reaches the normal, next to which Λ(cos θi) is not
+//!   analytic (Beckmann's e^{−cot²θ/α²} at θi = 0, Trowbridge–Reitz's root with its branch point at
+//!   cos θi = α/√(α² − 1) just beyond the normal for α > 1, a table's √(1 − cos²θi)): the inner
+//!   rule's far end, stretched by its grading towards the horizon, would otherwise lie beside it.
 //!
 //! Each level of a panel runs in stages: the geometry of every outer node's slice (θh, φ_end, the
 //! inner grading), then of every inner node of a slice (cos θi, ⟨ωo, h⟩) and its Λ, each stage
@@ -135,6 +137,44 @@ pub fn tabulated(fresnel: &crate::model::fresnel::Fresnel) -> Option<Smoothed> {
 /// tabulated weight to integrate like the interpolant (measured: within 6e-12 of the interpolant's direct integral for GGX α = 0.01 … 0.2 at μo = 0.5, from 9 cells on).
 pub const SMOOTHED_CELLS: f64 = 8.0;
 
+/// The NDF of a surface as the albedo integrals take it, D(θm) normalized over projected area: any
+/// `Fn(f64) -> f64` of θm, or an [`Ndf`] ([`surface_with`], [`surface_of`]), which also evaluates a
+/// block of θm in vector lanes ([`Ndf::eval_many`]).
+pub trait Density {
+    /// D at θm.
+    fn at(&self, theta: f64) -> f64;
+
+    /// `out[k]` = D(`thetas[k]`), the values of [`Density::at`] (lengths equal); one at a time
+    /// unless the implementation has a block path.
+    fn at_many(&self, thetas: &[f64], out: &mut [f64]) {
+        for (out, &theta) in out.iter_mut().zip(thetas) {
+            *out = self.at(theta);
+        }
+    }
+}
+
+impl<F: Fn(f64) -> f64> Density for F {
+    #[inline(always)]
+    fn at(&self, theta: f64) -> f64 {
+        self(theta)
+    }
+}
+
+/// An [`Ndf`] (held or borrowed) as a [`Density`]: [`Ndf::eval`], and [`Ndf::eval_many`] for a
+/// block, the same bits.
+struct NdfDensity<N>(N);
+
+impl<N: Borrow<Ndf>> Density for NdfDensity<N> {
+    #[inline]
+    fn at(&self, theta: f64) -> f64 {
+        self.0.borrow().eval(theta)
+    }
+
+    fn at_many(&self, thetas: &[f64], out: &mut [f64]) {
+        self.0.borrow().eval_many(thetas, out);
+    }
+}
+
 /// Smith's Λ of a surface as the albedo integrals take it, at μ = cos θ ∈ [0, 1] (0 at μ = 1,
 /// growing like 1/μ towards grazing): any `Fn(f64) -> f64` of μ, or an NDF's own with its
 /// [`SurfaceParts`] ([`surface_with`], [`surface_of`]), whose table also runs a block in vector lanes.
@@ -173,22 +213,18 @@ pub struct Microfacet<D, L> {
     /// Whether the lobe dies off fast beyond a few widths (a Gaussian's tail), where the outer
     /// integral is split at [`LOBE_SLOPES`].
     light_tail: bool,
-    /// Whether Λ is flat at the normal (Λ at slope w/4 below [`FLAT_NORMAL`] × Λ at slope w/2, as
-    /// a Gaussian lobe's e^{−cot²θ/α²}), where the outer integral is split at the slice
-    /// reflecting to the normal ([`Oblique::normal_reflection`]).
-    flat_normal: bool,
     tolerance: f64,
 }
 
 impl<D, L> Microfacet<D, L>
 where
-    D: Fn(f64) -> f64,
+    D: Density,
     L: Lambda,
 {
     /// The surface with D(θ) = `ndf`(θ), Λ = `lambda`(cos θ) and the lobe width w =
     /// [`median_slope`]`(ndf)`.
     pub fn new(ndf: D, lambda: L, g2: G2Model) -> Self {
-        let width = median_slope(&ndf);
+        let width = median_slope(|theta| ndf.at(theta));
         Self::with_width(ndf, lambda, g2, width)
     }
 
@@ -199,12 +235,9 @@ where
             width > 0.0 && width.is_finite(),
             "the lobe width is a positive slope, got {width}"
         );
-        let [core, tail] = LOBE_SLOPES.map(|k| ndf((k * width).atan()));
-        let [quarter, half] = [0.25, 0.5].map(|k: f64| lambda.at_cos(1.0 / (k * width).hypot(1.0)));
-        let flat_normal = quarter <= FLAT_NORMAL * half;
+        let [core, tail] = LOBE_SLOPES.map(|k| ndf.at((k * width).atan()));
         Microfacet {
             light_tail: tail <= LIGHT_TAIL * core,
-            flat_normal,
             ndf,
             lambda,
             g2,
@@ -286,7 +319,7 @@ where
             let g2 = self
                 .g2
                 .g2(lambda_o, self.lambda.at_cos(cos_double(sin, cos)));
-            Ok((self.ndf)(theta_h) * g2 * weight.linear_at_cos(cos) * cos * sin)
+            Ok(self.ndf.at(theta_h) * g2 * weight.linear_at_cos(cos) * cos * sin)
         };
         let mut sum = 0.0;
         for pair in edges.windows(2) {
@@ -368,7 +401,7 @@ where
             .g2
             .g2(lambda_o, self.lambda.at_cos(cos_double(sin, cos)));
         let f = fresnel.map_or(1.0, |f| f(theta_h));
-        (self.ndf)(theta_h) * g2 * f * cos * sin * jacobian
+        self.ndf.at(theta_h) * g2 * f * cos * sin * jacobian
     }
 
     /// E(1) = 2π ∫₀^{π/4} D(θh) G2(Λ(0), Λ(2θh)) F(θh) cos θh sin θh dθh by `rule` in β.
@@ -420,7 +453,7 @@ struct Oblique<'s, D, L> {
 
 impl<'s, D, L> Oblique<'s, D, L>
 where
-    D: Fn(f64) -> f64,
+    D: Density,
     L: Lambda,
 {
     fn new(surface: &'s Microfacet<D, L>, mu_o: f64) -> Self {
@@ -456,10 +489,11 @@ where
         let (beta, beta_jacobian) = self.smoothstep(s);
         let radial = self.surface.radial(beta);
         let sin = radial.sin_h;
-        2.0 * (self.surface.ndf)(radial.theta_h) * sin * sin * radial.jacobian * beta_jacobian
+        2.0 * self.surface.ndf.at(radial.theta_h) * sin * sin * radial.jacobian * beta_jacobian
     }
 
     /// G2/μo at Λ(θi), or its limit g(θi) at μo = 0 (g = 1 height-correlated, G1 separable).
+    #[inline(always)]
     fn weight(&self, lambda_i: f64) -> f64 {
         match self.lambda_o {
             Some(lambda_o) => self.surface.g2.g2(lambda_o, lambda_i) * self.view.inverse_mu,
@@ -474,7 +508,7 @@ where
     /// (the factor 2 counts φ ∈ [π, 2π) by symmetry) and the slice of azimuths.
     fn slice(&self, beta: f64, beta_jacobian: f64) -> (f64, Slice<'_>) {
         let (theta_h, factor, slice) = self.geometry(beta, beta_jacobian);
-        ((self.surface.ndf)(theta_h) * factor, slice)
+        (self.surface.ndf.at(theta_h) * factor, slice)
     }
 
     /// [`Oblique::slice`] without D: θh, the outer factor's geometry 2 sin θh dθh/dβ dβ/dx and the
@@ -592,14 +626,18 @@ where
     /// One outer panel by the tensor product of `rules`: the outer rule over the panel, the inner
     /// rule on [0, φ_end] of each slice, graded towards the horizon end over the weight's `layer`.
     /// The slices' geometry for the whole outer rule runs in vector lanes ([`OuterNodes`]), then D
-    /// and each slice's inner integral ([`Oblique::inner_fixed`]) slice by slice.
+    /// for all of them ([`Density::at_many`]), then each slice's inner integral
+    /// ([`Oblique::inner_fixed`]).
     fn panel(&self, panel: &Panel, layer: f64, fresnel: Fresnel, rules: &Rules) -> f64 {
         let mut nodes = OuterNodes::new(self, panel, layer, &rules.outer_nodes);
         elementary::widest(&mut nodes);
+        let n = rules.outer.points.len();
+        let mut d = [0.0; MAX_NODES];
+        self.surface.ndf.at_many(&nodes.theta_h[..n], &mut d[..n]);
         let mut sum = 0.0;
         for (k, &(_, w)) in rules.outer.points.iter().enumerate() {
             let slice = nodes.slice(k);
-            let outer = (self.surface.ndf)(nodes.theta_h[k]) * nodes.factor[k];
+            let outer = d[k] * nodes.factor[k];
             let value = if outer == 0.0 || slice.phi_end <= 0.0 {
                 0.0
             } else {
@@ -616,39 +654,31 @@ where
     /// node by node, then the weighted sum in the rule's order: the value [`Rule::integrate`] gives
     /// for the same integrand.
     fn inner_fixed(&self, slice: &Slice, graded: &Graded, rules: &Rules, fresnel: Fresnel) -> f64 {
-        let rule = &rules.inner;
         let mut nodes = InnerNodes {
+            oblique: self,
             slice,
             graded,
-            lambda: &self.surface.lambda,
             nodes: &rules.inner_nodes,
-            lambda_i: [0.0; MAX_NODES],
             dot: [0.0; MAX_NODES],
-            jacobian: [0.0; MAX_NODES],
+            value: [0.0; MAX_NODES],
         };
         elementary::widest(&mut nodes);
-        let InnerNodes {
-            lambda_i,
-            dot,
-            jacobian,
-            ..
-        } = nodes;
         let mut sum = 0.0;
-        for (k, &(_, w)) in rule.points.iter().enumerate() {
-            let f = fresnel.map_or(1.0, |f| f(theta_d(dot[k])));
-            let value = self.weight(lambda_i[k]) * f * dot[k];
-            sum += w * (value * jacobian[k]);
+        for (k, &(_, w)) in rules.inner.points.iter().enumerate() {
+            let f = fresnel.map_or(1.0, |f| f(theta_d(nodes.dot[k])));
+            sum += w * (nodes.value[k] * f);
         }
         sum
     }
 
-    /// For a lobe whose Λ is flat at the normal, β where 2θh = θo: the slice whose reflection
-    /// reaches the normal (θi = 0 at φ = 0). A Gaussian lobe's Λ(θi) ∝ e^{−cot²θi/α²} is flat but
-    /// not analytic at θi = 0, which slows the fixed rules wherever it falls inside a panel; an
-    /// outer panel end there keeps them converging. `None` for other lobes and at μo ∈ {0, 1}.
+    /// β where 2θh = θo: the slice whose reflection reaches the normal (θi = 0 at φ = 0). Next to
+    /// it Λ(cos θi) is not analytic at the inner rule's far end (module docs), which its grading
+    /// towards the horizon stretches: two levels of the fixed rules can agree there while both are
+    /// off by 1e-9 (Trowbridge–Reitz α = 3 at μo = 0.01). An outer panel end there keeps them
+    /// converging. `None` at μo ∈ {0, 1}.
     fn normal_reflection(&self) -> Option<f64> {
         let mu = self.view.mu;
-        (self.surface.flat_normal && mu > 0.0 && mu < 1.0).then(|| {
+        (mu > 0.0 && mu < 1.0).then(|| {
             let half_theta_o = 0.5 * (FRAC_PI_2 - self.view.elevation);
             (half_theta_o.tan() / self.surface.width).atan()
         })
@@ -792,11 +822,6 @@ const NARROW_BESIDE_HORIZON: f64 = 2.0;
 /// for Beckmann, 0.037 for Trowbridge–Reitz.
 const LIGHT_TAIL: f64 = 1e-3;
 
-/// Λ at slope w/4 over Λ at slope w/2 below which Λ is flat at the normal ([`Microfacet`]'s
-/// `flat_normal`): about e^{−12 cot²} … for Beckmann's e^{−cot²θ/α²} (0 to underflow at ordinary
-/// widths), 1/4 for any Λ that starts like tan²θ (Trowbridge–Reitz at every α).
-const FLAT_NORMAL: f64 = 1e-3;
-
 /// cos 2θ = (cos θ − sin θ)(cos θ + sin θ) from sin θ and cos θ: the light's cosine at normal
 /// incidence (θi = 2θh), free of the cancellation of 1 − 2 sin²θ next to θ = π/4.
 #[inline]
@@ -923,7 +948,7 @@ impl<'a, 's, D, L> OuterNodes<'a, 's, D, L> {
 
 impl<D, L> Block for OuterNodes<'_, '_, D, L>
 where
-    D: Fn(f64) -> f64,
+    D: Density,
     L: Lambda,
 {
     #[inline(always)]
@@ -954,34 +979,38 @@ where
     }
 }
 
-/// The geometry at every node of an inner rule on one slice ([`Oblique::inner_fixed`]'s first
-/// stage): cos θi (clamped to [0, 1]), ⟨ωo, h⟩ and du/dt at u = `graded`(t) for each t of `nodes`
-/// (at most [`MAX_NODES`], a multiple of [`LANES`]).
-struct InnerNodes<'a, 'v, L> {
+/// The inner nodes of one slice ([`Oblique::inner_fixed`]'s first stage): for each t of `nodes`
+/// (at most [`MAX_NODES`], a multiple of [`LANES`]), at u = `graded`(t), ⟨ωo, h⟩ and the
+/// integrand without F, weight(Λ(θi)) ⟨ωo, h⟩ du/dt, cos θi clamped to [0, 1].
+struct InnerNodes<'a, 's, 'v, D, L> {
+    oblique: &'a Oblique<'s, D, L>,
     slice: &'a Slice<'v>,
     graded: &'a Graded,
-    lambda: &'a L,
     nodes: &'a [f64],
-    lambda_i: [f64; MAX_NODES],
     dot: [f64; MAX_NODES],
-    jacobian: [f64; MAX_NODES],
+    value: [f64; MAX_NODES],
 }
 
-impl<L: Lambda> Block for InnerNodes<'_, '_, L> {
+impl<D: Density, L: Lambda> Block for InnerNodes<'_, '_, '_, D, L> {
     #[inline(always)]
     fn run(&mut self) {
-        let mut cos_i = [0.0; MAX_NODES];
-        let outputs = cos_i.iter_mut().zip(&mut self.dot).zip(&mut self.jacobian);
-        for (&t, ((cos_i, dot), jacobian)) in self.nodes.iter().zip(outputs) {
-            let (u, du) = self.graded.point(t);
+        let n = self.nodes.len().min(MAX_NODES);
+        let (mut cos_i, mut jacobian, mut lambda_i) =
+            ([0.0; MAX_NODES], [0.0; MAX_NODES], [0.0; MAX_NODES]);
+        for k in 0..n {
+            let (u, du) = self.graded.point(self.nodes[k]);
             let point = self.slice.at(u);
-            *cos_i = point.cos_i.clamp(0.0, 1.0);
-            *dot = point.dot;
-            *jacobian = du;
+            cos_i[k] = point.cos_i.clamp(0.0, 1.0);
+            self.dot[k] = point.dot;
+            jacobian[k] = du;
         }
-        let n = self.nodes.len();
-        self.lambda
-            .at_cos_many(&cos_i[..n], &mut self.lambda_i[..n]);
+        self.oblique
+            .surface
+            .lambda
+            .at_cos_many(&cos_i[..n], &mut lambda_i[..n]);
+        for k in 0..n {
+            self.value[k] = self.oblique.weight(lambda_i[k]) * self.dot[k] * jacobian[k];
+        }
     }
 }
 
@@ -1077,6 +1106,13 @@ fn escalate(tolerance: f64, by: impl Fn(&Rules) -> f64) -> Option<f64> {
         let value = by(level);
         if !value.is_finite() {
             return None;
+        }
+        if std::env::var("DBG_ESC").is_ok() {
+            eprintln!(
+                "DBG level {} value {value:.15e} diff {:.2e} last {last:.15e}",
+                level.outer.points.len(),
+                (value - last).abs()
+            );
         }
         if (value - last).abs() <= FIXED_AGREEMENT * tolerance {
             return Some(value);
@@ -1359,9 +1395,9 @@ pub fn surface_with<'a>(
     ndf: &'a Ndf,
     parts: &'a SurfaceParts,
     g2: G2Model,
-) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send + 'a, impl Lambda + Sync + Send + 'a> {
+) -> Microfacet<impl Density + Sync + Send + 'a, impl Lambda + Sync + Send + 'a> {
     Microfacet::with_width(
-        move |theta| ndf.eval(theta),
+        NdfDensity(ndf),
         SurfaceLambda { ndf, parts },
         g2,
         parts.width,
@@ -1373,12 +1409,12 @@ pub fn surface_with<'a>(
 pub fn surface_of(
     ndf: Ndf,
     g2: G2Model,
-) -> Microfacet<impl Fn(f64) -> f64 + Sync + Send, impl Lambda + Sync + Send> {
+) -> Microfacet<impl Density + Sync + Send, impl Lambda + Sync + Send> {
     let parts = SurfaceParts::of(&ndf);
     let width = parts.width;
     let for_lambda = ndf.clone();
     Microfacet::with_width(
-        move |theta| ndf.eval(theta),
+        NdfDensity(ndf),
         SurfaceLambda {
             ndf: for_lambda,
             parts,
@@ -1447,7 +1483,7 @@ pub fn median_slope(ndf: impl Fn(f64) -> f64) -> f64 {
 /// is the bound stated.
 pub fn average_albedo<D, L>(surface: &Microfacet<D, L>, fresnel: Fresnel) -> Result<f64, QuadError>
 where
-    D: Fn(f64) -> f64,
+    D: Density,
     L: Lambda,
 {
     let tolerance = surface.tolerance.max(AVERAGE_E_TOL);
@@ -1662,7 +1698,7 @@ pub fn albedo_table<D, L>(
     progress: Option<ProgressFn>,
 ) -> Result<AlbedoTable, QuadError>
 where
-    D: Fn(f64) -> f64 + Sync + Send,
+    D: Density + Sync + Send,
     L: Lambda + Sync + Send,
 {
     albedo_table_at(
@@ -1687,7 +1723,7 @@ pub fn albedo_table_at<D, L>(
     progress: Option<ProgressFn>,
 ) -> Result<AlbedoTable, QuadError>
 where
-    D: Fn(f64) -> f64 + Sync + Send,
+    D: Density + Sync + Send,
     L: Lambda + Sync + Send,
 {
     let [values] = grid_values(
@@ -1717,7 +1753,7 @@ impl Weight<'_> {
     /// E(μo) of `surface` with this weight, or of the mirror (`None`): F(θo).
     fn value<D, L>(self, surface: Option<&Microfacet<D, L>>, mu_o: f64) -> Result<f64, QuadError>
     where
-        D: Fn(f64) -> f64,
+        D: Density,
         L: Lambda,
     {
         match (self, surface) {
@@ -1739,7 +1775,7 @@ fn grid_values<D, L, const N: usize>(
     progress: Option<ProgressFn>,
 ) -> Result<[Vec<f64>; N], QuadError>
 where
-    D: Fn(f64) -> f64 + Sync + Send,
+    D: Density + Sync + Send,
     L: Lambda + Sync + Send,
 {
     let (n_mu, n_r) = (mu.len(), roughness.len());
@@ -1780,7 +1816,7 @@ pub fn average_albedo_table<D, L>(
     progress: Option<ProgressFn>,
 ) -> Result<Vec<f64>, QuadError>
 where
-    D: Fn(f64) -> f64,
+    D: Density,
     L: Lambda,
 {
     average_albedo_table_at(&unit_grid(n_r), map, surface, fresnel, progress)
@@ -1795,7 +1831,7 @@ pub fn average_albedo_table_at<D, L>(
     progress: Option<ProgressFn>,
 ) -> Result<Vec<f64>, QuadError>
 where
-    D: Fn(f64) -> f64,
+    D: Density,
     L: Lambda,
 {
     let done = AtomicUsize::new(0);
@@ -1835,7 +1871,7 @@ pub fn split_sum_tables<D, L>(
     progress: Option<ProgressFn>,
 ) -> Result<[AlbedoTable; 4], QuadError>
 where
-    D: Fn(f64) -> f64 + Sync + Send,
+    D: Density + Sync + Send,
     L: Lambda + Sync + Send,
 {
     let basis = basis();
@@ -1884,7 +1920,7 @@ pub fn dfg_tables<D, L>(
     progress: Option<ProgressFn>,
 ) -> Result<[AlbedoTable; 2], QuadError>
 where
-    D: Fn(f64) -> f64 + Sync + Send,
+    D: Density + Sync + Send,
     L: Lambda + Sync + Send,
 {
     let scale = |theta_d: f64| 1.0 - schlick_weight(theta_d);

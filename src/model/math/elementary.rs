@@ -226,12 +226,13 @@ pub fn tan(x: f64) -> f64 {
 /// polynomial of degree 23 split into even and odd parts in x⁴. ±π/2 at ±∞, NaN for NaN.
 #[inline(always)]
 pub fn atan(x: f64) -> f64 {
-    /// arctan c for c = ½, 1, 3/2, ∞: high parts, then the rest.
+    /// arctan c for c = ½, 1, 3/2, ∞: high parts (π/4 and π/2 the doubles fdlibm quotes), then the
+    /// rest.
     const ATAN_HI: [f64; 4] = [
         4.636_476_090_008_060_935_15e-1,
-        7.853_981_633_974_482_789_99e-1,
+        std::f64::consts::FRAC_PI_4,
         9.827_937_232_473_290_540_82e-1,
-        1.570_796_326_794_896_558_00,
+        std::f64::consts::FRAC_PI_2,
     ];
     const ATAN_LO: [f64; 4] = [
         2.269_877_745_296_168_709_24e-17,
