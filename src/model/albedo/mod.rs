@@ -560,7 +560,7 @@ where
         let layer = self.layer();
         let mut sum = 0.0;
         for panel in &self.panels(layer) {
-            sum += escalate(tolerance * unit, |rules| {
+            sum += escalate_agreeing(panel.agreements, tolerance * unit, |rules| {
                 self.panel(panel, layer, fresnel, rules)
             })?;
         }
@@ -594,8 +594,11 @@ where
             edges.sort_by(f64::total_cmp);
             edges.dedup();
             panels.extend(
-                graded_panels(&edges, None, Some(layer / (2.0 * slope)))
-                    .map(|graded| Panel { graded, cut: false }),
+                graded_panels(&edges, None, Some(layer / (2.0 * slope))).map(|graded| Panel {
+                    agreements: self.agreements(&graded, |beta| beta),
+                    graded,
+                    cut: false,
+                }),
             );
         }
         let start_slope = self.surface.radial(self.beta_cut).jacobian;
@@ -618,9 +621,31 @@ where
         edges.sort_by(f64::total_cmp);
         edges.dedup();
         panels.extend(
-            graded_panels(&edges, Some(start), Some(end)).map(|graded| Panel { graded, cut: true }),
+            graded_panels(&edges, Some(start), Some(end)).map(|graded| Panel {
+                agreements: self.agreements(&graded, |s| self.smoothstep(s).0),
+                graded,
+                cut: true,
+            }),
         );
         panels
+    }
+
+    /// The agreements a panel's levels need: 2 where the lobe is rough (w > [`ROUGH_WIDTH`]) and
+    /// the panel ends at the slice reflecting to the normal (`beta` maps the panel's variable to
+    /// β), where Λ's singularity beside the normal lies at the inner rule's far end for the slices
+    /// next to that end and two levels can agree while both miss it (Beckmann α = 9 at μo = 0.2 by
+    /// 7.5e-10); else 1.
+    fn agreements(&self, graded: &Graded, beta: impl Fn(f64) -> f64) -> usize {
+        let at_normal = self.normal_reflection().is_some_and(|normal| {
+            [graded.a, graded.b]
+                .iter()
+                .any(|&x| (beta(x) - normal).abs() <= 1e-12 * normal.max(1.0))
+        });
+        if at_normal && self.surface.width > ROUGH_WIDTH {
+            2
+        } else {
+            1
+        }
     }
 
     /// One outer panel by the tensor product of `rules`: the outer rule over the panel, the inner
@@ -870,6 +895,9 @@ fn graded_panels(
 struct Panel {
     graded: Graded,
     cut: bool,
+    /// The successive agreements its levels need ([`escalate_agreeing`]): 2 for a panel ending at
+    /// the slice reflecting to the normal of a rough lobe, else 1.
+    agreements: usize,
 }
 
 /// The slices at every node of an outer rule on one panel ([`Oblique::panel`]'s first stage), in
@@ -1014,6 +1042,11 @@ impl<D: Density, L: Lambda> Block for InnerNodes<'_, '_, '_, D, L> {
     }
 }
 
+/// The lobe width (a slope) above which a lobe is rough enough for Λ's singularity beside the normal
+/// to reach its albedo's panels ([`Oblique::agreements`]): Trowbridge–Reitz's branch point
+/// α/√(α² − 1) exists from α = 1 on.
+const ROUGH_WIDTH: f64 = 1.0;
+
 /// The most points of an outer or inner rule ([`LEVELS`]): the size of the fixed rules' stages
 /// ([`OuterNodes`], [`InnerNodes`]).
 const MAX_NODES: usize = 48;
@@ -1100,22 +1133,28 @@ fn level_rules() -> &'static [Rules; 5] {
 /// within ~`tolerance` (measured against the adaptive quadrature at 1e-14 across the domain:
 /// tests/numerics/albedo.rs). `None` if no two successive levels agree or a value is not finite.
 fn escalate(tolerance: f64, by: impl Fn(&Rules) -> f64) -> Option<f64> {
+    escalate_agreeing(1, tolerance, by)
+}
+
+/// [`escalate`] taking the value where `agreements` successive differences in a row are within
+/// the bound: with 2, a coincidental agreement of two levels that both miss a feature is caught by
+/// the third.
+fn escalate_agreeing(agreements: usize, tolerance: f64, by: impl Fn(&Rules) -> f64) -> Option<f64> {
     let rules = level_rules();
     let mut last = by(&rules[0]);
+    let mut agreed = 0;
     for level in &rules[1..] {
         let value = by(level);
         if !value.is_finite() {
             return None;
         }
-        if std::env::var("DBG_ESC").is_ok() {
-            eprintln!(
-                "DBG level {} value {value:.15e} diff {:.2e} last {last:.15e}",
-                level.outer.points.len(),
-                (value - last).abs()
-            );
-        }
         if (value - last).abs() <= FIXED_AGREEMENT * tolerance {
-            return Some(value);
+            agreed += 1;
+            if agreed == agreements {
+                return Some(value);
+            }
+        } else {
+            agreed = 0;
         }
         last = value;
     }
