@@ -105,6 +105,7 @@ impl Distribution for TrowbridgeReitz {
 
     /// The same from μ = cos θo: with a = α_tr² (1 − μ)(1 + μ) = α_tr² sin²θo,
     /// Λ = a/(2μ (√(μ² + a) + μ)), one root and one division, free of cancellation; +∞ at μ = 0.
+    #[inline]
     fn lambda_at_cos(&self, mu: f64) -> f64 {
         let mu = mu.clamp(0.0, 1.0);
         let a = self.alpha2 * ((1.0 - mu) * (1.0 + mu));
