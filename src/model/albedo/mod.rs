@@ -112,6 +112,7 @@ use rayon::prelude::*;
 use crate::model::domain::DomainError;
 use crate::model::fresnel::basis::basis;
 use crate::model::masking::{G2Model, LambdaTable, g1};
+use crate::model::math::chebyshev::Piecewise;
 use crate::model::math::elementary::{self, Block};
 use crate::model::math::gauss_legendre::Rule;
 use crate::model::math::quad::{QuadError, integrate};
@@ -289,7 +290,8 @@ where
         if mu_o == 1.0 {
             self.normal_tabulated(weight)
         } else if spread >= SMOOTHED_CELLS * weight.cell() {
-            self.albedo(mu_o, Some(&|theta_d| weight.at(theta_d)))
+            let surrogate = |theta_d| weight.at(theta_d);
+            self.albedo_by(mu_o, Some(&surrogate), FresnelShape::Cells, self.tolerance)
         } else {
             let linear = |theta_d: f64| weight.linear_at_cos(theta_d.cos());
             let tolerance = self.tolerance.max(ALBEDO_TABULATED_TOL);
@@ -333,6 +335,18 @@ where
     /// taken where the two agree to within [`FIXED_AGREEMENT`] × `tolerance`, else the nested
     /// adaptive quadrature.
     fn albedo_within(&self, mu_o: f64, fresnel: Fresnel, tolerance: f64) -> Result<f64, QuadError> {
+        self.albedo_by(mu_o, fresnel, FresnelShape::Smooth, tolerance)
+    }
+
+    /// [`Microfacet::albedo_within`] with F of the given `shape`: a smooth F is tabulated for the
+    /// fixed rules' inner nodes ([`NodeFresnel`]), a cell-by-cell surrogate taken as it is.
+    fn albedo_by(
+        &self,
+        mu_o: f64,
+        fresnel: Fresnel,
+        shape: FresnelShape,
+        tolerance: f64,
+    ) -> Result<f64, QuadError> {
         assert!(
             (0.0..=1.0).contains(&mu_o),
             "μo must lie in [0, 1], got {mu_o}"
@@ -341,7 +355,7 @@ where
             escalate(tolerance, |rules| self.normal_fixed(fresnel, &rules.outer))
         } else {
             let oblique = Oblique::new(self, mu_o);
-            match oblique.fixed(fresnel, tolerance) {
+            match oblique.fixed(fresnel, shape, tolerance) {
                 Some(value) => return Ok(value),
                 None => return oblique.adaptive(fresnel, tolerance),
             }
@@ -542,7 +556,7 @@ where
     /// every panel escalates through [`LEVELS`] on its own ([`escalate`], to `tolerance` in units
     /// of E), so one slow panel does not take the others to its level. At μo = 0 the unit C is
     /// escalated first. `None` if a panel's levels never agree or a value is not finite.
-    fn fixed(&self, fresnel: Fresnel, tolerance: f64) -> Option<f64> {
+    fn fixed(&self, fresnel: Fresnel, shape: FresnelShape, tolerance: f64) -> Option<f64> {
         let unit = match self.lambda_o {
             Some(_) => 1.0,
             None => {
@@ -558,10 +572,18 @@ where
             }
         };
         let layer = self.layer();
+        let table = fresnel
+            .filter(|_| shape == FresnelShape::Smooth)
+            .and_then(|f| Piecewise::build(|c| f(theta_d(c)), 0.0, 1.0, |_, _| FRESNEL_TABLE_TOL));
+        let fresnel = match (fresnel, &table) {
+            (None, _) => NodeFresnel::One,
+            (Some(_), Some(table)) => NodeFresnel::Table(table),
+            (Some(curve), None) => NodeFresnel::Curve(curve),
+        };
         let mut sum = 0.0;
         for panel in &self.panels(layer) {
             sum += escalate_agreeing(panel.agreements, tolerance * unit, |rules| {
-                self.panel(panel, layer, fresnel, rules)
+                self.panel(panel, layer, &fresnel, rules)
             })?;
         }
         Some(sum / unit)
@@ -653,7 +675,7 @@ where
     /// The slices' geometry for the whole outer rule runs in vector lanes ([`OuterNodes`]), then D
     /// for all of them ([`Density::at_many`]), then each slice's inner integral
     /// ([`Oblique::inner_fixed`]).
-    fn panel(&self, panel: &Panel, layer: f64, fresnel: Fresnel, rules: &Rules) -> f64 {
+    fn panel(&self, panel: &Panel, layer: f64, fresnel: &NodeFresnel, rules: &Rules) -> f64 {
         let mut nodes = OuterNodes::new(self, panel, layer, &rules.outer_nodes);
         elementary::widest(&mut nodes);
         let n = rules.outer.points.len();
@@ -675,14 +697,24 @@ where
 
     /// ∫ of [`Oblique::inner`] over `slice` by the inner rule of `rules` in the variable of
     /// `graded` (u from the horizon end), in stages: the nodes' geometry (the grading's exp, sin/cos
-    /// of u/2) for the whole rule in vector lanes ([`elementary::widest`]), then Λ(θi) and F(θd)
-    /// node by node, then the weighted sum in the rule's order: the value [`Rule::integrate`] gives
-    /// for the same integrand.
-    fn inner_fixed(&self, slice: &Slice, graded: &Graded, rules: &Rules, fresnel: Fresnel) -> f64 {
+    /// of u/2), Λ(θi), the weight and a tabulated F for the whole rule in vector lanes
+    /// ([`InnerNodes`]), then F node by node where it is not tabulated, then the weighted sum in
+    /// the rule's order: the value [`Rule::integrate`] gives for the same integrand.
+    fn inner_fixed(
+        &self,
+        slice: &Slice,
+        graded: &Graded,
+        rules: &Rules,
+        fresnel: &NodeFresnel,
+    ) -> f64 {
         let mut nodes = InnerNodes {
             oblique: self,
             slice,
             graded,
+            fresnel: match fresnel {
+                NodeFresnel::Table(table) => Some(table),
+                _ => None,
+            },
             nodes: &rules.inner_nodes,
             dot: [0.0; MAX_NODES],
             value: [0.0; MAX_NODES],
@@ -690,8 +722,11 @@ where
         elementary::widest(&mut nodes);
         let mut sum = 0.0;
         for (k, &(_, w)) in rules.inner.points.iter().enumerate() {
-            let f = fresnel.map_or(1.0, |f| f(theta_d(nodes.dot[k])));
-            sum += w * (nodes.value[k] * f);
+            let value = match fresnel {
+                NodeFresnel::Curve(f) => nodes.value[k] * f(theta_d(nodes.dot[k])),
+                _ => nodes.value[k],
+            };
+            sum += w * value;
         }
         sum
     }
@@ -1014,6 +1049,9 @@ struct InnerNodes<'a, 's, 'v, D, L> {
     oblique: &'a Oblique<'s, D, L>,
     slice: &'a Slice<'v>,
     graded: &'a Graded,
+    /// F as a function of ⟨ωo, h⟩ where it is tabulated ([`NodeFresnel::Table`]): `value` then
+    /// includes it.
+    fresnel: Option<&'a Piecewise>,
     nodes: &'a [f64],
     dot: [f64; MAX_NODES],
     value: [f64; MAX_NODES],
@@ -1039,6 +1077,13 @@ impl<D: Density, L: Lambda> Block for InnerNodes<'_, '_, '_, D, L> {
         for k in 0..n {
             self.value[k] = self.oblique.weight(lambda_i[k]) * self.dot[k] * jacobian[k];
         }
+        if let Some(table) = self.fresnel {
+            let mut f = [0.0; MAX_NODES];
+            table.eval_many(&self.dot[..n], &mut f[..n]);
+            for k in 0..n {
+                self.value[k] *= f[k];
+            }
+        }
     }
 }
 
@@ -1046,6 +1091,28 @@ impl<D: Density, L: Lambda> Block for InnerNodes<'_, '_, '_, D, L> {
 /// to reach its albedo's panels ([`Oblique::agreements`]): Trowbridge–Reitz's branch point
 /// α/√(α² − 1) exists from α = 1 on.
 const ROUGH_WIDTH: f64 = 1.0;
+
+/// What a Fresnel factor inside the albedo is: a smooth curve of θd, or a surrogate built cell by
+/// cell on the basis grid ([`Smoothed`]), which no interpolant of a few pieces follows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum FresnelShape {
+    Smooth,
+    Cells,
+}
+
+/// The Fresnel factor at the fixed rules' inner nodes: none (F ≡ 1), F(arccos c) tabulated in
+/// c = ⟨ωo, h⟩ = cos θd (a [`Piecewise`] Chebyshev interpolant within [`FRESNEL_TABLE_TOL`],
+/// built once per value: a few tens of values of F against one per node), or the curve itself
+/// where its table does not converge (F not smooth enough in cos θd).
+enum NodeFresnel<'a> {
+    One,
+    Table(&'a Piecewise),
+    Curve(&'a (dyn Fn(f64) -> f64 + Sync)),
+}
+
+/// The absolute error of a Fresnel factor's table inside the fixed rules ([`NodeFresnel`]): E
+/// moves by at most this much (E ≤ 1), far below its tolerance of 1e-10.
+const FRESNEL_TABLE_TOL: f64 = 1e-13;
 
 /// The most points of an outer or inner rule ([`LEVELS`]): the size of the fixed rules' stages
 /// ([`OuterNodes`], [`InnerNodes`]).
@@ -2043,6 +2110,35 @@ mod tests {
             .albedo(1.0, None)
             .unwrap();
         assert!((e - (1.0 - 2f64.ln())).abs() <= 1e-12, "{e}");
+    }
+
+    #[test]
+    fn a_tabulated_fresnel_factor_gives_the_albedo_of_the_curve() {
+        // A conductor (gold-like), a dielectric and Schlick's: the fixed rules take F from its
+        // table in cos θd; the same integral with F taken node by node from the curve.
+        use crate::model::fresnel::{Fresnel as Curve, Ior};
+        let curves = [
+            Curve::Exact(Ior::eta_kappa(0.18, 3.4).unwrap()),
+            Curve::Exact(Ior::eta_kappa(1.5, 0.0).unwrap()),
+            Curve::schlick(0.04).unwrap(),
+        ];
+        for alpha in [0.05, 0.5, 2.0] {
+            let surface = ggx(alpha, G2Model::HeightCorrelated);
+            for curve in &curves {
+                let f = |theta_d: f64| curve.eval(theta_d);
+                for mu in [0.05, 0.5, 0.9] {
+                    let tabulated = surface.albedo(mu, Some(&f)).unwrap();
+                    let tolerance = surface.tolerance;
+                    let direct = surface
+                        .albedo_by(mu, Some(&f), FresnelShape::Cells, tolerance)
+                        .unwrap();
+                    assert!(
+                        (tabulated - direct).abs() <= 1e-12,
+                        "{curve:?} α = {alpha} μo = {mu}: {tabulated} vs {direct}"
+                    );
+                }
+            }
+        }
     }
 
     #[test]
