@@ -331,8 +331,8 @@ where
     }
 
     /// [`Microfacet::albedo`] with each nested integral held to `tolerance` instead of the
-    /// surface's own: the fixed rules of [`Order::LOW`] and [`Order::HIGH`], whose result is
-    /// taken where the two agree to within [`FIXED_AGREEMENT`] × `tolerance`, else the nested
+    /// surface's own: the fixed rules of [`LEVELS`], each panel's value taken where its levels
+    /// agree to within [`FIXED_AGREEMENT`] × `tolerance` ([`Oblique::fixed`]), else the nested
     /// adaptive quadrature.
     fn albedo_within(&self, mu_o: f64, fresnel: Fresnel, tolerance: f64) -> Result<f64, QuadError> {
         self.albedo_by(mu_o, fresnel, FresnelShape::Smooth, tolerance)
