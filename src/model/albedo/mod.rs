@@ -596,6 +596,7 @@ where
     /// its half and graded towards both ends, where the azimuth range closes like s².
     fn panels(&self, layer: f64) -> Vec<Panel> {
         let mut panels = Vec::new();
+        let normal = self.normal_reflection();
         if self.beta_cut > 0.0 {
             // A lobe narrow beside the horizon's distance lies below θh = ε/4, the horizon's layer
             // next to θh = ε/2 above it: a panel end at ε/4 keeps the layer's grading off the
@@ -608,16 +609,14 @@ where
             };
             let slope = self.surface.radial(self.beta_cut).jacobian;
             let mut edges = self.surface.lobe_edges(0.0, lobe_end);
-            edges.extend(
-                self.normal_reflection()
-                    .filter(|&beta| beta < self.beta_cut),
-            );
+            let normal_edge = normal.filter(|&beta| beta < self.beta_cut);
+            edges.extend(normal_edge);
             edges.push(self.beta_cut);
             edges.sort_by(f64::total_cmp);
             edges.dedup();
             panels.extend(
                 graded_panels(&edges, None, Some(layer / (2.0 * slope))).map(|graded| Panel {
-                    agreements: self.agreements(&graded, |beta| beta),
+                    agreements: self.agreements(&graded, normal_edge),
                     graded,
                     cut: false,
                 }),
@@ -633,18 +632,17 @@ where
             .into_iter()
             .map(|beta| inverse_smoothstep((beta - self.beta_cut) / self.span))
             .collect();
-        edges.extend(
-            self.normal_reflection()
-                .filter(|&beta| beta > self.beta_cut && beta < self.beta_cut + self.span)
-                .map(|beta| inverse_smoothstep((beta - self.beta_cut) / self.span)),
-        );
+        let normal_edge = normal
+            .filter(|&beta| beta > self.beta_cut && beta < self.beta_cut + self.span)
+            .map(|beta| inverse_smoothstep((beta - self.beta_cut) / self.span));
+        edges.extend(normal_edge);
         edges.push(0.5);
         edges.push(1.0);
         edges.sort_by(f64::total_cmp);
         edges.dedup();
         panels.extend(
             graded_panels(&edges, Some(start), Some(end)).map(|graded| Panel {
-                agreements: self.agreements(&graded, |s| self.smoothstep(s).0),
+                agreements: self.agreements(&graded, normal_edge),
                 graded,
                 cut: true,
             }),
@@ -653,16 +651,12 @@ where
     }
 
     /// The agreements a panel's levels need: 2 where the lobe is rough (w > [`ROUGH_WIDTH`]) and
-    /// the panel ends at the slice reflecting to the normal (`beta` maps the panel's variable to
-    /// β), where Λ's singularity beside the normal lies at the inner rule's far end for the slices
-    /// next to that end and two levels can agree while both miss it (Beckmann α = 9 at μo = 0.2 by
-    /// 7.5e-10); else 1.
-    fn agreements(&self, graded: &Graded, beta: impl Fn(f64) -> f64) -> usize {
-        let at_normal = self.normal_reflection().is_some_and(|normal| {
-            [graded.a, graded.b]
-                .iter()
-                .any(|&x| (beta(x) - normal).abs() <= 1e-12 * normal.max(1.0))
-        });
+    /// the panel ends at `normal_edge`, the edge (in the panel's variable) at the slice reflecting
+    /// to the normal, where Λ's singularity beside the normal lies at the inner rule's far end for
+    /// the slices next to that end and two levels can agree while both miss it (Beckmann α = 9 at
+    /// μo = 0.2 by 7.5e-10); else 1.
+    fn agreements(&self, graded: &Graded, normal_edge: Option<f64>) -> usize {
+        let at_normal = normal_edge.is_some_and(|edge| graded.a == edge || graded.b == edge);
         if at_normal && self.surface.width > ROUGH_WIDTH {
             2
         } else {
@@ -711,10 +705,7 @@ where
             oblique: self,
             slice,
             graded,
-            fresnel: match fresnel {
-                NodeFresnel::Table(table) => Some(table),
-                _ => None,
-            },
+            fresnel,
             nodes: &rules.inner_nodes,
             dot: [0.0; MAX_NODES],
             value: [0.0; MAX_NODES],
@@ -1049,9 +1040,8 @@ struct InnerNodes<'a, 's, 'v, D, L> {
     oblique: &'a Oblique<'s, D, L>,
     slice: &'a Slice<'v>,
     graded: &'a Graded,
-    /// F as a function of ⟨ωo, h⟩ where it is tabulated ([`NodeFresnel::Table`]): `value` then
-    /// includes it.
-    fresnel: Option<&'a Piecewise>,
+    /// The Fresnel factor: where it is tabulated ([`NodeFresnel::Table`]), `value` includes it.
+    fresnel: &'a NodeFresnel<'a>,
     nodes: &'a [f64],
     dot: [f64; MAX_NODES],
     value: [f64; MAX_NODES],
@@ -1077,7 +1067,7 @@ impl<D: Density, L: Lambda> Block for InnerNodes<'_, '_, '_, D, L> {
         for k in 0..n {
             self.value[k] = self.oblique.weight(lambda_i[k]) * self.dot[k] * jacobian[k];
         }
-        if let Some(table) = self.fresnel {
+        if let NodeFresnel::Table(table) = self.fresnel {
             let mut f = [0.0; MAX_NODES];
             table.eval_many(&self.dot[..n], &mut f[..n]);
             for k in 0..n {
