@@ -118,6 +118,7 @@ use crate::model::math::gauss_legendre::Rule;
 use crate::model::math::quad::{QuadError, integrate};
 use crate::model::math::tolerance::{ALBEDO_QUAD_REL_TOL, ALBEDO_TABULATED_TOL};
 use crate::model::names::named;
+pub use crate::model::ndf::Density;
 use crate::model::ndf::{Distribution, Family, Ndf, Phong, ZeroLimit};
 
 /// A Fresnel factor as a function of θd, the angle between the view ωo and the half-vector h, in
@@ -137,44 +138,6 @@ pub fn tabulated(fresnel: &crate::model::fresnel::Fresnel) -> Option<Smoothed> {
 /// The fewest grid cells the distribution of cos θd must span for the smooth surrogate of a
 /// tabulated weight to integrate like the interpolant (measured: within 6e-12 of the interpolant's direct integral for GGX α = 0.01 … 0.2 at μo = 0.5, from 9 cells on).
 pub const SMOOTHED_CELLS: f64 = 8.0;
-
-/// The NDF of a surface as the albedo integrals take it, D(θm) normalized over projected area: any
-/// `Fn(f64) -> f64` of θm, or an [`Ndf`] ([`surface_with`], [`surface_of`]), which also evaluates a
-/// block of θm in vector lanes ([`Ndf::eval_many`]).
-pub trait Density {
-    /// D at θm.
-    fn at(&self, theta: f64) -> f64;
-
-    /// `out[k]` = D(`thetas[k]`), the values of [`Density::at`] (lengths equal); one at a time
-    /// unless the implementation has a block path.
-    fn at_many(&self, thetas: &[f64], out: &mut [f64]) {
-        for (out, &theta) in out.iter_mut().zip(thetas) {
-            *out = self.at(theta);
-        }
-    }
-}
-
-impl<F: Fn(f64) -> f64> Density for F {
-    #[inline(always)]
-    fn at(&self, theta: f64) -> f64 {
-        self(theta)
-    }
-}
-
-/// An [`Ndf`] (held or borrowed) as a [`Density`]: [`Ndf::eval`], and [`Ndf::eval_many`] for a
-/// block, the same bits.
-struct NdfDensity<N>(N);
-
-impl<N: Borrow<Ndf>> Density for NdfDensity<N> {
-    #[inline]
-    fn at(&self, theta: f64) -> f64 {
-        self.0.borrow().eval(theta)
-    }
-
-    fn at_many(&self, thetas: &[f64], out: &mut [f64]) {
-        self.0.borrow().eval_many(thetas, out);
-    }
-}
 
 /// Smith's Λ of a surface as the albedo integrals take it, at μ = cos θ ∈ [0, 1] (0 at μ = 1,
 /// growing like 1/μ towards grazing): any `Fn(f64) -> f64` of μ, or an NDF's own with its
@@ -1511,12 +1474,7 @@ pub fn surface_with<'a>(
     parts: &'a SurfaceParts,
     g2: G2Model,
 ) -> Microfacet<impl Density + Sync + Send + 'a, impl Lambda + Sync + Send + 'a> {
-    Microfacet::with_width(
-        NdfDensity(ndf),
-        SurfaceLambda { ndf, parts },
-        g2,
-        parts.width,
-    )
+    Microfacet::with_width(ndf, SurfaceLambda { ndf, parts }, g2, parts.width)
 }
 
 /// The microfacet surface of `ndf` under `g2`, owning it and its [`SurfaceParts`]: what
@@ -1529,7 +1487,7 @@ pub fn surface_of(
     let width = parts.width;
     let for_lambda = ndf.clone();
     Microfacet::with_width(
-        NdfDensity(ndf),
+        ndf,
         SurfaceLambda {
             ndf: for_lambda,
             parts,

@@ -28,7 +28,7 @@ use std::fmt;
 /// Λ(θo) of `ndf` by the generic 1D integral ([`lambda_integral`]), whatever route its family takes in
 /// [`Ndf::lambda`]: the independent check of the closed forms, and the route a benchmark compares them with.
 pub fn lambda_by_integral(ndf: &Ndf, theta_o: f64) -> f64 {
-    lambda_integral(|theta| ndf.eval(theta), theta_o)
+    lambda_integral(ndf, theta_o)
 }
 
 named! {

@@ -20,6 +20,19 @@ const NODES: [(f64, f64); 8] = [
     (0.0950125098376374401853, 0.189450610455068496285),
 ];
 
+/// The points of the fixed rule of [`integrate`] and [`nodes`].
+pub const POINTS: usize = 2 * NODES.len();
+
+/// The nodes of the 16-point rule on [a, b] with their weights scaled to it, (x, w (b − a)/2), in pairs
+/// mirrored about the centre (c − h xᵢ, then c + h xᵢ), as [`integrate`] visits them: Σ w f(x) over them
+/// is ∫ₐᵇ f.
+pub fn nodes(a: f64, b: f64) -> impl Iterator<Item = (f64, f64)> {
+    let (centre, half) = (0.5 * (a + b), 0.5 * (b - a));
+    NODES
+        .iter()
+        .flat_map(move |&(x, w)| [(centre - half * x, w * half), (centre + half * x, w * half)])
+}
+
 /// ∫ₐᵇ f(x) dx by the 16-point Gauss–Legendre rule (a < b; f is never evaluated at a or b).
 #[inline]
 pub fn integrate(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> f64 {
@@ -88,6 +101,19 @@ impl Rule {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_fixed_rules_nodes_integrate_as_the_rule_does() {
+        // x¹⁵ − 3x⁴ + 1 on [0.2, 1.7]: degree 15 ≤ 31, so both are exact to rounding.
+        let f = |x: f64| x.powi(15) - 3.0 * x.powi(4) + 1.0;
+        let exact = |x: f64| x.powi(16) / 16.0 - 0.6 * x.powi(5) + x;
+        let want = exact(1.7) - exact(0.2);
+        let by_nodes: f64 = nodes(0.2, 1.7).map(|(x, w)| w * f(x)).sum();
+        assert_eq!(nodes(0.2, 1.7).count(), POINTS);
+        for got in [by_nodes, integrate(f, 0.2, 1.7)] {
+            assert!((got / want - 1.0).abs() <= 1e-14, "{got} vs {want}");
+        }
+    }
 
     #[test]
     fn rules_reproduce_the_tabulated_16_point_rule_and_integrate_polynomials() {

@@ -16,6 +16,67 @@ use crate::model::domain::{DomainError, Param};
 use crate::model::math::elementary::{Lanewise, map_lanes};
 use std::fmt;
 
+/// D(θm) as the integrals over it take it (normalized over projected area): any `Fn(f64) -> f64`
+/// of θm, an [`Ndf`] (held or borrowed), or a family's [`Distribution`] ([`FamilyDensity`]), the last two also
+/// evaluating a block of θm in vector lanes ([`Distribution::eval_many`]).
+pub trait Density {
+    /// D at θm.
+    fn at(&self, theta: f64) -> f64;
+
+    /// `out[k]` = D(`thetas[k]`), the values of [`Density::at`] (lengths equal); one at a time
+    /// unless the implementation has a block path.
+    fn at_many(&self, thetas: &[f64], out: &mut [f64]) {
+        for (out, &theta) in out.iter_mut().zip(thetas) {
+            *out = self.at(theta);
+        }
+    }
+}
+
+impl<F: Fn(f64) -> f64> Density for F {
+    #[inline(always)]
+    fn at(&self, theta: f64) -> f64 {
+        self(theta)
+    }
+}
+
+/// A family's D as a [`Density`]: [`Distribution::eval`] at a point, [`Distribution::eval_many`]
+/// for a block (the same bits).
+pub struct FamilyDensity<'a, T>(pub &'a T);
+
+impl<T: Distribution> Density for FamilyDensity<'_, T> {
+    #[inline]
+    fn at(&self, theta: f64) -> f64 {
+        self.0.eval(theta)
+    }
+
+    fn at_many(&self, thetas: &[f64], out: &mut [f64]) {
+        self.0.eval_many(thetas, out);
+    }
+}
+
+impl Density for Ndf {
+    #[inline]
+    fn at(&self, theta: f64) -> f64 {
+        self.eval(theta)
+    }
+
+    fn at_many(&self, thetas: &[f64], out: &mut [f64]) {
+        self.eval_many(thetas, out);
+    }
+}
+
+/// A borrowed [`Ndf`] as the [`Density`] it is.
+impl Density for &Ndf {
+    #[inline]
+    fn at(&self, theta: f64) -> f64 {
+        (*self).at(theta)
+    }
+
+    fn at_many(&self, thetas: &[f64], out: &mut [f64]) {
+        (*self).at_many(thetas, out);
+    }
+}
+
 /// An NDF family, as one file implements it: its names, its parameters with their domains, its
 /// colour, a validating constructor and D(θ).
 pub trait Distribution: Sized + Clone + fmt::Debug + PartialEq {

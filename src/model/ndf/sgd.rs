@@ -132,7 +132,7 @@ impl Distribution for Sgd {
 
     /// Λ(θo) by docs/maths.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
     fn lambda(&self, theta_o: f64) -> f64 {
-        crate::model::ndf::lambda_integral::lambda_integral(|theta| self.eval(theta), theta_o)
+        crate::model::ndf::lambda_integral::lambda_integral(&super::FamilyDensity(self), theta_o)
     }
 
     /// With x = tan²θ, d ln D/dx = −1/a₁ − a₂/(a₁² + x) + 2/(1 + x) has the sign of −(x² + Bx + C),

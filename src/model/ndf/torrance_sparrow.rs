@@ -105,7 +105,7 @@ impl Distribution for TorranceSparrow {
 
     /// Λ(θo) by docs/maths.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
     fn lambda(&self, theta_o: f64) -> f64 {
-        crate::model::ndf::lambda_integral::lambda_integral(|theta| self.eval(theta), theta_o)
+        crate::model::ndf::lambda_integral::lambda_integral(&super::FamilyDensity(self), theta_o)
     }
 
     /// None: D falls monotonically from its peak at θ = 0 (or rises to θ = π/2).
