@@ -16,18 +16,23 @@
 //!   formed directly, so it stays accurate near α = 1. The peak value is, for either side,
 //!   D_peak = exprel(M)/(π exprel((1 − γ) M)) (for α < 1, c α^{−2γ} = c e^{−γL} folds into exprel(−L) and
 //!   exprel((γ − 1) L)), formed from k and powers of 1 + k so that no logarithm's rounding is exponentiated
-//!   (see [`peak`]). Then
-//!   D = D_peak (q/q_peak)^{−γ} for γ ≤ 1, and D = (D_peak^{1/γ}/(q/q_peak))^γ for γ > 1: the one power never
-//!   overflows or underflows on the way to a representable D (D_peak ≤ 3.2e301, D_peak^{1/γ} ≥ π^{−1/γ}, and
-//!   q/q_peak ≤ 1 + k ≤ 1e300). Its relative error is ~γ times that of q/q_peak (a few ulps), plus for γ > 1
-//!   the rounding of 1/γ times ln D_peak (≤ 690 · 2⁻⁵³ ≈ 8e-14), where exp(ln D_peak − γ ln(q/q_peak)) would
-//!   add |ln D| ulps (up to ~1450).
+//!   (see [`peak`]). Then D = exp(ln D_peak − γ ln(1 + k_sin sin²θ + k_cos cos²θ)), one branch-free form for
+//!   every γ (vector lanes, [`Lanewise`]): ln_1p takes the non-negative deviation of q/q_peak from 1
+//!   directly (never rounded as 1 + …), both logarithms are unevaluated sums hi + lo within 2⁻⁵⁶ absolute
+//!   ([`elementary::ln_parts`], [`elementary::ln_1p_parts`]), γ times the second keeps its rounding error (a
+//!   fused multiply-add) and the difference is taken by TwoSum, so the exponent, up to ln D_peak ≤ 693.5 and
+//!   down to −69 100, is exact to ~(γ + 1) 2⁻⁵⁶ plus the error of its inputs, and D = e^{hi} (1 + lo) adds
+//!   one rounding to exp's ulp. D's relative error is thus ~γ times that of q/q_peak − 1 (a few ulps), plus
+//!   that of D_peak: the accuracy of a correctly rounded power, where exp(ln D_peak − γ ln(q/q_peak)) in
+//!   rounded doubles would add |ln D| ulps (up to ~1450). Nothing overflows on the way (e^{hi} ≤ D_peak), and
+//!   D underflows only where it is below the smallest double itself.
 //! - Smith Λ: no closed form is known; docs/maths.md's 1D integral by [`crate::model::ndf::lambda_integral::lambda_integral`], within
 //!   2.4e-13 of the 40-digit references (`tests/data/reference/lambda.csv`). Λ(0) = 0; Λ grows like 1/cos θo towards grazing and is large but finite
 //!   at θo = FRAC_PI_2 (cos = 6.1e-17).
 
 use super::Distribution;
 use crate::model::domain::{Bound, DomainError, Param};
+use crate::model::math::elementary::{self, Lanewise, at_one, map_lanes};
 use crate::model::math::special::exprel;
 use std::f64::consts::{FRAC_1_PI, PI};
 
@@ -44,8 +49,8 @@ const ALPHA_GTR: Param = Param {
 
 /// γ's domain. Any γ > 0 is a distribution (γ → 0 tends to the uniform 1/π, reached to a few ulps). Above
 /// 100 the grazing lobe of α = 1e3 narrows past 1e-4 rad (see [`ALPHA_GTR`]); accuracy alone would allow
-/// more: D's relative error is ~γ times the few-ulp error of q/q_peak, measured against mpmath at ≤ 8e-14
-/// for γ ≤ 100, 3e-13 for γ = 1e3 and 3e-12 (past the 1e-12 the NDFs are held to) for γ = 1e4.
+/// more: D's relative error is ~γ times the few-ulp error of q/q_peak − 1, measured against mpmath at
+/// ≤ 4.1e-14 for γ ≤ 100 and 1.2e-13 for γ = 1e3 and 1e4 (the reference generator's grid, 65 more angles).
 const GAMMA_GTR: Param = Param {
     name: "gamma_gtr",
     symbol: "γ",
@@ -65,8 +70,10 @@ pub struct Gtr {
     k_sin: f64,
     /// α² − 1 for α > 1, else 0: the weight of cos²θ in q/q_peak − 1.
     k_cos: f64,
-    /// D_peak for γ ≤ 1, D_peak^{1/γ} for γ > 1 (module header).
-    peak_scale: f64,
+    /// ln D_peak (module header), the head of the unevaluated sum with [`ln_peak_lo`](Self::ln_peak_lo).
+    ln_peak: f64,
+    /// ln D_peak − [`ln_peak`](Self::ln_peak), below half an ulp of it.
+    ln_peak_lo: f64,
 }
 
 impl Gtr {
@@ -84,18 +91,14 @@ impl Gtr {
         } else {
             (0.0, (alpha_gtr - 1.0) * (alpha_gtr + 1.0))
         };
-        let peak = peak(k_sin + k_cos, gamma_gtr);
-        let peak_scale = if gamma_gtr <= 1.0 {
-            peak
-        } else {
-            peak.powf(1.0 / gamma_gtr)
-        };
+        let (ln_peak, ln_peak_lo) = elementary::ln_parts(peak(k_sin + k_cos, gamma_gtr));
         Ok(Gtr {
             alpha_gtr,
             gamma_gtr,
             k_sin,
             k_cos,
-            peak_scale,
+            ln_peak,
+            ln_peak_lo,
         })
     }
 
@@ -107,6 +110,25 @@ impl Gtr {
     /// The tail exponent γ.
     pub fn gamma_gtr(&self) -> f64 {
         self.gamma_gtr
+    }
+}
+
+impl Lanewise for Gtr {
+    /// D(θ) = c/(α² cos²θ + sin²θ)^γ for θ ∈ [0, π/2], normalized over projected area, as
+    /// exp(ln D_peak − γ ln(1 + k_sin sin²θ + k_cos cos²θ)) with the exponent carried as hi + lo (module
+    /// header).
+    #[inline(always)]
+    fn at(&self, theta: f64) -> f64 {
+        let (sin_theta, cos_theta) = elementary::sin_cos(theta);
+        let excess = self.k_sin * sin_theta * sin_theta + self.k_cos * cos_theta * cos_theta;
+        let (ln_ratio, ln_ratio_lo) = elementary::ln_1p_parts(excess);
+        let gamma = self.gamma_gtr;
+        let fall = gamma * ln_ratio;
+        let fall_lo = gamma.mul_add(ln_ratio, -fall) + gamma * ln_ratio_lo;
+        let (exponent, exponent_error) = elementary::two_sum(self.ln_peak, -fall);
+        let exponent_lo = exponent_error + (self.ln_peak_lo - fall_lo);
+        let value = elementary::exp(exponent);
+        value.mul_add(exponent_lo, value)
     }
 }
 
@@ -135,17 +157,15 @@ impl Distribution for Gtr {
         }
     }
 
-    /// D(θ) = c / (α² cos²θ + sin²θ)^γ for θ ∈ [0, π/2], normalized over projected area.
+    /// D(θ) by [`Lanewise::at`] ([`at_one`]), the one kernel of [`eval_many`](Distribution::eval_many).
     #[inline]
     fn eval(&self, theta: f64) -> f64 {
-        let (sin_theta, cos_theta) = theta.sin_cos();
-        let q_over_q_peak =
-            1.0 + self.k_sin * sin_theta * sin_theta + self.k_cos * cos_theta * cos_theta;
-        if self.gamma_gtr <= 1.0 {
-            self.peak_scale * q_over_q_peak.powf(-self.gamma_gtr)
-        } else {
-            (self.peak_scale / q_over_q_peak).powf(self.gamma_gtr)
-        }
+        at_one(self, theta)
+    }
+
+    /// D at every θ, a block at a time in vector lanes ([`map_lanes`]).
+    fn eval_many(&self, thetas: &[f64], out: &mut [f64]) {
+        map_lanes(self, thetas, out)
     }
 
     /// Λ(θo) by docs/maths.md's 1D integral ([`crate::model::ndf::lambda_integral::lambda_integral`]): no closed form is known.
@@ -198,9 +218,107 @@ fn peak(k: f64, gamma: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::math::tolerance::REL_TOL_TROWBRIDGE_REITZ;
+    use crate::model::math::tolerance::{REL_TOL_TROWBRIDGE_REITZ, floored_relative_difference};
     use crate::model::ndf::TrowbridgeReitz;
     use std::f64::consts::FRAC_PI_2;
+
+    /// How far the lane kernel may lie from [`libm_form`]: each is within ~γ times the few-ulp error of
+    /// q/q_peak − 1 of the truth (≤ 4.1e-14 for the kernel against mpmath), and the libm form adds up to
+    /// 8e-14 for γ > 1 (the rounding of 1/γ times ln D_peak ≤ 690); measured 8.0e-14 over
+    /// [`lane_kernel_matches_the_libm_form`]'s grid.
+    const REL_TOL_LIBM_FORM: f64 = 2e-13;
+
+    /// The point-by-point form the lane kernel replaced, kept as a cross-check: libm's sin_cos and powf,
+    /// D = D_peak (q/q_peak)^{−γ} for γ ≤ 1 and (D_peak^{1/γ}/(q/q_peak))^γ for γ > 1.
+    fn libm_form(gtr: &Gtr, theta: f64) -> f64 {
+        let (gamma, peak) = (gtr.gamma_gtr, peak(gtr.k_sin + gtr.k_cos, gtr.gamma_gtr));
+        let (sin_theta, cos_theta) = theta.sin_cos();
+        let q_over_q_peak =
+            1.0 + gtr.k_sin * sin_theta * sin_theta + gtr.k_cos * cos_theta * cos_theta;
+        if gamma <= 1.0 {
+            peak * q_over_q_peak.powf(-gamma)
+        } else {
+            (peak.powf(1.0 / gamma) / q_over_q_peak).powf(gamma)
+        }
+    }
+
+    /// `eval_many` against [`libm_form`] over the whole domain, α from 1e-150 to 1e3 and through 1 (to
+    /// within 1e-9), γ from the smallest positive double to 100 and through 1, θ from 0 through 1e-300 and
+    /// the lobe's width to the double nearest π/2; and `eval_many` gives `eval`'s bits there.
+    #[test]
+    fn lane_kernel_matches_the_libm_form() {
+        let mut alphas: Vec<f64> = decades(-150, 3, 1).collect();
+        alphas.extend([
+            1e-150 * (1.0 + f64::EPSILON),
+            0.3,
+            0.5,
+            1.0 - 1e-6,
+            1.0 - 1e-9,
+            1.0,
+            1.0 + 1e-9,
+            1.0 + 1e-6,
+            2.0,
+        ]);
+        let gammas = [
+            5e-324,
+            1e-300,
+            1e-6,
+            1e-3,
+            0.1,
+            0.5,
+            1.0 - 1e-9,
+            1.0,
+            1.0 + 1e-9,
+            1.5,
+            2.0,
+            3.0,
+            10.0,
+            31.6,
+            99.9,
+            100.0,
+        ];
+        let fixed: Vec<f64> = [0.0, 5e-324, 1e-300, 1e-151, 1e-8, FRAC_PI_2]
+            .into_iter()
+            .chain((1..512).map(|i| FRAC_PI_2 * f64::from(i) / 512.0))
+            .chain(decades(-16, -1, 1).map(|d| FRAC_PI_2 - d))
+            .chain((1..8).map(|i| f64::from_bits(FRAC_PI_2.to_bits() - i)))
+            .collect();
+        let mut worst = (0.0, 0.0, 0.0, 0.0);
+        for &alpha in &alphas {
+            // 64 steps of a sixteenth of the lobe's width 1/√(max(α², α⁻²) − 1), from θ = 0 (α < 1) or
+            // from grazing (α > 1).
+            let width = 1.0 / (alpha.max(1.0 / alpha).powi(2) - 1.0).sqrt();
+            let lobe = (1..=64).map(|i| width * f64::from(i) / 16.0);
+            let thetas: Vec<f64> = if alpha < 1.0 {
+                lobe.filter(|&t| t < FRAC_PI_2).chain(fixed.clone()).collect()
+            } else {
+                lobe.map(|t| FRAC_PI_2 - t)
+                    .filter(|&t| t > 0.0)
+                    .chain(fixed.clone())
+                    .collect()
+            };
+            for &gamma in &gammas {
+                let gtr = Gtr::new(alpha, gamma).unwrap();
+                let mut block = vec![0.0; thetas.len()];
+                gtr.eval_many(&thetas, &mut block);
+                for (&theta, &got) in thetas.iter().zip(&block) {
+                    let at = format!("α = {alpha:e}, γ = {gamma:e}, θ = {theta:e}");
+                    assert_eq!(got.to_bits(), gtr.eval(theta).to_bits(), "{at}");
+                    assert!(got.is_finite() && got >= 0.0, "{at}: {got:e}");
+                    let error = floored_relative_difference(got, libm_form(&gtr, theta));
+                    if error > worst.0 {
+                        worst = (error, alpha, gamma, theta);
+                    }
+                }
+            }
+        }
+        let (error, alpha, gamma, theta) = worst;
+        println!("worst {error:.2e} at α = {alpha:e}, γ = {gamma:e}, θ = {theta:e}");
+        assert!(
+            error <= REL_TOL_LIBM_FORM,
+            "{error:e} at α = {alpha:e}, γ = {gamma:e}, θ = {theta:e}"
+        );
+    }
 
     /// The decades 10^e for e = lo, lo + step, … ≤ hi, each the double nearest 10^e (as written `1e{e}`).
     fn decades(lo: i32, hi: i32, step: usize) -> impl Iterator<Item = f64> {
