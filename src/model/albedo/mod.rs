@@ -504,17 +504,15 @@ where
         self.weight(self.surface.lambda.at_cos(point.cos_i.clamp(0.0, 1.0))) * f * point.dot
     }
 
-    /// The scale in cos θi over which the fixed rules are graded next to the horizon:
-    /// [`GRADED_LAYERS`] times the layer λ in which the weight G2/μo turns over there. Λ(θi) grows
+    /// The layer λ in cos θi in which the weight G2/μo turns over next to the horizon: Λ(θi) grows
     /// like C/cos θi below cos θi ~ w, and next to Λ(θo) ≈ C/μo (height-correlated) it matters
-    /// below cos θi ~ μo: λ = min(w, μo)/2 (w at most 1), or w/2.
+    /// below cos θi ~ μo; λ = min(w, μo)/2 (w at most 1), or w/2.
     fn layer(&self) -> f64 {
         let w = self.surface.width.min(1.0);
-        let turnover = match (self.lambda_o, self.surface.g2) {
+        match (self.lambda_o, self.surface.g2) {
             (Some(_), G2Model::HeightCorrelated) => 0.5 * w.min(self.view.mu),
             _ => 0.5 * w,
-        };
-        GRADED_LAYERS * turnover
+        }
     }
 
     /// E(μo) by the tensor product of the fixed rules on each outer panel ([`Oblique::panels`]):
@@ -536,7 +534,11 @@ where
                 })?
             }
         };
-        let layer = self.layer();
+        let layer = self.layer()
+            * match shape {
+                FresnelShape::Smooth => GRADED_LAYERS,
+                FresnelShape::Cells => 1.0,
+            };
         let table = fresnel
             .filter(|_| shape == FresnelShape::Smooth)
             .and_then(|f| Piecewise::build(|c| f(theta_d(c)), 0.0, 1.0, |_, _| FRESNEL_TABLE_TOL));
@@ -556,8 +558,8 @@ where
 
     /// The outer panels of the fixed rules: on [0, β_cut] in β, split at the lobe's edges
     /// ([`Microfacet::lobe_edges`]), at θh = ε/4 for a lobe narrow beside the horizon and at the
-    /// slice reflecting to the normal, the last panel graded towards β_cut on the weight's layer
-    /// `layer` ([`Oblique::layer`]); and on [0, 1] in s (the cut part), split at the same points, at
+    /// slice reflecting to the normal, the last panel graded towards β_cut on the scale `layer`
+    /// in cos θi (a multiple of [`Oblique::layer`]); and on [0, 1] in s (the cut part), split at the same points, at
     /// its half and graded towards both ends, where the azimuth range closes like s².
     fn panels(&self, layer: f64) -> Vec<Panel> {
         let mut panels = Vec::new();
@@ -1074,12 +1076,14 @@ const FRESNEL_TABLE_TOL: f64 = 1e-13;
 const MAX_NODES: usize = 48;
 
 /// The layers λ of the weight's turnover ([`Oblique::layer`]) over which the fixed rules are graded
-/// next to the horizon. Graded within λ itself, an inner rule crowds its nodes at the horizon and
-/// leaves too few at its far end, where on the slices beside the one reflecting to the normal
-/// Λ(θi) of a light-tailed lobe rises from 0 (Beckmann's exp(−cot²θi/α²), not analytic at θi = 0)
-/// and converges slowest: Beckmann α = 0.3 at μo = 0.5 took 26, 36, 26 and 36 points a side on its
-/// four panels, and takes 24, 32, 24 and 32 over 4λ; SGD's panels, 20 to 26 before, all agree at
-/// 24. Accuracy across the domain is unchanged or better (tests/numerics/albedo.rs).
+/// next to the horizon for a smooth Fresnel factor. Graded within λ itself, an inner rule crowds
+/// its nodes at the horizon and leaves too few at its far end, where on the slices beside the one
+/// reflecting to the normal Λ(θi) of a light-tailed lobe rises from 0 (Beckmann's
+/// exp(−cot²θi/α²), not analytic at θi = 0) and converges slowest: Beckmann α = 0.3 at μo = 0.5
+/// took 26, 36, 26 and 36 points a side on its four panels, and takes 24, 32, 24 and 32 over 4λ;
+/// SGD's panels, 20 to 26 before, all agree at 24. Accuracy across the domain is unchanged or
+/// better (tests/numerics/albedo.rs). A factor of cells ([`FresnelShape::Cells`]) keeps λ: it
+/// varies most at grazing θd, next to the horizon, and over 4λ the split-sum tables cost 1.2×.
 const GRADED_LAYERS: f64 = 4.0;
 
 /// The finest grading of [`Graded`], relative to its interval: far below any layer that matters.
