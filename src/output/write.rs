@@ -5,6 +5,8 @@
 //! run never leaves a truncated file under a real name and two runs into one folder never touch
 //! each other's temporaries (the last rename wins per file; docs/contracts.md).
 //!
+//! A file that already holds exactly the bytes to write is left as it is ([`holds`]).
+//!
 //! A rename replaces whatever has the name, so each target is checked first: an existing regular
 //! file or symbolic link (the link itself is replaced, never written through) is replaced; anything
 //! else — a device node, a FIFO, a socket, a folder — is refused, naming the option and the path,
@@ -93,12 +95,17 @@ impl Drop for Live {
     }
 }
 
-/// Writes `bytes` to `dir/name` atomically (exclusive temporary with a unique name, rename).
-/// `name` must be a plain file name (the caller validated the scene id it comes from). The file
-/// gets the permissions a plain create would give (0666 less the umask).
+/// Writes `bytes` to `dir/name` atomically (exclusive temporary with a unique name, rename), unless
+/// the file there already [holds](holds) exactly those bytes: then it is left as it is, its
+/// modification time too (re-rendering an unchanged catalogue rewrites nothing). `name` must be a
+/// plain file name (the caller validated the scene id it comes from). A file written gets the
+/// permissions a plain create would give (0666 less the umask).
 fn write_atomic(flag: &str, dir: &Path, name: &str, bytes: &[u8]) -> Result<()> {
     debug_assert!(!name.contains(['/', '\\']) && !name.starts_with('.'));
     let target = joined(dir, name);
+    if holds(&target, bytes) {
+        return Ok(());
+    }
     let shown = target.display().to_string();
     let (mut file, _live) = Live::create(|| {
         tempfile::Builder::new()
@@ -117,6 +124,47 @@ fn write_atomic(flag: &str, dir: &Path, name: &str, bytes: &[u8]) -> Result<()> 
     file.persist(&target)
         .map_err(|e| Error::io(shown, e.error).for_option(flag))?;
     Ok(())
+}
+
+/// Bytes read at a time by [`holds`].
+const COMPARED_BLOCK: usize = 1 << 16;
+
+/// Whether `target` is a regular file that holds exactly `bytes`. It is opened only if its name
+/// is a regular file of `bytes.len()` bytes (not followed through a link), then without following a
+/// link and without blocking, and read only if what was opened is that same file: block by block, stopping at the first difference, never past that length (a link, a
+/// FIFO, a device, or a file of another length holds nothing). Any error reads as "no": the file is
+/// then written as usual.
+fn holds(target: &Path, bytes: &[u8]) -> bool {
+    use std::io::Read;
+    use std::os::unix::fs::{MetadataExt, OpenOptionsExt};
+    let same_size_file = |meta: &fs::Metadata| meta.is_file() && meta.len() == bytes.len() as u64;
+    let Ok(named) = fs::symlink_metadata(target) else {
+        return false;
+    };
+    if !same_size_file(&named) {
+        return false;
+    }
+    let Ok(mut file) = fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK)
+        .open(target)
+    else {
+        return false;
+    };
+    match file.metadata() {
+        Ok(open)
+            if same_size_file(&open) && (open.dev(), open.ino()) == (named.dev(), named.ino()) => {}
+        _ => return false,
+    }
+    let mut block = vec![0; COMPARED_BLOCK.min(bytes.len()).max(1)];
+    for expected in bytes.chunks(COMPARED_BLOCK) {
+        let read = &mut block[..expected.len()];
+        if file.read_exact(read).is_err() || read != expected {
+            return false;
+        }
+    }
+    // It may have grown since it was measured.
+    matches!(file.read(&mut block[..1]), Ok(0))
 }
 
 /// `dir/name`, or `name` alone when `dir` is `.` (the folder of a bare `-o FILE`), as messages
@@ -287,5 +335,45 @@ mod tests {
         assert!(!is_temporary_of(".fig.csv.my-file.tmp", "fig.csv"));
         assert!(!is_temporary_of(".fig.csv.a1B2c3.tmp", "fig.svg"));
         assert!(!is_temporary_of(".fig.csv.a1B2c3", "fig.csv"));
+    }
+
+    #[test]
+    fn a_file_that_holds_the_bytes_is_left_as_it_is_and_anything_else_replaced() {
+        use std::os::unix::fs::MetadataExt;
+        let dir = tempfile::tempdir().unwrap();
+        let inode = |name: &str| fs::symlink_metadata(dir.path().join(name)).unwrap().ino();
+        let files = [
+            ("same.csv", b"1,2\n".to_vec()),
+            ("other.csv", b"3,4\n".to_vec()),
+        ];
+        write_files("-o", dir.path(), &files).unwrap();
+        let (same, other) = (inode("same.csv"), inode("other.csv"));
+        // Identical bytes: the same file stays. Same length, other bytes: a new file.
+        let again = [
+            ("same.csv", b"1,2\n".to_vec()),
+            ("other.csv", b"3,5\n".to_vec()),
+        ];
+        write_files("-o", dir.path(), &again).unwrap();
+        assert_eq!(inode("same.csv"), same);
+        assert_ne!(inode("other.csv"), other);
+        assert_eq!(fs::read(dir.path().join("other.csv")).unwrap(), b"3,5\n");
+        // A link to a file holding the bytes is replaced by a file, its target left alone.
+        let outside = tempfile::tempdir().unwrap();
+        let kept = outside.path().join("kept.csv");
+        fs::write(&kept, b"1,2\n").unwrap();
+        fs::remove_file(dir.path().join("same.csv")).unwrap();
+        std::os::unix::fs::symlink(&kept, dir.path().join("same.csv")).unwrap();
+        write_files("-o", dir.path(), &again).unwrap();
+        assert!(
+            fs::symlink_metadata(dir.path().join("same.csv"))
+                .unwrap()
+                .is_file()
+        );
+        assert_eq!(fs::read(&kept).unwrap(), b"1,2\n");
+        // A longer or shorter file is not read, and is replaced.
+        fs::write(dir.path().join("same.csv"), b"1,2\n\n").unwrap();
+        assert!(!holds(&dir.path().join("same.csv"), b"1,2\n"));
+        assert!(holds(&dir.path().join("other.csv"), b"3,5\n"));
+        assert!(!holds(&dir.path().join("missing.csv"), b""));
     }
 }
