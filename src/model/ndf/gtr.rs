@@ -218,7 +218,8 @@ fn peak(k: f64, gamma: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::math::tolerance::{REL_TOL_TROWBRIDGE_REITZ, floored_relative_difference};
+    use crate::model::ndf::test_support::{block_error, decades};
+    use crate::model::math::tolerance::REL_TOL_TROWBRIDGE_REITZ;
     use crate::model::ndf::TrowbridgeReitz;
     use std::f64::consts::FRAC_PI_2;
 
@@ -299,16 +300,11 @@ mod tests {
             };
             for &gamma in &gammas {
                 let gtr = Gtr::new(alpha, gamma).unwrap();
-                let mut block = vec![0.0; thetas.len()];
-                gtr.eval_many(&thetas, &mut block);
-                for (&theta, &got) in thetas.iter().zip(&block) {
-                    let at = format!("α = {alpha:e}, γ = {gamma:e}, θ = {theta:e}");
-                    assert_eq!(got.to_bits(), gtr.eval(theta).to_bits(), "{at}");
-                    assert!(got.is_finite() && got >= 0.0, "{at}: {got:e}");
-                    let error = floored_relative_difference(got, libm_form(&gtr, theta));
-                    if error > worst.0 {
-                        worst = (error, alpha, gamma, theta);
-                    }
+                let at = format!("α = {alpha:e}, γ = {gamma:e}");
+                let (error, theta) =
+                    block_error(&gtr, &thetas, |theta| libm_form(&gtr, theta), &at);
+                if error > worst.0 {
+                    worst = (error, alpha, gamma, theta);
                 }
             }
         }
@@ -320,12 +316,6 @@ mod tests {
         );
     }
 
-    /// The decades 10^e for e = lo, lo + step, … ≤ hi, each the double nearest 10^e (as written `1e{e}`).
-    fn decades(lo: i32, hi: i32, step: usize) -> impl Iterator<Item = f64> {
-        (lo..=hi)
-            .step_by(step)
-            .map(|e| format!("1e{e}").parse().expect("a decade parses"))
-    }
 
     #[test]
     fn gamma_2_is_trowbridge_reitz() {

@@ -420,6 +420,50 @@ impl Family {
     }
 }
 
+/// Grids and checks the families' tests share.
+#[cfg(test)]
+pub(crate) mod test_support {
+    use super::Distribution;
+    use crate::model::math::tolerance::floored_relative_difference;
+
+    /// The decades 10^e for e = lo, lo + step, … ≤ hi, each the double nearest 10^e (as written `1e{e}`).
+    pub fn decades(lo: i32, hi: i32, step: usize) -> impl Iterator<Item = f64> {
+        (lo..=hi)
+            .step_by(step)
+            .map(|e| format!("1e{e}").parse().expect("a decade parses"))
+    }
+
+    /// The largest floored relative difference of `ndf`'s `eval_many` over `thetas` from `reference`, with
+    /// the θ where it is, after asserting that every value is `eval`'s bits, finite and non-negative (`at`
+    /// names the parameters in the messages).
+    pub fn block_error<D: Distribution>(
+        ndf: &D,
+        thetas: &[f64],
+        reference: impl Fn(f64) -> f64,
+        at: &str,
+    ) -> (f64, f64) {
+        let mut block = vec![0.0; thetas.len()];
+        ndf.eval_many(thetas, &mut block);
+        let mut worst = (0.0, 0.0);
+        for (&theta, &got) in thetas.iter().zip(&block) {
+            assert_eq!(
+                got.to_bits(),
+                ndf.eval(theta).to_bits(),
+                "{at}, θ = {theta:e}"
+            );
+            assert!(
+                got.is_finite() && got >= 0.0,
+                "{at}, θ = {theta:e}: {got:e}"
+            );
+            let error = floored_relative_difference(got, reference(theta));
+            if error > worst.0 {
+                worst = (error, theta);
+            }
+        }
+        worst
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -450,6 +450,7 @@ fn continued_fraction(gamma: f64, z: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::ndf::test_support::{block_error, decades};
     use crate::model::math::tolerance::{
         REL_TOL_LAMBDA_CLOSED_FORM, REL_TOL_NDF, REL_TOL_TROWBRIDGE_REITZ,
         floored_relative_difference,
@@ -539,23 +540,11 @@ mod tests {
                         }
                     }
                 }
-                let mut block = vec![0.0; thetas.len()];
-                std.eval_many(&thetas, &mut block);
-                for (&theta, &got) in thetas.iter().zip(&block) {
-                    assert_eq!(
-                        got.to_bits(),
-                        std.eval(theta).to_bits(),
-                        "α = {alpha:e}, γ = {gamma:e}, θ = {theta:e}"
-                    );
-                    let want = libm_form(&std, theta);
-                    assert!(
-                        got.is_finite() && got >= 0.0,
-                        "α = {alpha:e}, γ = {gamma:e}, θ = {theta:e}: {got:e}"
-                    );
-                    let error = floored_relative_difference(got, want);
-                    if error > worst.0 {
-                        worst = (error, alpha, gamma, theta);
-                    }
+                let at = format!("α = {alpha:e}, γ = {gamma:e}");
+                let (error, theta) =
+                    block_error(&std, &thetas, |theta| libm_form(&std, theta), &at);
+                if error > worst.0 {
+                    worst = (error, alpha, gamma, theta);
                 }
             }
         }
@@ -567,12 +556,6 @@ mod tests {
         );
     }
 
-    /// The decades 10^e for e = lo, lo + step, … ≤ hi, each the double nearest 10^e (as written `1e{e}`).
-    fn decades(lo: i32, hi: i32, step: usize) -> impl Iterator<Item = f64> {
-        (lo..=hi)
-            .step_by(step)
-            .map(|e| format!("1e{e}").parse().expect("a decade parses"))
-    }
 
     /// θ from 0 through tiny angles and a uniform grid to the double nearest π/2.
     fn thetas() -> Vec<f64> {
