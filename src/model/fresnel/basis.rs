@@ -18,10 +18,10 @@
 //!   η = linspace(1.01, 3, 100).
 //!
 //! The basis is computed by `basis/compute.rs` (the leading right singular vectors only, by
-//! subspace iteration, [`crate::model::math::svd`]) and stored as a table that runs read
-//! ([`STORED`]); a test recomputes it and holds the table to it. The spectrum is computed at most
-//! once per process, on first use, by one-sided Jacobi, which keeps even its smallest values
-//! accurate. Another SVD routine moves b₁…b₃ by ~1e-14 only (reference/README.md).
+//! subspace iteration, `crate::model::math::svd`) and stored as a table that runs read
+//! ([`STORED`]), and so are the spectrum's singular values, computed by one-sided Jacobi, which
+//! keeps even their smallest values accurate; a test recomputes both and holds the table to them.
+//! Another SVD routine moves b₁…b₃ by ~1e-14 only (reference/README.md).
 //! Tabulated values between nodes are interpolated linearly in c (see [`Basis::interpolate`]). The
 //! reconstruction and the basis functions are approximations and basis vectors, not reflectances:
 //! they may leave [0, 1] and are never clamped.
@@ -30,7 +30,6 @@ use std::sync::OnceLock;
 
 use super::exact::{Incidence, Index, normalized_reflectance, reflectance};
 use crate::model::grid::linspace;
-use crate::model::math::svd;
 
 #[cfg(test)]
 mod compute;
@@ -75,10 +74,12 @@ pub struct Basis {
 
 static BASIS: OnceLock<Basis> = OnceLock::new();
 
-/// The basis as [`compute`] makes it, stored: a comment line, `critical i₁ i₂`, then `b1`, `b2`
-/// and `b3` each followed by its 1000 node values in shortest round-trip form (b₀ = 1). Reading
-/// it takes well under a millisecond where computing it takes the training matrix and two partial
-/// SVDs (~50 ms), and every machine gets the same bits; a test keeps it equal to the computation.
+/// The basis and the spectrum as [`compute`] makes them, stored: a comment line, `critical i₁ i₂`,
+/// then `b1`, `b2` and `b3` each followed by its 1000 node values (b₀ = 1), then `spectrum`
+/// followed by the 100 singular values of step 6, decreasing, all in shortest round-trip form.
+/// Reading it takes well under a millisecond where computing it takes the training matrix and two
+/// partial SVDs (~50 ms) and a full 100 × 1000 SVD (~75 ms), and every machine gets the same bits;
+/// a test keeps it equal to the computation.
 const STORED: &str = include_str!("basis/stored.txt");
 
 /// The basis of docs/maths.md steps 1–4, read from [`STORED`] on first call and shared.
@@ -108,6 +109,7 @@ fn parse_stored(text: &str) -> Basis {
                 let k = usize::from(name.as_bytes()[1] - b'0');
                 functions[k] = words.map(|w| w.parse().expect("a number")).collect();
             }
+            Some("spectrum") => {}
             _ => panic!("unexpected line in the stored basis: {line:.40}"),
         }
     }
@@ -122,12 +124,32 @@ fn parse_stored(text: &str) -> Basis {
     }
 }
 
-/// `basis` in the format of [`STORED`].
+/// The singular values written in `text` (the `spectrum` line of [`STORED`]). Panics on a
+/// malformed table, as [`parse_stored`] does.
+fn parse_stored_spectrum(text: &str) -> Vec<f64> {
+    let line = text
+        .lines()
+        .find_map(|l| l.strip_prefix("spectrum "))
+        .expect("a spectrum line in the stored table");
+    let values: Vec<f64> = line
+        .split_ascii_whitespace()
+        .map(|w| w.parse().expect("a number"))
+        .collect();
+    assert_eq!(
+        values.len(),
+        SPECTRUM_SIZE,
+        "one singular value per dielectric"
+    );
+    values
+}
+
+/// `basis` and the spectrum's `singular_values` in the format of [`STORED`].
 #[cfg(test)]
-fn stored_text(basis: &Basis) -> String {
+fn stored_text(basis: &Basis, singular_values: &[f64]) -> String {
     let mut text = String::from(
-        "# The Belcour–Bati–Barla Fresnel basis b1…b3 on c_i = linspace(0, 1, 1000) and its critical \
-         nodes, as src/model/fresnel/basis/compute.rs computes it; shortest round-trip doubles.\n",
+        "# The Belcour–Bati–Barla Fresnel basis b1…b3 on c_i = linspace(0, 1, 1000), its critical \
+         nodes and the singular values of the spectrum check, as src/model/fresnel/basis/compute.rs \
+         computes them; shortest round-trip doubles.\n",
     );
     text.push_str(&format!(
         "critical {} {}\n",
@@ -140,6 +162,8 @@ fn stored_text(basis: &Basis) -> String {
             .collect();
         text.push_str(&format!("b{k} {}\n", values.join(" ")));
     }
+    let values: Vec<String> = singular_values.iter().map(|v| format!("{v:?}")).collect();
+    text.push_str(&format!("spectrum {}\n", values.join(" ")));
     text
 }
 
@@ -266,16 +290,17 @@ pub struct Spectrum {
 
 static SPECTRUM: OnceLock<Spectrum> = OnceLock::new();
 
-/// The spectrum of docs/maths.md step 6, computed on first call (one 100 × 1000 SVD) and shared.
+/// The dielectric indices of the spectrum check, η = linspace(1.01, 3, 100), κ = 0.
+fn spectrum_etas() -> Vec<f64> {
+    linspace(DIELECTRIC_ETA_MIN, DIELECTRIC_ETA_MAX, SPECTRUM_SIZE)
+}
+
+/// The spectrum of docs/maths.md step 6, its singular values read from [`STORED`] on first call
+/// and shared.
 pub fn spectrum() -> &'static Spectrum {
     SPECTRUM.get_or_init(|| {
-        let etas = linspace(DIELECTRIC_ETA_MIN, DIELECTRIC_ETA_MAX, SPECTRUM_SIZE);
-        let cos_theta = grid();
-        let matrix: Vec<f64> = etas
-            .iter()
-            .flat_map(|&eta| normalized_curve(&cos_theta, Index::new(eta, 0.0)))
-            .collect();
-        let singular_values = svd::singular_values(&matrix, GRID_SIZE);
+        let etas = spectrum_etas();
+        let singular_values = parse_stored_spectrum(STORED);
         let total: f64 = singular_values.iter().sum();
         let normalized: Vec<f64> = singular_values.iter().map(|s| s / total).collect();
         let cumulative = normalized

@@ -9,8 +9,9 @@
 //! - [`gauss_legendre`]: the fixed 16-point Gauss–Legendre rule, for integrals split into panels in advance.
 //! - [`roots`]: Brent's safeguarded bracketing root finder and a log-scale bracket expansion.
 //! - [`simplex`]: Nelder–Mead minimization within a box, for fits of several parameters.
-//! - [`svd`]: singular values by one-sided Jacobi rotations, accurate across many decades, and the
-//!   leading right singular vectors of large matrices by subspace iteration.
+//! - `svd`: singular values by one-sided Jacobi rotations, accurate across many decades, and the
+//!   leading right singular vectors of large matrices by subspace iteration (compiled for the
+//!   tests, which recompute the stored Fresnel basis and spectrum with it).
 //! - [`tolerance`]: every accuracy target of the crate's numerical tests, with its reason.
 
 pub mod chebyshev;
@@ -20,5 +21,6 @@ pub mod quad;
 pub mod roots;
 pub mod simplex;
 pub mod special;
+#[cfg(test)]
 pub mod svd;
 pub mod tolerance;

@@ -1,15 +1,19 @@
-//! How the stored basis ([`super::STORED`]) is made: docs/maths.md steps 1–4 run as the notebook runs
-//! them, the leading right singular vectors by the subspace iteration of [`svd`]. Compiled for the
-//! tests, which check the stored table against it; with `NDFPLOT_WRITE_BASIS=1` set,
-//! `cargo test --lib stored_basis` writes the table anew instead.
+//! How the stored table ([`super::STORED`]) is made: docs/maths.md steps 1–4 run as the notebook runs
+//! them, the leading right singular vectors by the subspace iteration of [`svd`], and the singular
+//! values of step 6 by its one-sided Jacobi. Compiled for the tests, which check the stored table
+//! against it; with `NDFPLOT_WRITE_BASIS=1` set, `cargo test --lib stored_basis` writes the table
+//! anew instead.
 //!
 //! The computation is sequential plain f64 arithmetic from a fixed start block, so it does not
 //! depend on the thread count or on the CPU's vector instructions; the table spares a run the
-//! computation (~50 ms).
+//! computation (~125 ms).
 
 use rayon::prelude::*;
 
-use super::{Basis, DIELECTRIC_ETA_MAX, DIELECTRIC_ETA_MIN, GRID_SIZE, grid};
+use super::{
+    Basis, DIELECTRIC_ETA_MAX, DIELECTRIC_ETA_MIN, GRID_SIZE, Index, grid, normalized_curve,
+    spectrum_etas,
+};
 use crate::model::fresnel::gulbrandsen;
 use crate::model::math::svd;
 
@@ -115,10 +119,22 @@ pub(super) fn computed() -> Basis {
     }
 }
 
+/// The singular values of docs/maths.md step 6, computed: those of the normalized curves
+/// ([`normalized_curve`]) of the dielectrics η = linspace(1.01, 3, 100) on the grid, one row each
+/// ([`svd::singular_values`]), decreasing.
+pub(super) fn computed_singular_values() -> Vec<f64> {
+    let cos_theta = grid();
+    let matrix: Vec<f64> = spectrum_etas()
+        .iter()
+        .flat_map(|&eta| normalized_curve(&cos_theta, Index::new(eta, 0.0)))
+        .collect();
+    svd::singular_values(&matrix, GRID_SIZE)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::fresnel::basis::basis;
+    use crate::model::fresnel::basis::{basis, spectrum};
 
     #[test]
     fn training_row_rounds_like_numpy() {
@@ -168,12 +184,13 @@ mod tests {
     #[test]
     fn stored_basis_is_the_computed_one() {
         let computed = computed();
+        let singular_values = computed_singular_values();
         if std::env::var_os("NDFPLOT_WRITE_BASIS").is_some() {
             let path = concat!(
                 env!("CARGO_MANIFEST_DIR"),
                 "/src/model/fresnel/basis/stored.txt"
             );
-            std::fs::write(path, super::super::stored_text(&computed)).unwrap();
+            std::fs::write(path, super::super::stored_text(&computed, &singular_values)).unwrap();
         }
         let stored = basis();
         assert_eq!(stored.critical_indices(), computed.critical_indices());
@@ -188,5 +205,8 @@ mod tests {
             // bidiagonalization); measured against it: b₁ 2.2e-15, b₂ 6.0e-15, b₃ 3.8e-15.
             assert!(worst <= 1e-13, "b{k}: {worst:e}");
         }
+        // The computation is plain f64 arithmetic in a fixed order: the same bits on every
+        // machine.
+        assert_eq!(spectrum().singular_values, singular_values);
     }
 }
