@@ -47,7 +47,7 @@ use crate::pipeline::figure::{Figure, Panel};
 use crate::spec::look::{Canvas, PanelKind};
 use crate::spec::look::{FIGURE_TITLE_EM, PANEL_TITLE_EM};
 use cartesian::{Needs, Shared, draw_cartesian, draw_cartesian_shared};
-use encode::{encode_png, finish_svg, rasterize};
+use encode::{encode_png, finish_svg, rasterize, with_scratch};
 use heatmap::draw_heatmap;
 use lint::Recorder;
 pub use lint::{Finding, lint};
@@ -170,8 +170,10 @@ fn draw_svg(figure: &Figure, trace: Recorder) -> Result<(Vec<u8>, Recorder), Plo
 /// identical figures give identical bytes. The figure's provenance is in `tEXt` chunks (`Software`, `ndfplot-version`,
 /// `spec-sha256`).
 pub fn png(figure: &Figure, svg: &[u8]) -> Result<Vec<u8>, PlotError> {
-    let raster = rasterize(svg, &figure.canvas)?;
-    encode_png(&raster, figure.canvas.dpi(), &figure.provenance)
+    with_scratch(|scratch| {
+        let raster = rasterize(svg, &figure.canvas, scratch)?;
+        encode_png(&raster, figure.canvas.dpi(), &figure.provenance)
+    })
 }
 
 /// SVG device units per CSS pixel: plotters draws on an integer grid, so 16 gives 1/16 px
