@@ -52,12 +52,12 @@ fn report(label: &str, paths: Vec<PathBuf>, dir: &Path) {
         seconds[RUNS / 2]
     };
     println!(
-        "{label}: total {:.3} s = evaluation {:.3} s + drawing {:.3} s + csv and writing {:.3} s \
+        "{label}: total {:.3} s = evaluation {:.3} s + drawing and encoding {:.3} s + writing {:.3} s \
          (medians of {RUNS}; {} curve evaluations)",
-        median(|s| s.evaluation + s.drawing + s.encoding),
+        median(|s| s.evaluation + s.drawing + s.writing),
         median(|s| s.evaluation),
         median(|s| s.drawing),
-        median(|s| s.encoding),
+        median(|s| s.writing),
         runs[0].evaluations
     );
 }

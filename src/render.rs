@@ -46,11 +46,12 @@ pub fn run(options: &RenderOptions) -> Result<Vec<PathBuf>> {
 pub struct RenderStats {
     /// Reading, planning and evaluating (wall time).
     pub evaluation: std::time::Duration,
-    /// Drawing SVG, PNG and PDF, rasterization, PNG compression and PDF conversion included
-    /// (wall time).
+    /// Drawing and encoding every output — SVG, PNG and PDF (rasterization, PNG compression and
+    /// PDF conversion included), CSV and HTML (wall time).
     pub drawing: std::time::Duration,
-    /// Formatting CSV and writing every file (wall time).
-    pub encoding: std::time::Duration,
+    /// Renaming every file into place (wall time): each is written to its temporary as soon as it
+    /// is encoded, within `drawing`.
+    pub writing: std::time::Duration,
     /// Curve evaluations over all jobs.
     pub evaluations: usize,
     /// Outputs produced per format (formats with none left out).
@@ -160,10 +161,15 @@ pub fn run_with_progress(
     options: &RenderOptions,
     quiet: bool,
 ) -> Result<(Vec<PathBuf>, RenderStats)> {
-    let (outputs, mut stats) = encode_outputs(options, quiet)?;
+    // Each file is staged as soon as it is encoded, while other figures are still drawn.
+    let staging = write::Staging::new("-o", &options.out);
+    let sources = sources(&options.paths, &options.allow_read)?;
+    let (staged, mut stats) = encode_sources(&sources, options, quiet, &|name, bytes| {
+        staging.stage(name, &bytes)
+    })?;
     let stage = std::time::Instant::now();
-    let written = write::write_files("-o", &options.out, &outputs)?;
-    stats.encoding += stage.elapsed();
+    let written = staging.commit(staged.into_iter().map(|(_, file)| file).collect())?;
+    stats.writing = stage.elapsed();
     Ok((written, stats))
 }
 
@@ -256,6 +262,7 @@ fn encode_outputs(options: &RenderOptions, quiet: bool) -> Result<(Files, Render
         &sources(&options.paths, &options.allow_read)?,
         options,
         quiet,
+        &|_, bytes| Ok(bytes),
     )
 }
 
@@ -284,7 +291,7 @@ pub fn to_stdout(options: &RenderOptions, quiet: bool) -> Result<(Vec<u8>, Rende
             sources.len()
         ));
     }
-    let (mut outputs, stats) = encode_sources(&sources, options, quiet)?;
+    let (mut outputs, stats) = encode_sources(&sources, options, quiet, &|_, bytes| Ok(bytes))?;
     match outputs.pop() {
         Some((_, bytes)) if outputs.is_empty() => Ok((bytes, stats)),
         _ => refuse(format!(
@@ -300,12 +307,28 @@ pub fn to_stdout(options: &RenderOptions, quiet: bool) -> Result<(Vec<u8>, Rende
     }
 }
 
-/// [`encode_outputs`] of spec `sources` already read.
-fn encode_sources(
+/// What one scene gave: its files as (format, file name, what was kept of the bytes), the figure
+/// lint's findings as lines, and what `-v` says of its drawn figure.
+struct Encoded<T> {
+    files: Vec<(Format, String, T)>,
+    findings: Vec<String>,
+    detail: Option<FigureDetail>,
+}
+
+/// The pixels of `scene`'s raster: what its drawing costs grows with.
+fn raster_area(scene: &crate::spec::scene::Scene) -> f64 {
+    let (width, height) = scene.canvas.png_size();
+    width * height
+}
+
+/// Every output of spec `sources` (already read) under `options`, each handed to `keep` (its file
+/// name and bytes) as soon as it is encoded, as (file name, what `keep` returned), sorted by name.
+fn encode_sources<T: Send>(
     sources: &[crate::spec::source::Source],
     options: &RenderOptions,
     quiet: bool,
-) -> Result<(Files, RenderStats)> {
+    keep: &(dyn Fn(&str, Vec<u8>) -> Result<T> + Sync),
+) -> Result<(Vec<(String, T)>, RenderStats)> {
     let start = std::time::Instant::now();
     let scenes = resolve::scenes(load_scenes(sources, options.canvas))?;
     let provenance: Vec<Provenance> = sources
@@ -331,60 +354,75 @@ fn encode_sources(
         scenes: scenes.len(),
         ..RenderStats::default()
     };
-    let mut outputs: Vec<(String, Vec<u8>)> = Vec::new();
-    for (points, feeds) in [(Points::Drawn, &plan.drawn), (Points::Table, &plan.table)] {
-        let Some(feeds) = feeds else { continue };
-        let stage = std::time::Instant::now();
-        let formats: Vec<Format> = options
+    let formats_of = |points: Points| -> Vec<Format> {
+        options
             .formats
             .iter()
             .copied()
             .filter(|f| f.points() == points)
-            .collect();
-        let figures: Vec<Figure> = scenes
-            .iter()
-            .zip(&provenance)
-            .zip(feeds)
-            .map(|((s, p), f)| Figure::assemble(s, p, f, &evaluated))
-            .collect();
-        type Encoded = (Vec<(Format, String, Vec<u8>)>, Vec<String>, FigureDetail);
-        let encoded: Vec<Encoded> = figures
-            .par_iter()
-            .zip(sources)
-            .map(|(fig, (source, _, _))| {
-                let drawing = std::time::Instant::now();
-                let (encoded, linted) = encode_all_linted(fig, &formats)?;
-                let findings = &linted.findings;
-                progress.advance(formats.len() as u64);
-                Ok((
-                    encoded
-                        .into_iter()
-                        .map(|(format, bytes)| {
-                            (format, format!("{}.{}", fig.id, format.extension()), bytes)
-                        })
-                        .collect(),
-                    findings.iter().map(|f| f.line(source)).collect(),
-                    FigureDetail::of(fig, source, &linted, drawing.elapsed()),
-                ))
-            })
-            .collect::<Result<_>>()?;
-        for (files, found, detail) in encoded {
-            stats.warnings.extend(found);
-            if points == Points::Drawn {
-                stats.figures.push(detail);
-            }
-            for (format, name, bytes) in files {
-                *stats.produced.entry(format).or_default() += 1;
-                outputs.push((name, bytes));
-            }
-        }
-        *(match points {
-            Points::Drawn => &mut stats.drawing,
-            Points::Table => &mut stats.encoding,
-        }) += stage.elapsed();
-    }
+            .collect()
+    };
+    let (drawn_formats, table_formats) = (formats_of(Points::Drawn), formats_of(Points::Table));
     let stage = std::time::Instant::now();
+    // One task per scene, all its outputs: the scenes with the largest rasters first, so that a
+    // large figure is not left to one core at the end while the other idles.
+    let mut order: Vec<usize> = (0..scenes.len()).collect();
+    order.sort_by(|&a, &b| raster_area(&scenes[b]).total_cmp(&raster_area(&scenes[a])));
+    let encode_scene = |i: usize| -> Result<Encoded<T>> {
+        let (scene, provenance, source) = (&scenes[i], &provenance[i], &sources[i].0);
+        let mut encoded = Encoded {
+            files: Vec::new(),
+            findings: Vec::new(),
+            detail: None,
+        };
+        let mut files = |figure: &Figure, outputs: Vec<(Format, Vec<u8>)>| -> Result<()> {
+            for (format, bytes) in outputs {
+                let name = format!("{}.{}", figure.id, format.extension());
+                let kept = keep(&name, bytes)?;
+                encoded.files.push((format, name, kept));
+            }
+            Ok(())
+        };
+        if let Some(feeds) = &plan.drawn {
+            let figure = Figure::assemble(scene, provenance, &feeds[i], &evaluated);
+            let drawing = std::time::Instant::now();
+            let (outputs, linted) = encode_all_linted(&figure, &drawn_formats)?;
+            progress.advance(drawn_formats.len() as u64);
+            files(&figure, outputs)?;
+            encoded.findings = linted.findings.iter().map(|f| f.line(source)).collect();
+            encoded.detail = Some(FigureDetail::of(
+                &figure,
+                source,
+                &linted,
+                drawing.elapsed(),
+            ));
+        }
+        if let Some(feeds) = &plan.table {
+            let figure = Figure::assemble(scene, provenance, &feeds[i], &evaluated);
+            let (outputs, _) = encode_all_linted(&figure, &table_formats)?;
+            progress.advance(table_formats.len() as u64);
+            files(&figure, outputs)?;
+        }
+        Ok(encoded)
+    };
+    // The first failure in source order, whichever task met it first.
+    let mut encoded: Vec<(usize, Result<Encoded<T>>)> = order
+        .into_par_iter()
+        .with_max_len(1)
+        .map(|i| (i, encode_scene(i)))
+        .collect();
+    encoded.sort_by_key(|(i, _)| *i);
+    let mut outputs = Vec::new();
+    for (_, encoded) in encoded {
+        let encoded = encoded?;
+        stats.warnings.extend(encoded.findings);
+        stats.figures.extend(encoded.detail);
+        for (format, name, bytes) in encoded.files {
+            *stats.produced.entry(format).or_default() += 1;
+            outputs.push((name, bytes));
+        }
+    }
     outputs.sort_by(|a, b| a.0.cmp(&b.0));
-    stats.encoding += stage.elapsed();
+    stats.drawing = stage.elapsed();
     Ok((outputs, stats))
 }

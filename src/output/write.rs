@@ -1,9 +1,10 @@
 //! The one place that writes output files: atomically, inside the output folder only.
 //!
 //! Each file is written as a hidden temporary `<dir>/.<name>.<unique>.tmp`, created exclusively
-//! (never through an existing file or symbolic link), and renamed into place, so an interrupted
-//! run never leaves a truncated file under a real name and two runs into one folder never touch
-//! each other's temporaries (the last rename wins per file; docs/contracts.md).
+//! (never through an existing file or symbolic link), and renamed into place with the rest of its
+//! set once all are written ([`Staging`]), so an interrupted or failing run never leaves a
+//! truncated file under a real name nor half a set renamed, and two runs into one folder never
+//! touch each other's temporaries (the last rename wins per file; docs/contracts.md).
 //!
 //! A file that already holds exactly the bytes to write is left as it is ([`holds`]).
 //!
@@ -95,35 +96,105 @@ impl Drop for Live {
     }
 }
 
-/// Writes `bytes` to `dir/name` atomically (exclusive temporary with a unique name, rename), unless
-/// the file there already [holds](holds) exactly those bytes: then it is left as it is, its
-/// modification time too (re-rendering an unchanged catalogue rewrites nothing). `name` must be a
-/// plain file name (the caller validated the scene id it comes from). A file written gets the
-/// permissions a plain create would give (0666 less the umask).
-fn write_atomic(flag: &str, dir: &Path, name: &str, bytes: &[u8]) -> Result<()> {
-    debug_assert!(!name.contains(['/', '\\']) && !name.starts_with('.'));
-    let target = joined(dir, name);
-    if holds(&target, bytes) {
-        return Ok(());
+/// Files written into one folder as a run produces them: each into a hidden temporary as soon as
+/// its bytes are ready ([`Staging::stage`], in parallel), all renamed into place together at the
+/// end ([`Staging::commit`]). A run that fails before the end changes no file of the set: its
+/// temporaries are removed as their [`Staged`] files are dropped. The folder is created on first
+/// use, not before: a run that fails earlier creates nothing.
+pub struct Staging<'a> {
+    /// The option the folder was given with, for messages.
+    flag: &'a str,
+    dir: &'a Path,
+    /// Whether the folder has been made.
+    made: std::sync::Mutex<bool>,
+}
+
+/// One file of a [`Staging`]: written to its temporary, or left to a target that already
+/// [holds](holds) its bytes.
+pub struct Staged {
+    name: String,
+    temporary: Option<(tempfile::NamedTempFile, Live)>,
+}
+
+impl<'a> Staging<'a> {
+    /// A set of files to write into `dir`, the folder given with the option `flag`.
+    pub fn new(flag: &'a str, dir: &'a Path) -> Staging<'a> {
+        Staging {
+            flag,
+            dir,
+            made: std::sync::Mutex::new(false),
+        }
     }
-    let shown = target.display().to_string();
-    let (mut file, _live) = Live::create(|| {
-        tempfile::Builder::new()
-            .prefix(&prefix(name))
-            .suffix(SUFFIX)
-            .rand_bytes(UNIQUE_CHARS)
-            .permissions(fs::Permissions::from_mode(0o666))
-            .tempfile_in(dir)
-    })
-    .map_err(|e| Error::io(&shown, e).for_option(flag))?;
-    file.write_all(bytes)
-        .map_err(|e| Error::io(&shown, e).for_option(flag))?;
-    // Checked again just before the rename: the target may have changed since the first check.
-    // On failure the temporary is removed when dropped.
-    check_target(flag, &target)?;
-    file.persist(&target)
-        .map_err(|e| Error::io(shown, e.error).for_option(flag))?;
-    Ok(())
+
+    /// Creates the folder if this set has not yet.
+    fn ensure_dir(&self) -> Result<()> {
+        let mut made = self
+            .made
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        if !*made {
+            ensure_dir(self.flag, self.dir)?;
+            *made = true;
+        }
+        Ok(())
+    }
+
+    /// Writes `bytes`, the file `name` of the set, to a temporary created exclusively with a unique
+    /// name, unless the file there already [holds](holds) exactly those bytes: then it will be left
+    /// as it is, its modification time too (re-rendering an unchanged catalogue rewrites nothing).
+    /// The target is [checked](check_target) first. `name` must be a plain file name (the caller
+    /// validated the scene id it comes from). A file written gets the permissions a plain create
+    /// would give (0666 less the umask).
+    pub fn stage(&self, name: &str, bytes: &[u8]) -> Result<Staged> {
+        debug_assert!(!name.contains(['/', '\\']) && !name.starts_with('.'));
+        self.ensure_dir()?;
+        let target = joined(self.dir, name);
+        check_target(self.flag, &target)?;
+        if holds(&target, bytes) {
+            return Ok(Staged {
+                name: name.to_owned(),
+                temporary: None,
+            });
+        }
+        let shown = target.display().to_string();
+        let (mut file, live) = Live::create(|| {
+            tempfile::Builder::new()
+                .prefix(&prefix(name))
+                .suffix(SUFFIX)
+                .rand_bytes(UNIQUE_CHARS)
+                .permissions(fs::Permissions::from_mode(0o666))
+                .tempfile_in(self.dir)
+        })
+        .map_err(|e| Error::io(&shown, e).for_option(self.flag))?;
+        file.write_all(bytes)
+            .map_err(|e| Error::io(&shown, e).for_option(self.flag))?;
+        Ok(Staged {
+            name: name.to_owned(),
+            temporary: Some((file, live)),
+        })
+    }
+
+    /// Renames every file of `staged` into place, in order, first removing the
+    /// [abandoned](ABANDONED_AFTER) temporaries of their names; returns their paths. Each target
+    /// is [checked](check_target) again just before its rename: it may have changed since it was
+    /// staged. On a failure the files not yet renamed are removed with their temporaries.
+    pub fn commit(&self, staged: Vec<Staged>) -> Result<Vec<std::path::PathBuf>> {
+        self.ensure_dir()?;
+        let names: Vec<&str> = staged.iter().map(|s| s.name.as_str()).collect();
+        remove_abandoned(self.dir, &names, ABANDONED_AFTER)?;
+        let paths = names.iter().map(|name| self.dir.join(name)).collect();
+        for Staged { name, temporary } in staged {
+            let Some((file, _live)) = temporary else {
+                continue;
+            };
+            let target = joined(self.dir, &name);
+            check_target(self.flag, &target)?;
+            file.persist(&target).map_err(|e| {
+                Error::io(target.display().to_string(), e.error).for_option(self.flag)
+            })?;
+        }
+        Ok(paths)
+    }
 }
 
 /// Bytes read at a time by [`holds`].
@@ -238,27 +309,24 @@ fn remove_abandoned(dir: &Path, names: &[&str], age: Duration) -> Result<()> {
 }
 
 /// Writes every (file name, bytes) of `files` into `dir`, the folder given with the option `flag`,
-/// with [`write_atomic`], creating `dir` if needed and first removing the
-/// [abandoned](ABANDONED_AFTER) temporaries of those names; returns the paths written, in order.
-/// Every target is [checked](check_target) before any file is written. The files are written in
-/// parallel; when some fail, the error is the first failure in `files`' order.
+/// as one [`Staging`]: every target is [checked](check_target) before any file is written, the
+/// files are staged in parallel, then renamed into place; returns the paths written, in order.
+/// When some fail, the error is the first failure in `files`' order, and no file is changed.
 pub fn write_files<N: AsRef<str> + Sync, B: AsRef<[u8]> + Sync>(
     flag: &str,
     dir: &Path,
     files: &[(N, B)],
 ) -> Result<Vec<std::path::PathBuf>> {
     ensure_dir(flag, dir)?;
-    let names: Vec<&str> = files.iter().map(|(name, _)| name.as_ref()).collect();
-    for name in &names {
-        check_target(flag, &joined(dir, name))?;
+    for (name, _) in files {
+        check_target(flag, &joined(dir, name.as_ref()))?;
     }
-    remove_abandoned(dir, &names, ABANDONED_AFTER)?;
-    let results: Vec<Result<()>> = files
+    let staging = Staging::new(flag, dir);
+    let staged: Vec<Result<Staged>> = files
         .par_iter()
-        .map(|(name, bytes)| write_atomic(flag, dir, name.as_ref(), bytes.as_ref()))
+        .map(|(name, bytes)| staging.stage(name.as_ref(), bytes.as_ref()))
         .collect();
-    results.into_iter().collect::<Result<()>>()?;
-    Ok(names.iter().map(|name| dir.join(name)).collect())
+    staging.commit(staged.into_iter().collect::<Result<_>>()?)
 }
 
 /// Splits an output file path given by the user as argument `flag` (`-o FILE`) into its folder (`.`
@@ -375,5 +443,45 @@ mod tests {
         assert!(!holds(&dir.path().join("same.csv"), b"1,2\n"));
         assert!(holds(&dir.path().join("other.csv"), b"3,5\n"));
         assert!(!holds(&dir.path().join("missing.csv"), b""));
+    }
+
+    #[test]
+    fn a_staged_set_changes_nothing_until_it_is_committed_and_nothing_if_it_is_dropped() {
+        let dir = tempfile::tempdir().unwrap();
+        let folder = dir.path().join("out");
+        let listing = || {
+            let mut names: Vec<String> = fs::read_dir(&folder)
+                .unwrap()
+                .map(|e| e.unwrap().file_name().into_string().unwrap())
+                .collect();
+            names.sort();
+            names
+        };
+        let staging = Staging::new("-o", &folder);
+        // Nothing is made before the first file is staged.
+        assert!(!folder.exists());
+        let staged = vec![
+            staging.stage("a.csv", b"1\n").unwrap(),
+            staging.stage("b.csv", b"2\n").unwrap(),
+        ];
+        // Staged: hidden temporaries only.
+        assert!(
+            listing().iter().all(|n| n.starts_with('.')),
+            "{:?}",
+            listing()
+        );
+        assert_eq!(listing().len(), 2);
+        let written = staging.commit(staged).unwrap();
+        assert_eq!(written, [folder.join("a.csv"), folder.join("b.csv")]);
+        assert_eq!(listing(), ["a.csv", "b.csv"]);
+        // A run that fails before its commit drops what it staged: the folder is as it was.
+        let staging = Staging::new("-o", &folder);
+        let staged = [
+            staging.stage("a.csv", b"3\n").unwrap(),
+            staging.stage("c.csv", b"4\n").unwrap(),
+        ];
+        drop(staged);
+        assert_eq!(listing(), ["a.csv", "b.csv"]);
+        assert_eq!(fs::read(folder.join("a.csv")).unwrap(), b"1\n");
     }
 }
