@@ -114,16 +114,22 @@ struct Nodes {
     factor: Vec<f64>,
 }
 
+/// Panels room is made for at once in [`Nodes`]: each half of a Λ(θo) starts [`PANEL_DEPTH`] ratios
+/// below its flat width and mostly ends within a few ratios above it; a lobe far narrower than θo
+/// takes more, and the columns grow.
+const RESERVED_PANELS: usize = 2 * (PANEL_DEPTH as usize + 4);
+
 impl Nodes {
     fn new(theta_o: f64, edge: f64) -> Nodes {
+        let column = || Vec::with_capacity(RESERVED_PANELS * gauss_legendre::POINTS);
         Nodes {
             theta_o,
             cos_o: theta_o.cos(),
             edge,
-            t: Vec::new(),
-            dist: Vec::new(),
-            theta_m: Vec::new(),
-            factor: Vec::new(),
+            t: column(),
+            dist: column(),
+            theta_m: column(),
+            factor: column(),
         }
     }
 
