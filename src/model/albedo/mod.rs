@@ -129,10 +129,18 @@ pub type Fresnel<'a> = Option<&'a (dyn Fn(f64) -> f64 + Sync)>;
 
 /// The smooth surrogate ([`Smoothed`]) of a Fresnel curve tabulated on the basis grid and
 /// interpolated linearly in cos θ (a Belcour–Bati–Barla reconstruction or basis function), for
-/// [`Microfacet::albedo_tabulated`]; `None` for every other curve, which is smooth.
+/// [`Microfacet::albedo_tabulated`], as its combination of the basis functions
+/// ([`Smoothed::of_basis`]: the reconstruction's coefficients, or the one basis function); `None`
+/// for every other curve, which is smooth.
 pub fn tabulated(fresnel: &crate::model::fresnel::Fresnel) -> Option<Smoothed> {
     use crate::model::fresnel::Fresnel::{Basis, Belcour};
-    matches!(fresnel, Belcour(..) | Basis(_)).then(|| Smoothed::of(|theta| fresnel.eval(theta)))
+    match fresnel {
+        Belcour(_, c) => Some(Smoothed::of_basis([c.c0, c.c1, c.c2, c.c3])),
+        Basis(k) => Some(Smoothed::of_basis(std::array::from_fn(|j| {
+            f64::from(j == *k)
+        }))),
+        _ => None,
+    }
 }
 
 /// The fewest grid cells the distribution of cos θd must span for the smooth surrogate of a
@@ -253,8 +261,7 @@ where
         if mu_o == 1.0 {
             self.normal_tabulated(weight)
         } else if spread >= SMOOTHED_CELLS * weight.cell() {
-            let surrogate = |theta_d| weight.at(theta_d);
-            self.albedo_by(mu_o, Some(&surrogate), FresnelShape::Cells, self.tolerance)
+            self.albedo_by(mu_o, Weight::Tabulated(weight), self.tolerance)
         } else {
             let linear = |theta_d: f64| weight.linear_at_cos(theta_d.cos());
             let tolerance = self.tolerance.max(ALBEDO_TABULATED_TOL);
@@ -298,27 +305,37 @@ where
     /// agree to within [`FIXED_AGREEMENT`] × `tolerance` ([`Oblique::fixed`]), else the nested
     /// adaptive quadrature.
     fn albedo_within(&self, mu_o: f64, fresnel: Fresnel, tolerance: f64) -> Result<f64, QuadError> {
-        self.albedo_by(mu_o, fresnel, FresnelShape::Smooth, tolerance)
+        self.albedo_by(mu_o, Weight::Curve(fresnel), tolerance)
     }
 
-    /// [`Microfacet::albedo_within`] with F of the given `shape`: a smooth F is tabulated for the
-    /// fixed rules' inner nodes ([`NodeFresnel`]), a cell-by-cell surrogate taken as it is.
-    fn albedo_by(
-        &self,
-        mu_o: f64,
-        fresnel: Fresnel,
-        shape: FresnelShape,
-        tolerance: f64,
-    ) -> Result<f64, QuadError> {
+    /// [`Microfacet::albedo_within`] with the Fresnel factor `weight`: a curve, or a weight
+    /// tabulated on the basis grid taken by its smooth surrogate ([`Smoothed::at_cos`]). The fixed
+    /// rules take it at their inner nodes as [`NodeFresnel::new`] says; the adaptive quadrature and
+    /// E(1) as a function of θd.
+    fn albedo_by(&self, mu_o: f64, weight: Weight, tolerance: f64) -> Result<f64, QuadError> {
         assert!(
             (0.0..=1.0).contains(&mu_o),
             "μo must lie in [0, 1], got {mu_o}"
         );
+        let surrogate;
+        let fresnel: Fresnel = match weight {
+            Weight::Curve(fresnel) => fresnel,
+            Weight::Tabulated(table) => {
+                surrogate = move |theta_d: f64| table.at(theta_d);
+                Some(&surrogate)
+            }
+        };
         let fixed = if mu_o == 1.0 {
             escalate(tolerance, |rules| self.normal_fixed(fresnel, &rules.outer))
         } else {
             let oblique = Oblique::new(self, mu_o);
-            match oblique.fixed(fresnel, shape, tolerance) {
+            let table = match weight {
+                Weight::Curve(Some(f)) => {
+                    Piecewise::build(|c| f(theta_d(c)), 0.0, 1.0, |_, _| FRESNEL_TABLE_TOL)
+                }
+                _ => None,
+            };
+            match oblique.fixed(&NodeFresnel::new(weight, table.as_ref()), tolerance) {
                 Some(value) => return Ok(value),
                 None => return oblique.adaptive(fresnel, tolerance),
             }
@@ -519,7 +536,7 @@ where
     /// every panel escalates through [`LEVELS`] on its own ([`escalate`], to `tolerance` in units
     /// of E), so one slow panel does not take the others to its level. At μo = 0 the unit C is
     /// escalated first. `None` if a panel's levels never agree or a value is not finite.
-    fn fixed(&self, fresnel: Fresnel, shape: FresnelShape, tolerance: f64) -> Option<f64> {
+    fn fixed(&self, fresnel: &NodeFresnel, tolerance: f64) -> Option<f64> {
         let unit = match self.lambda_o {
             Some(_) => 1.0,
             None => {
@@ -534,23 +551,11 @@ where
                 })?
             }
         };
-        let layer = self.layer()
-            * match shape {
-                FresnelShape::Smooth => GRADED_LAYERS,
-                FresnelShape::Cells => 1.0,
-            };
-        let table = fresnel
-            .filter(|_| shape == FresnelShape::Smooth)
-            .and_then(|f| Piecewise::build(|c| f(theta_d(c)), 0.0, 1.0, |_, _| FRESNEL_TABLE_TOL));
-        let fresnel = match (fresnel, &table) {
-            (None, _) => NodeFresnel::One,
-            (Some(_), Some(table)) => NodeFresnel::Table(table),
-            (Some(curve), None) => NodeFresnel::Curve(curve),
-        };
+        let layer = self.layer() * fresnel.layers();
         let mut sum = 0.0;
         for panel in &self.panels(layer) {
             sum += escalate_agreeing(panel.agreements, tolerance * unit, |rules| {
-                self.panel(panel, layer, &fresnel, rules)
+                self.panel(panel, layer, fresnel, rules)
             })?;
         }
         Some(sum / unit)
@@ -1034,12 +1039,14 @@ impl<D: Density, L: Lambda> Block for InnerNodes<'_, '_, '_, D, L> {
         for k in 0..n {
             self.value[k] = self.oblique.weight(lambda_i[k]) * self.dot[k] * jacobian[k];
         }
-        if let NodeFresnel::Table(table) = self.fresnel {
-            let mut f = [0.0; MAX_NODES];
-            table.eval_many(&self.dot[..n], &mut f[..n]);
-            for k in 0..n {
-                self.value[k] *= f[k];
-            }
+        let mut f = [0.0; MAX_NODES];
+        match self.fresnel {
+            NodeFresnel::Table(table) => table.eval_many(&self.dot[..n], &mut f[..n]),
+            NodeFresnel::Cells(cells) => cells.at_cos_many(&self.dot[..n], &mut f[..n]),
+            NodeFresnel::One | NodeFresnel::Curve(_) => return,
+        }
+        for k in 0..n {
+            self.value[k] *= f[k];
         }
     }
 }
@@ -1049,22 +1056,40 @@ impl<D: Density, L: Lambda> Block for InnerNodes<'_, '_, '_, D, L> {
 /// α/√(α² − 1) exists from α = 1 on.
 const ROUGH_WIDTH: f64 = 1.0;
 
-/// What a Fresnel factor inside the albedo is: a smooth curve of θd, or a surrogate built cell by
-/// cell on the basis grid ([`Smoothed`]), which no interpolant of a few pieces follows.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum FresnelShape {
-    Smooth,
-    Cells,
-}
-
-/// The Fresnel factor at the fixed rules' inner nodes: none (F ≡ 1), F(arccos c) tabulated in
-/// c = ⟨ωo, h⟩ = cos θd (a [`Piecewise`] Chebyshev interpolant within [`FRESNEL_TABLE_TOL`],
-/// built once per value: a few tens of values of F against one per node), or the curve itself
-/// where its table does not converge (F not smooth enough in cos θd).
+/// The Fresnel factor at the fixed rules' inner nodes: none (F ≡ 1); a smooth F(arccos c)
+/// tabulated in c = ⟨ωo, h⟩ = cos θd (a [`Piecewise`] Chebyshev interpolant within
+/// [`FRESNEL_TABLE_TOL`], built once per value: a few tens of values of F against one per node);
+/// the curve itself where its table does not converge (F not smooth enough in cos θd); or the
+/// smooth surrogate of a weight tabulated on the basis grid, cubic cell by cell in c
+/// ([`Smoothed`]), which no interpolant of a few pieces follows. A table and the cells are
+/// evaluated over a whole inner rule in vector lanes ([`InnerNodes`]), the curve node by node.
 enum NodeFresnel<'a> {
     One,
     Table(&'a Piecewise),
     Curve(&'a (dyn Fn(f64) -> f64 + Sync)),
+    Cells(&'a Smoothed),
+}
+
+impl<'a> NodeFresnel<'a> {
+    /// The nodes' factor for `weight`: none for F ≡ 1, `table` (a smooth curve's, where it
+    /// converged) or else the curve, and the cells of a tabulated weight.
+    fn new(weight: Weight<'a>, table: Option<&'a Piecewise>) -> NodeFresnel<'a> {
+        match (weight, table) {
+            (Weight::Curve(None), _) => NodeFresnel::One,
+            (Weight::Curve(Some(_)), Some(table)) => NodeFresnel::Table(table),
+            (Weight::Curve(Some(curve)), None) => NodeFresnel::Curve(curve),
+            (Weight::Tabulated(cells), _) => NodeFresnel::Cells(cells),
+        }
+    }
+
+    /// The layers λ over which the fixed rules are graded next to the horizon: [`GRADED_LAYERS`],
+    /// or 1 for cells, which vary most at grazing θd, next to the horizon.
+    fn layers(&self) -> f64 {
+        match self {
+            NodeFresnel::Cells(_) => 1.0,
+            _ => GRADED_LAYERS,
+        }
+    }
 }
 
 /// The absolute error of a Fresnel factor's table inside the fixed rules ([`NodeFresnel`]): E
@@ -1082,7 +1107,7 @@ const MAX_NODES: usize = 48;
 /// exp(−cot²θi/α²), not analytic at θi = 0) and converges slowest: Beckmann α = 0.3 at μo = 0.5
 /// took 26, 36, 26 and 36 points a side on its four panels, and takes 24, 32, 24 and 32 over 4λ;
 /// SGD's panels, 20 to 26 before, all agree at 24. Accuracy across the domain is unchanged or
-/// better (tests/numerics/albedo.rs). A factor of cells ([`FresnelShape::Cells`]) keeps λ: it
+/// better (tests/numerics/albedo.rs). A factor of cells ([`NodeFresnel::Cells`]) keeps λ: it
 /// varies most at grazing θd, next to the horizon, and over 4λ the split-sum tables cost 1.2×.
 const GRADED_LAYERS: f64 = 4.0;
 
@@ -1819,7 +1844,8 @@ where
     })
 }
 
-/// A weight of [`grid_values`]: a Fresnel curve ([`Fresnel`]) or a tabulated weight.
+/// A Fresnel weight inside an albedo ([`grid_values`], [`Microfacet::albedo_by`]): a curve
+/// ([`Fresnel`]) or a weight tabulated on the basis grid ([`Smoothed`]).
 #[derive(Clone, Copy)]
 enum Weight<'a> {
     Curve(Fresnel<'a>),
@@ -2092,12 +2118,43 @@ mod tests {
                 for mu in [0.05, 0.5, 0.9] {
                     let tabulated = surface.albedo(mu, Some(&f)).unwrap();
                     let tolerance = surface.tolerance;
-                    let direct = surface
-                        .albedo_by(mu, Some(&f), FresnelShape::Cells, tolerance)
+                    let direct = Oblique::new(&surface, mu)
+                        .fixed(&NodeFresnel::Curve(&f), tolerance)
                         .unwrap();
                     assert!(
                         (tabulated - direct).abs() <= 1e-12,
                         "{curve:?} α = {alpha} μo = {mu}: {tabulated} vs {direct}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_weight_of_cells_in_lanes_gives_the_albedo_of_its_surrogate_node_by_node() {
+        // Glass's Belcour–Bati–Barla reconstruction and the basis function b₃, whose surrogate is
+        // steepest: the fixed rules with the cells evaluated over each inner rule against the same
+        // surrogate called at every node as a curve of θd (graded over four layers instead of one).
+        use crate::model::fresnel::{Fresnel as Curve, Ior};
+        let weights = [
+            Curve::belcour(Ior::eta_kappa(1.5, 0.0).unwrap()),
+            Curve::basis(3).unwrap(),
+        ]
+        .map(|curve| tabulated(&curve).unwrap());
+        for alpha in [0.1, 0.5, 2.0] {
+            let surface = ggx(alpha, G2Model::HeightCorrelated);
+            for weight in &weights {
+                let f = |theta_d: f64| weight.at(theta_d);
+                for mu in [0.05, 0.5, 0.9] {
+                    let oblique = Oblique::new(&surface, mu);
+                    let tolerance = surface.tolerance;
+                    let cells = oblique
+                        .fixed(&NodeFresnel::Cells(weight), tolerance)
+                        .unwrap();
+                    let curve = oblique.fixed(&NodeFresnel::Curve(&f), tolerance).unwrap();
+                    assert!(
+                        (cells - curve).abs() <= 1e-11,
+                        "α = {alpha} μo = {mu}: {cells} vs {curve}"
                     );
                 }
             }
