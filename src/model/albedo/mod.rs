@@ -40,8 +40,9 @@
 //! Each level of a panel runs in stages: the geometry of every outer node's slice (θh, φ_end, the
 //! inner grading), then of every inner node of a slice (cos θi, ⟨ωo, h⟩) and its Λ, each stage
 //! over the whole rule in vector lanes ([`elementary::widest`], the crate's branch-free exp,
-//! sin/cos, atan and asinh, Λ from the surface's table); D and the Fresnel factor, closures of
-//! θ, are taken node by node.
+//! sin/cos, atan and asinh, Λ from the surface's table); D for every outer node at once
+//! ([`Density::at_many`]); the Fresnel factor over the whole inner rule too where it is a smooth
+//! curve's Chebyshev table or a tabulated weight's cells, else node by node ([`NodeFresnel`]).
 //!
 //! The inner integrand takes cos θi from sin(u/2) alone (cos θi = cos θi(φ_end) + (spread/2)
 //! (sin φ_end sin u − cos φ_end (1 − cos u))), free of cancellation next to the horizon.
