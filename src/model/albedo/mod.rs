@@ -40,8 +40,9 @@
 //! Each level of a panel runs in stages: the geometry of every outer node's slice (θh, φ_end, the
 //! inner grading), then of every inner node of a slice (cos θi, ⟨ωo, h⟩) and its Λ, each stage
 //! over the whole rule in vector lanes ([`elementary::widest`], the crate's branch-free exp,
-//! sin/cos, atan and asinh, Λ from the surface's table); D and the Fresnel factor, closures of
-//! θ, are taken node by node.
+//! sin/cos, atan and asinh, Λ from the surface's table); D for every outer node at once
+//! ([`Density::at_many`]); the Fresnel factor over the whole inner rule too where it is a smooth
+//! curve's Chebyshev table or a tabulated weight's cells, else node by node ([`NodeFresnel`]).
 //!
 //! The inner integrand takes cos θi from sin(u/2) alone (cos θi = cos θi(φ_end) + (spread/2)
 //! (sin φ_end sin u − cos φ_end (1 − cos u))), free of cancellation next to the horizon.
@@ -129,10 +130,18 @@ pub type Fresnel<'a> = Option<&'a (dyn Fn(f64) -> f64 + Sync)>;
 
 /// The smooth surrogate ([`Smoothed`]) of a Fresnel curve tabulated on the basis grid and
 /// interpolated linearly in cos θ (a Belcour–Bati–Barla reconstruction or basis function), for
-/// [`Microfacet::albedo_tabulated`]; `None` for every other curve, which is smooth.
+/// [`Microfacet::albedo_tabulated`], as its combination of the basis functions
+/// ([`Smoothed::of_basis`]: the reconstruction's coefficients, or the one basis function); `None`
+/// for every other curve, which is smooth.
 pub fn tabulated(fresnel: &crate::model::fresnel::Fresnel) -> Option<Smoothed> {
     use crate::model::fresnel::Fresnel::{Basis, Belcour};
-    matches!(fresnel, Belcour(..) | Basis(_)).then(|| Smoothed::of(|theta| fresnel.eval(theta)))
+    match fresnel {
+        Belcour(_, c) => Some(Smoothed::of_basis([c.c0, c.c1, c.c2, c.c3])),
+        Basis(k) => Some(Smoothed::of_basis(std::array::from_fn(|j| {
+            f64::from(j == *k)
+        }))),
+        _ => None,
+    }
 }
 
 /// The fewest grid cells the distribution of cos θd must span for the smooth surrogate of a
@@ -253,8 +262,7 @@ where
         if mu_o == 1.0 {
             self.normal_tabulated(weight)
         } else if spread >= SMOOTHED_CELLS * weight.cell() {
-            let surrogate = |theta_d| weight.at(theta_d);
-            self.albedo_by(mu_o, Some(&surrogate), FresnelShape::Cells, self.tolerance)
+            self.albedo_by(mu_o, Weight::Tabulated(weight), self.tolerance)
         } else {
             let linear = |theta_d: f64| weight.linear_at_cos(theta_d.cos());
             let tolerance = self.tolerance.max(ALBEDO_TABULATED_TOL);
@@ -298,27 +306,37 @@ where
     /// agree to within [`FIXED_AGREEMENT`] × `tolerance` ([`Oblique::fixed`]), else the nested
     /// adaptive quadrature.
     fn albedo_within(&self, mu_o: f64, fresnel: Fresnel, tolerance: f64) -> Result<f64, QuadError> {
-        self.albedo_by(mu_o, fresnel, FresnelShape::Smooth, tolerance)
+        self.albedo_by(mu_o, Weight::Curve(fresnel), tolerance)
     }
 
-    /// [`Microfacet::albedo_within`] with F of the given `shape`: a smooth F is tabulated for the
-    /// fixed rules' inner nodes ([`NodeFresnel`]), a cell-by-cell surrogate taken as it is.
-    fn albedo_by(
-        &self,
-        mu_o: f64,
-        fresnel: Fresnel,
-        shape: FresnelShape,
-        tolerance: f64,
-    ) -> Result<f64, QuadError> {
+    /// [`Microfacet::albedo_within`] with the Fresnel factor `weight`: a curve, or a weight
+    /// tabulated on the basis grid taken by its smooth surrogate ([`Smoothed::at_cos`]). The fixed
+    /// rules take it at their inner nodes as [`NodeFresnel::new`] says; the adaptive quadrature and
+    /// E(1) as a function of θd.
+    fn albedo_by(&self, mu_o: f64, weight: Weight, tolerance: f64) -> Result<f64, QuadError> {
         assert!(
             (0.0..=1.0).contains(&mu_o),
             "μo must lie in [0, 1], got {mu_o}"
         );
+        let surrogate;
+        let fresnel: Fresnel = match weight {
+            Weight::Curve(fresnel) => fresnel,
+            Weight::Tabulated(table) => {
+                surrogate = move |theta_d: f64| table.at(theta_d);
+                Some(&surrogate)
+            }
+        };
         let fixed = if mu_o == 1.0 {
             escalate(tolerance, |rules| self.normal_fixed(fresnel, &rules.outer))
         } else {
             let oblique = Oblique::new(self, mu_o);
-            match oblique.fixed(fresnel, shape, tolerance) {
+            let table = match weight {
+                Weight::Curve(Some(f)) => {
+                    Piecewise::build(|c| f(theta_d(c)), 0.0, 1.0, |_, _| FRESNEL_TABLE_TOL)
+                }
+                _ => None,
+            };
+            match oblique.fixed(&NodeFresnel::new(weight, table.as_ref()), tolerance) {
                 Some(value) => return Ok(value),
                 None => return oblique.adaptive(fresnel, tolerance),
             }
@@ -519,7 +537,7 @@ where
     /// every panel escalates through [`LEVELS`] on its own ([`escalate`], to `tolerance` in units
     /// of E), so one slow panel does not take the others to its level. At μo = 0 the unit C is
     /// escalated first. `None` if a panel's levels never agree or a value is not finite.
-    fn fixed(&self, fresnel: Fresnel, shape: FresnelShape, tolerance: f64) -> Option<f64> {
+    fn fixed(&self, fresnel: &NodeFresnel, tolerance: f64) -> Option<f64> {
         let unit = match self.lambda_o {
             Some(_) => 1.0,
             None => {
@@ -534,23 +552,11 @@ where
                 })?
             }
         };
-        let layer = self.layer()
-            * match shape {
-                FresnelShape::Smooth => GRADED_LAYERS,
-                FresnelShape::Cells => 1.0,
-            };
-        let table = fresnel
-            .filter(|_| shape == FresnelShape::Smooth)
-            .and_then(|f| Piecewise::build(|c| f(theta_d(c)), 0.0, 1.0, |_, _| FRESNEL_TABLE_TOL));
-        let fresnel = match (fresnel, &table) {
-            (None, _) => NodeFresnel::One,
-            (Some(_), Some(table)) => NodeFresnel::Table(table),
-            (Some(curve), None) => NodeFresnel::Curve(curve),
-        };
+        let layer = self.layer() * fresnel.layers();
         let mut sum = 0.0;
         for panel in &self.panels(layer) {
             sum += escalate_agreeing(panel.agreements, tolerance * unit, |rules| {
-                self.panel(panel, layer, &fresnel, rules)
+                self.panel(panel, layer, fresnel, rules)
             })?;
         }
         Some(sum / unit)
@@ -658,9 +664,10 @@ where
 
     /// ∫ of [`Oblique::inner`] over `slice` by the inner rule of `rules` in the variable of
     /// `graded` (u from the horizon end), in stages: the nodes' geometry (the grading's exp, sin/cos
-    /// of u/2), Λ(θi), the weight and a tabulated F for the whole rule in vector lanes
-    /// ([`InnerNodes`]), then F node by node where it is not tabulated, then the weighted sum in
-    /// the rule's order: the value [`Rule::integrate`] gives for the same integrand.
+    /// of u/2), Λ(θi), the weight and a smooth curve's table of F for the whole rule in vector
+    /// lanes ([`InnerNodes`]), then a tabulated weight's cells in lanes too ([`CellsFactor`]) or
+    /// else a curve node by node, then the weighted sum in the rule's order: the value
+    /// [`Rule::integrate`] gives for the same integrand.
     fn inner_fixed(
         &self,
         slice: &Slice,
@@ -678,6 +685,10 @@ where
             value: [0.0; MAX_NODES],
         };
         elementary::widest(&mut nodes);
+        if let NodeFresnel::Cells(cells) = fresnel {
+            let n = rules.inner.points.len();
+            CellsFactor::apply(cells, &nodes.dot[..n], &mut nodes.value[..n]);
+        }
         let mut sum = 0.0;
         for (k, &(_, w)) in rules.inner.points.iter().enumerate() {
             let value = match fresnel {
@@ -1002,7 +1013,8 @@ where
 
 /// The inner nodes of one slice ([`Oblique::inner_fixed`]'s first stage): for each t of `nodes`
 /// (at most [`MAX_NODES`], a multiple of [`LANES`]), at u = `graded`(t), ⟨ωo, h⟩ and the
-/// integrand without F, weight(Λ(θi)) ⟨ωo, h⟩ du/dt, cos θi clamped to [0, 1].
+/// integrand without F, weight(Λ(θi)) ⟨ωo, h⟩ du/dt, cos θi clamped to [0, 1]; with F where it
+/// is a smooth curve's table.
 struct InnerNodes<'a, 's, 'v, D, L> {
     oblique: &'a Oblique<'s, D, L>,
     slice: &'a Slice<'v>,
@@ -1044,27 +1056,76 @@ impl<D: Density, L: Lambda> Block for InnerNodes<'_, '_, '_, D, L> {
     }
 }
 
+/// A tabulated weight's cells applied to an inner rule's values ([`Oblique::inner_fixed`]'s second
+/// stage for [`NodeFresnel::Cells`]): `value[k]` ×= F̃(`dot[k]`) for the first `n` nodes, in
+/// vector lanes ([`Smoothed::at_cos_many`]). A block of its own: inside [`InnerNodes`] the gathers
+/// slowed every other albedo by a tenth (the 8 × 8 E table 1.15 → 1.30 ms).
+struct CellsFactor<'a> {
+    cells: &'a Smoothed,
+    dot: &'a [f64],
+    value: &'a mut [f64],
+}
+
+impl CellsFactor<'_> {
+    /// Runs the block on `value` and `dot` in the widest lanes, out of line: inlined into
+    /// [`Oblique::inner_fixed`], its three compiled paths slowed every other albedo too.
+    #[inline(never)]
+    fn apply(cells: &Smoothed, dot: &[f64], value: &mut [f64]) {
+        elementary::widest(&mut CellsFactor { cells, dot, value });
+    }
+}
+
+impl Block for CellsFactor<'_> {
+    #[inline(always)]
+    fn run(&mut self) {
+        let n = self.dot.len().min(MAX_NODES);
+        let mut f = [0.0; MAX_NODES];
+        self.cells.at_cos_many(&self.dot[..n], &mut f[..n]);
+        for (value, f) in self.value.iter_mut().zip(&f[..n]) {
+            *value *= f;
+        }
+    }
+}
+
 /// The lobe width (a slope) above which a lobe is rough enough for Λ's singularity beside the normal
 /// to reach its albedo's panels ([`Oblique::agreements`]): Trowbridge–Reitz's branch point
 /// α/√(α² − 1) exists from α = 1 on.
 const ROUGH_WIDTH: f64 = 1.0;
 
-/// What a Fresnel factor inside the albedo is: a smooth curve of θd, or a surrogate built cell by
-/// cell on the basis grid ([`Smoothed`]), which no interpolant of a few pieces follows.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum FresnelShape {
-    Smooth,
-    Cells,
-}
-
-/// The Fresnel factor at the fixed rules' inner nodes: none (F ≡ 1), F(arccos c) tabulated in
-/// c = ⟨ωo, h⟩ = cos θd (a [`Piecewise`] Chebyshev interpolant within [`FRESNEL_TABLE_TOL`],
-/// built once per value: a few tens of values of F against one per node), or the curve itself
-/// where its table does not converge (F not smooth enough in cos θd).
+/// The Fresnel factor at the fixed rules' inner nodes: none (F ≡ 1); a smooth F(arccos c)
+/// tabulated in c = ⟨ωo, h⟩ = cos θd (a [`Piecewise`] Chebyshev interpolant within
+/// [`FRESNEL_TABLE_TOL`], built once per value: a few tens of values of F against one per node);
+/// the curve itself where its table does not converge (F not smooth enough in cos θd); or the
+/// smooth surrogate of a weight tabulated on the basis grid, cubic cell by cell in c
+/// ([`Smoothed`]), which no interpolant of a few pieces follows. A table and the cells are
+/// evaluated over a whole inner rule in vector lanes ([`InnerNodes`]), the curve node by node.
 enum NodeFresnel<'a> {
     One,
     Table(&'a Piecewise),
     Curve(&'a (dyn Fn(f64) -> f64 + Sync)),
+    Cells(&'a Smoothed),
+}
+
+impl<'a> NodeFresnel<'a> {
+    /// The nodes' factor for `weight`: none for F ≡ 1, `table` (a smooth curve's, where it
+    /// converged) or else the curve, and the cells of a tabulated weight.
+    fn new(weight: Weight<'a>, table: Option<&'a Piecewise>) -> NodeFresnel<'a> {
+        match (weight, table) {
+            (Weight::Curve(None), _) => NodeFresnel::One,
+            (Weight::Curve(Some(_)), Some(table)) => NodeFresnel::Table(table),
+            (Weight::Curve(Some(curve)), None) => NodeFresnel::Curve(curve),
+            (Weight::Tabulated(cells), _) => NodeFresnel::Cells(cells),
+        }
+    }
+
+    /// The layers λ over which the fixed rules are graded next to the horizon: [`GRADED_LAYERS`],
+    /// or 1 for cells, which vary most at grazing θd, next to the horizon.
+    fn layers(&self) -> f64 {
+        match self {
+            NodeFresnel::Cells(_) => 1.0,
+            _ => GRADED_LAYERS,
+        }
+    }
 }
 
 /// The absolute error of a Fresnel factor's table inside the fixed rules ([`NodeFresnel`]): E
@@ -1082,7 +1143,7 @@ const MAX_NODES: usize = 48;
 /// exp(−cot²θi/α²), not analytic at θi = 0) and converges slowest: Beckmann α = 0.3 at μo = 0.5
 /// took 26, 36, 26 and 36 points a side on its four panels, and takes 24, 32, 24 and 32 over 4λ;
 /// SGD's panels, 20 to 26 before, all agree at 24. Accuracy across the domain is unchanged or
-/// better (tests/numerics/albedo.rs). A factor of cells ([`FresnelShape::Cells`]) keeps λ: it
+/// better (tests/numerics/albedo.rs). A factor of cells ([`NodeFresnel::Cells`]) keeps λ: it
 /// varies most at grazing θd, next to the horizon, and over 4λ the split-sum tables cost 1.2×.
 const GRADED_LAYERS: f64 = 4.0;
 
@@ -1549,15 +1610,18 @@ pub fn median_slope(ndf: impl Fn(f64) -> f64) -> f64 {
 /// reflects), by fixed Gauss–Legendre rules on the panels of the two places where E(μ) is not a
 /// polynomial to working precision: it turns over to its grazing limit where μ falls below the lobe
 /// width w, so the panels are graded geometrically (ratio [`AVERAGE_GRADING`], 8 points each) from
-/// μ = min(w, 1)/16 up to 1/4 (below μ = [`AVERAGE_FLOOR`], E = E(0)); and near μ = 1 the horizon
-/// cut's contribution vanishes like (1 − μ)^{5/4} (the cut spans θh ∈ [ε/2, π/2 − ε/2],
-/// ε = arcsin μ), so the last panel [1/4, 1] runs in s with μ = 1 − s⁴ (two halves in s, 14 points
-/// each). Each E is held to [`AVERAGE_E_TOL`] (or the surface's own tolerance if looser): the
-/// weights sum to 1, so E_avg keeps about that accuracy. 44–76 albedos per value, each about half
-/// the cost of a table cell at 1e-12, so a 32-value average costs less than the 32 × 32 E table;
-/// within 1.6e-9 of 16-point rules on panels 4× finer with every E to 1e-12 (GGX, Beckmann, GTR
-/// γ = 1.5, Student-t γ = 3; both G2 models; maps r², r, √r; 16–64 values of r); [`AVERAGE_TOL`]
-/// is the bound stated.
+/// μ = min(w, 1)/16 up to [`AVERAGE_TOP`] = 1/2 (below μ = [`AVERAGE_FLOOR`], E = E(0)); and near
+/// μ = 1 the horizon cut's contribution vanishes like (1 − μ)^{5/4} (the cut spans
+/// θh ∈ [ε/2, π/2 − ε/2], ε = arcsin μ), so the last panel [1/2, 1] runs in s with μ = 1 − s⁴
+/// (14 points). Each E is held to [`AVERAGE_E_TOL`] (or the surface's own tolerance if looser):
+/// the weights sum to 1, so E_avg keeps about that accuracy. 38–70 albedos per value (40.7 on
+/// average over the cases below; 44–76 and 49.4 with the graded panels ending at 1/4 and two
+/// 14-point halves above); within 3.0e-9 of 16-point rules on finer panels (ratio 1.6 from
+/// min(w, 1)/64, eight pieces in s above 1/4) with every E to 1e-12, themselves within 1.4e-13
+/// of 24-point rules on finer panels still: GGX, Beckmann, GTR γ = 1.5 and Student-t γ = 3, both
+/// G2 models, maps r², r and √r at r = 1/31 … 1, 744 values; the largest differences are
+/// Beckmann's, whose light tail reaches the horizon over a narrow range of μ. [`AVERAGE_TOL`] is
+/// the bound stated.
 pub fn average_albedo<D, L>(surface: &Microfacet<D, L>, fresnel: Fresnel) -> Result<f64, QuadError>
 where
     D: Density,
@@ -1580,39 +1644,43 @@ where
         if a == 0.0 && b == AVERAGE_FLOOR {
             continue;
         }
-        // The last panel in s with μ = 1 − s⁴, (1 − μ)^{5/4} becoming s⁵, as two halves in s.
-        let (pieces, rule) = if k == last { (2, top) } else { (1, graded) };
-        for piece in 0..pieces {
-            for &(x, weight) in &rule.points {
-                let (mu, jacobian) = if k == last {
-                    let top = (1.0 - a).powf(0.25) / 2.0;
-                    let s = top * (piece as f64 + x);
-                    (1.0 - s.powi(4), top * 4.0 * s.powi(3))
-                } else {
-                    (a + (b - a) * x, b - a)
-                };
-                half += jacobian * weight * albedo(mu)? * mu;
-            }
+        // The last panel in s with μ = 1 − s⁴, (1 − μ)^{5/4} becoming s⁵.
+        let rule = if k == last { top } else { graded };
+        for &(x, weight) in &rule.points {
+            let (mu, jacobian) = if k == last {
+                let top = (1.0 - a).powf(0.25);
+                let s = top * x;
+                (1.0 - s.powi(4), top * 4.0 * s.powi(3))
+            } else {
+                (a + (b - a) * x, b - a)
+            };
+            half += jacobian * weight * albedo(mu)? * mu;
         }
     }
     Ok(2.0 * half)
 }
 
 /// The accuracy [`average_albedo`] holds E_avg to (at the default tolerance): its rule and the
-/// looser [`AVERAGE_E_TOL`] of each E together (measured: within 1.6e-9), below float32's
+/// looser [`AVERAGE_E_TOL`] of each E together (measured: within 3.0e-9), below float32's
 /// half-ulp at 1 (6e-8), the precision engines store it in.
 pub const AVERAGE_TOL: f64 = 1e-8;
 
 /// The tolerance of each nested integral of the E values [`average_albedo`] weighs.
 pub const AVERAGE_E_TOL: f64 = 3e-10;
 
-/// Ratio of successive panel ends of [`average_albedo`]'s μ axis below 1/4.
+/// Ratio of successive panel ends of [`average_albedo`]'s μ axis below [`AVERAGE_TOP`]: 8 points
+/// span a factor of 6 in μ where E turns over on the scale μ itself (ratio 8 left 3.3e-8 for
+/// Beckmann, with two 8-point halves above 1/2).
 const AVERAGE_GRADING: f64 = 6.0;
+/// Where [`average_albedo`]'s last panel, in s with μ = 1 − s⁴, begins: above 1/2 a single
+/// 14-point rule in s holds E(μ) μ within the bound (one from 1/4 left 3.7e-8 for Beckmann, and
+/// 12 points from 0.6 1.6e-8).
+const AVERAGE_TOP: f64 = 0.5;
 /// The smallest μ at which [`average_albedo`] evaluates E.
 const AVERAGE_FLOOR: f64 = 1e-5;
 
-/// Points of [`average_albedo`]'s rules: per graded panel below μ = 1/4, and per half of the last
-/// panel [1/4, 1].
+/// Points of [`average_albedo`]'s rules: per graded panel below μ = [`AVERAGE_TOP`], and on the
+/// last panel [`AVERAGE_TOP`, 1] (in s).
 const AVERAGE_POINTS: [usize; 2] = [8, 14];
 
 /// The rules of [`average_albedo`], built once.
@@ -1622,15 +1690,15 @@ fn average_rules() -> &'static [Rule; 2] {
 }
 
 /// The panel ends of [`average_albedo`]'s μ axis for a lobe of width w: 0, then s, 6s, 36s, … below
-/// 1/4 from s = max(min(w, 1)/16, [`AVERAGE_FLOOR`]), then 1/4 and 1.
+/// [`AVERAGE_TOP`] from s = max(min(w, 1)/16, [`AVERAGE_FLOOR`]), then [`AVERAGE_TOP`] and 1.
 fn average_edges(width: f64) -> Vec<f64> {
     let mut edges = vec![0.0];
     let mut end = (width.min(1.0) / 16.0).max(AVERAGE_FLOOR);
-    while end < 0.25 {
+    while end < AVERAGE_TOP {
         edges.push(end);
         end *= AVERAGE_GRADING;
     }
-    edges.extend([0.25, 1.0]);
+    edges.extend([AVERAGE_TOP, 1.0]);
     edges
 }
 
@@ -1819,7 +1887,8 @@ where
     })
 }
 
-/// A weight of [`grid_values`]: a Fresnel curve ([`Fresnel`]) or a tabulated weight.
+/// A Fresnel weight inside an albedo ([`grid_values`], [`Microfacet::albedo_by`]): a curve
+/// ([`Fresnel`]) or a weight tabulated on the basis grid ([`Smoothed`]).
 #[derive(Clone, Copy)]
 enum Weight<'a> {
     Curve(Fresnel<'a>),
@@ -2092,12 +2161,43 @@ mod tests {
                 for mu in [0.05, 0.5, 0.9] {
                     let tabulated = surface.albedo(mu, Some(&f)).unwrap();
                     let tolerance = surface.tolerance;
-                    let direct = surface
-                        .albedo_by(mu, Some(&f), FresnelShape::Cells, tolerance)
+                    let direct = Oblique::new(&surface, mu)
+                        .fixed(&NodeFresnel::Curve(&f), tolerance)
                         .unwrap();
                     assert!(
                         (tabulated - direct).abs() <= 1e-12,
                         "{curve:?} α = {alpha} μo = {mu}: {tabulated} vs {direct}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_weight_of_cells_in_lanes_gives_the_albedo_of_its_surrogate_node_by_node() {
+        // Glass's Belcour–Bati–Barla reconstruction and the basis function b₃, whose surrogate is
+        // steepest: the fixed rules with the cells evaluated over each inner rule against the same
+        // surrogate called at every node as a curve of θd (graded over four layers instead of one).
+        use crate::model::fresnel::{Fresnel as Curve, Ior};
+        let weights = [
+            Curve::belcour(Ior::eta_kappa(1.5, 0.0).unwrap()),
+            Curve::basis(3).unwrap(),
+        ]
+        .map(|curve| tabulated(&curve).unwrap());
+        for alpha in [0.1, 0.5, 2.0] {
+            let surface = ggx(alpha, G2Model::HeightCorrelated);
+            for weight in &weights {
+                let f = |theta_d: f64| weight.at(theta_d);
+                for mu in [0.05, 0.5, 0.9] {
+                    let oblique = Oblique::new(&surface, mu);
+                    let tolerance = surface.tolerance;
+                    let cells = oblique
+                        .fixed(&NodeFresnel::Cells(weight), tolerance)
+                        .unwrap();
+                    let curve = oblique.fixed(&NodeFresnel::Curve(&f), tolerance).unwrap();
+                    assert!(
+                        (cells - curve).abs() <= 1e-11,
+                        "α = {alpha} μo = {mu}: {cells} vs {curve}"
                     );
                 }
             }

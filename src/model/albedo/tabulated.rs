@@ -13,6 +13,8 @@
 //! distribution of cos θd, as wide as the lobe is. F̃ is C² but for jumps of h² |ΔM|/12 ~ 1e-10
 //! in its curvature term, smooth enough for the fixed rules.
 
+use std::sync::OnceLock;
+
 use crate::model::fresnel::basis::basis;
 
 /// The smooth surrogate F̃ of a weight tabulated on the basis grid (module docs).
@@ -20,7 +22,10 @@ use crate::model::fresnel::basis::basis;
 pub struct Smoothed {
     nodes: &'static [f64],
     values: Vec<f64>,
-    second: Vec<f64>,
+    /// Per cell j, F̃ as a cubic in x = c − c_j: [c_j, a₀, a₁, a₂, a₃], F̃ = a₀ + x (a₁ + x (a₂ + x a₃))
+    /// ([`cell_cubic`]), so that one value is a locate, five loads and three fused steps, in vector
+    /// lanes over a block ([`Smoothed::at_cos_many`]).
+    cubics: Vec<[f64; 5]>,
 }
 
 impl Smoothed {
@@ -30,23 +35,60 @@ impl Smoothed {
         let nodes = basis().cos_theta();
         assert_eq!(values.len(), nodes.len(), "one value per grid node");
         let second = spline_second_derivatives(nodes, &values);
+        let cubics = (0..nodes.len() - 1)
+            .map(|j| {
+                cell_cubic(
+                    nodes[j],
+                    nodes[j + 1],
+                    values[j],
+                    values[j + 1],
+                    second[j],
+                    second[j + 1],
+                )
+            })
+            .collect();
         Smoothed {
             nodes,
             values,
-            second,
+            cubics,
         }
     }
 
-    /// The surrogate of `weight` (a function of θd that is linear in cos θd between the grid
-    /// nodes), from its values at the nodes.
-    pub fn of(weight: impl Fn(f64) -> f64) -> Smoothed {
-        Smoothed::new(
-            basis()
-                .cos_theta()
-                .iter()
-                .map(|&c| weight(c.clamp(0.0, 1.0).acos()))
-                .collect(),
-        )
+    /// The surrogate of Σ_k `weights`[k] b_k, a combination of the Belcour–Bati–Barla basis
+    /// functions ([`crate::model::fresnel::basis::Basis::function`]; a reconstruction c₀ … c₃,
+    /// or one b_k): the same combination of the basis functions' surrogates, built once. F̃ is
+    /// linear in the node values — the spline's M_j solve a linear system, and each cell's cubic
+    /// is linear in y and M — so this is [`Smoothed::new`] of the combined values up to rounding,
+    /// for 4 × 5 products a cell instead of the spline's solve. The values are combined as
+    /// [`crate::model::fresnel::basis::Coefficients::reconstruction`] combines them.
+    pub fn of_basis(weights: [f64; 4]) -> Smoothed {
+        static SURROGATES: OnceLock<[Smoothed; 4]> = OnceLock::new();
+        let parts = SURROGATES
+            .get_or_init(|| std::array::from_fn(|k| Smoothed::new(basis().function(k).to_vec())));
+        let combine = |part: &dyn Fn(&Smoothed) -> f64| {
+            weights[0] * part(&parts[0])
+                + weights[1] * part(&parts[1])
+                + weights[2] * part(&parts[2])
+                + weights[3] * part(&parts[3])
+        };
+        let nodes = parts[0].nodes;
+        let values = (0..nodes.len())
+            .map(|j| combine(&|p: &Smoothed| p.values[j]))
+            .collect();
+        let cubics = (0..nodes.len() - 1)
+            .map(|j| {
+                let mut cubic = [nodes[j], 0.0, 0.0, 0.0, 0.0];
+                for (i, a) in cubic.iter_mut().enumerate().skip(1) {
+                    *a = combine(&|p: &Smoothed| p.cubics[j][i]);
+                }
+                cubic
+            })
+            .collect();
+        Smoothed {
+            nodes,
+            values,
+            cubics,
+        }
     }
 
     /// The grid nodes c_j, ascending from 0 to 1.
@@ -61,9 +103,16 @@ impl Smoothed {
 
     /// The cell [c_j, c_{j+1}] holding c and t = (c − c_j)/(c_{j+1} − c_j).
     fn locate(&self, c: f64) -> (usize, f64) {
-        let last = self.nodes.len() - 1;
-        let j = ((c * last as f64).floor().max(0.0) as usize).min(last - 1);
+        let j = self.cell_of(c);
         (j, (c - self.nodes[j]) / (self.nodes[j + 1] - self.nodes[j]))
+    }
+
+    /// The index j of the cell [c_j, c_{j+1}] holding c: ⌊999 c⌋, clamped to the cells (a negative
+    /// or NaN product saturates to 0 in the cast), without a branch.
+    #[inline(always)]
+    fn cell_of(&self, c: f64) -> usize {
+        let cells = self.cubics.len();
+        ((c * cells as f64) as usize).min(cells - 1)
     }
 
     /// The tabulated weight itself at c = cos θd ∈ [0, 1]: its linear interpolant L.
@@ -72,21 +121,44 @@ impl Smoothed {
         (1.0 - t) * self.values[j] + t * self.values[j + 1]
     }
 
-    /// F̃ at c = cos θd ∈ [0, 1]: S(c) + (h²/12) M(c).
+    /// F̃ at c = cos θd ∈ [0, 1]: S(c) + (h²/12) M(c), by its cell's cubic ([`cell_cubic`]).
+    #[inline(always)]
     pub fn at_cos(&self, c: f64) -> f64 {
-        let (j, t) = self.locate(c);
-        let h = self.nodes[j + 1] - self.nodes[j];
-        let (m0, m1) = (self.second[j], self.second[j + 1]);
-        let linear = (1.0 - t) * self.values[j] + t * self.values[j + 1];
-        let bend = (h * h / 6.0) * t * (1.0 - t) * ((2.0 - t) * m0 + (1.0 + t) * m1);
-        let mean = (h * h / 12.0) * ((1.0 - t) * m0 + t * m1);
-        linear - bend + mean
+        let [node, a0, a1, a2, a3] = self.cubics[self.cell_of(c)];
+        let x = c - node;
+        a0 + x * (a1 + x * (a2 + x * a3))
+    }
+
+    /// `out[k]` = [`Smoothed::at_cos`]`(cs[k])`, the same bits (the lengths must be equal), a loop
+    /// without branches that runs in vector lanes inside
+    /// [`crate::model::math::elementary::widest`] (a gather of each cell's cubic).
+    #[inline(always)]
+    pub fn at_cos_many(&self, cs: &[f64], out: &mut [f64]) {
+        assert_eq!(cs.len(), out.len(), "one output per argument");
+        for (out, &c) in out.iter_mut().zip(cs) {
+            *out = self.at_cos(c);
+        }
     }
 
     /// F̃ at the angle θd ∈ [0, π/2].
     pub fn at(&self, theta_d: f64) -> f64 {
         self.at_cos(theta_d.cos())
     }
+}
+
+/// F̃ on the cell [c_j, c_{j+1}] (width h, values y_j, y_{j+1}, spline second derivatives M_j,
+/// M_{j+1}) as [c_j, a₀, a₁, a₂, a₃], F̃ = a₀ + a₁ x + a₂ x² + a₃ x³ in x = c − c_j: the spline's
+/// Taylor coefficients at c_j, y_j, (y_{j+1} − y_j)/h − h (2M_j + M_{j+1})/6, M_j/2 and
+/// (M_{j+1} − M_j)/(6h), plus those of (h²/12) M(c), h² M_j/12 and h (M_{j+1} − M_j)/12.
+fn cell_cubic(c0: f64, c1: f64, y0: f64, y1: f64, m0: f64, m1: f64) -> [f64; 5] {
+    let h = c1 - c0;
+    [
+        c0,
+        y0 + h * h * m0 / 12.0,
+        (y1 - y0) / h - h * (5.0 * m0 + m1) / 12.0,
+        0.5 * m0,
+        (m1 - m0) / (6.0 * h),
+    ]
 }
 
 /// The second derivatives M_j of the cubic spline through (x_j, y_j), with the ends extrapolated
@@ -157,6 +229,64 @@ mod tests {
                 (surrogate - linear).abs() <= 1e-17,
                 "cell {j}: {surrogate} vs {linear}"
             );
+        }
+    }
+
+    #[test]
+    fn a_block_gives_the_bits_of_single_values() {
+        use crate::model::math::elementary::{Block, widest};
+        struct Many<'a> {
+            smoothed: &'a Smoothed,
+            cs: &'a [f64],
+            out: [f64; 64],
+        }
+        impl Block for Many<'_> {
+            #[inline(always)]
+            fn run(&mut self) {
+                let n = self.cs.len();
+                self.smoothed.at_cos_many(self.cs, &mut self.out[..n]);
+            }
+        }
+        let smoothed = Smoothed::of_basis([0.04, 0.96, 0.3, -0.2]);
+        let nodes = basis().cos_theta();
+        // Nodes, the points between them, the ends and just beyond them (the end cells' cubics).
+        let mut cs: Vec<f64> = (0..120).map(|k| f64::from(k) / 119.0).collect();
+        cs.extend([
+            nodes[1],
+            nodes[998],
+            0.5 * (nodes[998] + 1.0),
+            -1e-17,
+            1.0 + 1e-16,
+        ]);
+        for chunk in cs.chunks(64) {
+            let mut many = Many {
+                smoothed: &smoothed,
+                cs: chunk,
+                out: [0.0; 64],
+            };
+            widest(&mut many);
+            for (&c, &got) in chunk.iter().zip(&many.out) {
+                assert_eq!(got.to_bits(), smoothed.at_cos(c).to_bits(), "c = {c}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_combination_of_the_basis_is_the_surrogate_of_its_values() {
+        // The surrogate is linear in the node values: combining the basis functions' surrogates
+        // gives the one built from the combined values, up to rounding, and the same interpolant.
+        let weights = [0.04, 0.96, 0.31, -0.17];
+        let combined = Smoothed::of_basis(weights);
+        let values: Vec<f64> = (0..basis().cos_theta().len())
+            .map(|j| (0..4).map(|k| weights[k] * basis().function(k)[j]).sum())
+            .collect();
+        let direct = Smoothed::new(values);
+        for k in 0..=2000 {
+            let c = f64::from(k) / 2000.0;
+            let (got, want) = (combined.at_cos(c), direct.at_cos(c));
+            assert!((got - want).abs() <= 1e-14, "c = {c}: {got} vs {want}");
+            let (got, want) = (combined.linear_at_cos(c), direct.linear_at_cos(c));
+            assert!((got - want).abs() <= 1e-15, "c = {c}: {got} vs {want}");
         }
     }
 }
