@@ -1,7 +1,9 @@
 //! Wall time of rendering the whole built-in catalogue (SVG, PNG and CSV), split by stage:
-//! reading, planning and evaluating; drawing (rasterization and PNG compression included); CSV
-//! formatting and writing. Two variants: the default (curves drawn adaptively, tables on a uniform
-//! grid) and every scene forced to `"sampling": {"uniform": 1000}`, the fixed grid a notebook draws.
+//! reading, planning and evaluating; drawing and encoding every output (rasterization, PNG
+//! compression and CSV formatting included, each file written to its temporary as it is done);
+//! renaming the files into place. Two variants: the default (curves drawn adaptively, tables on a
+//! uniform grid) and every scene's sampling set to `{"uniform": 1000}`, the fixed grid a notebook
+//! draws.
 //! Prints the median of [`RUNS`] runs per stage.
 //!
 //! Run: `cargo bench --bench render`.
@@ -21,8 +23,11 @@ fn main() {
     let uniform = dir.join("uniform");
     std::fs::create_dir_all(&uniform).expect("temporary folder is writable");
     for (name, text) in CATALOGUE {
-        let forced = text.replacen('{', "{\"sampling\":{\"uniform\":1000},", 1);
-        std::fs::write(uniform.join(name), forced).expect("temporary folder is writable");
+        let mut forced: serde_json::Value =
+            serde_json::from_str(text).expect("catalogue specs are JSON");
+        forced["sampling"] = serde_json::json!({"uniform": 1000});
+        std::fs::write(uniform.join(name), forced.to_string())
+            .expect("temporary folder is writable");
     }
     report("default (adaptive drawing)", Vec::new(), &dir);
     report("uniform 1000", vec![uniform], &dir);
