@@ -109,11 +109,11 @@ pub struct Staging<'a> {
     made: std::sync::Mutex<bool>,
 }
 
-/// One file of a [`Staging`]: written to its temporary, or left to a target that already
-/// [holds](holds) its bytes.
+/// One file of a [`Staging`]: written to its temporary, closed (a run of thousands of files holds
+/// no descriptor open per file), or left to a target that already [holds](holds) its bytes.
 pub struct Staged {
     name: String,
-    temporary: Option<(tempfile::NamedTempFile, Live)>,
+    temporary: Option<(tempfile::TempPath, Live)>,
 }
 
 impl<'a> Staging<'a> {
@@ -170,7 +170,7 @@ impl<'a> Staging<'a> {
             .map_err(|e| Error::io(&shown, e).for_option(self.flag))?;
         Ok(Staged {
             name: name.to_owned(),
-            temporary: Some((file, live)),
+            temporary: Some((file.into_temp_path(), live)),
         })
     }
 
@@ -184,12 +184,12 @@ impl<'a> Staging<'a> {
         remove_abandoned(self.dir, &names, ABANDONED_AFTER)?;
         let paths = names.iter().map(|name| self.dir.join(name)).collect();
         for Staged { name, temporary } in staged {
-            let Some((file, _live)) = temporary else {
+            let Some((path, _live)) = temporary else {
                 continue;
             };
             let target = joined(self.dir, &name);
             check_target(self.flag, &target)?;
-            file.persist(&target).map_err(|e| {
+            path.persist(&target).map_err(|e| {
                 Error::io(target.display().to_string(), e.error).for_option(self.flag)
             })?;
         }
@@ -317,7 +317,6 @@ pub fn write_files<N: AsRef<str> + Sync, B: AsRef<[u8]> + Sync>(
     dir: &Path,
     files: &[(N, B)],
 ) -> Result<Vec<std::path::PathBuf>> {
-    ensure_dir(flag, dir)?;
     for (name, _) in files {
         check_target(flag, &joined(dir, name.as_ref()))?;
     }
@@ -483,5 +482,25 @@ mod tests {
         drop(staged);
         assert_eq!(listing(), ["a.csv", "b.csv"]);
         assert_eq!(fs::read(folder.join("a.csv")).unwrap(), b"1\n");
+    }
+
+    #[test]
+    fn staged_files_hold_no_descriptor_open() {
+        // A render stages every file before renaming any: thousands of outputs must not hold
+        // thousands of descriptors (the usual limit is 1024).
+        let dir = tempfile::tempdir().unwrap();
+        let open = || {
+            fs::read_dir("/proc/self/fd")
+                .map(Iterator::count)
+                .unwrap_or(0)
+        };
+        let staging = Staging::new("-o", dir.path());
+        let before = open();
+        let staged: Vec<Staged> = (0..200)
+            .map(|k| staging.stage(&format!("f{k}.csv"), b"1\n").unwrap())
+            .collect();
+        // Other tests of this process open files meanwhile, a few at a time.
+        assert!(open() < before + 50, "{before} → {} descriptors", open());
+        assert_eq!(staging.commit(staged).unwrap().len(), 200);
     }
 }
