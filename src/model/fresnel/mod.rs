@@ -170,13 +170,7 @@ pub enum SchlickF0 {
 
 /// A Fresnel reflectance curve F(θ). Its variants, without their values, are the [`FresnelModel`]s of
 /// the curve format, named in snake case (`LazanyiTerm` is `"lazanyi_term"`).
-#[derive(Debug, Clone, PartialEq, strum::EnumDiscriminants)]
-#[strum_discriminants(
-    name(FresnelModel),
-    doc = "A Fresnel model of the curve format: a [`Fresnel`] variant without its values.",
-    derive(Hash, strum::EnumIter, strum::IntoStaticStr),
-    strum(serialize_all = "snake_case")
-)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum Fresnel {
     /// The exact complex-index Fresnel (`exact::reflectance`).
     Exact(Ior),
@@ -202,15 +196,59 @@ pub enum Fresnel {
     Normalized(Ior),
 }
 
+/// A Fresnel model of the curve format: a [`Fresnel`] variant without its values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FresnelModel {
+    /// See [`Fresnel::Exact`].
+    Exact,
+    /// See [`Fresnel::Schlick`].
+    Schlick,
+    /// See [`Fresnel::Lazanyi`].
+    Lazanyi,
+    /// See [`Fresnel::LazanyiTerm`].
+    LazanyiTerm,
+    /// See [`Fresnel::Belcour`].
+    Belcour,
+    /// See [`Fresnel::Basis`].
+    Basis,
+    /// See [`Fresnel::Normalized`].
+    Normalized,
+}
+
 impl FresnelModel {
+    /// Every Fresnel model with its canonical name, in the order of [`Fresnel`]'s variants.
+    const NAMED: [(FresnelModel, &'static str); 7] = [
+        (FresnelModel::Exact, "exact"),
+        (FresnelModel::Schlick, "schlick"),
+        (FresnelModel::Lazanyi, "lazanyi"),
+        (FresnelModel::LazanyiTerm, "lazanyi_term"),
+        (FresnelModel::Belcour, "belcour"),
+        (FresnelModel::Basis, "basis"),
+        (FresnelModel::Normalized, "normalized"),
+    ];
+
     /// Every Fresnel model, in the order of [`Fresnel`]'s variants.
     pub fn all() -> impl Iterator<Item = FresnelModel> {
-        <FresnelModel as strum::IntoEnumIterator>::iter()
+        Self::NAMED.into_iter().map(|(model, _)| model)
     }
 
     /// Canonical name in curve JSON (`"exact"`, `"lazanyi_term"`).
     pub fn name(self) -> &'static str {
-        self.into()
+        Self::NAMED[self as usize].1
+    }
+}
+
+impl From<&Fresnel> for FresnelModel {
+    fn from(fresnel: &Fresnel) -> FresnelModel {
+        match fresnel {
+            Fresnel::Exact(_) => FresnelModel::Exact,
+            Fresnel::Schlick(_) => FresnelModel::Schlick,
+            Fresnel::Lazanyi { .. } => FresnelModel::Lazanyi,
+            Fresnel::LazanyiTerm => FresnelModel::LazanyiTerm,
+            Fresnel::Belcour(..) => FresnelModel::Belcour,
+            Fresnel::Basis(_) => FresnelModel::Basis,
+            Fresnel::Normalized(_) => FresnelModel::Normalized,
+        }
     }
 }
 
@@ -276,5 +314,31 @@ impl Fresnel {
             Fresnel::Basis(_) => "basis",
             Fresnel::Normalized(_) => "normalized",
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each model's name is looked up by its position: the table lists them in declaration order,
+    /// under distinct snake-case names.
+    #[test]
+    fn models_are_named_in_declaration_order() {
+        let named = FresnelModel::NAMED;
+        for (position, (model, name)) in named.iter().enumerate() {
+            assert_eq!(*model as usize, position, "{name}");
+            assert_eq!(model.name(), *name);
+            assert!(
+                name.chars().all(|c| c.is_ascii_lowercase() || c == '_'),
+                "{name}"
+            );
+        }
+        let distinct: std::collections::HashSet<_> = named.iter().map(|(_, name)| name).collect();
+        assert_eq!(distinct.len(), named.len());
+        assert_eq!(
+            FresnelModel::from(&Fresnel::LazanyiTerm).name(),
+            "lazanyi_term"
+        );
     }
 }
