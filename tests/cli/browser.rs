@@ -1,12 +1,12 @@
 //! Interactive pages: the catalogue's pages are self-contained, small and deterministic, bad
 //! slider declarations exit 2 naming their path, and, in Debian's Chromium driven headless from
-//! here (no npm step: `chromium --headless --dump-dom` on a copy of the page with a checking
-//! script appended), every catalogue page is visited through `window.ndfplot`: each parameter is
-//! set to both ends of its slider and to a typed value off any grid, and every curve the page then
-//! reports must equal the library's evaluation (what `ndfplot eval` prints) to
-//! [`REL_TOL_PAGE`]; on comparison pages the peak-match link must agree with `ndfplot fit --by
-//! peak`. Each page is also captured at 360 and 1280 px wide into the target folder. Without
-//! /usr/bin/chromium the browser part prints why it was skipped.
+//! here (no npm step: one `chromium --headless --dump-dom` of a page holding every catalogue page
+//! in a frame, with a checking script run in each), every catalogue page is visited
+//! through `window.ndfplot`: each parameter is set to both ends of its slider and to a typed value
+//! off any grid, and every curve the page then reports must equal the library's evaluation (what
+//! `ndfplot eval` prints) to [`REL_TOL_PAGE`]; on comparison pages the peak-match link must agree
+//! with `ndfplot fit --by peak`. Each page can also be captured at 360 and 1280 px wide into the
+//! target folder. Without /usr/bin/chromium the browser part prints why it was skipped.
 
 use crate::common::{files_in, ndfplot, render_into, root, scratch};
 use ndfplot::model::curve::Curve;
@@ -22,32 +22,65 @@ const CHROMIUM: &str = "/usr/bin/chromium";
 /// Largest page: the Fresnel pages embed the basis (32 KB of base64) beside the page maths.
 const MAX_PAGE_BYTES: usize = 150_000;
 
-/// Runs in the page after it loaded: visits every parameter's ends and an off-grid value (the
-/// geometric or arithmetic mean of the range's ends, nudged by 1.2345e-3 relative), turns each
-/// match link on, and writes every state's `current()` into `<pre id="check">`.
+/// Runs once every frame has loaded: in each page (frame `i` of the frames), visits every
+/// parameter's ends and an off-grid value (the geometric or arithmetic mean of the range's ends,
+/// nudged by 1.2345e-3 relative), turns each match link on, and writes every state's `current()`
+/// into `<pre id="check-i">` of the holding page.
 const CHECK_SCRIPT: &str = r#"<script>
-(function () {
-  const api = window.ndfplot;
-  const states = [];
-  const record = (what) => states.push({ what, current: api.current() });
-  record("start");
-  for (const p of api.params()) {
-    const start = p.value;
-    const typed = (p.scale === "log" ? Math.sqrt(p.min * p.max) : (p.min + p.max) / 2) * (1 + 1.2345e-3);
-    for (const v of [p.min, p.max, typed]) {
-      const problem = api.set(p.name, v);
-      if (problem === null) record(p.name + " = " + v);
-      else states.push({ what: p.name + " = " + v, problem });
+window.addEventListener("load", () => {
+  Array.from(document.querySelectorAll("iframe")).forEach((frame, i) => {
+    const api = frame.contentWindow.ndfplot;
+    const states = [];
+    const record = (what) => states.push({ what, current: api.current() });
+    try {
+      record("start");
+      for (const p of api.params()) {
+        const start = p.value;
+        const typed = (p.scale === "log" ? Math.sqrt(p.min * p.max) : (p.min + p.max) / 2) * (1 + 1.2345e-3);
+        for (const v of [p.min, p.max, typed]) {
+          const problem = api.set(p.name, v);
+          if (problem === null) record(p.name + " = " + v);
+          else states.push({ what: p.name + " = " + v, problem });
+        }
+        api.set(p.name, start);
+      }
+      if (api.match("peak")) record("peak match");
+    } catch (error) {
+      states.push({ what: "the check", problem: String(error) });
     }
-    api.set(p.name, start);
-  }
-  if (api.match("peak")) record("peak match");
-  const pre = document.createElement("pre");
-  pre.id = "check";
-  pre.textContent = JSON.stringify(states);
-  document.body.append(pre);
-})();
+    const pre = document.createElement("pre");
+    pre.id = "check-" + i;
+    pre.textContent = JSON.stringify(states);
+    document.body.append(pre);
+  });
+});
 </script>"#;
+
+/// A page holding each of the pages `files` (beside it) in a frame of its own, followed by
+/// [`CHECK_SCRIPT`]. Chromium runs with `--allow-file-access-from-files`, so the frames are of the
+/// holder's origin and reachable from its script.
+fn holder(files: &[String]) -> String {
+    let mut html = String::from("<!DOCTYPE html><html><body>");
+    for file in files {
+        html.push_str(&format!(r#"<iframe src="{file}"></iframe>"#));
+    }
+    html.push_str(CHECK_SCRIPT);
+    html.push_str("</body></html>");
+    html
+}
+
+/// The text of `<pre id="{id}">` in a DOM that Chromium dumped, unescaped.
+fn pre_text(dom: &str, id: &str) -> Option<String> {
+    let (_, rest) = dom.split_once(&format!(r#"<pre id="{id}">"#))?;
+    Some(
+        rest.split("</pre>")
+            .next()?
+            .replace("&quot;", "\"")
+            .replace("&lt;", "<")
+            .replace("&gt;", ">")
+            .replace("&amp;", "&"),
+    )
+}
 
 /// The environment variable that asks for screenshots of every page at 360 and 1280 px wide, in
 /// `target/tmp/page-screenshots/` (`NDFPLOT_PAGE_SCREENSHOTS=1 cargo test --test cli browser`).
@@ -133,33 +166,30 @@ fn every_page_draws_values_equal_to_eval_at_every_setting() {
         &dir,
         "html",
     );
-    // Chromium starts once per page for the check (and twice more with the screenshots): two pages
-    // at a time.
-    let check_page = |id: &String| {
-        let page = std::fs::read_to_string(dir.join(format!("{id}.html"))).unwrap();
-        let checked = dir.join(format!("{id}-check.html"));
-        std::fs::write(
-            &checked,
-            page.replace("</body>", &format!("{CHECK_SCRIPT}</body>")),
-        )
-        .unwrap();
-        let out = chromium(&["--dump-dom", checked.to_str().unwrap()]);
-        let dom = String::from_utf8_lossy(&out.stdout);
-        let Some((_, rest)) = dom.split_once(r#"<pre id="check">"#) else {
-            panic!(
-                "{id}: the check did not run: {}",
-                String::from_utf8_lossy(&out.stderr)
-            );
-        };
-        let text = rest
-            .split("</pre>")
-            .next()
-            .unwrap()
-            .replace("&quot;", "\"")
-            .replace("&lt;", "<")
-            .replace("&gt;", ">")
-            .replace("&amp;", "&");
-        let states: Vec<Value> = serde_json::from_str(&text).unwrap();
+    // Chromium starts once for the check of every page (and twice per page for the screenshots);
+    // the pages' states are then compared with the library two pages at a time.
+    let pages: Vec<String> = ids.iter().map(|id| format!("{id}.html")).collect();
+    let checked = dir.join("check.html");
+    std::fs::write(&checked, holder(&pages)).unwrap();
+    let out = chromium(&[
+        "--allow-file-access-from-files",
+        "--dump-dom",
+        checked.to_str().unwrap(),
+    ]);
+    let dom = String::from_utf8_lossy(&out.stdout);
+    let texts: Vec<String> = (0..ids.len())
+        .map(|i| {
+            pre_text(&dom, &format!("check-{i}")).unwrap_or_else(|| {
+                panic!(
+                    "{}: the check did not run: {}",
+                    ids[i],
+                    String::from_utf8_lossy(&out.stderr)
+                )
+            })
+        })
+        .collect();
+    let check_page = |(id, text): (&String, &String)| {
+        let states: Vec<Value> = serde_json::from_str(text).unwrap();
         let mut worst = 0.0f64;
         for state in &states {
             let what = state["what"].as_str().unwrap();
@@ -224,9 +254,10 @@ fn every_page_draws_values_equal_to_eval_at_every_setting() {
             );
         }
     };
+    let checks: Vec<(&String, &String)> = ids.iter().zip(&texts).collect();
     std::thread::scope(|scope| {
-        for half in ids.chunks(ids.len().div_ceil(2)) {
-            scope.spawn(|| half.iter().for_each(check_page));
+        for half in checks.chunks(checks.len().div_ceil(2)) {
+            scope.spawn(|| half.iter().copied().for_each(check_page));
         }
     });
 }
