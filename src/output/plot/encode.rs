@@ -156,9 +156,11 @@ pub(super) fn with_scratch<T>(f: impl FnOnce(&mut Scratch) -> T) -> T {
 }
 
 /// The SVG `svg` of a figure on `canvas` (as [`super::svg`] draws it) rasterized at
-/// `canvas.png_scale` pixels per CSS pixel by resvg, anti-aliased with sub-pixel positions: on an
-/// opaque white ground as RGB, or, on a transparent canvas, on nothing as straight RGBA. The
-/// pixels live in `scratch`, whatever it held before.
+/// `canvas.png_scale` pixels per CSS pixel by resvg, anti-aliased with sub-pixel positions: as RGB
+/// on an opaque canvas, whose drawing begins with its background over the whole canvas, or, on a
+/// transparent canvas, on nothing as straight RGBA. The pixels live in `scratch`, whatever it held
+/// before: an opaque drawing's background covers every pixel with full coverage (the canvas spans
+/// whole pixels), so only a transparent canvas is cleared first.
 pub(super) fn rasterize<'s>(
     svg: &[u8],
     canvas: &Canvas,
@@ -172,11 +174,9 @@ pub(super) fn rasterize<'s>(
     let mut pixmap =
         resvg::tiny_skia::PixmapMut::from_bytes(&mut scratch.canvas[..pixels * 4], width, height)
             .ok_or_else(|| PlotError::Draw("the raster could not be allocated".to_owned()))?;
-    pixmap.fill(if canvas.transparent {
-        resvg::tiny_skia::Color::TRANSPARENT
-    } else {
-        resvg::tiny_skia::Color::WHITE
-    });
+    if canvas.transparent {
+        pixmap.fill(resvg::tiny_skia::Color::TRANSPARENT);
+    }
     let size = tree.size();
     let transform = resvg::tiny_skia::Transform::from_scale(
         width as f32 / size.width(),
@@ -184,8 +184,8 @@ pub(super) fn rasterize<'s>(
     );
     resvg::render(&tree, transform, &mut pixmap);
     let packed = &mut scratch.packed;
-    packed.clear();
     if canvas.transparent {
+        packed.clear();
         packed.reserve(pixels * 4);
         for p in pixmap.as_ref().pixels() {
             let c = p.demultiply();
@@ -193,6 +193,7 @@ pub(super) fn rasterize<'s>(
         }
     } else {
         // Opaque ground: premultiplied and straight colour agree, so alpha is dropped as it is.
+        // Every byte is written: only memory beyond what the last raster used is cleared first.
         packed.resize(pixels * 3, 0);
         for (rgb, rgba) in packed
             .chunks_exact_mut(3)
@@ -247,4 +248,46 @@ pub(super) fn encode_png(
     writer.write_image_data(raster.pixels)?;
     writer.finish()?;
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::fixtures::{fresnel_sample, sample};
+    use super::*;
+    use crate::spec::look::Theme;
+
+    /// An opaque canvas is not cleared before drawing: its background must cover every pixel
+    /// fully, at any size and scale, or the raster would show what the memory held before.
+    #[test]
+    fn an_opaque_raster_does_not_depend_on_what_its_memory_held() {
+        for (mut figure, theme) in [(sample(), Theme::Notebook), (fresnel_sample(), Theme::Dark)] {
+            figure.theme = theme;
+            for (width_px, height_px, png_scale) in
+                [(400, 250, 2.0), (333, 217, 1.37), (301, 199, 3.3)]
+            {
+                figure.canvas.width_px = width_px;
+                figure.canvas.height_px = height_px;
+                figure.canvas.png_scale = png_scale;
+                let svg = super::super::svg(&figure).unwrap();
+                let raster = |scratch: &mut Scratch| {
+                    rasterize(&svg, &figure.canvas, scratch)
+                        .unwrap()
+                        .pixels
+                        .to_vec()
+                };
+                let fresh = raster(&mut Scratch::default());
+                for held in [0x00, 0x5A, 0xFF] {
+                    let mut dirty = Scratch {
+                        canvas: vec![held; fresh.len() / 3 * 4],
+                        packed: vec![held; 16],
+                    };
+                    let reused = raster(&mut dirty);
+                    assert!(
+                        reused == fresh,
+                        "{theme:?} {width_px}×{height_px} at {png_scale}: memory holding {held:#x}"
+                    );
+                }
+            }
+        }
+    }
 }

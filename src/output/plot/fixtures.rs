@@ -8,12 +8,12 @@ use crate::pipeline::figure::{Figure, Panel, Series};
 use crate::pipeline::provenance::Provenance;
 use crate::spec::look::{Axes, Canvas, Dash, Mark, PanelKind, Rgb, Scale, Style, Theme, XUnit};
 
-/// The spec text the test figures claim to come from.
 /// The PNG of `figure`, rasterized from its SVG as `render` does.
 pub(super) fn draw_png(figure: &Figure) -> Result<Vec<u8>, super::PlotError> {
     super::png(figure, &super::svg(figure)?)
 }
 
+/// The spec text the test figures claim to come from.
 pub(super) const SPEC: &[u8] = br#"{"id": "sample"}"#;
 
 pub(super) const RED: u32 = 0xDB2E2E;
