@@ -18,7 +18,8 @@
 //! VNDF sample space would lump the heavy tail (where 1 − E lives) into a few cells instead.
 //!
 //! The fast path is a tensor product of fixed Gauss–Legendre rules ([`escalate`]): 16 × 16, then
-//! 24 × 24, 32 × 32, 40 × 40 and 48 × 48 points per outer panel (outer × inner), each panel taking
+//! 24 × 24, 32 × 32, 40 × 40 and 48 × 48 points per outer panel (outer × inner), from 8 × 8 at
+//! tolerances of 1e-10 and looser (the average's E), each panel taking
 //! the first level within 30 × the tolerance (3e-11) of the one before on its own, so a slow panel
 //! does not raise the others' level; where a panel's levels never agree, or a value is not finite,
 //! the nested adaptive Gauss–Kronrod ([`crate::model::math::quad::integrate`]) to the tolerance. The
@@ -1153,7 +1154,8 @@ const MIN_GRADING: f64 = 1e-14;
 /// The points of the outer and the inner Gauss–Legendre rule of each level of the fast path
 /// ([`escalate`]): whole vectors of [`LANES`] each, since a rule is padded to them anyway (20 points
 /// cost what 24 do), growing by one vector a level.
-const LEVELS: [Order; 5] = [
+const LEVELS: [Order; 6] = [
+    Order { outer: 8, inner: 8 },
     Order {
         outer: 16,
         inner: 16,
@@ -1207,8 +1209,8 @@ fn padded_nodes(rule: &Rule) -> Vec<f64> {
 const LANES: usize = 8;
 
 /// The rules of [`LEVELS`], built once.
-fn level_rules() -> &'static [Rules; 5] {
-    static RULES: OnceLock<[Rules; 5]> = OnceLock::new();
+fn level_rules() -> &'static [Rules; 6] {
+    static RULES: OnceLock<[Rules; 6]> = OnceLock::new();
     RULES.get_or_init(|| {
         LEVELS.map(|order| {
             let (outer, inner) = (Rule::new(order.outer), Rule::new(order.inner));
@@ -1236,7 +1238,7 @@ fn escalate(tolerance: f64, by: impl Fn(&Rules) -> f64) -> Option<f64> {
 /// the bound: with 2, a coincidental agreement of two levels that both miss a feature is caught by
 /// the third.
 fn escalate_agreeing(agreements: usize, tolerance: f64, by: impl Fn(&Rules) -> f64) -> Option<f64> {
-    let rules = level_rules();
+    let rules = &level_rules()[usize::from(tolerance < COARSE_LEVEL_TOL)..];
     let mut last = by(&rules[0]);
     let mut agreed = 0;
     for level in &rules[1..] {
@@ -1256,6 +1258,12 @@ fn escalate_agreeing(agreements: usize, tolerance: f64, by: impl Fn(&Rules) -> f
     }
     None
 }
+
+/// The least tolerance at which [`escalate`] starts from the 8 × 8 level of [`LEVELS`]; tighter
+/// ones start from 16 × 16, since 8 points rarely agree with 16 to them and would only add their
+/// cost. At 3e-10 ([`AVERAGE_E_TOL`]) two agreeing levels of 8 and 16 points leave the 16-point value
+/// within ~(9e-9)² of its limit where the rule's error decays geometrically.
+const COARSE_LEVEL_TOL: f64 = 1e-10;
 
 /// A level's value is taken where it differs from the level before by at most this many times
 /// the surface's tolerance (3e-11 at the default 1e-12).
@@ -1613,8 +1621,9 @@ pub fn median_slope(ndf: impl Fn(f64) -> f64) -> f64 {
 /// μ = min(w, 1)/16 up to [`AVERAGE_TOP`] = 1/2 (below μ = [`AVERAGE_FLOOR`], E = E(0)); and near
 /// μ = 1 the horizon cut's contribution vanishes like (1 − μ)^{5/4} (the cut spans
 /// θh ∈ [ε/2, π/2 − ε/2], ε = arcsin μ), so the last panel [1/2, 1] runs in s with μ = 1 − s⁴
-/// (14 points). Each E is held to [`AVERAGE_E_TOL`] (or the surface's own tolerance if looser):
-/// the weights sum to 1, so E_avg keeps about that accuracy. 38–70 albedos per value (40.7 on
+/// (14 points). Each E is held to [`AVERAGE_E_TOL`] (or the surface's own tolerance if looser),
+/// its fixed rules escalating from 8 × 8 points ([`COARSE_LEVEL_TOL`]): the weights sum to 1, so
+/// E_avg keeps about that accuracy. 38–70 albedos per value (40.7 on
 /// average over the cases below; 44–76 and 49.4 with the graded panels ending at 1/4 and two
 /// 14-point halves above); within 3.0e-9 of 16-point rules on finer panels (ratio 1.6 from
 /// min(w, 1)/64, eight pieces in s above 1/4) with every E to 1e-12, themselves within 1.4e-13
