@@ -24,16 +24,21 @@ pub fn parse(svg: &[u8]) -> Result<usvg::Tree, usvg::Error> {
     usvg::Tree::from_data(svg, &options)
 }
 
-/// The font database of every conversion: the embedded DejaVu Sans face only, built once per
-/// process.
+/// The font database of every conversion: the four embedded DejaVu faces only, read where they
+/// are embedded (not copied), built once per process.
 fn font_database() -> &'static Arc<fontdb::Database> {
     static DATABASE: OnceLock<Arc<fontdb::Database>> = OnceLock::new();
     DATABASE.get_or_init(|| {
         let mut database = fontdb::Database::new();
-        database.load_font_data(dejavu::sans::regular().to_vec());
-        database.load_font_data(dejavu::sans::oblique().to_vec());
-        database.load_font_data(dejavu::serif::regular().to_vec());
-        database.load_font_data(dejavu::serif::italic().to_vec());
+        for face in [
+            dejavu::sans::regular(),
+            dejavu::sans::oblique(),
+            dejavu::serif::regular(),
+            dejavu::serif::italic(),
+        ] {
+            // The embedded bytes as they are, not a copy of them.
+            database.load_font_source(fontdb::Source::Binary(Arc::new(face)));
+        }
         database.set_sans_serif_family(FAMILY);
         database.set_serif_family(SERIF_FAMILY);
         database.set_monospace_family(FAMILY);
