@@ -234,19 +234,7 @@ mod tests {
 
     #[test]
     fn a_block_gives_the_bits_of_single_values() {
-        use crate::model::math::elementary::{Block, widest};
-        struct Many<'a> {
-            smoothed: &'a Smoothed,
-            cs: &'a [f64],
-            out: [f64; 64],
-        }
-        impl Block for Many<'_> {
-            #[inline(always)]
-            fn run(&mut self) {
-                let n = self.cs.len();
-                self.smoothed.at_cos_many(self.cs, &mut self.out[..n]);
-            }
-        }
+        use crate::model::math::elementary::widest_many;
         let smoothed = Smoothed::of_basis([0.04, 0.96, 0.3, -0.2]);
         let nodes = basis().cos_theta();
         // Nodes, the points between them, the ends and just beyond them (the end cells' cubics).
@@ -259,13 +247,12 @@ mod tests {
             1.0 + 1e-16,
         ]);
         for chunk in cs.chunks(64) {
-            let mut many = Many {
-                smoothed: &smoothed,
-                cs: chunk,
-                out: [0.0; 64],
-            };
-            widest(&mut many);
-            for (&c, &got) in chunk.iter().zip(&many.out) {
+            let many = widest_many(
+                chunk,
+                #[inline(always)]
+                |cs, out| smoothed.at_cos_many(cs, out),
+            );
+            for (&c, &got) in chunk.iter().zip(&many) {
                 assert_eq!(got.to_bits(), smoothed.at_cos(c).to_bits(), "c = {c}");
             }
         }

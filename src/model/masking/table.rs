@@ -105,24 +105,12 @@ fn lambda_of(mu: f64, t: f64, g: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::math::elementary::{Block, widest};
+    use crate::model::math::elementary::widest_many;
 
     /// The block path gives the bits of [`LambdaTable::lambda_at_cos`] at every μ, the ends, values
     /// just outside [0, 1] (clamped) and the last double below 1 included.
     #[test]
     fn a_block_gives_the_bits_of_single_values() {
-        struct Many<'a> {
-            table: &'a LambdaTable,
-            mus: &'a [f64],
-            out: [f64; 64],
-        }
-        impl Block for Many<'_> {
-            #[inline(always)]
-            fn run(&mut self) {
-                let n = self.mus.len();
-                self.table.lambda_at_cos_many(self.mus, &mut self.out[..n]);
-            }
-        }
         // Trowbridge–Reitz at α = 0.3: Λ = (√(1 + α² tan²θ) − 1)/2.
         let alpha: f64 = 0.3;
         let lambda =
@@ -131,13 +119,12 @@ mod tests {
         let mut mus: Vec<f64> = (0..60).map(|k| f64::from(k) / 59.0).collect();
         mus.extend([-0.1, 1.1, 1e-12, 1.0 - f64::EPSILON / 2.0]);
         for chunk in mus.chunks(64) {
-            let mut many = Many {
-                table: &table,
-                mus: chunk,
-                out: [0.0; 64],
-            };
-            widest(&mut many);
-            for (&mu, &got) in chunk.iter().zip(&many.out) {
+            let many = widest_many(
+                chunk,
+                #[inline(always)]
+                |mus, out| table.lambda_at_cos_many(mus, out),
+            );
+            for (&mu, &got) in chunk.iter().zip(&many) {
                 assert_eq!(got.to_bits(), table.lambda_at_cos(mu).to_bits(), "μ = {mu}");
             }
         }

@@ -214,18 +214,7 @@ mod tests {
     /// interval and at NaN included.
     #[test]
     fn a_block_gives_the_bits_of_single_values() {
-        use crate::model::math::elementary::{Block, widest};
-        struct Many<'a> {
-            table: &'a Piecewise,
-            xs: &'a [f64],
-            out: Vec<f64>,
-        }
-        impl Block for Many<'_> {
-            #[inline(always)]
-            fn run(&mut self) {
-                self.table.eval_many(self.xs, &mut self.out);
-            }
-        }
+        use crate::model::math::elementary::widest_many;
         let f = |x: f64| 1.0 / (1.0 + 25.0 * x * x);
         let table = Piecewise::build(f, -1.0, 1.0, |_, _| 1e-14).expect("smooth");
         let mut xs: Vec<f64> = (0..150)
@@ -233,13 +222,12 @@ mod tests {
             .collect();
         xs.extend([-1.0, 1.0, 0.0, f64::NAN]);
         for len in [1, 7, 8, 9, 48, 64, 65, xs.len()] {
-            let mut many = Many {
-                table: &table,
-                xs: &xs[..len],
-                out: vec![0.0; len],
-            };
-            widest(&mut many);
-            for (&x, &got) in xs.iter().zip(&many.out) {
+            let many = widest_many(
+                &xs[..len],
+                #[inline(always)]
+                |xs, out| table.eval_many(xs, out),
+            );
+            for (&x, &got) in xs.iter().zip(&many) {
                 assert_eq!(
                     got.to_bits(),
                     table.eval(x).to_bits(),

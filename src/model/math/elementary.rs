@@ -503,6 +503,31 @@ fn widest_avx2<B: Block>(block: &mut B) {
     block.run()
 }
 
+/// `many(xs, out)` run inside [`widest`] (so in the widest instruction set the processor has) into
+/// a fresh output of `xs.len()` values: for tests comparing a block path with its single values.
+/// `many` must be an `#[inline(always)]` closure, as a [`Block`]'s `run` must be.
+#[cfg(test)]
+pub(crate) fn widest_many(xs: &[f64], many: impl Fn(&[f64], &mut [f64])) -> Vec<f64> {
+    struct Many<'a, F> {
+        many: F,
+        xs: &'a [f64],
+        out: Vec<f64>,
+    }
+    impl<F: Fn(&[f64], &mut [f64])> Block for Many<'_, F> {
+        #[inline(always)]
+        fn run(&mut self) {
+            (self.many)(self.xs, &mut self.out);
+        }
+    }
+    let mut block = Many {
+        many,
+        xs,
+        out: vec![0.0; xs.len()],
+    };
+    widest(&mut block);
+    block.out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
