@@ -59,7 +59,7 @@ impl Table {
     /// Appends `value` in shortest round-trip form (`{:?}`: `1.0`, `0.1`, `1e-300`).
     pub fn number(&mut self, value: f64) {
         self.separate();
-        write!(self.out, "{value:?}").expect("writing to memory cannot fail");
+        push_shortest(&mut self.out, value);
     }
 
     /// Appends a number already written in shortest round-trip form.
@@ -126,7 +126,7 @@ impl FormattedGrid {
         self.text.clear();
         self.ends.clear();
         for value in values {
-            write!(self.text, "{value:?}").expect("writing to memory cannot fail");
+            push_shortest(&mut self.text, value);
             self.values.push(value);
             self.ends.push(self.text.len());
         }
@@ -137,6 +137,130 @@ impl FormattedGrid {
         let start = if i == 0 { 0 } else { self.ends[i - 1] };
         &self.text[start..self.ends[i]]
     }
+}
+
+/// Appends `value` to `out` exactly as `{value:?}` writes it (docs/contracts.md "Numbers"): the
+/// shortest digits that read back as `value`, positional from 1e-4 up to 1e16 with at least one
+/// decimal (`0.0001`, `1.0`, `12.5`), scientific elsewhere without a plus sign or padding
+/// (`1e-5`, `1.5e16`, `-5e-324`), `NaN`, `inf` and `-inf` as they are. The digits are zmij's
+/// (Schubfach: shortest, and of those the nearest, as Rust's own), which writes positional
+/// from 1e-5 and its exponents as `e-07`; those two differences are rewritten here. Where two
+/// shortest candidates are equally near, zmij takes the even one and Rust the upper: that needs
+/// the value's exact decimal expansion to be one digit longer than the shortest, so a value whose
+/// expansion has at most 18 significant digits ([`short_exact_decimal`]) is written by Rust's own
+/// formatting.
+pub fn push_shortest(out: &mut Vec<u8>, value: f64) {
+    if !value.is_finite() || short_exact_decimal(value) {
+        write!(out, "{value:?}").expect("writing to memory cannot fail");
+        return;
+    }
+    let mut buffer = zmij::Buffer::new();
+    let text = buffer.format_finite(value).as_bytes();
+    let magnitude = value.abs();
+    let positional = magnitude == 0.0 || (1e-4..1e16).contains(&magnitude);
+    if positional && !text.contains(&b'e') {
+        out.extend_from_slice(text);
+        return;
+    }
+    let (negative, text) = match text.split_first() {
+        Some((b'-', rest)) => (true, rest),
+        _ => (false, text),
+    };
+    let (mantissa, exponent) = match text.iter().position(|&b| b == b'e') {
+        Some(e) => {
+            let exponent = std::str::from_utf8(&text[e + 1..])
+                .ok()
+                .and_then(|t| t.parse::<i32>().ok())
+                .expect("zmij writes a decimal exponent");
+            (&text[..e], exponent)
+        }
+        None => (text, 0),
+    };
+    // The significant digits, and the power of ten of the first.
+    let whole = mantissa
+        .iter()
+        .position(|&b| b == b'.')
+        .unwrap_or(mantissa.len());
+    let mut power = whole as i32 - 1 + exponent;
+    let mut digits: Vec<u8> = mantissa
+        .iter()
+        .copied()
+        .filter(u8::is_ascii_digit)
+        .collect();
+    let leading = digits.iter().take_while(|&&d| d == b'0').count();
+    digits.drain(..leading);
+    power -= leading as i32;
+    while digits.len() > 1 && digits.last() == Some(&b'0') {
+        digits.pop();
+    }
+    if negative {
+        out.push(b'-');
+    }
+    if positional {
+        if power < 0 {
+            out.extend_from_slice(b"0.");
+            out.extend(std::iter::repeat_n(b'0', (-power - 1) as usize));
+            out.extend_from_slice(&digits);
+        } else {
+            let whole = power as usize + 1;
+            out.extend_from_slice(&digits[..whole.min(digits.len())]);
+            out.extend(std::iter::repeat_n(
+                b'0',
+                whole.saturating_sub(digits.len()),
+            ));
+            out.push(b'.');
+            match digits.get(whole..) {
+                Some(fraction) if !fraction.is_empty() => out.extend_from_slice(fraction),
+                _ => out.push(b'0'),
+            }
+        }
+    } else {
+        out.push(digits[0]);
+        if digits.len() > 1 {
+            out.push(b'.');
+            out.extend_from_slice(&digits[1..]);
+        }
+        write!(out, "e{power}").expect("writing to memory cannot fail");
+    }
+}
+
+/// Whether the exact decimal expansion of the finite `value` has at most 18 significant digits.
+/// With |value| = m · 2^e, m odd: for e < 0 the expansion's digits are those of m · 5^−e; for
+/// e ≥ 0 they are those of m · 2^e with its trailing zeros (the factors 10 = 2 · 5 shared by
+/// 2^e and m's fives) removed.
+fn short_exact_decimal(value: f64) -> bool {
+    const LIMIT: u128 = 1_000_000_000_000_000_000;
+    let bits = value.abs().to_bits();
+    let (biased, fraction) = ((bits >> 52) as i32, bits & ((1 << 52) - 1));
+    let (mut m, mut e) = if biased == 0 {
+        (fraction, -1074)
+    } else {
+        (fraction | (1 << 52), biased - 1075)
+    };
+    if m == 0 {
+        return true;
+    }
+    e += m.trailing_zeros() as i32;
+    m >>= m.trailing_zeros();
+    let mut digits = u128::from(m);
+    if e < 0 {
+        for _ in 0..-e {
+            digits *= 5;
+            if digits >= LIMIT {
+                return false;
+            }
+        }
+    } else {
+        while e > 0 && digits % 5 == 0 {
+            digits /= 5;
+            e -= 1;
+        }
+        if e >= 64 {
+            return false;
+        }
+        digits <<= e;
+    }
+    digits < LIMIT
 }
 
 /// Several leading fields of a row, quoted once for many rows ([`Table::quoted_fields`]).
@@ -231,6 +355,75 @@ pub fn figure_csv(figure: &Figure) -> Vec<u8> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `push_shortest` against `{:?}` itself, byte for byte: every power of ten from 1e-324 to
+    /// 1e308 (and a few leads) with its neighbours three units in the last place each way, short
+    /// decimals, small odd numbers times powers of two (where ties between two shortest
+    /// candidates live), the extremes and zeros, and a million random bit patterns.
+    #[test]
+    fn numbers_are_written_as_debug_writes_them() {
+        let mut values = vec![
+            0.0,
+            -0.0,
+            f64::MIN_POSITIVE,
+            f64::MAX,
+            f64::MIN,
+            f64::EPSILON,
+            f64::from_bits(1),
+            -f64::from_bits(1),
+            f64::from_bits(0x000F_FFFF_FFFF_FFFF),
+            9_999_999_999_999_998.0,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ];
+        for power in -324..=308 {
+            for lead in [
+                "1",
+                "9.5",
+                "1.25",
+                "3.0000000000000004",
+                "9.999999999999999",
+            ] {
+                let Ok(v) = format!("{lead}e{power}").parse::<f64>() else {
+                    continue;
+                };
+                for step in -3i64..=3 {
+                    let bits = v.to_bits() as i64 + step;
+                    values.extend([f64::from_bits(bits as u64), -f64::from_bits(bits as u64)]);
+                }
+            }
+        }
+        for digits in 0..100_000 {
+            for scale in [1e-7, 1e-5, 1e-4, 1e-2, 1.0, 1e3, 1e12, 1e15] {
+                values.push(digits as f64 * scale);
+            }
+        }
+        // Short dyadic values, where two shortest candidates can be equally near.
+        for m in (1..4000).step_by(2) {
+            for e in -70..=90 {
+                values.push(f64::from(m) * 2f64.powi(e));
+            }
+        }
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..1_000_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            values.push(f64::from_bits(state));
+        }
+        let mut out = Vec::new();
+        for v in values {
+            out.clear();
+            push_shortest(&mut out, v);
+            assert_eq!(
+                std::str::from_utf8(&out).unwrap(),
+                format!("{v:?}"),
+                "bits {:#x}",
+                v.to_bits()
+            );
+        }
+    }
 
     #[test]
     fn text_fields_are_quoted_as_the_csv_crate_quotes_them() {
