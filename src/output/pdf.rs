@@ -109,15 +109,15 @@ mod tests {
         assert!(bytes.starts_with(b"%PDF-"));
         assert!(contains(&bytes, "/FontFile2"), "an embedded TrueType face");
         assert!(contains(&bytes, "DejaVuSans"));
-        assert!(contains(&bytes, "/Title (A title)"));
+        assert!(contains(&bytes, "/Title(A title)"));
         let record = Provenance::of_spec(b"{}");
         assert!(contains(
             &bytes,
-            &format!("/Producer (ndfplot {})", record.version)
+            &format!("/Producer(ndfplot {})", record.version)
         ));
         assert!(contains(
             &bytes,
-            &format!("/Keywords ({})", record.words().join(", "))
+            &format!("/Keywords({})", record.words().join(", "))
         ));
         assert!(!contains(&bytes, "/CreationDate"));
     }
@@ -125,7 +125,7 @@ mod tests {
     #[test]
     fn the_page_is_the_svg_size_in_points() {
         let bytes = pdf();
-        assert!(contains(&bytes, "/MediaBox [0 0 150 75]"));
+        assert!(contains(&bytes, "/MediaBox[0 0 150 75]"));
     }
 
     #[test]

@@ -88,7 +88,10 @@ pub fn png(bytes: &[u8], max_side: usize) -> Result<Image, String> {
             ));
         }
     };
-    let mut buffer = vec![0; reader.output_buffer_size()];
+    let size = reader
+        .output_buffer_size()
+        .ok_or_else(|| format!("image too large to decode (got {width} x {height} pixels)"))?;
+    let mut buffer = vec![0; size];
     let frame = reader.next_frame(&mut buffer).map_err(failed)?;
     let data = &buffer[..frame.buffer_size()];
     let values = match samples {

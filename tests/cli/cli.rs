@@ -450,8 +450,8 @@ fn assert_provenance(dir: &Path, id: &str, hash: &str) {
         }
     }
     if let Some(pdf) = read("pdf") {
-        assert!(has_bytes(&pdf, &format!("/Producer (ndfplot {version})")));
-        let keywords = format!("/Keywords (ndfplot-version={version}, spec-sha256={hash})");
+        assert!(has_bytes(&pdf, &format!("/Producer(ndfplot {version})")));
+        let keywords = format!("/Keywords(ndfplot-version={version}, spec-sha256={hash})");
         assert!(has_bytes(&pdf, &keywords), "{id}.pdf");
     }
     if let Some(csv) = read("csv") {
@@ -500,9 +500,9 @@ fn render_pdf_is_a_vector_page_in_the_embedded_face() {
         assert_provenance(&out_dir, id, &sha256_hex(&std::fs::read(source).unwrap()));
     }
     let two_panels = std::fs::read(out_dir.join("two-panels.pdf")).unwrap();
-    assert!(has_bytes(&two_panels, "/Title (Test figure)"));
+    assert!(has_bytes(&two_panels, "/Title(Test figure)"));
     // Two columns of 480 CSS px, 337 px high, at 0.75 pt per px.
-    assert!(has_bytes(&two_panels, "/MediaBox [0 0 720 252.75]"));
+    assert!(has_bytes(&two_panels, "/MediaBox[0 0 720 252.75]"));
 }
 
 #[test]

@@ -156,8 +156,10 @@ fn assert_complete(dir: &Path, reference: &Path) -> usize {
                 roxmltree::Document::parse(&text(&bytes)).unwrap_or_else(|e| panic!("{name}: {e}"));
             }
             "png" => {
-                let mut reader = png::Decoder::new(bytes.as_slice()).read_info().unwrap();
-                let mut pixels = vec![0; reader.output_buffer_size()];
+                let mut reader = png::Decoder::new(std::io::Cursor::new(bytes.as_slice()))
+                    .read_info()
+                    .unwrap();
+                let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
                 reader
                     .next_frame(&mut pixels)
                     .unwrap_or_else(|e| panic!("{name}: {e}"));

@@ -327,7 +327,7 @@ fn a_transparent_background_leaves_the_page_unpainted() {
         std::fs::File::open(out.join("clear.png")).unwrap(),
     ));
     let mut reader = decoder.read_info().unwrap();
-    let mut pixels = vec![0; reader.output_buffer_size()];
+    let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
     let info = reader.next_frame(&mut pixels).unwrap();
     assert_eq!(info.color_type, png::ColorType::Rgba);
     assert_eq!(pixels[3], 0, "the top-left corner is see-through");

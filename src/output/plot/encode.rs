@@ -225,7 +225,7 @@ pub(super) fn encode_png(
     encoder.set_color(raster.color_type());
     encoder.set_depth(png::BitDepth::Eight);
     encoder.set_compression(png::Compression::Fast);
-    encoder.set_filter(png::FilterType::Paeth);
+    encoder.set_filter(png::Filter::Paeth);
     encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
     // pHYs: the resolution in pixels per metre, so that the image opens at its printed size.
     let per_metre = (dpi / 0.0254).round() as u32;
@@ -444,7 +444,7 @@ mod tests {
         let mut encoder = png::Encoder::new(&mut out, raster.size.0, raster.size.1);
         encoder.set_color(raster.color_type());
         encoder.set_compression(png::Compression::Fast);
-        encoder.set_filter(png::FilterType::Paeth);
+        encoder.set_filter(png::Filter::Paeth);
         let mut writer = encoder.write_header().unwrap();
         writer.write_image_data(&packed).unwrap();
         writer.finish().unwrap();

@@ -276,8 +276,10 @@ pub(super) fn fresnel_sample() -> Figure {
 }
 
 pub(super) fn decode(bytes: &[u8]) -> (u32, u32, Vec<u8>) {
-    let mut reader = png::Decoder::new(bytes).read_info().expect("PNG header");
-    let mut pixels = vec![0; reader.output_buffer_size()];
+    let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
+        .read_info()
+        .expect("PNG header");
+    let mut pixels = vec![0; reader.output_buffer_size().expect("a decodable size")];
     let info = reader.next_frame(&mut pixels).expect("PNG data");
     pixels.truncate(info.buffer_size());
     (info.width, info.height, pixels)

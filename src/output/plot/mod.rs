@@ -574,7 +574,9 @@ mod tests {
         );
         roxmltree::Document::parse(&svg).expect("still well-formed XML");
         let bytes = draw_png(&figure).unwrap();
-        let reader = png::Decoder::new(bytes.as_slice()).read_info().unwrap();
+        let reader = png::Decoder::new(std::io::Cursor::new(bytes.as_slice()))
+            .read_info()
+            .unwrap();
         let text: Vec<(&str, &str)> = reader
             .info()
             .uncompressed_latin1_text
