@@ -358,7 +358,7 @@ impl Block for OpaqueRow<'_> {
 /// [`paeth_filter`] of an opaque row packed to RGB against the packed row above, read straight
 /// from the RGBA rows `source` and `above` (zeros above the first row) into `out` (3 bytes a
 /// pixel): a byte's left and upper-left neighbours are the same channel of the pixel before, which
-/// packing does not change, so filtering before dropping alpha gives the same bytes. Four pixels
+/// packing does not change, so filtering before dropping alpha gives the same bytes. Eight pixels
 /// (32 bytes) are filtered at a time, alpha included and then dropped; run through
 /// [`OpaqueRow`], in the widest instruction set the processor has.
 #[inline(always)]
