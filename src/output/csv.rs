@@ -158,7 +158,9 @@ pub fn push_shortest(out: &mut Vec<u8>, value: f64) {
     let text = buffer.format_finite(value).as_bytes();
     let magnitude = value.abs();
     let positional = magnitude == 0.0 || (1e-4..1e16).contains(&magnitude);
-    if positional && !text.contains(&b'e') {
+    // zmij's exponent, where it writes one, is the last 4 or 5 bytes (`e-05`, `e+308`).
+    let scientific = text[text.len().saturating_sub(5)..].contains(&b'e');
+    if positional && !scientific {
         out.extend_from_slice(text);
         return;
     }
