@@ -149,7 +149,7 @@ impl FormattedGrid {
 /// the value's exact decimal expansion to be one digit longer than the shortest, so a value whose
 /// expansion has at most 18 significant digits ([`short_exact_decimal`]) is written by Rust's own
 /// formatting.
-pub fn push_shortest(out: &mut Vec<u8>, value: f64) {
+fn push_shortest(out: &mut Vec<u8>, value: f64) {
     if !value.is_finite() || short_exact_decimal(value) {
         write!(out, "{value:?}").expect("writing to memory cannot fail");
         return;

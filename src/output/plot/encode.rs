@@ -246,18 +246,20 @@ pub(super) fn encode_png(
 }
 
 /// The PNG image data of `raster`: its rows packed (RGB, or straight RGBA on a transparent canvas),
-/// each Paeth-filtered against the packed row above (zeros above the first) and deflated by
-/// fdeflate as it is made, so no packed copy of the whole raster is kept — byte for byte what png's
-/// `Writer::write_image_data` writes with `Compression::Fast` and `FilterType::Paeth`, including
-/// its stored blocks where deflating would not shrink the rows.
+/// each Paeth-filtered against the packed row above (zeros above the first; an opaque row straight
+/// from the RGBA rows, [`paeth_filter_opaque`]) and deflated by fdeflate as it is made, so no
+/// packed copy of the whole raster is kept — byte for byte what png's `Writer::write_image_data`
+/// writes with `Compression::Fast` and `Filter::Paeth`, including its stored blocks where
+/// deflating would not shrink the rows.
 fn deflated_rows(raster: &Raster) -> std::io::Result<Vec<u8>> {
     let (width, height) = (raster.size.0 as usize, raster.size.1 as usize);
     let bpp = raster.png_bytes_per_pixel();
     let row_len = width * bpp;
-    let (mut above, mut row) = (vec![0; row_len], vec![0; row_len]);
+    let mut row = vec![0; row_len];
     let mut filtered = vec![PNG_PAETH; row_len + 1];
     let mut compressor = fdeflate::Compressor::new(std::io::Cursor::new(Vec::new()))?;
     if raster.alpha {
+        let mut above = vec![0; row_len];
         for source in raster.rgba.chunks_exact(width * 4) {
             pack_row(source, raster.alpha, &mut row);
             paeth_filter(&row, &above, bpp, &mut filtered[1..]);
@@ -425,7 +427,7 @@ mod tests {
     use crate::spec::look::Theme;
 
     /// The image data as png itself writes it from the packed raster (`Compression::Fast`,
-    /// `FilterType::Paeth`), for comparison with [`deflated_rows`].
+    /// `Filter::Paeth`), for comparison with [`deflated_rows`].
     fn png_image_data(raster: &Raster) -> Vec<u8> {
         let packed: Vec<u8> = raster
             .rgba
