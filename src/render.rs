@@ -8,7 +8,7 @@
 
 use crate::error::{Error, Result};
 use crate::output::stored;
-use crate::output::{Format, Points, encode_all_linted, write};
+use crate::output::{Format, Points, draw, encode_drawn, encoding_cost, write};
 use crate::pipeline::figure::Figure;
 use crate::pipeline::plan::{Outputs, Plan, plan};
 use crate::pipeline::progress::Progress;
@@ -88,7 +88,8 @@ pub struct FigureDetail {
     /// What the drawing chose where the spec left it open, one line each
     /// (`panels[0]: legend of 4 entries inside the plot, clear of the curves, 1 column at 100 % size`).
     pub decisions: Vec<String>,
-    /// Drawing and encoding its drawn formats (wall time on one worker).
+    /// Assembling, drawing and encoding its drawn formats (wall time, summed over the workers
+    /// that ran its encodings).
     pub drawing: std::time::Duration,
 }
 
@@ -315,10 +316,169 @@ struct Encoded<T> {
     detail: Option<FigureDetail>,
 }
 
-/// The pixels of `scene`'s raster: what its drawing costs grows with.
-fn raster_area(scene: &crate::spec::scene::Scene) -> f64 {
-    let (width, height) = scene.canvas.png_size();
-    width * height
+/// Scenes per worker thread in one chunk of [`EncodeScope::encode`]: enough that the dearest
+/// encodings of a chunk can be run first and the cheap ones fill the cores at its end.
+const SCENES_PER_THREAD: usize = 32;
+
+/// What encoding reads: the scenes, their sources and provenance, the evaluated plan, the formats
+/// asked for and the progress to advance.
+struct EncodeScope<'a> {
+    scenes: &'a [crate::spec::scene::Scene],
+    provenance: &'a [Provenance],
+    sources: &'a [Source],
+    plan: &'a Plan,
+    evaluated: &'a [Evaluated],
+    drawn_formats: &'a [Format],
+    table_formats: &'a [Format],
+    progress: &'a Progress,
+}
+
+/// One scene's figures, assembled from the evaluated plan: the drawn one with its drawing (the
+/// SVG, when a format needs it) and what the lint found, and the tabulated one.
+struct Assembled {
+    drawn: Option<(Figure, Option<Vec<u8>>, crate::output::plot::Linted)>,
+    table: Option<Figure>,
+    /// Assembling and drawing it (wall time on one worker).
+    took: std::time::Duration,
+}
+
+impl EncodeScope<'_> {
+    /// Every output of the scenes `range`, each handed to `keep` as soon as it is encoded, as one
+    /// [`Encoded`] (or the scene's first failure) per scene in source order.
+    ///
+    /// Two steps, each in parallel: every scene's figures are assembled and drawn; then every
+    /// (scene, format) encoding is run, the dearest first ([`encoding_cost`]), each on the next
+    /// free worker — the longest rasterizations start early, and the short ones fill the cores
+    /// at the end instead of one large one running alone.
+    fn encode<T: Send>(
+        &self,
+        range: std::ops::Range<usize>,
+        keep: &(dyn Fn(&str, Vec<u8>) -> Result<T> + Sync),
+    ) -> Vec<Result<Encoded<T>>> {
+        let first = range.start;
+        let assembled: Vec<Result<Assembled>> =
+            range.into_par_iter().map(|i| self.assemble(i)).collect();
+        let mut tasks: Vec<(usize, Points, Format, f64)> = Vec::new();
+        for (k, scene) in assembled.iter().enumerate() {
+            let Ok(scene) = scene else { continue };
+            if let Some((figure, drawing, _)) = &scene.drawn {
+                for &format in self.drawn_formats {
+                    let cost = encoding_cost(figure, drawing.as_deref(), format);
+                    tasks.push((k, Points::Drawn, format, cost));
+                }
+            }
+            if let Some(figure) = &scene.table {
+                for &format in self.table_formats {
+                    tasks.push((
+                        k,
+                        Points::Table,
+                        format,
+                        encoding_cost(figure, None, format),
+                    ));
+                }
+            }
+        }
+        // Dearest first; equal costs in source order.
+        tasks.sort_by(|a, b| b.3.total_cmp(&a.3));
+        let done: Vec<(usize, Result<Option<(String, T)>>, std::time::Duration)> = tasks
+            .iter()
+            .enumerate()
+            .par_bridge()
+            .map(|(t, &(k, points, format, _))| {
+                let scene = assembled[k]
+                    .as_ref()
+                    .expect("only assembled scenes have tasks");
+                let started = std::time::Instant::now();
+                let kept = match (points, &scene.drawn, &scene.table) {
+                    (Points::Drawn, Some((figure, drawing, _)), _) => {
+                        encode_drawn(figure, drawing.as_deref(), format)
+                            .and_then(|bytes| self.kept(figure, format, bytes, keep))
+                    }
+                    (Points::Table, _, Some(figure)) => encode_drawn(figure, None, format)
+                        .and_then(|bytes| self.kept(figure, format, bytes, keep)),
+                    _ => unreachable!("a task is made only for a figure assembled"),
+                };
+                self.progress.advance(1);
+                (t, kept, started.elapsed())
+            })
+            .collect();
+        // Per scene, its encodings in format order: drawn, then tabulated.
+        let mut per_scene: Vec<Vec<_>> = (0..assembled.len()).map(|_| Vec::new()).collect();
+        for (t, kept, elapsed) in done {
+            let (k, points, format, _) = tasks[t];
+            per_scene[k].push(((points == Points::Table, format), kept, elapsed));
+        }
+        assembled
+            .into_iter()
+            .zip(per_scene)
+            .enumerate()
+            .map(|(k, (scene, mut encodings))| {
+                let scene = scene?;
+                encodings.sort_by_key(|(order, ..)| *order);
+                let mut encoded = Encoded {
+                    files: Vec::new(),
+                    findings: Vec::new(),
+                    detail: None,
+                };
+                let mut took = scene.took;
+                for ((table, format), kept, elapsed) in encodings {
+                    if !table {
+                        took += elapsed;
+                    }
+                    encoded
+                        .files
+                        .extend(kept?.map(|(name, kept)| (format, name, kept)));
+                }
+                if let Some((figure, _, linted)) = &scene.drawn {
+                    let source = &self.sources[first + k].0;
+                    encoded.findings = linted.findings.iter().map(|f| f.line(source)).collect();
+                    encoded.detail = Some(FigureDetail::of(figure, source, linted, took));
+                }
+                Ok(encoded)
+            })
+            .collect()
+    }
+
+    /// Scene `i`'s figures assembled, and its drawing made when a drawn format needs it.
+    fn assemble(&self, i: usize) -> Result<Assembled> {
+        let started = std::time::Instant::now();
+        let (scene, provenance) = (&self.scenes[i], &self.provenance[i]);
+        let figure = |feeds: &Option<Vec<Vec<Vec<usize>>>>| {
+            feeds
+                .as_ref()
+                .map(|feeds| Figure::assemble(scene, provenance, &feeds[i], self.evaluated))
+        };
+        let drawn = match figure(&self.plan.drawn) {
+            Some(figure) if self.drawn_formats.iter().any(|f| f.from_drawing()) => {
+                let (drawing, linted) = draw(&figure)?;
+                Some((figure, Some(drawing), linted))
+            }
+            Some(figure) => Some((figure, None, Default::default())),
+            None => None,
+        };
+        Ok(Assembled {
+            drawn,
+            table: figure(&self.plan.table),
+            took: started.elapsed(),
+        })
+    }
+
+    /// `bytes` of `figure` in `format`, when there are any, handed to `keep` under the file name
+    /// `<id>.<extension>`, as (file name, what `keep` returned).
+    fn kept<T>(
+        &self,
+        figure: &Figure,
+        format: Format,
+        bytes: Option<Vec<u8>>,
+        keep: &(dyn Fn(&str, Vec<u8>) -> Result<T> + Sync),
+    ) -> Result<Option<(String, T)>> {
+        bytes
+            .map(|bytes| {
+                let name = format!("{}.{}", figure.id, format.extension());
+                keep(&name, bytes).map(|kept| (name, kept))
+            })
+            .transpose()
+    }
 }
 
 /// Every output of spec `sources` (already read) under `options`, each handed to `keep` (its file
@@ -364,62 +524,29 @@ fn encode_sources<T: Send>(
     };
     let (drawn_formats, table_formats) = (formats_of(Points::Drawn), formats_of(Points::Table));
     let stage = std::time::Instant::now();
-    // One task per scene, all its outputs: the scenes with the largest rasters first, so that a
-    // large figure is not left to one core at the end while the other idles.
-    let mut order: Vec<usize> = (0..scenes.len()).collect();
-    order.sort_by(|&a, &b| raster_area(&scenes[b]).total_cmp(&raster_area(&scenes[a])));
-    let encode_scene = |i: usize| -> Result<Encoded<T>> {
-        let (scene, provenance, source) = (&scenes[i], &provenance[i], &sources[i].0);
-        let mut encoded = Encoded {
-            files: Vec::new(),
-            findings: Vec::new(),
-            detail: None,
-        };
-        let mut files = |figure: &Figure, outputs: Vec<(Format, Vec<u8>)>| -> Result<()> {
-            for (format, bytes) in outputs {
-                let name = format!("{}.{}", figure.id, format.extension());
-                let kept = keep(&name, bytes)?;
-                encoded.files.push((format, name, kept));
-            }
-            Ok(())
-        };
-        if let Some(feeds) = &plan.drawn {
-            let figure = Figure::assemble(scene, provenance, &feeds[i], &evaluated);
-            let drawing = std::time::Instant::now();
-            let (outputs, linted) = encode_all_linted(&figure, &drawn_formats)?;
-            progress.advance(drawn_formats.len() as u64);
-            files(&figure, outputs)?;
-            encoded.findings = linted.findings.iter().map(|f| f.line(source)).collect();
-            encoded.detail = Some(FigureDetail::of(
-                &figure,
-                source,
-                &linted,
-                drawing.elapsed(),
-            ));
-        }
-        if let Some(feeds) = &plan.table {
-            let figure = Figure::assemble(scene, provenance, &feeds[i], &evaluated);
-            let (outputs, _) = encode_all_linted(&figure, &table_formats)?;
-            progress.advance(table_formats.len() as u64);
-            files(&figure, outputs)?;
-        }
-        Ok(encoded)
+    let scope = EncodeScope {
+        scenes: &scenes,
+        provenance: &provenance,
+        sources,
+        plan: &plan,
+        evaluated: &evaluated,
+        drawn_formats: &drawn_formats,
+        table_formats: &table_formats,
+        progress: &progress,
     };
-    // The first failure in source order, whichever task met it first.
-    let mut encoded: Vec<(usize, Result<Encoded<T>>)> = order
-        .into_par_iter()
-        .with_max_len(1)
-        .map(|i| (i, encode_scene(i)))
-        .collect();
-    encoded.sort_by_key(|(i, _)| *i);
+    // Scenes a chunk at a time, so that memory holds the drawings of one chunk however many
+    // scenes there are; chunks in source order, so the first failure met is the first in source order.
+    let chunk = SCENES_PER_THREAD * rayon::current_num_threads().max(1);
     let mut outputs = Vec::new();
-    for (_, encoded) in encoded {
-        let encoded = encoded?;
-        stats.warnings.extend(encoded.findings);
-        stats.figures.extend(encoded.detail);
-        for (format, name, bytes) in encoded.files {
-            *stats.produced.entry(format).or_default() += 1;
-            outputs.push((name, bytes));
+    for first in (0..scenes.len()).step_by(chunk) {
+        for encoded in scope.encode(first..(first + chunk).min(scenes.len()), keep) {
+            let encoded = encoded?;
+            stats.warnings.extend(encoded.findings);
+            stats.figures.extend(encoded.detail);
+            for (format, name, bytes) in encoded.files {
+                *stats.produced.entry(format).or_default() += 1;
+                outputs.push((name, bytes));
+            }
         }
     }
     outputs.sort_by(|a, b| a.0.cmp(&b.0));
