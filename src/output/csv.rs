@@ -170,31 +170,38 @@ fn push_shortest(out: &mut Vec<u8>, value: f64) {
     };
     let (mantissa, exponent) = match text.iter().position(|&b| b == b'e') {
         Some(e) => {
-            let exponent = std::str::from_utf8(&text[e + 1..])
-                .ok()
-                .and_then(|t| t.parse::<i32>().ok())
-                .expect("zmij writes a decimal exponent");
-            (&text[..e], exponent)
+            let (sign, digits) = match &text[e + 1..] {
+                [b'-', digits @ ..] => (-1, digits),
+                [b'+', digits @ ..] => (1, digits),
+                digits => (1, digits),
+            };
+            let magnitude = digits
+                .iter()
+                .fold(0i32, |n, &d| 10 * n + i32::from(d - b'0'));
+            (&text[..e], sign * magnitude)
         }
         None => (text, 0),
     };
-    // The significant digits, and the power of ten of the first.
+    // The significant digits (at most 17, of zmij's shortest), and the power of ten of the first.
     let whole = mantissa
         .iter()
         .position(|&b| b == b'.')
         .unwrap_or(mantissa.len());
     let mut power = whole as i32 - 1 + exponent;
-    let mut digits: Vec<u8> = mantissa
-        .iter()
-        .copied()
-        .filter(u8::is_ascii_digit)
-        .collect();
-    let leading = digits.iter().take_while(|&&d| d == b'0').count();
-    digits.drain(..leading);
-    power -= leading as i32;
-    while digits.len() > 1 && digits.last() == Some(&b'0') {
-        digits.pop();
+    let mut digits = [0u8; 24];
+    let mut count = 0;
+    for &b in mantissa.iter().filter(|b| b.is_ascii_digit()) {
+        if count == 0 && b == b'0' {
+            power -= 1;
+        } else {
+            digits[count] = b;
+            count += 1;
+        }
     }
+    while count > 1 && digits[count - 1] == b'0' {
+        count -= 1;
+    }
+    let digits = &digits[..count.max(1)];
     if negative {
         out.push(b'-');
     }
@@ -202,7 +209,7 @@ fn push_shortest(out: &mut Vec<u8>, value: f64) {
         if power < 0 {
             out.extend_from_slice(b"0.");
             out.extend(std::iter::repeat_n(b'0', (-power - 1) as usize));
-            out.extend_from_slice(&digits);
+            out.extend_from_slice(digits);
         } else {
             let whole = power as usize + 1;
             out.extend_from_slice(&digits[..whole.min(digits.len())]);
@@ -222,7 +229,23 @@ fn push_shortest(out: &mut Vec<u8>, value: f64) {
             out.push(b'.');
             out.extend_from_slice(&digits[1..]);
         }
-        write!(out, "e{power}").expect("writing to memory cannot fail");
+        out.push(b'e');
+        if power < 0 {
+            out.push(b'-');
+        }
+        let power = power.unsigned_abs();
+        let mut decimal = [0u8; 3];
+        let start = match power {
+            0..=9 => 2,
+            10..=99 => 1,
+            _ => 0,
+        };
+        let mut rest = power;
+        for place in decimal.iter_mut().rev() {
+            *place = b'0' + (rest % 10) as u8;
+            rest /= 10;
+        }
+        out.extend_from_slice(&decimal[start..]);
     }
 }
 
