@@ -117,35 +117,37 @@ pub struct Loaded {
 /// JSON, invalid spec, a canvas override out of range, an id already used by an earlier source)
 /// are kept with it. Nothing is computed and no data file is read.
 pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Vec<Loaded> {
-    let mut loaded: Vec<Loaded> = Vec::with_capacity(sources.len());
-    for (name, text, data) in sources {
-        let invalid = |list| Invalid {
-            problems: list,
-            pending: Vec::new(),
-        };
-        let scene = parse_json(text, name)
-            .map_err(|p| invalid(p.list))
-            .and_then(|node| scene::parse(&node, data.as_ref()))
-            .and_then(|s| apply_override(s, canvas).map_err(|p| invalid(vec![p])))
-            .and_then(|scene| {
-                let first = loaded
-                    .iter()
-                    .find(|l| l.scene.as_ref().is_ok_and(|other| other.id == scene.id));
-                match first {
-                    Some(first) => Err(invalid(vec![Problem::new(
-                        "id",
-                        format!(
-                            "duplicate id (got \"{}\", already used by {})",
-                            scene.id, first.source
-                        ),
-                    )])),
-                    None => Ok(scene),
-                }
-            });
-        loaded.push(Loaded {
+    use rayon::prelude::*;
+    let invalid = |list| Invalid {
+        problems: list,
+        pending: Vec::new(),
+    };
+    let mut loaded: Vec<Loaded> = sources
+        .par_iter()
+        .map(|(name, text, data)| Loaded {
             source: name.clone(),
-            scene,
-        });
+            scene: parse_json(text, name)
+                .map_err(|p| invalid(p.list))
+                .and_then(|node| scene::parse(&node, data.as_ref()))
+                .and_then(|s| apply_override(s, canvas).map_err(|p| invalid(vec![p]))),
+        })
+        .collect();
+    // The first source of each id, in source order; a later one is refused.
+    let mut first: std::collections::HashMap<String, String> = std::collections::HashMap::new();
+    for load in &mut loaded {
+        let Ok(scene) = &load.scene else { continue };
+        if let Some(earlier) = first.get(&scene.id) {
+            let problem = Problem::new(
+                "id",
+                format!(
+                    "duplicate id (got \"{}\", already used by {earlier})",
+                    scene.id
+                ),
+            );
+            load.scene = Err(invalid(vec![problem]));
+        } else {
+            first.insert(scene.id.clone(), load.source.clone());
+        }
     }
     loaded
 }
