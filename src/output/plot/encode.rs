@@ -479,17 +479,21 @@ mod tests {
         out[41..41 + length].to_vec()
     }
 
-    /// Rows packed, filtered and deflated one at a time give png's bytes: opaque and transparent,
-    /// one to many pixels wide, smooth rows (deflated) and noise (kept in stored blocks).
-    #[test]
-    fn rows_deflated_one_at_a_time_are_what_png_writes() {
-        let mut state = 0x2545_F491_4F6C_DD1Du64;
-        let mut noise = move || {
+    /// Bytes of xorshift64 noise from `state` (not zero).
+    fn noise(mut state: u64) -> impl FnMut() -> u8 {
+        move || {
             state ^= state << 13;
             state ^= state >> 7;
             state ^= state << 17;
             (state >> 32) as u8
-        };
+        }
+    }
+
+    /// Rows packed, filtered and deflated one at a time give png's bytes: opaque and transparent,
+    /// one to many pixels wide, smooth rows (deflated) and noise (kept in stored blocks).
+    #[test]
+    fn rows_deflated_one_at_a_time_are_what_png_writes() {
+        let mut noise = noise(0x2545_F491_4F6C_DD1D);
         for (width, height) in [
             (1, 1),
             (1, 5),
@@ -539,13 +543,7 @@ mod tests {
     /// from 1 to 70 pixels.
     #[test]
     fn the_opaque_filter_is_the_same_on_every_path() {
-        let mut state = 0x9E37_79B9_7F4A_7C15u64;
-        let mut noise = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 32) as u8
-        };
+        let mut noise = noise(0x9E37_79B9_7F4A_7C15);
         for width in 1..=70 {
             let (source, above): (Vec<u8>, Vec<u8>) = (0..4 * width)
                 .map(|i| {
