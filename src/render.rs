@@ -10,7 +10,7 @@ use crate::error::{Error, Result};
 use crate::output::stored;
 use crate::output::{Format, Points, draw, encode_drawn, encoding_cost, write};
 use crate::pipeline::figure::Figure;
-use crate::pipeline::plan::{Outputs, Plan, plan};
+use crate::pipeline::plan::{Feeds, Outputs, Plan, plan};
 use crate::pipeline::progress::Progress;
 use crate::pipeline::provenance::Provenance;
 use crate::pipeline::resolve;
@@ -342,6 +342,34 @@ struct Assembled {
     took: std::time::Duration,
 }
 
+impl Assembled {
+    /// The figure `points` names, and its drawing when one was made; `None` when the plan has no
+    /// such figure.
+    fn figure(&self, points: Points) -> Option<(&Figure, Option<&[u8]>)> {
+        match points {
+            Points::Drawn => self
+                .drawn
+                .as_ref()
+                .map(|(figure, drawing, _)| (figure, drawing.as_deref())),
+            Points::Table => self.table.as_ref().map(|figure| (figure, None)),
+        }
+    }
+}
+
+/// One encoding of a chunk: the scene at index `scene` of the chunk in `format`, from the figure
+/// `points` names, with its estimated cost ([`encoding_cost`]).
+#[derive(Debug, Clone, Copy)]
+struct Task {
+    scene: usize,
+    points: Points,
+    format: Format,
+    cost: f64,
+}
+
+/// What one encoding gave: its file name and what `keep` returned, when the figure has an output
+/// in the format.
+type Kept<T> = Result<Option<(String, T)>>;
+
 impl EncodeScope<'_> {
     /// Every output of the scenes `range`, each handed to `keep` as soon as it is encoded, as one
     /// [`Encoded`] (or the scene's first failure) per scene in source order.
@@ -358,46 +386,38 @@ impl EncodeScope<'_> {
         let first = range.start;
         let assembled: Vec<Result<Assembled>> =
             range.into_par_iter().map(|i| self.assemble(i)).collect();
-        let mut tasks: Vec<(usize, Points, Format, f64)> = Vec::new();
+        let mut tasks = Vec::new();
         for (k, scene) in assembled.iter().enumerate() {
             let Ok(scene) = scene else { continue };
-            if let Some((figure, drawing, _)) = &scene.drawn {
-                for &format in self.drawn_formats {
-                    let cost = encoding_cost(figure, drawing.as_deref(), format);
-                    tasks.push((k, Points::Drawn, format, cost));
-                }
-            }
-            if let Some(figure) = &scene.table {
-                for &format in self.table_formats {
-                    tasks.push((
-                        k,
-                        Points::Table,
+            for (points, formats) in [
+                (Points::Drawn, self.drawn_formats),
+                (Points::Table, self.table_formats),
+            ] {
+                if let Some((figure, drawing)) = scene.figure(points) {
+                    tasks.extend(formats.iter().map(|&format| Task {
+                        scene: k,
+                        points,
                         format,
-                        encoding_cost(figure, None, format),
-                    ));
+                        cost: encoding_cost(figure, drawing, format),
+                    }));
                 }
             }
         }
         // Dearest first; equal costs in source order.
-        tasks.sort_by(|a, b| b.3.total_cmp(&a.3));
-        let done: Vec<(usize, Result<Option<(String, T)>>, std::time::Duration)> = tasks
+        tasks.sort_by(|a, b| b.cost.total_cmp(&a.cost));
+        let done: Vec<(usize, Kept<T>, std::time::Duration)> = tasks
             .iter()
             .enumerate()
             .par_bridge()
-            .map(|(t, &(k, points, format, _))| {
-                let scene = assembled[k]
+            .map(|(t, task)| {
+                let (figure, drawing) = assembled[task.scene]
                     .as_ref()
-                    .expect("only assembled scenes have tasks");
+                    .ok()
+                    .and_then(|scene| scene.figure(task.points))
+                    .expect("a task is made only for a figure assembled");
                 let started = std::time::Instant::now();
-                let kept = match (points, &scene.drawn, &scene.table) {
-                    (Points::Drawn, Some((figure, drawing, _)), _) => {
-                        encode_drawn(figure, drawing.as_deref(), format)
-                            .and_then(|bytes| self.kept(figure, format, bytes, keep))
-                    }
-                    (Points::Table, _, Some(figure)) => encode_drawn(figure, None, format)
-                        .and_then(|bytes| self.kept(figure, format, bytes, keep)),
-                    _ => unreachable!("a task is made only for a figure assembled"),
-                };
+                let kept = encode_drawn(figure, drawing, task.format)
+                    .and_then(|bytes| self.kept(figure, task.format, bytes, keep));
                 self.progress.advance(1);
                 (t, kept, started.elapsed())
             })
@@ -405,8 +425,13 @@ impl EncodeScope<'_> {
         // Per scene, its encodings in format order: drawn, then tabulated.
         let mut per_scene: Vec<Vec<_>> = (0..assembled.len()).map(|_| Vec::new()).collect();
         for (t, kept, elapsed) in done {
-            let (k, points, format, _) = tasks[t];
-            per_scene[k].push(((points == Points::Table, format), kept, elapsed));
+            let Task {
+                scene,
+                points,
+                format,
+                ..
+            } = tasks[t];
+            per_scene[scene].push(((points == Points::Table, format), kept, elapsed));
         }
         assembled
             .into_iter()
@@ -443,7 +468,7 @@ impl EncodeScope<'_> {
     fn assemble(&self, i: usize) -> Result<Assembled> {
         let started = std::time::Instant::now();
         let (scene, provenance) = (&self.scenes[i], &self.provenance[i]);
-        let figure = |feeds: &Option<Vec<Vec<Vec<usize>>>>| {
+        let figure = |feeds: &Option<Feeds>| {
             feeds
                 .as_ref()
                 .map(|feeds| Figure::assemble(scene, provenance, &feeds[i], self.evaluated))

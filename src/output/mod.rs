@@ -57,7 +57,10 @@ impl Format {
 
     /// Whether the format is converted from the figure's SVG drawing ([`draw`]): SVG, PNG, PDF.
     pub fn from_drawing(self) -> bool {
-        matches!(self, Format::Svg | Format::Png | Format::Pdf)
+        match self {
+            Format::Svg | Format::Png | Format::Pdf => true,
+            Format::Csv | Format::Html => false,
+        }
     }
 
     /// Which figure the format is encoded from: the CSV tabulates; the drawings, and the page
@@ -89,39 +92,15 @@ impl Format {
     }
 }
 
-/// The output of `figure` in `format` (see [`encode_all`]); `None` when the figure has none in
-/// it (a page of a figure without sliders).
+/// The output of `figure` in `format`, its SVG drawn first for SVG, PNG and PDF ([`draw`],
+/// [`encode_drawn`]); `None` when the figure has none in it (a page of a figure without sliders).
 pub fn encode(figure: &Figure, format: Format) -> Result<Option<Vec<u8>>> {
-    Ok(encode_all(figure, &[format])?.pop().map(|(_, bytes)| bytes))
-}
-
-/// The outputs of a figure in each of `formats`, as (format, bytes) in order; a format with no
-/// output for this figure (a page of a figure without sliders) is left out. The PNG and the PDF
-/// are converted from the figure's SVG, which is drawn once however many of the three are asked
-/// for.
-pub fn encode_all(figure: &Figure, formats: &[Format]) -> Result<Vec<(Format, Vec<u8>)>> {
-    Ok(encode_all_linted(figure, formats)?.0)
-}
-
-/// [`encode_all`], with what the figure lint finds in the drawing and what the drawing chose
-/// ([`plot::Linted`]) when one of `formats` draws it (SVG, PNG or PDF; nothing otherwise), from
-/// the same drawing.
-pub fn encode_all_linted(
-    figure: &Figure,
-    formats: &[Format],
-) -> Result<(Vec<(Format, Vec<u8>)>, plot::Linted)> {
-    let (drawing, linted) = if formats.iter().any(|f| f.from_drawing()) {
-        let (drawing, linted) = draw(figure)?;
-        (Some(drawing), linted)
+    let drawing = if format.from_drawing() {
+        Some(draw(figure)?.0)
     } else {
-        (None, plot::Linted::default())
+        None
     };
-    let mut encoded = Vec::with_capacity(formats.len());
-    for &format in formats {
-        let bytes = encode_drawn(figure, drawing.as_deref(), format)?;
-        encoded.extend(bytes.map(|b| (format, b)));
-    }
-    Ok((encoded, linted))
+    encode_drawn(figure, drawing.as_deref(), format)
 }
 
 /// The SVG drawing of `figure` that its SVG, PNG and PDF are converted from, with what the
