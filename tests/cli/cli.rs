@@ -356,6 +356,33 @@ fn render_output_is_identical_across_runs_and_thread_counts() {
     assert_eq!(outputs[0], outputs[2]);
 }
 
+/// On one thread a render of the catalogue runs in two chunks of scenes (32 a chunk per worker)
+/// with every encoding scheduled by its cost: its SVGs and CSVs are still the committed ones, byte
+/// for byte.
+#[test]
+fn the_catalogue_on_one_thread_in_chunks_gives_the_committed_files() {
+    let out_dir = scratch("render-one-thread").join("plots");
+    let status = Command::new(env!("CARGO_BIN_EXE_ndfplot"))
+        .args(["render", "-q", "--format", "svg,csv", "-o"])
+        .arg(&out_dir)
+        .env("RAYON_NUM_THREADS", "1")
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let files = files_in(&out_dir);
+    assert!(
+        files.len() / 2 > 32,
+        "more scenes than one chunk holds: {files:?}"
+    );
+    for name in files {
+        let committed = std::fs::read(root().join("plots").join(&name)).unwrap();
+        assert!(
+            std::fs::read(out_dir.join(&name)).unwrap() == committed,
+            "{name} differs from plots/{name}"
+        );
+    }
+}
+
 #[test]
 fn render_formats_and_canvas_flags() {
     let dir = scratch("render-formats");
