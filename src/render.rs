@@ -126,7 +126,6 @@ impl FigureDetail {
         linted: &crate::output::plot::Linted,
         drawing: std::time::Duration,
     ) -> Self {
-        let series = figure.panels.iter().flat_map(|p| &p.series);
         FigureDetail {
             source: source.to_string(),
             id: figure.id.clone(),
@@ -136,8 +135,8 @@ impl FigureDetail {
                 .print
                 .map(|p| format!("{:.2} × {:.2} {}", p.width, p.height, p.unit.symbol())),
             panels: figure.panels.len(),
-            series: series.clone().count(),
-            points: series.map(|s| s.points.len()).sum(),
+            series: figure.panels.iter().map(|p| p.series.len()).sum(),
+            points: figure.point_count(),
             warnings: linted.findings.len(),
             decisions: linted
                 .decisions

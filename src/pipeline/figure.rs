@@ -76,6 +76,15 @@ pub struct Page {
 }
 
 impl Figure {
+    /// The points of every series of every panel, counted.
+    pub fn point_count(&self) -> usize {
+        self.panels
+            .iter()
+            .flat_map(|p| &p.series)
+            .map(|s| s.points.len())
+            .sum()
+    }
+
     /// Builds the figure of `scene`, drawn from the spec `provenance` records, from its evaluated jobs
     /// (`feeds[panel][series]` → job index).
     pub fn assemble(

@@ -100,7 +100,7 @@ pub(super) fn figure(panels: Vec<Panel>) -> Figure {
 }
 
 /// A log panel in radians (a dashed series) and a linear panel in degrees (a thick one).
-pub(super) fn sample() -> Figure {
+pub(crate) fn sample() -> Figure {
     let mut log = panel(
         XUnit::Radians,
         Scale::Log,

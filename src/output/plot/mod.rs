@@ -25,7 +25,7 @@ mod cartesian;
 mod clip;
 mod encode;
 #[cfg(test)]
-mod fixtures;
+pub(crate) mod fixtures;
 mod heatmap;
 mod legend;
 mod lint;
