@@ -12,6 +12,8 @@ use crate::spec::datafile::DataScope;
 use crate::spec::input::{parse_json, read_file};
 use crate::spec::look::Theme;
 use crate::spec::scene::{self, Invalid, Scene, Spec};
+use rayon::prelude::*;
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -117,7 +119,6 @@ pub struct Loaded {
 /// JSON, invalid spec, a canvas override out of range, an id already used by an earlier source)
 /// are kept with it. Nothing is computed and no data file is read.
 pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Vec<Loaded> {
-    use rayon::prelude::*;
     let invalid = |list| Invalid {
         problems: list,
         pending: Vec::new(),
@@ -133,7 +134,7 @@ pub fn load_scenes(sources: &[Source], canvas: CanvasOverride) -> Vec<Loaded> {
         })
         .collect();
     // The first source of each id, in source order; a later one is refused.
-    let mut first: std::collections::HashMap<String, String> = std::collections::HashMap::new();
+    let mut first: HashMap<String, String> = HashMap::new();
     for load in &mut loaded {
         let Ok(scene) = &load.scene else { continue };
         if let Some(earlier) = first.get(&scene.id) {

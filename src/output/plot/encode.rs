@@ -261,7 +261,7 @@ fn deflated_rows(raster: &Raster) -> std::io::Result<Vec<u8>> {
     if raster.alpha {
         let mut above = vec![0; row_len];
         for source in raster.rgba.chunks_exact(width * 4) {
-            pack_row(source, raster.alpha, &mut row);
+            pack_row(source, true, &mut row);
             paeth_filter(&row, &above, bpp, &mut filtered[1..]);
             compressor.write_data(&filtered)?;
             std::mem::swap(&mut above, &mut row);
