@@ -216,11 +216,10 @@ pub(super) fn rasterize<'s>(
 /// Backs `bytes` with memory before the rasterizer first writes it: asks for transparent huge
 /// pages where the system offers them on request (`MADV_HUGEPAGE`: one 2 MiB page where there
 /// would be 512 of 4 KiB), then makes every page present and writable in one call
-/// (`MADV_POPULATE_WRITE`) instead of one page fault at each page's first write. On the 2-core
-/// test machine the 17 figures the peer draws took 333 → 324 ms of CPU with the pages made
-/// present, 324 → 316 with huge pages as well (docs/performance.md). Both are hints: where a call is not
-/// available (kernels before 5.14, huge pages off, other systems) the pages fault in as before,
-/// and the bytes are the same either way.
+/// (`MADV_POPULATE_WRITE`) instead of one page fault at each page's first write (measured in
+/// docs/performance.md, "The raster's memory made present at once"). Both are hints: where a
+/// call is not available (kernels before 5.14, huge pages off, other systems) the pages fault in
+/// as before, and the bytes are the same either way.
 fn back_with_memory(bytes: &mut [u8]) {
     #[cfg(target_os = "linux")]
     {
