@@ -8,8 +8,9 @@
 
 use crate::common::{number, root};
 use ndfplot::model::albedo::{
-    AVERAGE_E_TOL, AVERAGE_TOL, Microfacet, RoughnessMap, albedo_table, average_albedo,
-    average_albedo_table, dfg_tables, split_sum_tables, surface_of, turquin_factor,
+    AVERAGE_E_TOL, AVERAGE_TOL, FresnelFactor, FresnelTable, Microfacet, RoughnessMap,
+    albedo_table, average_albedo, average_albedo_table, dfg_tables, split_sum_tables, surface_of,
+    turquin_factor,
 };
 use ndfplot::model::fresnel::basis::coeffs;
 use ndfplot::model::fresnel::exact::{Incidence, Index, reflectance};
@@ -383,6 +384,8 @@ const FAMILY_LOBES: [(Family, &[f64]); 15] = [
 fn albedo_of_every_family_stays_within_zero_and_one() {
     let curves = FAMILY_LOBES;
     let glass = |theta: f64| reflectance(Incidence::from_cos(theta.cos()), Index::new(1.5, 0.0));
+    let glass_table = FresnelTable::of(&glass);
+    let glass = FresnelFactor::new(&glass, glass_table.as_ref());
     curves.par_iter().for_each(|(family, params)| {
         let ndf = family.build(params).unwrap();
         for g2 in [G2Model::HeightCorrelated, G2Model::Separable] {
@@ -400,7 +403,7 @@ fn albedo_of_every_family_stays_within_zero_and_one() {
                     "{family:?} {params:?} {g2} E({mu}) = {with_table} with the Λ table, {e} without"
                 );
                 if g2 == G2Model::HeightCorrelated && mu != 0.02 {
-                    let e_glass = surface.albedo(mu, Some(&glass)).unwrap();
+                    let e_glass = surface.albedo(mu, Some(glass)).unwrap();
                     assert!(
                         (-ALBEDO_TOL..=e + ALBEDO_TOL).contains(&e_glass),
                         "{family:?} {params:?} E_F({mu}) = {e_glass} above E = {e}"
@@ -445,7 +448,10 @@ fn albedo_tables_follow_the_grid_convention_and_split_sum_is_linear() {
             n_r,
             RoughnessMap::Squared,
             |alpha| surface(alpha).map(|s| s.with_tolerance(ALBEDO_TABULATED_TOL)),
-            Some(&reconstructed),
+            Some(FresnelFactor::new(
+                &reconstructed,
+                FresnelTable::of(&reconstructed).as_ref(),
+            )),
             None,
         )
         .unwrap();
@@ -460,7 +466,17 @@ fn albedo_tables_follow_the_grid_convention_and_split_sum_is_linear() {
     // The exact Fresnel stays within [0, 1], so its albedo does too.
     let gold = Index::new(0.29, 2.86);
     let exact = move |theta_d: f64| reflectance(Incidence::from_cos(theta_d.cos()), gold);
-    let e_gold = albedo_table(3, 3, RoughnessMap::Linear, surface, Some(&exact), None).unwrap();
+    let exact_table = FresnelTable::of(&exact);
+    let exact_factor = FresnelFactor::new(&exact, exact_table.as_ref());
+    let e_gold = albedo_table(
+        3,
+        3,
+        RoughnessMap::Linear,
+        surface,
+        Some(exact_factor),
+        None,
+    )
+    .unwrap();
     assert!(e_gold.values.iter().all(|e| (0.0..=1.0).contains(e)));
     let averages = average_albedo_table(3, RoughnessMap::Linear, surface, None, None).unwrap();
     assert_eq!(averages[0], 1.0);

@@ -261,8 +261,10 @@ impl Against {
                 .map(|ndf| albedo::surface_of(ndf, layout.g2))
         };
         let evaluate = fresnel.map(|curve| move |theta: f64| curve.eval(theta));
-        let fresnel_fn: albedo::Fresnel =
-            evaluate.as_ref().map(|f| f as &(dyn Fn(f64) -> f64 + Sync));
+        let fresnel_table = evaluate.as_ref().and_then(|f| albedo::FresnelTable::of(f));
+        let fresnel_fn: albedo::Fresnel = evaluate
+            .as_ref()
+            .map(|f| albedo::FresnelFactor::new(f, fresnel_table.as_ref()));
         let cells = compare(
             &self.values,
             &grid,

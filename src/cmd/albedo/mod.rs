@@ -398,7 +398,10 @@ impl Request {
             .fresnel
             .as_ref()
             .map(|curve| move |theta: f64| curve.eval(theta));
-        let fresnel: albedo::Fresnel = evaluate.as_ref().map(|f| f as &(dyn Fn(f64) -> f64 + Sync));
+        let fresnel_table = evaluate.as_ref().and_then(|f| albedo::FresnelTable::of(f));
+        let fresnel: albedo::Fresnel = evaluate
+            .as_ref()
+            .map(|f| albedo::FresnelFactor::new(f, fresnel_table.as_ref()));
         let map = self.surface.map;
         let failed = |e: QuadError| {
             Error::Numerics(format!(
@@ -450,7 +453,7 @@ impl Request {
                 let f_avg = match (&self.fresnel, fresnel) {
                     (Some(curve), Some(f)) => Some(match engine_fresnel_average(curve) {
                         Some(f_avg) => f_avg,
-                        None => average_fresnel(f).map_err(failed)?,
+                        None => average_fresnel(|theta| f.at(theta)).map_err(failed)?,
                     }),
                     _ => None,
                 };

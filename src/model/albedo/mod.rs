@@ -123,11 +123,51 @@ use crate::model::names::named;
 pub use crate::model::ndf::Density;
 use crate::model::ndf::{Distribution, Family, Ndf, Phong, ZeroLimit};
 
-/// A Fresnel factor as a function of θd, the angle between the view ωo and the half-vector h, in
-/// [0, π/2]; `None` is F ≡ 1. It must be ≥ 0 wherever the integrals are to converge to a relative
-/// accuracy (signed weights, such as the basis functions b₂ and b₃, go through
-/// [`split_sum_tables`], which shifts them).
-pub type Fresnel<'a> = Option<&'a (dyn Fn(f64) -> f64 + Sync)>;
+/// The Fresnel factor inside an albedo; `None` is F ≡ 1.
+pub type Fresnel<'a> = Option<FresnelFactor<'a>>;
+
+/// A Fresnel factor F(θd) inside an albedo, θd ∈ [0, π/2] the angle between the view ωo and the
+/// half-vector h: the curve, and its table in c = cos θd ([`FresnelTable`]), which the fixed rules
+/// evaluate at their inner nodes instead of the curve. F must be ≥ 0 wherever the integrals are to
+/// converge to a relative accuracy (signed weights, such as the basis functions b₂ and b₃, go
+/// through [`split_sum_tables`], which shifts them).
+#[derive(Clone, Copy)]
+pub struct FresnelFactor<'a> {
+    curve: &'a (dyn Fn(f64) -> f64 + Sync),
+    table: Option<&'a FresnelTable>,
+}
+
+impl<'a> FresnelFactor<'a> {
+    /// The factor `curve` with `table`, which must be [`FresnelTable::of`]`(curve)`: built once and
+    /// shared by every albedo with this factor (`None` where it does not converge: the curve is then
+    /// evaluated node by node).
+    pub fn new(
+        curve: &'a (dyn Fn(f64) -> f64 + Sync),
+        table: Option<&'a FresnelTable>,
+    ) -> FresnelFactor<'a> {
+        FresnelFactor { curve, table }
+    }
+
+    /// F(θd) by the curve itself.
+    pub fn at(&self, theta_d: f64) -> f64 {
+        (self.curve)(theta_d)
+    }
+}
+
+/// A smooth Fresnel factor tabulated in c = cos θd on [0, 1]: a [`Piecewise`] Chebyshev
+/// interpolant of F(arccos c) within [`FRESNEL_TABLE_TOL`] (a few tens of values of F, against one
+/// per inner node of every albedo), for [`FresnelFactor`].
+#[derive(Debug, Clone)]
+pub struct FresnelTable(Piecewise);
+
+impl FresnelTable {
+    /// The table of `curve`, F(θd); `None` where F(arccos c) is not smooth enough for the
+    /// interpolant to converge, or not finite.
+    pub fn of(curve: &dyn Fn(f64) -> f64) -> Option<FresnelTable> {
+        Piecewise::build(|c| curve(theta_d(c)), 0.0, 1.0, |_, _| FRESNEL_TABLE_TOL)
+            .map(FresnelTable)
+    }
+}
 
 /// The smooth surrogate ([`Smoothed`]) of a Fresnel curve tabulated on the basis grid and
 /// interpolated linearly in cos θ (a Belcour–Bati–Barla reconstruction or basis function), for
@@ -267,7 +307,7 @@ where
         } else {
             let linear = |theta_d: f64| weight.linear_at_cos(theta_d.cos());
             let tolerance = self.tolerance.max(ALBEDO_TABULATED_TOL);
-            Oblique::new(self, mu_o).adaptive(Some(&linear), tolerance)
+            Oblique::new(self, mu_o).adaptive(Some(FresnelFactor::new(&linear, None)), tolerance)
         }
     }
 
@@ -324,20 +364,14 @@ where
             Weight::Curve(fresnel) => fresnel,
             Weight::Tabulated(table) => {
                 surrogate = move |theta_d: f64| table.at(theta_d);
-                Some(&surrogate)
+                Some(FresnelFactor::new(&surrogate, None))
             }
         };
         let fixed = if mu_o == 1.0 {
             escalate(tolerance, |rules| self.normal_fixed(fresnel, &rules.outer))
         } else {
             let oblique = Oblique::new(self, mu_o);
-            let table = match weight {
-                Weight::Curve(Some(f)) => {
-                    Piecewise::build(|c| f(theta_d(c)), 0.0, 1.0, |_, _| FRESNEL_TABLE_TOL)
-                }
-                _ => None,
-            };
-            match oblique.fixed(&NodeFresnel::new(weight, table.as_ref()), tolerance) {
+            match oblique.fixed(&NodeFresnel::new(weight), tolerance) {
                 Some(value) => return Ok(value),
                 None => return oblique.adaptive(fresnel, tolerance),
             }
@@ -396,7 +430,7 @@ where
         let g2 = self
             .g2
             .g2(lambda_o, self.lambda.at_cos(cos_double(sin, cos)));
-        let f = fresnel.map_or(1.0, |f| f(theta_h));
+        let f = fresnel.map_or(1.0, |f| f.at(theta_h));
         self.ndf.at(theta_h) * g2 * f * cos * sin * jacobian
     }
 
@@ -519,7 +553,7 @@ where
     /// The inner integrand at u = φ_end − φ of `slice`: weight(Λ(θi)) F(θd) ⟨ωo, h⟩.
     fn inner(&self, slice: &Slice, u: f64, fresnel: Fresnel) -> f64 {
         let point = slice.at(u);
-        let f = fresnel.map_or(1.0, |f| f(theta_d(point.dot)));
+        let f = fresnel.map_or(1.0, |f| f.at(theta_d(point.dot)));
         self.weight(self.surface.lambda.at_cos(point.cos_i.clamp(0.0, 1.0))) * f * point.dot
     }
 
@@ -1049,7 +1083,7 @@ impl<D: Density, L: Lambda> Block for InnerNodes<'_, '_, '_, D, L> {
         }
         if let NodeFresnel::Table(table) = self.fresnel {
             let mut f = [0.0; MAX_NODES];
-            table.eval_many(&self.dot[..n], &mut f[..n]);
+            table.0.eval_many(&self.dot[..n], &mut f[..n]);
             for k in 0..n {
                 self.value[k] *= f[k];
             }
@@ -1094,28 +1128,29 @@ impl Block for CellsFactor<'_> {
 const ROUGH_WIDTH: f64 = 1.0;
 
 /// The Fresnel factor at the fixed rules' inner nodes: none (F ≡ 1); a smooth F(arccos c)
-/// tabulated in c = ⟨ωo, h⟩ = cos θd (a [`Piecewise`] Chebyshev interpolant within
-/// [`FRESNEL_TABLE_TOL`], built once per value: a few tens of values of F against one per node);
-/// the curve itself where its table does not converge (F not smooth enough in cos θd); or the
+/// by its table in c = ⟨ωo, h⟩ = cos θd ([`FresnelTable`]); the curve itself where the table does
+/// not converge (F not smooth enough in cos θd); or the
 /// smooth surrogate of a weight tabulated on the basis grid, cubic cell by cell in c
 /// ([`Smoothed`]), which no interpolant of a few pieces follows. A table and the cells are
 /// evaluated over a whole inner rule in vector lanes ([`InnerNodes`]), the curve node by node.
 enum NodeFresnel<'a> {
     One,
-    Table(&'a Piecewise),
+    Table(&'a FresnelTable),
     Curve(&'a (dyn Fn(f64) -> f64 + Sync)),
     Cells(&'a Smoothed),
 }
 
 impl<'a> NodeFresnel<'a> {
-    /// The nodes' factor for `weight`: none for F ≡ 1, `table` (a smooth curve's, where it
-    /// converged) or else the curve, and the cells of a tabulated weight.
-    fn new(weight: Weight<'a>, table: Option<&'a Piecewise>) -> NodeFresnel<'a> {
-        match (weight, table) {
-            (Weight::Curve(None), _) => NodeFresnel::One,
-            (Weight::Curve(Some(_)), Some(table)) => NodeFresnel::Table(table),
-            (Weight::Curve(Some(curve)), None) => NodeFresnel::Curve(curve),
-            (Weight::Tabulated(cells), _) => NodeFresnel::Cells(cells),
+    /// The nodes' factor for `weight`: none for F ≡ 1, a curve's table where it converged or else
+    /// the curve, and the cells of a tabulated weight.
+    fn new(weight: Weight<'a>) -> NodeFresnel<'a> {
+        match weight {
+            Weight::Curve(None) => NodeFresnel::One,
+            Weight::Curve(Some(FresnelFactor {
+                table: Some(table), ..
+            })) => NodeFresnel::Table(table),
+            Weight::Curve(Some(FresnelFactor { curve, .. })) => NodeFresnel::Curve(curve),
+            Weight::Tabulated(cells) => NodeFresnel::Cells(cells),
         }
     }
 
@@ -1914,7 +1949,7 @@ impl Weight<'_> {
     {
         match (self, surface) {
             (Weight::Curve(fresnel), Some(surface)) => surface.albedo(mu_o, fresnel),
-            (Weight::Curve(fresnel), None) => Ok(fresnel.map_or(1.0, |f| f(mu_o.acos()))),
+            (Weight::Curve(fresnel), None) => Ok(fresnel.map_or(1.0, |f| f.at(mu_o.acos()))),
             (Weight::Tabulated(table), Some(surface)) => surface.albedo_tabulated(mu_o, table),
             (Weight::Tabulated(table), None) => Ok(table.linear_at_cos(mu_o)),
         }
@@ -1998,7 +2033,7 @@ where
             let value = match surface(map.alpha(r)) {
                 Some(surface) => average_albedo(&surface, fresnel)?,
                 None => match fresnel {
-                    Some(f) => average_fresnel(f)?,
+                    Some(f) => average_fresnel(|theta| f.at(theta))?,
                     None => 1.0,
                 },
             };
@@ -2080,14 +2115,18 @@ where
     L: Lambda + Sync + Send,
 {
     let scale = |theta_d: f64| 1.0 - schlick_weight(theta_d);
+    let (scale_table, weight_table) = (FresnelTable::of(&scale), FresnelTable::of(&schlick_weight));
     let [dfg1, dfg2] = grid_values(
         &mu,
         &roughness,
         map,
         &surface,
         [
-            Weight::Curve(Some(&scale)),
-            Weight::Curve(Some(&schlick_weight)),
+            Weight::Curve(Some(FresnelFactor::new(&scale, scale_table.as_ref()))),
+            Weight::Curve(Some(FresnelFactor::new(
+                &schlick_weight,
+                weight_table.as_ref(),
+            ))),
         ],
         progress,
     )?;
@@ -2168,8 +2207,11 @@ mod tests {
             let surface = ggx(alpha, G2Model::HeightCorrelated);
             for curve in &curves {
                 let f = |theta_d: f64| curve.eval(theta_d);
+                let table = FresnelTable::of(&f);
+                assert!(table.is_some(), "{curve:?}: no table");
                 for mu in [0.05, 0.5, 0.9] {
-                    let tabulated = surface.albedo(mu, Some(&f)).unwrap();
+                    let factor = FresnelFactor::new(&f, table.as_ref());
+                    let tabulated = surface.albedo(mu, Some(factor)).unwrap();
                     let tolerance = surface.tolerance;
                     let direct = Oblique::new(&surface, mu)
                         .fixed(&NodeFresnel::Curve(&f), tolerance)

@@ -98,25 +98,39 @@ impl<F> Quantity<F> {
 }
 
 /// What a quantity's values share, found on first use and kept (a curve's): an albedo's
-/// [`albedo::SurfaceParts`] and the smooth surrogate of a tabulated Fresnel weight. Equality
-/// ignores it (it follows from the curve).
+/// [`albedo::SurfaceParts`] and its Fresnel weight's table. Equality ignores it (it follows from
+/// the curve).
 #[derive(Debug, Clone, Default)]
-pub struct Prepared(OnceLock<(albedo::SurfaceParts, Option<albedo::Smoothed>)>);
+pub struct Prepared(OnceLock<Shared>);
+
+/// The contents of [`Prepared`].
+#[derive(Debug, Clone)]
+struct Shared {
+    parts: albedo::SurfaceParts,
+    /// The smooth surrogate of a Fresnel weight tabulated on the basis grid ([`albedo::tabulated`]).
+    surrogate: Option<albedo::Smoothed>,
+    /// The table in cos θd of any other Fresnel curve, where it converges ([`albedo::FresnelTable`]).
+    table: Option<albedo::FresnelTable>,
+}
 
 impl Prepared {
-    /// The surface parts of `ndf` and the surrogate of `fresnel` where it is a tabulated curve,
-    /// found on the first call (for the albedo of `ndf` with `fresnel`, the same on every call).
-    fn of(
-        &self,
-        ndf: &Ndf,
-        fresnel: Option<&Curve>,
-    ) -> &(albedo::SurfaceParts, Option<albedo::Smoothed>) {
+    /// The surface parts of `ndf` and the surrogate or table of `fresnel`, found on the first call
+    /// (for the albedo of `ndf` with `fresnel`, the same on every call).
+    fn of(&self, ndf: &Ndf, fresnel: Option<&Curve>) -> &Shared {
         self.0.get_or_init(|| {
-            let table = match fresnel {
+            let surrogate = match fresnel {
                 Some(Curve::Fresnel(model)) => albedo::tabulated(model),
                 _ => None,
             };
-            (albedo::SurfaceParts::of(ndf), table)
+            let table = match (&surrogate, fresnel) {
+                (None, Some(curve)) => albedo::FresnelTable::of(&|t| curve.eval(t)),
+                _ => None,
+            };
+            Shared {
+                parts: albedo::SurfaceParts::of(ndf),
+                surrogate,
+                table,
+            }
         })
     }
 }
@@ -144,12 +158,16 @@ impl Quantity<Curve> {
             // A quadrature that fails, or a G1 the family lacks (refused when the spec is read),
             // gives NaN, which evaluation reports as a non-finite value of the curve.
             Quantity::Albedo { model, fresnel } => {
-                let (parts, table) = prepared.of(ndf, fresnel.as_deref());
-                let surface = albedo::surface_with(ndf, parts, *model);
+                let shared = prepared.of(ndf, fresnel.as_deref());
+                let surface = albedo::surface_with(ndf, &shared.parts, *model);
                 let mu_o = theta_o.cos().clamp(0.0, 1.0);
-                let result = match (table, fresnel.as_deref()) {
-                    (Some(table), _) => surface.albedo_tabulated(mu_o, table),
-                    (None, Some(f)) => surface.albedo(mu_o, Some(&|t| f.eval(t))),
+                let result = match (&shared.surrogate, fresnel.as_deref()) {
+                    (Some(surrogate), _) => surface.albedo_tabulated(mu_o, surrogate),
+                    (None, Some(f)) => {
+                        let curve = |t| f.eval(t);
+                        let factor = albedo::FresnelFactor::new(&curve, shared.table.as_ref());
+                        surface.albedo(mu_o, Some(factor))
+                    }
                     (None, None) => surface.albedo(mu_o, None),
                 };
                 result.unwrap_or(f64::NAN)
@@ -171,10 +189,15 @@ impl Quantity<Curve> {
         let Quantity::Albedo { model, fresnel } = self else {
             return None;
         };
-        let (parts, _) = prepared.of(ndf, fresnel.as_deref());
-        let surface = albedo::surface_with(ndf, parts, *model).with_tolerance(LABEL_E_AVG_TOL);
+        let shared = prepared.of(ndf, fresnel.as_deref());
+        let surface =
+            albedo::surface_with(ndf, &shared.parts, *model).with_tolerance(LABEL_E_AVG_TOL);
         let result = match fresnel {
-            Some(f) => albedo::average_albedo(&surface, Some(&|t| f.eval(t))),
+            Some(f) => {
+                let curve = |t| f.eval(t);
+                let factor = albedo::FresnelFactor::new(&curve, shared.table.as_ref());
+                albedo::average_albedo(&surface, Some(factor))
+            }
             None => albedo::average_albedo(&surface, None),
         };
         result.ok()
