@@ -16,7 +16,7 @@ use ndfplot::model::fresnel::basis::coeffs;
 use ndfplot::model::fresnel::exact::{Incidence, Index, reflectance};
 use ndfplot::model::masking::G2Model;
 use ndfplot::model::math::quad::{QuadError, integrate};
-use ndfplot::model::math::tolerance::{ALBEDO_TABULATED_TOL, ALBEDO_TOL};
+use ndfplot::model::math::tolerance::ALBEDO_TOL;
 use ndfplot::model::ndf::Family;
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -431,13 +431,15 @@ fn albedo_tables_follow_the_grid_convention_and_split_sum_is_linear() {
             assert!((table.get(i, j) - want).abs() <= ALBEDO_TOL);
         }
     }
-    // The split sum integrates at ALBEDO_TABULATED_TOL per level; the kinks of the tabulated basis
-    // leave its values within ~5 times that of their limits, and four of them are summed.
-    const SPLIT_SUM_TOL: f64 = 100.0 * ALBEDO_TABULATED_TOL;
     let tables = split_sum_tables(n_mu, n_r, RoughnessMap::Squared, surface, None).unwrap();
     for (e0, e) in tables[0].values.iter().zip(&table.values) {
-        assert!((e0 - e).abs() <= SPLIT_SUM_TOL, "E_0 {e0} ≠ E {e}");
+        assert!((e0 - e).abs() <= ALBEDO_TOL, "E_0 {e0} ≠ E {e}");
     }
+    // The direct albedo of the reconstruction below takes its kinks through nested adaptive
+    // Gauss–Kronrod, which converges only algebraically over them: it is held to 1e-8 per level and
+    // lands within ~5e-8; the split sum is within ALBEDO_TOL.
+    const KINKED_TOL: f64 = 1e-8;
+    const SPLIT_SUM_TOL: f64 = 100.0 * KINKED_TOL;
     // Gold and glass: Σ c_k E_k equals the albedo with the reconstructed Fresnel F̂(θd).
     for (eta, kappa) in [(0.29, 2.86), (1.5, 0.0)] {
         let c = coeffs(Index::new(eta, kappa));
@@ -447,7 +449,7 @@ fn albedo_tables_follow_the_grid_convention_and_split_sum_is_linear() {
             n_mu,
             n_r,
             RoughnessMap::Squared,
-            |alpha| surface(alpha).map(|s| s.with_tolerance(ALBEDO_TABULATED_TOL)),
+            |alpha| surface(alpha).map(|s| s.with_tolerance(KINKED_TOL)),
             Some(FresnelFactor::new(
                 &reconstructed,
                 FresnelTable::of(&reconstructed).as_ref(),

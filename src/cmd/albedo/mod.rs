@@ -22,7 +22,7 @@ use crate::model::albedo::{AVERAGE_E_TOL, AVERAGE_TOL, SMOOTHED_CELLS};
 use crate::model::curve::{Curve, Kind};
 use crate::model::masking::G2Model;
 use crate::model::math::quad::QuadError;
-use crate::model::math::tolerance::{ALBEDO_QUAD_REL_TOL, ALBEDO_TABULATED_TOL, ALBEDO_TOL};
+use crate::model::math::tolerance::{ALBEDO_QUAD_REL_TOL, ALBEDO_TOL};
 use crate::model::ndf::{Family, Ndf, ZeroLimit};
 use crate::output::report::{Cell, Report};
 use crate::pipeline::progress::Progress;
@@ -537,7 +537,7 @@ impl Request {
         };
         let accuracy = match table {
             Table::SplitSum => format!(
-                "within {ALBEDO_TOL:e} of the exact integrals (the basis, linear between 1000 nodes in cos(theta_d), through a smooth surrogate with its integral over every cell; at mu = 1 split at the nodes; lobes narrower than {SMOOTHED_CELLS} cells in cos(theta_d): the interpolant, adaptive to {ALBEDO_TABULATED_TOL:e} per level, within ~5e-8)"
+                "within {ALBEDO_TOL:e} of the exact integrals (the basis, linear between 1000 nodes in cos(theta_d), through a smooth surrogate with its integral over every cell; at mu = 1 split at the nodes; lobes narrower than {SMOOTHED_CELLS} cells in cos(theta_d): plus the albedo of the interpolant's residual against the surrogate, cell by cell)"
             ),
             Table::Average => format!(
                 "within {AVERAGE_TOL:e} of the exact integral (fixed Gauss-Legendre rules in mu on panels graded from the lobe width, each E to {AVERAGE_E_TOL:e}; F_avg adaptive to {ALBEDO_QUAD_REL_TOL:e})"

@@ -104,13 +104,6 @@ pub const ALBEDO_QUAD_REL_TOL: f64 = 1e-12;
 /// 1e-10 leaves two orders of margin for the accumulated error of three nested integrals.
 pub const ALBEDO_TOL: f64 = 1e-10;
 
-/// Absolute accuracy (in units of E) asked of each nested albedo integral whose Fresnel weight is
-/// a tabulated basis function or reconstruction taken as it is, linear between 1000 nodes in
-/// cos θd (for lobes too narrow for its smooth surrogate, `albedo::SMOOTHED_CELLS`): its kinks
-/// make Gauss–Kronrod converge only algebraically, and a tighter target costs orders of magnitude
-/// more subdivisions.
-pub const ALBEDO_TABULATED_TOL: f64 = 1e-8;
-
 #[cfg(test)]
 mod tests {
     use super::*;
