@@ -242,6 +242,34 @@ fn a_fresnel_factor_turns_e_into_e_f_as_eval_computes_it() {
 }
 
 #[test]
+fn a_tabulated_fresnel_factor_turns_e_into_e_f_as_eval_computes_it() {
+    // A Belcour–Bati–Barla reconstruction, linear between 1000 nodes in cos θd: the tables take it
+    // through its smooth surrogate as eval does (the interpolant's kinks alone do not converge),
+    // and F_avg is the interpolant's average 2 ∫ F(μ) μ dμ, here by Simpson's rule on each cell
+    // between the nodes μ = j/999 (exact for F μ, a quadratic there).
+    let fresnel = r#"{"fresnel":"belcour","eta":1.5}"#;
+    let table = albedo(&["--size", "3", "--fresnel", fresnel]);
+    let f = |theta: f64| eval(&[fresnel.to_string()], &[theta])[0][0];
+    assert_matches_eval(&table, "E_F", &format!(r#","fresnel":{fresnel}"#), f);
+    let average = albedo(&["--table", "average", "--size", "2", "--fresnel", fresnel]);
+    let n = 2 * 999;
+    let mus: Vec<f64> = (0..=n).map(|i| i as f64 / n as f64).collect();
+    let thetas: Vec<f64> = mus.iter().map(|mu| mu.acos()).collect();
+    let values = eval(&[fresnel.to_string()], &thetas);
+    let g = |i: usize| values[i][0] * mus[i];
+    let simpson: f64 = (0..999)
+        .map(|j| (g(2 * j) + 4.0 * g(2 * j + 1) + g(2 * j + 2)) / (3.0 * n as f64))
+        .sum();
+    for row in &average.rows {
+        assert!(
+            (row[4] - 2.0 * simpson).abs() <= 1e-13,
+            "{row:?} vs {}",
+            2.0 * simpson
+        );
+    }
+}
+
+#[test]
 fn the_split_sum_tables_start_with_e_and_their_mirror_column_is_the_basis() {
     let table = albedo(&["--table", "split-sum", "--mu-count", "3", "--r-count", "2"]);
     assert_eq!(

@@ -14,6 +14,7 @@ use super::Surface;
 use crate::error::{Error, Result};
 use crate::model::albedo::{self, Table};
 use crate::model::curve::Curve;
+use crate::model::curve::quantity::fresnel_table;
 use crate::model::engine_table::{EngineGrid, compare};
 use crate::model::math::quad::QuadError;
 use crate::model::metrics::table::{Cell, RELATIVE_FLOOR, TableAudit};
@@ -261,7 +262,7 @@ impl Against {
                 .map(|ndf| albedo::surface_of(ndf, layout.g2))
         };
         let evaluate = fresnel.map(|curve| move |theta: f64| curve.eval(theta));
-        let fresnel_table = evaluate.as_ref().and_then(|f| albedo::FresnelTable::of(f));
+        let fresnel_table = fresnel.and_then(fresnel_table);
         let fresnel_fn: albedo::Fresnel = evaluate
             .as_ref()
             .map(|f| albedo::FresnelFactor::new(f, fresnel_table.as_ref()));

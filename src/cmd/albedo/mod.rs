@@ -15,10 +15,11 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 
 use crate::error::{Error, Result};
 use crate::model::albedo::{
-    self, NoLobe, RoughnessMap, Table, average_albedo_table, average_fresnel, dfg_tables,
-    kulla_conty_fresnel, kulla_conty_lobe, split_sum_tables, turquin_factor, unit_grid,
+    self, NoLobe, RoughnessMap, Table, average_albedo_table, dfg_tables, kulla_conty_fresnel,
+    kulla_conty_lobe, split_sum_tables, turquin_factor, unit_grid,
 };
 use crate::model::albedo::{AVERAGE_E_TOL, AVERAGE_TOL, SMOOTHED_CELLS};
+use crate::model::curve::quantity::fresnel_table;
 use crate::model::curve::{Curve, Kind};
 use crate::model::masking::G2Model;
 use crate::model::math::quad::QuadError;
@@ -398,7 +399,7 @@ impl Request {
             .fresnel
             .as_ref()
             .map(|curve| move |theta: f64| curve.eval(theta));
-        let fresnel_table = evaluate.as_ref().and_then(|f| albedo::FresnelTable::of(f));
+        let fresnel_table = self.fresnel.as_ref().and_then(fresnel_table);
         let fresnel: albedo::Fresnel = evaluate
             .as_ref()
             .map(|f| albedo::FresnelFactor::new(f, fresnel_table.as_ref()));
@@ -453,7 +454,7 @@ impl Request {
                 let f_avg = match (&self.fresnel, fresnel) {
                     (Some(curve), Some(f)) => Some(match engine_fresnel_average(curve) {
                         Some(f_avg) => f_avg,
-                        None => average_fresnel(|theta| f.at(theta)).map_err(failed)?,
+                        None => f.average().map_err(failed)?,
                     }),
                     _ => None,
                 };

@@ -154,20 +154,43 @@ impl<'a> FresnelFactor<'a> {
     pub fn at(&self, theta_d: f64) -> f64 {
         (self.curve)(theta_d)
     }
+
+    /// F_avg = 2 ∫₀¹ F μ dμ ([`average_fresnel`]); for a weight tabulated on the basis grid, its
+    /// interpolant integrated exactly cell by cell ([`Smoothed::average`]).
+    pub fn average(&self) -> Result<f64, QuadError> {
+        match self.table {
+            Some(FresnelTable(TableKind::Cells(cells))) => Ok(cells.average()),
+            _ => average_fresnel(self.curve),
+        }
+    }
 }
 
-/// A smooth Fresnel factor tabulated in c = cos θd on [0, 1]: a [`Piecewise`] Chebyshev
-/// interpolant of F(arccos c) within [`FRESNEL_TABLE_TOL`] (a few tens of values of F, against one
-/// per inner node of every albedo), for [`FresnelFactor`].
+/// A Fresnel factor tabulated in c = cos θd on [0, 1], for [`FresnelFactor`]: a smooth curve's
+/// [`Piecewise`] Chebyshev interpolant of F(arccos c) within [`FRESNEL_TABLE_TOL`] (a few tens of
+/// values of F, against one per inner node of every albedo), or the smooth surrogate of a weight
+/// tabulated on the basis grid ([`Smoothed`]), which the albedo then takes as
+/// [`Microfacet::albedo_tabulated`] does.
 #[derive(Debug, Clone)]
-pub struct FresnelTable(Piecewise);
+pub struct FresnelTable(TableKind);
+
+/// What a [`FresnelTable`] holds.
+#[derive(Debug, Clone)]
+enum TableKind {
+    Chebyshev(Piecewise),
+    Cells(Smoothed),
+}
 
 impl FresnelTable {
-    /// The table of `curve`, F(θd); `None` where F(arccos c) is not smooth enough for the
-    /// interpolant to converge, or not finite.
+    /// The table of the smooth `curve`, F(θd); `None` where F(arccos c) is not smooth enough for
+    /// the interpolant to converge, or not finite.
     pub fn of(curve: &dyn Fn(f64) -> f64) -> Option<FresnelTable> {
         Piecewise::build(|c| curve(theta_d(c)), 0.0, 1.0, |_, _| FRESNEL_TABLE_TOL)
-            .map(FresnelTable)
+            .map(|table| FresnelTable(TableKind::Chebyshev(table)))
+    }
+
+    /// The table of a weight tabulated on the basis grid: its smooth surrogate ([`tabulated`]).
+    pub fn cells(surrogate: Smoothed) -> FresnelTable {
+        FresnelTable(TableKind::Cells(surrogate))
     }
 }
 
@@ -301,12 +324,22 @@ where
     /// about w (sin θo + w/2)), whose few cells the surrogate's cell means do not average, plus the
     /// albedo of the interpolant's residual against it (module `narrow`). Within 1e-10 either way.
     pub fn albedo_tabulated(&self, mu_o: f64, weight: &Smoothed) -> Result<f64, QuadError> {
+        self.albedo_tabulated_within(mu_o, weight, self.tolerance)
+    }
+
+    /// [`Microfacet::albedo_tabulated`] with each nested integral held to `tolerance`.
+    fn albedo_tabulated_within(
+        &self,
+        mu_o: f64,
+        weight: &Smoothed,
+        tolerance: f64,
+    ) -> Result<f64, QuadError> {
         let sin_o = ((1.0 - mu_o) * (1.0 + mu_o)).sqrt();
         let spread = self.width * (sin_o + 0.5 * self.width);
         if mu_o == 1.0 {
-            return self.normal_tabulated(weight);
+            return self.normal_tabulated(weight, tolerance);
         }
-        let smooth = self.albedo_by(mu_o, Weight::Tabulated(weight), self.tolerance)?;
+        let smooth = self.albedo_by(mu_o, Weight::Tabulated(weight), tolerance)?;
         if spread >= SMOOTHED_CELLS * weight.cell() {
             Ok(smooth)
         } else {
@@ -317,7 +350,7 @@ where
     /// E(1) with the tabulated weight's interpolant L(cos θh): adaptive Gauss–Kronrod in θh on
     /// each piece between successive nodes θh = arccos c_j over [0, π/4], where L is linear in
     /// cos θh, each piece held to the surface's tolerance in its share of E.
-    fn normal_tabulated(&self, weight: &Smoothed) -> Result<f64, QuadError> {
+    fn normal_tabulated(&self, weight: &Smoothed, tolerance: f64) -> Result<f64, QuadError> {
         let lambda_o = self.lambda.at_cos(1.0);
         let corner = FRAC_PI_4.cos();
         let mut edges = vec![0.0];
@@ -340,7 +373,7 @@ where
         };
         let mut sum = 0.0;
         for pair in edges.windows(2) {
-            sum += integrate_to(integrand, pair[0], pair[1], share, self.tolerance)?;
+            sum += integrate_to(integrand, pair[0], pair[1], share, tolerance)?;
         }
         Ok(2.0 * PI * sum)
     }
@@ -350,7 +383,12 @@ where
     /// agree to within [`FIXED_AGREEMENT`] × `tolerance` ([`Oblique::fixed`]), else the nested
     /// adaptive quadrature.
     fn albedo_within(&self, mu_o: f64, fresnel: Fresnel, tolerance: f64) -> Result<f64, QuadError> {
-        self.albedo_by(mu_o, Weight::Curve(fresnel), tolerance)
+        match fresnel.and_then(|f| f.table) {
+            Some(FresnelTable(TableKind::Cells(cells))) => {
+                self.albedo_tabulated_within(mu_o, cells, tolerance)
+            }
+            _ => self.albedo_by(mu_o, Weight::Curve(fresnel), tolerance),
+        }
     }
 
     /// [`Microfacet::albedo_within`] with the Fresnel factor `weight`: a curve, or a weight
@@ -1086,7 +1124,7 @@ impl<D: Density, L: Lambda> Block for InnerNodes<'_, '_, '_, D, L> {
         }
         if let NodeFresnel::Table(table) = self.fresnel {
             let mut f = [0.0; MAX_NODES];
-            table.0.eval_many(&self.dot[..n], &mut f[..n]);
+            table.eval_many(&self.dot[..n], &mut f[..n]);
             for k in 0..n {
                 self.value[k] *= f[k];
             }
@@ -1138,7 +1176,7 @@ const ROUGH_WIDTH: f64 = 1.0;
 /// evaluated over a whole inner rule in vector lanes ([`InnerNodes`]), the curve node by node.
 enum NodeFresnel<'a> {
     One,
-    Table(&'a FresnelTable),
+    Table(&'a Piecewise),
     Curve(&'a (dyn Fn(f64) -> f64 + Sync)),
     Cells(&'a Smoothed),
 }
@@ -1150,7 +1188,8 @@ impl<'a> NodeFresnel<'a> {
         match weight {
             Weight::Curve(None) => NodeFresnel::One,
             Weight::Curve(Some(FresnelFactor {
-                table: Some(table), ..
+                table: Some(FresnelTable(TableKind::Chebyshev(table))),
+                ..
             })) => NodeFresnel::Table(table),
             Weight::Curve(Some(FresnelFactor { curve, .. })) => NodeFresnel::Curve(curve),
             Weight::Tabulated(cells) => NodeFresnel::Cells(cells),
@@ -2036,7 +2075,7 @@ where
             let value = match surface(map.alpha(r)) {
                 Some(surface) => average_albedo(&surface, fresnel)?,
                 None => match fresnel {
-                    Some(f) => average_fresnel(|theta| f.at(theta))?,
+                    Some(f) => f.average()?,
                     None => 1.0,
                 },
             };

@@ -121,6 +121,21 @@ impl Smoothed {
         (1.0 - t) * self.values[j] + t * self.values[j + 1]
     }
 
+    /// 2 ∫₀¹ L(c) c dc, the cosine-weighted average of the interpolant L: on each cell
+    /// (y_j + y_{j+1}) (c_j + c_{j+1}) h/4 + (y_{j+1} − y_j) h²/12 (L c is a quadratic there), h the
+    /// cell's width.
+    pub fn average(&self) -> f64 {
+        let sum: f64 = (0..self.nodes.len() - 1)
+            .map(|j| {
+                let (c0, c1) = (self.nodes[j], self.nodes[j + 1]);
+                let (y0, y1) = (self.values[j], self.values[j + 1]);
+                let h = c1 - c0;
+                0.25 * (y0 + y1) * (c0 + c1) * h + (y1 - y0) * h * h / 12.0
+            })
+            .sum();
+        2.0 * sum
+    }
+
     /// F̃ at c = cos θd ∈ [0, 1]: S(c) + (h²/12) M(c), by its cell's cubic ([`cell_cubic`]).
     #[inline(always)]
     pub fn at_cos(&self, c: f64) -> f64 {
@@ -230,6 +245,32 @@ mod tests {
                 "cell {j}: {surrogate} vs {linear}"
             );
         }
+    }
+
+    #[test]
+    fn the_average_is_the_interpolants_cosine_weighted_integral() {
+        // A basis reconstruction's interpolant against Simpson's rule on 64 intervals per cell
+        // (exact for L c, a quadratic on each cell, up to rounding).
+        let weight = Smoothed::of_basis([0.04, 0.3, -0.2, 0.1]);
+        let nodes = weight.nodes();
+        let mut direct = 0.0;
+        for j in 0..nodes.len() - 1 {
+            let (a, b) = (nodes[j], nodes[j + 1]);
+            let n = 64;
+            let h = (b - a) / n as f64;
+            let f = |c: f64| weight.linear_at_cos(c.clamp(a, b)) * c;
+            let mut cell = f(a) + f(b);
+            for i in 1..n {
+                cell += if i % 2 == 1 { 4.0 } else { 2.0 } * f(a + i as f64 * h);
+            }
+            direct += cell * h / 3.0;
+        }
+        let average = weight.average();
+        assert!(
+            (average - 2.0 * direct).abs() <= 1e-14,
+            "{average} vs {}",
+            2.0 * direct
+        );
     }
 
     #[test]

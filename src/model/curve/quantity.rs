@@ -98,8 +98,8 @@ impl<F> Quantity<F> {
 }
 
 /// What a quantity's values share, found on first use and kept (a curve's): an albedo's
-/// [`albedo::SurfaceParts`] and its Fresnel weight's table. Equality ignores it (it follows from
-/// the curve).
+/// [`albedo::SurfaceParts`] and its Fresnel factor's table ([`fresnel_table`]). Equality ignores
+/// it (it follows from the curve).
 #[derive(Debug, Clone, Default)]
 pub struct Prepared(OnceLock<Shared>);
 
@@ -107,31 +107,31 @@ pub struct Prepared(OnceLock<Shared>);
 #[derive(Debug, Clone)]
 struct Shared {
     parts: albedo::SurfaceParts,
-    /// The smooth surrogate of a Fresnel weight tabulated on the basis grid ([`albedo::tabulated`]).
-    surrogate: Option<albedo::Smoothed>,
-    /// The table in cos θd of any other Fresnel curve, where it converges ([`albedo::FresnelTable`]).
     table: Option<albedo::FresnelTable>,
 }
 
 impl Prepared {
-    /// The surface parts of `ndf` and the surrogate or table of `fresnel`, found on the first call
-    /// (for the albedo of `ndf` with `fresnel`, the same on every call).
+    /// The surface parts of `ndf` and the table of `fresnel`, found on the first call (for the
+    /// albedo of `ndf` with `fresnel`, the same on every call).
     fn of(&self, ndf: &Ndf, fresnel: Option<&Curve>) -> &Shared {
-        self.0.get_or_init(|| {
-            let surrogate = match fresnel {
-                Some(Curve::Fresnel(model)) => albedo::tabulated(model),
-                _ => None,
-            };
-            let table = match (&surrogate, fresnel) {
-                (None, Some(curve)) => albedo::FresnelTable::of(&|t| curve.eval(t)),
-                _ => None,
-            };
-            Shared {
-                parts: albedo::SurfaceParts::of(ndf),
-                surrogate,
-                table,
-            }
+        self.0.get_or_init(|| Shared {
+            parts: albedo::SurfaceParts::of(ndf),
+            table: fresnel.and_then(fresnel_table),
         })
+    }
+}
+
+/// The table of `curve` as a Fresnel factor inside an albedo ([`albedo::FresnelFactor`]): the
+/// smooth surrogate of a curve tabulated on the basis grid (a Belcour–Bati–Barla reconstruction or
+/// basis function, [`albedo::tabulated`]), else the Chebyshev table of the curve where it converges.
+pub fn fresnel_table(curve: &Curve) -> Option<albedo::FresnelTable> {
+    let surrogate = match curve {
+        Curve::Fresnel(model) => albedo::tabulated(model),
+        _ => None,
+    };
+    match surrogate {
+        Some(surrogate) => Some(albedo::FresnelTable::cells(surrogate)),
+        None => albedo::FresnelTable::of(&|t| curve.eval(t)),
     }
 }
 
@@ -161,14 +161,13 @@ impl Quantity<Curve> {
                 let shared = prepared.of(ndf, fresnel.as_deref());
                 let surface = albedo::surface_with(ndf, &shared.parts, *model);
                 let mu_o = theta_o.cos().clamp(0.0, 1.0);
-                let result = match (&shared.surrogate, fresnel.as_deref()) {
-                    (Some(surrogate), _) => surface.albedo_tabulated(mu_o, surrogate),
-                    (None, Some(f)) => {
+                let result = match fresnel.as_deref() {
+                    Some(f) => {
                         let curve = |t| f.eval(t);
                         let factor = albedo::FresnelFactor::new(&curve, shared.table.as_ref());
                         surface.albedo(mu_o, Some(factor))
                     }
-                    (None, None) => surface.albedo(mu_o, None),
+                    None => surface.albedo(mu_o, None),
                 };
                 result.unwrap_or(f64::NAN)
             }
