@@ -2250,10 +2250,12 @@ mod tests {
     #[test]
     fn a_narrow_lobe_gives_the_albedo_of_the_interpolant_itself() {
         // Grazing, oblique and near-normal views; at the first the former direct route (the
-        // interpolant at 1e-8 per level) was off by 6.6e-7.
+        // interpolant at 1e-8 per level) was off by 6.6e-7, at the second a lobe width in ψ taken
+        // as w/b instead of w/√b by 1.2e-9.
         use rayon::prelude::*;
-        let cases: [(usize, f64, f64); 4] = [
+        let cases: [(usize, f64, f64); 5] = [
             (1, 0.016_649_323_621_227_886, 0.967_741_935_483_871),
+            (3, 0.005, 0.9999),
             (1, 0.0015, 0.85),
             (2, 0.0015, 0.5),
             (3, 0.004, 0.15),
