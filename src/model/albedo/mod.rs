@@ -140,9 +140,11 @@ pub struct FresnelFactor<'a> {
 }
 
 impl<'a> FresnelFactor<'a> {
-    /// The factor `curve` with `table`, which must be [`FresnelTable::of`]`(curve)`: built once and
-    /// shared by every albedo with this factor (`None` where it does not converge: the curve is then
-    /// evaluated node by node).
+    /// The factor `curve` with `table`, which must be the curve's own — [`FresnelTable::of`]`(curve)`,
+    /// or [`FresnelTable::cells`] of its surrogate for a weight tabulated on the basis grid
+    /// (`model::curve::quantity::fresnel_table` chooses) — built once and shared by every albedo
+    /// with this factor (`None` where it does not converge: the curve is then evaluated node by
+    /// node).
     pub fn new(
         curve: &'a (dyn Fn(f64) -> f64 + Sync),
         table: Option<&'a FresnelTable>,
@@ -327,6 +329,13 @@ where
         self.albedo_tabulated_within(mu_o, weight, self.tolerance)
     }
 
+    /// The width of the distribution of cos θd about μo, w (sin θo + w/2): how far the lobe's
+    /// half-vectors move ⟨ωo, h⟩ (by ~w sin θo across the view's plane, ~w²/2 along it).
+    fn cos_spread(&self, mu_o: f64) -> f64 {
+        let sin_o = ((1.0 - mu_o) * (1.0 + mu_o)).sqrt();
+        self.width * (sin_o + 0.5 * self.width)
+    }
+
     /// [`Microfacet::albedo_tabulated`] with each nested integral held to `tolerance`.
     fn albedo_tabulated_within(
         &self,
@@ -334,13 +343,11 @@ where
         weight: &Smoothed,
         tolerance: f64,
     ) -> Result<f64, QuadError> {
-        let sin_o = ((1.0 - mu_o) * (1.0 + mu_o)).sqrt();
-        let spread = self.width * (sin_o + 0.5 * self.width);
         if mu_o == 1.0 {
             return self.normal_tabulated(weight, tolerance);
         }
         let smooth = self.albedo_by(mu_o, Weight::Tabulated(weight), tolerance)?;
-        if spread >= SMOOTHED_CELLS * weight.cell() {
+        if self.cos_spread(mu_o) >= SMOOTHED_CELLS * weight.cell() {
             Ok(smooth)
         } else {
             Ok(smooth + self.residual_albedo(mu_o, weight)?)
@@ -2234,8 +2241,7 @@ mod tests {
     fn assert_narrow_albedo_is_the_interpolants(k: usize, alpha: f64, mu: f64) {
         let weight = Smoothed::new(basis().function(k).iter().map(|b| 1.0 + b).collect());
         let surface = ggx(alpha, G2Model::HeightCorrelated);
-        let sin_o = (1.0 - mu * mu).sqrt();
-        assert!(alpha * (sin_o + 0.5 * alpha) < SMOOTHED_CELLS * weight.cell());
+        assert!(surface.cos_spread(mu) < SMOOTHED_CELLS * weight.cell());
         let value = surface.albedo_tabulated(mu, &weight).unwrap();
         let linear = |theta_d: f64| weight.linear_at_cos(theta_d.cos());
         let direct = Oblique::new(&surface, mu)

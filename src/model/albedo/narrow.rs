@@ -11,7 +11,7 @@
 //! ωo and the normal, where dωh = dc dψ exactly, cos θh = c μo + √(1 − c²) sin θo cos ψ and
 //! cos θi = 2c cos θh − μo (at μo = 0, G2/μo is its limit g/C as in [`Microfacet::albedo`], C the
 //! visible projected area). ρ, the albedo's density in c = cos θd, is smooth on the lobe's own
-//! scale in c, its spread s = w (sin θo + w/2), so each cell's share of R is a smooth weight against
+//! scale in c, its spread s = w (sin θo + w/2) (`Microfacet::cos_spread`), so each cell's share of R is a smooth weight against
 //! a residual of mean zero:
 //! - near the lobe, |c − μo| ≤ [`NEAR_SPREADS`] s (at least [`NEAR_CELLS`] cells), each cell is
 //!   split into panels no wider than half the larger of s and their distance from μo ([`graded`]),
@@ -82,7 +82,7 @@ where
         };
         let sin_o = ((1.0 - mu_o) * (1.0 + mu_o)).sqrt();
         let cell = weight.cell();
-        let spread = self.width * (sin_o + 0.5 * self.width);
+        let spread = self.cos_spread(mu_o);
         let rho = |c: f64| density_in_cos(&oblique, sin_o, c);
         let residual = |c: f64| weight.linear_at_cos(c) - weight.at_cos(c);
         let near = (NEAR_SPREADS * spread).max(NEAR_CELLS * cell);
@@ -91,14 +91,15 @@ where
         let cells = nodes.len() - 1;
         let index = |c: f64| ((c / cell).floor().max(0.0) as usize).min(cells);
         let edge = visible_edge(mu_o, sin_o);
-        let layer = 0.25 * self.width.min(mu_o);
+        // G2's layer at the horizon in c: cos θi ≈ 2 (c − edge) there.
+        let layer = 0.5 * oblique.layer();
         // ∫ r ρ over [lo, hi], by the rule in u where c = edge + (hi − edge) u² on a panel that
         // the edge cuts (ρ = 0 below it, ~(c − edge)^{3/2} above).
         let panel = |lo: f64, hi: f64| {
             if hi <= edge {
                 0.0
             } else if lo < edge {
-                // Graded from the edge on the layer over which G2 turns over, cos θi ≈ 2 (c − edge).
+                // Graded from the edge on that layer.
                 let mut sum = 0.0;
                 doubling(edge, hi, 0.25 * layer, &mut |x0, x1| {
                     let length = x1 - x0;
