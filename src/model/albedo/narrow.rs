@@ -227,18 +227,15 @@ fn density_in_cos<D: Density, L: Lambda>(oblique: &Oblique<'_, D, L>, sin_o: f64
         let lambda_i = surface.lambda.at_cos(cos_i.min(1.0));
         surface.ndf.at(theta_h) * oblique.weight(lambda_i)
     };
-    let psi_max = if b == 0.0 {
-        PI
-    } else {
-        let q = (0.5 * mu_o / c - a) / b;
-        if q >= 1.0 {
-            return 0.0;
-        }
-        q.max(-1.0).acos()
-    };
     if b == 0.0 {
-        return 2.0 * c * rule().integrate(at, 0.0, psi_max);
+        // c = 1 (h is the view itself) or a view along the normal: θh is the same all round.
+        return 2.0 * c * rule().integrate(at, 0.0, PI);
     }
+    let q = (0.5 * mu_o / c - a) / b;
+    if q >= 1.0 {
+        return 0.0;
+    }
+    let psi_max = q.max(-1.0).acos();
     // Graded from ψ = 0 on the lobe's width in ψ.
     let lobe = 0.25 * surface.width / b.sqrt();
     let mut integral = 0.0;
